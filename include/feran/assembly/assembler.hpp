@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// Assembly of the global matrices in reduced coordinates.
+
+#include <feran/assembly/dof_map.hpp>
+#include <feran/core/types.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// Global matrices of M q'' + (C + C_i + Ω G) q' + (K + Ω K_i) q = f in reduced
+/// coordinates (after fixed DOFs and rigid links). C and K hold the speed-dependent
+/// spring–damper coefficients evaluated at the speed they were assembled for;
+/// G and K_i are per unit speed.
+struct SystemMatrices {
+  SparseMatrix M, C, K, G, Ci, Ki;
+
+  /// D(Ω) = C + C_i + Ω·G.
+  SparseMatrix damping(Real speed) const;
+  /// K(Ω) + Ω·K_i.
+  SparseMatrix stiffness(Real speed) const;
+};
+
+/// Assembles a model's matrices. The speed-independent part is assembled once, at
+/// construction; at() adds the speed-dependent elements for each speed.
+class Assembler {
+ public:
+  explicit Assembler(const Model& model);
+
+  const DofMap& dof_map() const { return dofs_; }
+  /// Matrices at speed @p speed [rad/s].
+  SystemMatrices at(Real speed) const;
+  /// True when some element's matrices depend on speed (beyond G and K_i).
+  bool speed_dependent() const { return !speed_dependent_elements_.empty(); }
+
+ private:
+  DofMap dofs_;
+  SystemMatrices constant_;
+  std::vector<Element> speed_dependent_elements_;
+};
+
+}  // namespace feran

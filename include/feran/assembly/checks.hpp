@@ -1,0 +1,29 @@
+#pragma once
+/// @file
+/// Checks that a model can be analysed: positive-definite mass and no unintended
+/// rigid-body motion.
+
+#include <string>
+#include <vector>
+
+#include <feran/assembly/assembler.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// A motion along which the stiffness (at zero speed, after constraints) is singular.
+struct FreeMotionInfo {
+  FreeMotion family = FreeMotion::lateral;
+  std::string description;    ///< e.g. "rotation about the x axis (torsion) of nodes 1–7"
+  std::vector<Index> nodes;   ///< nodes that take part
+};
+
+/// The rigid-body motions of @p model at zero speed (may be empty).
+std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler);
+
+/// Throws ModelStructureError when the mass matrix is not positive definite (naming
+/// a node and DOF without mass) or when a rigid-body motion is free that
+/// model.options.free_motions does not allow (naming the motion).
+void check_model(const Model& model, const Assembler& assembler);
+
+}  // namespace feran

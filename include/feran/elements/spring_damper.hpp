@@ -1,0 +1,49 @@
+#pragma once
+/// @file
+/// Linear spring–damper between a node and ground or between two nodes.
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include <feran/core/types.hpp>
+#include <feran/model/element.hpp>
+#include <feran/model/speed_coefficient.hpp>
+
+namespace feran {
+
+/// Coefficients of a spring–damper, each possibly speed dependent.
+/// Direct terms per DOF direction (indexed by Dof: x, y, z, rx, ry, rz), and the
+/// cross-coupled lateral terms: the force on node a along y is
+/// −(k_yy·Δv + k_yz·Δw) − (c_yy·Δv' + c_yz·Δw'), Δ = q_a − q_b.
+struct SpringDamperCoefficients {
+  std::array<SpeedCoefficient, dofs_per_node> k{};  ///< [N/m] or [N m/rad]
+  std::array<SpeedCoefficient, dofs_per_node> c{};  ///< [N s/m] or [N m s/rad]
+  SpeedCoefficient kyz, kzy;                        ///< [N/m]
+  SpeedCoefficient cyz, czy;                        ///< [N s/m]
+};
+
+/// Spring–damper from @p node_a to @p node_b, or to ground when node_b is empty.
+/// Matrices: docs/theory/spring_damper.md.
+class SpringDamper {
+ public:
+  SpringDamper(Index node_a, std::optional<Index> node_b, SpringDamperCoefficients coeffs);
+
+  LocalMatrices local_matrices(const OperatingPoint& op) const;
+  std::string_view kind() const { return "spring_damper"; }
+  bool speed_dependent() const;
+
+  Index node_a() const { return node_a_; }
+  const std::optional<Index>& node_b() const { return node_b_; }
+  const SpringDamperCoefficients& coefficients() const { return coeffs_; }
+  /// 6×6 stiffness and damping of the relative motion at speed @p speed [rad/s].
+  Matrix stiffness_6x6(Real speed) const;
+  Matrix damping_6x6(Real speed) const;
+
+ private:
+  Index node_a_;
+  std::optional<Index> node_b_;
+  SpringDamperCoefficients coeffs_;
+};
+
+}  // namespace feran

@@ -1,0 +1,71 @@
+#pragma once
+/// @file
+/// Two-node 12-DOF shaft element: Timoshenko bending with Cowper's shear
+/// coefficient, linear axial, Saint-Venant torsion; consistent mass with rotary
+/// inertia; consistent or lumped gyroscopic matrix; optional stiffness-proportional
+/// rotating (material) damping. Matrices: docs/theory/shaft_element.md.
+
+#include <string_view>
+
+#include <feran/core/types.hpp>
+#include <feran/model/element.hpp>
+#include <feran/model/material.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// Solid or hollow circular section.
+struct CircularSection {
+  Real outer_diameter = 0.0;  ///< [m]
+  Real inner_diameter = 0.0;  ///< [m], 0 for a solid section
+
+  Real area() const;              ///< A [m²]
+  Real second_moment() const;     ///< I about a diameter [m⁴]
+  Real polar_moment() const;      ///< I_p = J = 2I [m⁴]
+  /// Cowper's (1966) shear coefficient κ for a hollow circle with Poisson ratio @p nu.
+  Real cowper_shear_coefficient(Real nu) const;
+};
+
+/// Options of a shaft element.
+struct BeamOptions {
+  bool shear_deformation = true;
+  GyroscopicForm gyroscopic = GyroscopicForm::consistent;
+  bool rotating = true;     ///< a non-rotating beam has no G and no rotating damping
+  Real damping_beta = 0.0;  ///< stiffness-proportional rotating damping β [s]
+};
+
+/// Timoshenko shaft element between nodes @p node_a (at x) and @p node_b (at x + L).
+class TimoshenkoBeam {
+ public:
+  TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section,
+                 Material material, BeamOptions options);
+
+  LocalMatrices local_matrices(const OperatingPoint& op) const;
+  std::string_view kind() const { return "shaft"; }
+  bool speed_dependent() const { return false; }
+
+  Index node_a() const { return node_a_; }
+  Index node_b() const { return node_b_; }
+  Real length() const { return length_; }
+  const CircularSection& section() const { return section_; }
+  const Material& material() const { return material_; }
+  const BeamOptions& options() const { return options_; }
+  /// Shear parameter Φ = 12EI/(κGAL²), or 0 without shear deformation.
+  Real shear_parameter() const;
+
+  /// 4×4 bending stiffness in one plane, DOFs (d1, s1, d2, s2) with s = dd/dx.
+  Matrix bending_stiffness() const;
+  /// 4×4 translational (ρA) mass in one plane.
+  Matrix bending_translational_mass() const;
+  /// 4×4 rotary-inertia (ρI) mass in one plane.
+  Matrix bending_rotary_mass() const;
+
+ private:
+  Index node_a_, node_b_;
+  Real length_;
+  CircularSection section_;
+  Material material_;
+  BeamOptions options_;
+};
+
+}  // namespace feran

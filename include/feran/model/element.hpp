@@ -1,0 +1,108 @@
+#pragma once
+/// @file
+/// The element interface: a concept and a type-erased, copyable Element value.
+///
+/// An element is a small value type that returns its matrices at an operating
+/// point. To add one: write a header and a source in elements/, register its
+/// parse function in io/model_reader.cpp, test it, and document its matrices in
+/// docs/theory/. Nothing else changes.
+
+#include <concepts>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <typeinfo>
+#include <utility>
+#include <vector>
+
+#include <feran/core/operating_point.hpp>
+#include <feran/core/types.hpp>
+
+namespace feran {
+
+/// An element's contribution to M q'' + (C + C_i + Ω G) q' + (K + Ω K_i) q = f.
+/// Matrices are square of size dofs.size(); an empty matrix (0×0) means zero.
+/// G and K_i are per unit speed: the assembly multiplies them by Ω.
+struct LocalMatrices {
+  std::vector<Index> dofs;  ///< global (unconstrained) DOF numbers, see global_dof()
+  Matrix M;                 ///< mass
+  Matrix C;                 ///< non-rotating (external) viscous damping
+  Matrix K;                 ///< stiffness
+  Matrix G;                 ///< gyroscopic, skew-symmetric, per unit speed
+  Matrix Ci;                ///< rotating (internal) viscous damping
+  Matrix Ki;                ///< circulatory stiffness of rotating damping, skew, per unit speed
+};
+
+/// What an element type must provide.
+template <class E>
+concept ElementType = std::copyable<E> && requires(const E& e, const OperatingPoint& op) {
+  { e.local_matrices(op) } -> std::same_as<LocalMatrices>;
+  { e.kind() } -> std::convertible_to<std::string_view>;
+  { e.speed_dependent() } -> std::convertible_to<bool>;
+};
+
+/// A type-erased element with value semantics (copies are deep).
+class Element {
+ public:
+  /// Wraps @p e; @p label is the user's name for it (may be empty).
+  template <ElementType E>
+  Element(E e, std::string label = {})  // NOLINT(google-explicit-constructor)
+      : self_(std::make_unique<Holder<E>>(std::move(e))), label_(std::move(label)) {}
+
+  Element(const Element& other) : self_(other.self_->clone()), label_(other.label_) {}
+  Element& operator=(const Element& other) {
+    if (this != &other) {
+      self_ = other.self_->clone();
+      label_ = other.label_;
+    }
+    return *this;
+  }
+  Element(Element&&) noexcept = default;
+  Element& operator=(Element&&) noexcept = default;
+  ~Element() = default;
+
+  /// Local matrices at operating point @p op.
+  LocalMatrices local_matrices(const OperatingPoint& op) const { return self_->local_matrices(op); }
+  /// Element kind, e.g. "shaft", "rigid_body", "spring_damper".
+  std::string_view kind() const { return self_->kind(); }
+  /// True when any matrix other than G and K_i's speed factor depends on speed.
+  bool speed_dependent() const { return self_->speed_dependent(); }
+  /// The user's name for the element (may be empty).
+  const std::string& label() const { return label_; }
+
+  /// The wrapped element if it is an E, else nullptr.
+  template <class E>
+  const E* target() const {
+    if (self_->type() != typeid(E)) return nullptr;
+    return static_cast<const E*>(self_->data());
+  }
+
+ private:
+  struct Concept {
+    virtual ~Concept() = default;
+    virtual std::unique_ptr<Concept> clone() const = 0;
+    virtual LocalMatrices local_matrices(const OperatingPoint& op) const = 0;
+    virtual std::string_view kind() const = 0;
+    virtual bool speed_dependent() const = 0;
+    virtual const std::type_info& type() const = 0;
+    virtual const void* data() const = 0;
+  };
+  template <class E>
+  struct Holder final : Concept {
+    explicit Holder(E e) : value(std::move(e)) {}
+    std::unique_ptr<Concept> clone() const override { return std::make_unique<Holder>(value); }
+    LocalMatrices local_matrices(const OperatingPoint& op) const override {
+      return value.local_matrices(op);
+    }
+    std::string_view kind() const override { return value.kind(); }
+    bool speed_dependent() const override { return value.speed_dependent(); }
+    const std::type_info& type() const override { return typeid(E); }
+    const void* data() const override { return &value; }
+    E value;
+  };
+
+  std::unique_ptr<Concept> self_;
+  std::string label_;
+};
+
+}  // namespace feran

@@ -1,0 +1,102 @@
+#pragma once
+/// @file
+/// The model: a plain value holding nodes, elements, constraints, loads and options.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <feran/core/types.hpp>
+#include <feran/model/element.hpp>
+#include <feran/model/material.hpp>
+
+namespace feran {
+
+/// A node on the x axis. Its global DOFs are global_dof(index, Dof::...).
+struct Node {
+  int number = 0;      ///< the number users refer to (unique)
+  std::string name;    ///< optional name users refer to (unique when not empty)
+  Real x = 0.0;        ///< axial position [m]
+  bool rotating = true;  ///< belongs to a rotating body (shaft, rotor) or not (stator)
+};
+
+/// How the gyroscopic matrix of shaft elements is formed.
+enum class GyroscopicForm { consistent, lumped };
+
+/// A rigid-body motion of the whole model that the user allows to stay free.
+enum class FreeMotion { axial, torsion, lateral };
+
+/// Model-wide options.
+struct ModelOptions {
+  bool shear_deformation = true;  ///< Timoshenko (true) or Euler–Bernoulli (false) shafts
+  GyroscopicForm gyroscopic = GyroscopicForm::consistent;
+  /// Stiffness-proportional material damping of rotating shafts, β [s]: C_i = β K.
+  Real shaft_damping = 0.0;
+  /// Rigid-body motions that may remain free (singular stiffness) without an error.
+  std::vector<FreeMotion> free_motions;
+};
+
+/// DOFs of a node held at zero.
+struct FixedDofs {
+  Index node = 0;
+  std::array<bool, dofs_per_node> dofs{};  ///< indexed by Dof
+};
+
+/// Nodes moving together as one rigid body: every DOF of each follower is given by
+/// the leader's translations and rotations (small-rotation kinematics along x).
+struct RigidLink {
+  Index leader = 0;
+  std::vector<Index> followers;
+};
+
+/// A point unbalance (paper eq. 5): force m·r·Ω² at angle Ωt + phase in the y–z
+/// plane, and the moment of that force about the node through axial lever @p lever.
+struct Unbalance {
+  Index node = 0;
+  Real mass = 0.0;    ///< [kg]
+  Real radius = 0.0;  ///< [m]
+  Real phase = 0.0;   ///< [rad], measured from +y towards +z at t = 0
+  Real lever = 0.0;   ///< axial distance from the node to the unbalance plane [m]
+  std::string label;
+};
+
+/// Coulomb friction between rotating parts (paper eqs. 12–14): a force of magnitude
+/// @p force opposing the translational velocity seen in the rotating frame, and a
+/// moment of magnitude @p moment opposing the rotational one. Between @p node_a and
+/// @p node_b, or between @p node_a and the rotating frame when node_b is empty.
+/// Regularised as F = F_c0 · s/√(|s|² + ε²), s the relative rotating-frame velocity.
+struct CoulombFriction {
+  Index node_a = 0;
+  std::optional<Index> node_b;
+  Real force = 0.0;         ///< F_ct0 [N]
+  Real moment = 0.0;        ///< F_cr0 [N m]
+  Real epsilon_t = 1e-4;    ///< regularisation velocity, translation [m/s]
+  Real epsilon_r = 1e-3;    ///< regularisation angular velocity, rotation [rad/s]
+  std::string label;
+};
+
+/// A complete rotor model. Values only: copy it freely.
+struct Model {
+  std::string name;
+  std::vector<Material> materials;
+  std::vector<Node> nodes;
+  std::vector<Element> elements;
+  std::vector<FixedDofs> fixed;
+  std::vector<RigidLink> links;
+  std::vector<Unbalance> unbalances;
+  std::vector<CoulombFriction> friction;
+  ModelOptions options;
+
+  Index n_nodes() const { return static_cast<Index>(nodes.size()); }
+  /// Number of unconstrained DOFs (6 per node).
+  Index n_dofs() const { return dofs_per_node * n_nodes(); }
+  /// Index of the node with user number @p number, or -1.
+  Index find_node(int number) const;
+  /// Index of the node named @p name, or -1.
+  Index find_node(const std::string& name) const;
+  /// "7" or "7 (rotor)": how messages name node @p index.
+  std::string node_label(Index index) const;
+};
+
+}  // namespace feran

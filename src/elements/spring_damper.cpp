@@ -1,0 +1,55 @@
+#include <feran/elements/spring_damper.hpp>
+
+#include <algorithm>
+
+namespace feran {
+
+namespace {
+Matrix six_by_six(const std::array<SpeedCoefficient, dofs_per_node>& direct,
+                  const SpeedCoefficient& yz, const SpeedCoefficient& zy, Real speed) {
+  Matrix m = Matrix::Zero(dofs_per_node, dofs_per_node);
+  for (int d = 0; d < dofs_per_node; ++d) m(d, d) = direct[static_cast<std::size_t>(d)].at(speed);
+  m(static_cast<Index>(Dof::v), static_cast<Index>(Dof::w)) = yz.at(speed);
+  m(static_cast<Index>(Dof::w), static_cast<Index>(Dof::v)) = zy.at(speed);
+  return m;
+}
+
+// [[a, −a], [−a, a]] for two nodes, or a alone for a node-to-ground element.
+Matrix relative(const Matrix& a, bool two_nodes) {
+  if (!two_nodes) return a;
+  Matrix m(2 * dofs_per_node, 2 * dofs_per_node);
+  m << a, -a, -a, a;
+  return m;
+}
+}  // namespace
+
+SpringDamper::SpringDamper(Index node_a, std::optional<Index> node_b,
+                           SpringDamperCoefficients coeffs)
+    : node_a_(node_a), node_b_(node_b), coeffs_(std::move(coeffs)) {}
+
+bool SpringDamper::speed_dependent() const {
+  auto varies = [](const SpeedCoefficient& c) { return !c.is_constant(); };
+  return std::any_of(coeffs_.k.begin(), coeffs_.k.end(), varies) ||
+         std::any_of(coeffs_.c.begin(), coeffs_.c.end(), varies) || varies(coeffs_.kyz) ||
+         varies(coeffs_.kzy) || varies(coeffs_.cyz) || varies(coeffs_.czy);
+}
+
+Matrix SpringDamper::stiffness_6x6(Real speed) const {
+  return six_by_six(coeffs_.k, coeffs_.kyz, coeffs_.kzy, speed);
+}
+
+Matrix SpringDamper::damping_6x6(Real speed) const {
+  return six_by_six(coeffs_.c, coeffs_.cyz, coeffs_.czy, speed);
+}
+
+LocalMatrices SpringDamper::local_matrices(const OperatingPoint& op) const {
+  LocalMatrices out;
+  for (int d = 0; d < dofs_per_node; ++d) out.dofs.push_back(dofs_per_node * node_a_ + d);
+  if (node_b_)
+    for (int d = 0; d < dofs_per_node; ++d) out.dofs.push_back(dofs_per_node * *node_b_ + d);
+  out.K = relative(stiffness_6x6(op.speed), node_b_.has_value());
+  out.C = relative(damping_6x6(op.speed), node_b_.has_value());
+  return out;
+}
+
+}  // namespace feran
