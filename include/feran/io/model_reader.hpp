@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// Reads a model file (TOML, format in docs/model-format.md) into a Model.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <feran/core/error.hpp>
+#include <feran/core/types.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// Defaults for a Campbell diagram given in the model file's [campbell] table.
+/// Empty members were not given.
+struct CampbellDefaults {
+  std::optional<Real> start;  ///< first speed [rad/s]
+  std::optional<Real> stop;   ///< last speed [rad/s]
+  std::optional<int> points;  ///< number of speeds (≥ 2)
+  std::optional<int> modes;   ///< number of modes to track (≥ 1)
+  std::vector<int> orders;    ///< excitation orders k of the k·Ω lines, as given
+};
+
+/// Defaults for a modal analysis given in the model file's [modal] table.
+struct ModalDefaults {
+  std::optional<Real> speed;  ///< [rad/s]
+  std::optional<int> modes;   ///< number of modes (≥ 1)
+};
+
+/// A model file as read: the model and the analysis defaults it states.
+struct ModelFile {
+  Model model;
+  std::string path;   ///< the path the file was read from (or named for messages)
+  std::string title;  ///< the file's title (also model.name); may be empty
+  ModalDefaults modal;
+  CampbellDefaults campbell;
+  /// Per node index (model.nodes order): where the node was defined, for messages.
+  std::vector<SourceLocation> node_locations;
+};
+
+/// Reads and checks the model file at @p path.
+/// Throws feran::Error when the file cannot be read, and ModelError (file, line,
+/// column and message) for any problem in its content, including a model that
+/// check_model() rejects (no mass on some DOF, an unintended free motion).
+ModelFile read_model_file(const std::string& path);
+
+/// Reads and checks a model given as TOML text; @p path_for_messages names it in
+/// errors and in ModelFile::path. Throws ModelError as read_model_file() does.
+ModelFile read_model_string(std::string_view toml_text, const std::string& path_for_messages);
+
+}  // namespace feran
