@@ -1,0 +1,77 @@
+#pragma once
+/// @file
+/// Campbell diagram: modes tracked over a speed sweep, critical speeds and the
+/// stability threshold.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/core/types.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+struct CampbellOptions {
+  std::vector<Real> speeds;    ///< increasing speeds [rad/s], at least 2
+  Index n_modes = 8;           ///< modes tracked (the lowest at the first speed)
+  std::vector<int> orders{1};  ///< harmonic orders k of the excitation lines f = k·Ω/2π
+  ModalOptions modal;          ///< eigen solver settings (n_modes and shapes are set internally)
+  /// Speed resolution of critical speeds and of the threshold [rad/s].
+  Real speed_tolerance = 1e-8;
+  /// A damping ratio below −this counts as negative: round-off in the damping
+  /// ratio of an undamped mode is ~1e-13, physical ones are ≥ 1e-5.
+  Real damping_tolerance = 1e-9;
+};
+
+/// One mode followed over the sweep. Vectors are indexed like CampbellResult::speeds;
+/// NaN where the mode could not be followed.
+struct TrackedMode {
+  std::string label;       ///< "backward 1", "forward 1", "torsional 1", …
+  Whirl whirl = Whirl::none;  ///< the whirl it shows at most speeds
+  ModeType type = ModeType::lateral;
+  std::vector<Real> frequency_hz;
+  std::vector<Real> damping_ratio;
+  std::vector<Real> log_decrement;
+  std::vector<Real> directivity;
+  std::vector<Whirl> whirl_at;
+  std::vector<Real> correlation;  ///< MAC with the same mode at the previous speed
+};
+
+/// A speed where a tracked mode's frequency equals order·speed.
+struct CriticalSpeed {
+  Real speed = 0;         ///< [rad/s]
+  Real frequency_hz = 0;  ///< = order·speed/2π
+  Index mode = 0;         ///< index into CampbellResult::modes
+  int order = 1;
+  Whirl whirl = Whirl::none;  ///< whirl of the mode at the critical speed
+};
+
+/// The lowest speed at which a mode's damping ratio turns negative.
+struct StabilityThreshold {
+  Real speed = 0;  ///< [rad/s]
+  Index mode = 0;  ///< index into CampbellResult::modes
+  Real frequency_hz = 0;  ///< the mode's frequency there
+  bool unstable_at_start = false;  ///< already negative at the first speed
+};
+
+struct CampbellResult {
+  std::vector<Real> speeds;  ///< speeds solved [rad/s] (fewer than asked if a solve failed)
+  std::vector<TrackedMode> modes;
+  std::vector<CriticalSpeed> critical_speeds;  ///< sorted by speed
+  std::optional<StabilityThreshold> stability_threshold;
+  SolverInfo info;  ///< method used; converged = false if a solve failed (results so far kept)
+  Index n_solves = 0;  ///< eigen solves, grid and refinement
+};
+
+/// Runs the sweep. Modes are matched from speed to speed by the complex MAC of their
+/// shapes with a predicted eigenvalue (linear extrapolation) as second criterion, by
+/// optimal assignment; critical speeds and the threshold are bracketed on the grid and
+/// refined by Brent's method with a fresh eigen solve at each trial speed.
+CampbellResult run_campbell(const Model& model, const CampbellOptions& options);
+
+/// Complex modal assurance criterion |aᴴb|²/(|a|²|b|²).
+Real mac(const ComplexVector& a, const ComplexVector& b);
+
+}  // namespace feran

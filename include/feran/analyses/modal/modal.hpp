@@ -1,0 +1,112 @@
+#pragma once
+/// @file
+/// Modal analysis at one speed: complex eigenvalues and mode shapes of
+/// M q'' + (C + C_i + Ω G) q' + (K + Ω K_i) q = 0.
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <feran/assembly/assembler.hpp>
+#include <feran/core/types.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// How a mode's nodes whirl in the y–z plane (spin is about +x).
+enum class Whirl {
+  forward,   ///< every node's orbit turns with the spin
+  backward,  ///< every node's orbit turns against the spin
+  mixed,     ///< some nodes turn forward, others backward
+  planar,    ///< straight-line orbits (e.g. anisotropic supports at rest)
+  none       ///< no lateral motion (axial or torsional mode)
+};
+
+/// Dominant motion of a mode, by kinetic-energy fraction.
+enum class ModeType { lateral, axial, torsional, coupled };
+
+const char* to_string(Whirl w);
+const char* to_string(ModeType t);
+
+/// One eigenpair, represented by the eigenvalue with Im p ≥ 0.
+struct Mode {
+  Complex eigenvalue;       ///< p = −δ + iω [1/s]
+  Real frequency_hz = 0;    ///< damped natural frequency ω/2π [Hz]
+  Real damping_ratio = 0;   ///< D = −Re p/|p| (negative: unstable)
+  /// Logarithmic decrement 2π·δ/ω; NaN for a non-oscillatory mode.
+  Real log_decrement = std::numeric_limits<Real>::quiet_NaN();
+  Whirl whirl = Whirl::none;
+  /// Amplitude-weighted directivity Σ(r_f² − r_b²)/Σ(r_f² + r_b²): +1 forward circles,
+  /// 0 straight lines, −1 backward circles (r_f, r_b: forward and backward circular
+  /// components of each node's orbit).
+  Real directivity = 0;
+  ModeType type = ModeType::lateral;
+  bool rigid_body = false;   ///< no elastic deformation (strain energy ≈ 0)
+  bool oscillatory = true;   ///< Im p > 0; false for real (overdamped or rigid) eigenvalues
+  /// Shape over all unconstrained DOFs (global_dof order), scaled so that its largest
+  /// component is 1 (real). Empty when shapes were not requested.
+  ComplexVector shape;
+  /// Shape in reduced coordinates, unit 2-norm (for correlating modes).
+  ComplexVector reduced_shape;
+};
+
+/// Which eigen solver to use.
+enum class EigenSolver {
+  automatic,  ///< dense for small models, shift-invert for large ones
+  dense,      ///< all modes: Hessenberg-QR of the state matrix (LAPACK dgeev)
+  sparse      ///< lowest modes: shift-invert Arnoldi (Spectra) on a sparse LU
+};
+
+/// Convergence record of a solve (never an exception: callers decide).
+struct SolverInfo {
+  std::string method;    ///< "dense-qr" or "shift-invert-arnoldi"
+  bool converged = true;
+  Index n_converged = 0; ///< eigenvalues converged (sparse) or computed (dense)
+  Index iterations = 0;  ///< restarts of the Arnoldi iteration (sparse)
+  std::string message;   ///< why it did not converge, when it did not
+};
+
+struct ModalOptions {
+  /// Number of oscillatory modes wanted (lowest frequencies). 0: all (dense) or 12 (sparse).
+  Index n_modes = 0;
+  EigenSolver solver = EigenSolver::automatic;
+  /// Reduced DOF count up to which automatic selects the dense solver.
+  Index dense_limit = 400;
+  /// Real shift σ [rad/s] for shift-invert; NaN: automatic (slightly below zero).
+  Real shift = std::numeric_limits<Real>::quiet_NaN();
+  /// Compute full mode shapes (Mode::shape).
+  bool shapes = true;
+};
+
+/// The modes of a model at one speed, sorted by increasing |p| with rigid-body modes first.
+struct ModalResult {
+  Real speed = 0;  ///< [rad/s]
+  std::vector<Mode> modes;
+  SolverInfo info;
+};
+
+/// Modal solver for one model: assembles the speed-independent matrices once and
+/// solves at any number of speeds.
+class ModalSolver {
+ public:
+  explicit ModalSolver(const Model& model, ModalOptions options = {});
+  /// Modes at speed @p speed [rad/s].
+  ModalResult solve(Real speed) const;
+  const ModalOptions& options() const { return options_; }
+  const Assembler& assembler() const { return assembler_; }
+  const Model& model() const { return model_; }
+  /// The solver the automatic choice resolves to for this model.
+  EigenSolver resolved_solver() const;
+
+ private:
+  Model model_;
+  ModalOptions options_;
+  Assembler assembler_;
+  Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
+};
+
+/// Convenience: modes of @p model at speed @p speed [rad/s].
+ModalResult run_modal(const Model& model, Real speed, const ModalOptions& options = {});
+
+}  // namespace feran

@@ -1,0 +1,244 @@
+#include <feran/analyses/modal/campbell.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <feran/core/assignment.hpp>
+#include <feran/core/root_finding.hpp>
+
+namespace feran {
+
+Real mac(const ComplexVector& a, const ComplexVector& b) {
+  const Real na = a.squaredNorm(), nb = b.squaredNorm();
+  if (na == 0.0 || nb == 0.0) return 0.0;
+  return std::norm(a.dot(b)) / (na * nb);
+}
+
+namespace {
+
+constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+
+// The modes a Campbell diagram follows: oscillatory ones (a rigid-body mode at p = 0
+// has no frequency line to follow), lowest frequency first.
+std::vector<Mode> oscillatory_modes(ModalResult&& r, std::size_t count) {
+  std::vector<Mode> out;
+  for (Mode& m : r.modes)
+    if (m.oscillatory) out.push_back(std::move(m));
+  if (out.size() > count) {
+    // Keep a repeated pair whole (isotropic rotors at rest).
+    std::size_t n = count;
+    while (n < out.size() &&
+           std::abs(out[n].eigenvalue - out[n - 1].eigenvalue) <= 1e-7 * std::abs(out[n].eigenvalue))
+      ++n;
+    out.resize(n);
+  }
+  return out;
+}
+
+// Where a tracked mode was at the last speed(s): the basis of the prediction.
+struct Track {
+  Real speed_last = 0, speed_prev = 0;
+  Complex p_last, p_prev;
+  bool has_prev = false;
+  ComplexVector shape;
+};
+
+Complex predict(const Track& t, Real speed) {
+  if (!t.has_prev || t.speed_last == t.speed_prev) return t.p_last;
+  return t.p_last + (t.p_last - t.p_prev) * ((speed - t.speed_last) / (t.speed_last - t.speed_prev));
+}
+
+// Matching cost: shape dissimilarity (1 − MAC) plus the relative distance of the
+// eigenvalue from its prediction.
+Real cost(const Track& t, Real speed, const Mode& c) {
+  const Complex pred = predict(t, speed);
+  const Real scale = std::max({std::abs(pred), std::abs(c.eigenvalue), 1e-12});
+  return (1.0 - mac(t.shape, c.reduced_shape)) + std::abs(pred - c.eigenvalue) / scale;
+}
+
+bool lateral_family(ModeType t) { return t == ModeType::lateral || t == ModeType::coupled; }
+
+}  // namespace
+
+CampbellResult run_campbell(const Model& model, const CampbellOptions& options) {
+  CampbellResult result;
+  ModalOptions mo = options.modal;
+  mo.shapes = false;
+  const std::size_t n_track = static_cast<std::size_t>(std::max<Index>(options.n_modes, 1));
+  const std::size_t n_cand = n_track + std::max<std::size_t>(4, n_track / 2);
+  mo.n_modes = 0;
+  ModalSolver solver(model, mo);
+  if (solver.resolved_solver() == EigenSolver::sparse) {
+    mo.n_modes = static_cast<Index>(n_cand) + 4;
+    solver = ModalSolver(model, mo);
+  }
+  auto solve = [&](Real speed) {
+    ++result.n_solves;
+    return solver.solve(speed);
+  };
+
+  std::vector<Track> tracks;
+  auto record = [&](TrackedMode& tm, const Mode* m, Real corr) {
+    tm.frequency_hz.push_back(m ? m->frequency_hz : nan);
+    tm.damping_ratio.push_back(m ? m->damping_ratio : nan);
+    tm.log_decrement.push_back(m ? m->log_decrement : nan);
+    tm.directivity.push_back(m ? m->directivity : nan);
+    tm.whirl_at.push_back(m ? m->whirl : Whirl::none);
+    tm.correlation.push_back(corr);
+  };
+
+  // The candidate at a trial speed between grid speeds a and b that continues track
+  // @p j, whose states at a and b are @p ta and @p tb.
+  auto match_between = [&](const Track& ta, const Track& tb, Real speed) -> std::optional<Mode> {
+    ModalResult r = solve(speed);
+    if (!r.info.converged) return std::nullopt;
+    std::vector<Mode> cands = oscillatory_modes(std::move(r), n_cand);
+    Track interp = ta;
+    interp.p_prev = ta.p_last;
+    interp.speed_prev = ta.speed_last;
+    interp.p_last = tb.p_last;
+    interp.speed_last = tb.speed_last;
+    interp.has_prev = true;
+    Real best = std::numeric_limits<Real>::infinity();
+    std::optional<Mode> out;
+    for (Mode& c : cands) {
+      Track ref = interp;
+      ref.shape = std::abs(speed - ta.speed_last) < std::abs(speed - tb.speed_last) ? ta.shape : tb.shape;
+      const Real value = cost(ref, speed, c);
+      if (value < best) best = value, out = std::move(c);
+    }
+    return out;
+  };
+
+  std::vector<StabilityThreshold> thresholds;
+  for (std::size_t i = 0; i < options.speeds.size(); ++i) {
+    const Real speed = options.speeds[i];
+    ModalResult r = solve(speed);
+    if (result.info.method.empty()) result.info = r.info;
+    if (!r.info.converged) {
+      result.info = r.info;
+      result.info.message = "eigen solve failed at " + std::to_string(rad_to_hz(speed)) +
+                            " Hz: " + r.info.message;
+      break;
+    }
+    std::vector<Mode> cands = oscillatory_modes(std::move(r), i == 0 ? n_track : n_cand);
+    result.speeds.push_back(speed);
+
+    if (i == 0) {
+      for (Mode& m : cands) {
+        TrackedMode tm;
+        tm.type = m.type;
+        record(tm, &m, 1.0);
+        result.modes.push_back(std::move(tm));
+        Track t;
+        t.speed_last = speed;
+        t.p_last = m.eigenvalue;
+        t.shape = std::move(m.reduced_shape);
+        tracks.push_back(std::move(t));
+      }
+      for (std::size_t j = 0; j < tracks.size(); ++j)
+        if (result.modes[j].damping_ratio[0] < -options.damping_tolerance)
+          thresholds.push_back({speed, static_cast<Index>(j), result.modes[j].frequency_hz[0], true});
+      continue;
+    }
+
+    // Optimal assignment of tracked modes to candidates (padding when short).
+    const auto n_rows = static_cast<Index>(tracks.size());
+    const Index n_cols = std::max<Index>(n_rows, static_cast<Index>(cands.size()));
+    Matrix c = Matrix::Constant(n_rows, n_cols, 1e6);
+    for (Index a = 0; a < n_rows; ++a)
+      for (Index b = 0; b < static_cast<Index>(cands.size()); ++b)
+        c(a, b) = cost(tracks[static_cast<std::size_t>(a)], speed, cands[static_cast<std::size_t>(b)]);
+    const std::vector<Index> assigned = optimal_assignment(c);
+
+    for (std::size_t j = 0; j < tracks.size(); ++j) {
+      const Index col = assigned[j];
+      TrackedMode& tm = result.modes[j];
+      if (col < 0 || col >= static_cast<Index>(cands.size())) {
+        record(tm, nullptr, nan);
+        continue;
+      }
+      Mode& m = cands[static_cast<std::size_t>(col)];
+      Track before = tracks[j];
+      record(tm, &m, mac(before.shape, m.reduced_shape));
+      Track& t = tracks[j];
+      t.p_prev = t.p_last;
+      t.speed_prev = t.speed_last;
+      t.has_prev = true;
+      t.p_last = m.eigenvalue;
+      t.speed_last = speed;
+      t.shape = std::move(m.reduced_shape);
+      if (std::isnan(tm.frequency_hz[i - 1])) continue;
+
+      // Critical speeds: sign changes of f − k·Ω/2π on this interval.
+      const Real s0 = options.speeds[i - 1];
+      if (lateral_family(tm.type))
+        for (int k : options.orders) {
+          const Real g0 = tm.frequency_hz[i - 1] - k * rad_to_hz(s0);
+          const Real g1 = tm.frequency_hz[i] - k * rad_to_hz(speed);
+          if (!((g0 > 0 && g1 <= 0) || (g0 < 0 && g1 >= 0))) continue;
+          Whirl w = tm.whirl_at[i];
+          auto f = [&](Real s) {
+            const std::optional<Mode> mm = match_between(before, t, s);
+            if (!mm) return nan;
+            w = mm->whirl;
+            return mm->frequency_hz - k * rad_to_hz(s);
+          };
+          const RootResult root = brent_root(f, s0, speed, g0, g1, options.speed_tolerance);
+          const Real s = std::isnan(root.fx) ? s0 + (speed - s0) * g0 / (g0 - g1) : root.x;
+          result.critical_speeds.push_back({s, k * rad_to_hz(s), static_cast<Index>(j), k, w});
+        }
+
+      // Stability: the damping ratio drops below −tolerance on this interval.
+      const Real d0 = tm.damping_ratio[i - 1] + options.damping_tolerance;
+      const Real d1 = tm.damping_ratio[i] + options.damping_tolerance;
+      if (d0 >= 0 && d1 < 0) {
+        Real freq = tm.frequency_hz[i];
+        auto f = [&](Real s) {
+          const std::optional<Mode> mm = match_between(before, t, s);
+          if (!mm) return nan;
+          freq = mm->frequency_hz;
+          return mm->damping_ratio + options.damping_tolerance;
+        };
+        const RootResult root = brent_root(f, s0, speed, d0, d1, options.speed_tolerance);
+        const Real s = std::isnan(root.fx) ? s0 + (speed - s0) * d0 / (d0 - d1) : root.x;
+        thresholds.push_back({s, static_cast<Index>(j), freq, false});
+      }
+    }
+  }
+
+  std::sort(result.critical_speeds.begin(), result.critical_speeds.end(),
+            [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
+  if (!thresholds.empty())
+    result.stability_threshold = *std::min_element(
+        thresholds.begin(), thresholds.end(),
+        [](const StabilityThreshold& a, const StabilityThreshold& b) { return a.speed < b.speed; });
+
+  // Labels: the whirl a mode shows at most speeds, numbered by frequency at the
+  // first speed within each family.
+  std::map<std::string, int> counters;
+  for (TrackedMode& tm : result.modes) {
+    int forward = 0, backward = 0, mixed = 0;
+    for (Whirl w : tm.whirl_at) {
+      forward += w == Whirl::forward;
+      backward += w == Whirl::backward;
+      mixed += w == Whirl::mixed;
+    }
+    tm.whirl = forward == 0 && backward == 0 && mixed == 0 ? Whirl::planar
+               : forward >= backward && forward >= mixed   ? Whirl::forward
+               : backward >= mixed                         ? Whirl::backward
+                                                           : Whirl::mixed;
+    std::string family;
+    switch (tm.type) {
+      case ModeType::axial: family = "axial"; tm.whirl = Whirl::none; break;
+      case ModeType::torsional: family = "torsional"; tm.whirl = Whirl::none; break;
+      default: family = to_string(tm.whirl);
+    }
+    tm.label = family + " " + std::to_string(++counters[family]);
+  }
+  return result;
+}
+
+}  // namespace feran

@@ -1,0 +1,88 @@
+#include <feran/analyses/modal/whirl.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace feran {
+
+namespace {
+
+// The pair (V, W) of node @p node: translations, or the tilt vector (rz, −ry).
+std::pair<Complex, Complex> orbit_pair(const ComplexVector& s, Index node, bool tilt) {
+  if (tilt) return {s(global_dof(node, Dof::rz)), -s(global_dof(node, Dof::ry))};
+  return {s(global_dof(node, Dof::v)), s(global_dof(node, Dof::w))};
+}
+
+bool translations_vanish(const ComplexVector& s) {
+  Real trans = 0, tilt = 0;
+  for (Index node = 0; node < s.size() / dofs_per_node; ++node) {
+    trans = std::max({trans, std::abs(s(global_dof(node, Dof::v))), std::abs(s(global_dof(node, Dof::w)))});
+    tilt = std::max({tilt, std::abs(s(global_dof(node, Dof::ry))), std::abs(s(global_dof(node, Dof::rz)))});
+  }
+  return trans <= 1e-9 * tilt;
+}
+
+}  // namespace
+
+WhirlResult classify_whirl(const ComplexVector& shape) {
+  const Index n_nodes = shape.size() / dofs_per_node;
+  const bool tilt = translations_vanish(shape);
+  std::vector<Real> rf(static_cast<std::size_t>(n_nodes)), rb(static_cast<std::size_t>(n_nodes));
+  Real peak = 0.0;
+  for (Index node = 0; node < n_nodes; ++node) {
+    const auto [V, W] = orbit_pair(shape, node, tilt);
+    rf[static_cast<std::size_t>(node)] = std::abs(V + Complex(0, 1) * W) / 2.0;
+    rb[static_cast<std::size_t>(node)] = std::abs(V - Complex(0, 1) * W) / 2.0;
+    peak = std::max(peak, rf[static_cast<std::size_t>(node)] + rb[static_cast<std::size_t>(node)]);
+  }
+  WhirlResult out;
+  if (peak == 0.0) return out;  // no lateral motion
+
+  bool any_forward = false, any_backward = false;
+  Real num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < rf.size(); ++i) {
+    num += rf[i] * rf[i] - rb[i] * rb[i];
+    den += rf[i] * rf[i] + rb[i] * rb[i];
+    const Real size = rf[i] + rb[i];
+    if (size < 0.05 * peak) continue;
+    const Real d = (rf[i] - rb[i]) / size;
+    any_forward = any_forward || d > 0.05;
+    any_backward = any_backward || d < -0.05;
+  }
+  out.directivity = num / den;
+  out.whirl = any_forward && any_backward ? Whirl::mixed
+              : any_forward               ? Whirl::forward
+              : any_backward              ? Whirl::backward
+                                          : Whirl::planar;
+  return out;
+}
+
+ComplexMatrix whirl_form(const ComplexMatrix& shapes) {
+  const Index m = shapes.cols();
+  const bool tilt = m > 0 && translations_vanish(shapes.col(0));
+  ComplexMatrix h = ComplexMatrix::Zero(m, m);
+  for (Index node = 0; node < shapes.rows() / dofs_per_node; ++node)
+    for (Index a = 0; a < m; ++a)
+      for (Index b = 0; b < m; ++b) {
+        const auto [Va, Wa] = orbit_pair(shapes.col(a), node, tilt);
+        const auto [Vb, Wb] = orbit_pair(shapes.col(b), node, tilt);
+        h(a, b) += Complex(0, 0.5) * (std::conj(Va) * Wb - std::conj(Wa) * Vb);
+      }
+  return h;
+}
+
+ComplexMatrix lateral_form(const ComplexMatrix& shapes) {
+  const Index m = shapes.cols();
+  const bool tilt = m > 0 && translations_vanish(shapes.col(0));
+  ComplexMatrix h = ComplexMatrix::Zero(m, m);
+  for (Index node = 0; node < shapes.rows() / dofs_per_node; ++node)
+    for (Index a = 0; a < m; ++a)
+      for (Index b = 0; b < m; ++b) {
+        const auto [Va, Wa] = orbit_pair(shapes.col(a), node, tilt);
+        const auto [Vb, Wb] = orbit_pair(shapes.col(b), node, tilt);
+        h(a, b) += std::conj(Va) * Vb + std::conj(Wa) * Wb;
+      }
+  return h;
+}
+
+}  // namespace feran

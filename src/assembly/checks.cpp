@@ -1,0 +1,203 @@
+#include <feran/assembly/checks.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#include <Eigen/SparseCholesky>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+namespace {
+
+// Which family a local DOF belongs to: 0 axial, 1 torsion, 2 x–y plane, 3 x–z plane.
+int family_of(Index full_dof) {
+  switch (static_cast<Dof>(full_dof % dofs_per_node)) {
+    case Dof::u: return 0;
+    case Dof::rx: return 1;
+    case Dof::v:
+    case Dof::rz: return 2;
+    case Dof::w:
+    case Dof::ry: return 3;
+  }
+  return 0;
+}
+
+std::string node_list(const Model& model, const std::vector<Index>& nodes) {
+  if (nodes.size() == static_cast<std::size_t>(model.n_nodes())) return "all nodes";
+  std::vector<std::string> labels;
+  for (Index n : nodes) labels.push_back(model.node_label(n));
+  if (labels.size() > 8) {
+    labels.resize(8);
+    labels.emplace_back("…");
+  }
+  return fmt::format("node{} {}", nodes.size() > 1 ? "s" : "", fmt::join(labels, ", "));
+}
+
+// Nodes whose DOFs of @p family move in the full-coordinate vector @p q.
+std::vector<Index> moving_nodes(const Vector& q, int family) {
+  Real peak = 0.0;
+  for (Index i = 0; i < q.size(); ++i)
+    if (family_of(i) == family) peak = std::max(peak, std::abs(q(i)));
+  std::vector<Index> nodes;
+  for (Index i = 0; i < q.size(); ++i)
+    if (family_of(i) == family && std::abs(q(i)) > 1e-6 * peak) {
+      const Index node = i / dofs_per_node;
+      if (nodes.empty() || nodes.back() != node) nodes.push_back(node);
+    }
+  return nodes;
+}
+
+// Describes one lateral rigid motion in a bending plane from its nodal values.
+std::string describe_plane_motion(const Model& model, const Vector& q, int family) {
+  const Dof d = family == 2 ? Dof::v : Dof::w;
+  const char* axis = family == 2 ? "y" : "z";
+  const char* about = family == 2 ? "z" : "y";
+  // Least-squares fit of the transverse displacement: q = a + b·x.
+  Real sx = 0, sq = 0, sxx = 0, sxq = 0, n = 0;
+  for (Index node = 0; node < model.n_nodes(); ++node) {
+    const Real x = model.nodes[static_cast<std::size_t>(node)].x;
+    const Real value = q(global_dof(node, d));
+    sx += x, sq += value, sxx += x * x, sxq += x * value, n += 1;
+  }
+  const Real det = n * sxx - sx * sx;
+  const Real b = det > 0 ? (n * sxq - sx * sq) / det : 0.0;
+  const Real a = (sq - b * sx) / n;
+  const Real span = det > 0 ? std::sqrt(det) / n : 1.0;
+  if (std::abs(b) * span < 1e-6 * std::abs(a))
+    return fmt::format("translation along {}", axis);
+  return fmt::format("rotation about the {} axis through x = {:.4g} m", about, -a / b);
+}
+
+}  // namespace
+
+std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler) {
+  const SystemMatrices sys = assembler.at(0.0);
+  const Index n = sys.K.rows();
+  if (n == 0) return {};
+  const SparseMatrix K = 0.5 * (sys.K + SparseMatrix(sys.K.transpose()));
+  const SparseMatrix& M = sys.M;
+
+  Real lambda_max = 0.0;
+  for (Index i = 0; i < n; ++i)
+    if (M.coeff(i, i) > 0) lambda_max = std::max(lambda_max, K.coeff(i, i) / M.coeff(i, i));
+  if (lambda_max <= 0.0) lambda_max = 1.0;
+  // Shift μ: rigid motions (λ = 0) are amplified by 1/μ, elastic ones by at most
+  // 1/(λ₁ + μ), so a few inverse iterations isolate the null space.
+  const Real mu = 1e-8 * lambda_max;
+  // A motion is rigid when its Rayleigh quotient is below this: 1e-12·λ_max, i.e.
+  // a natural frequency 10⁻⁶ times the highest one, far above round-off (~1e-16·λ_max).
+  const Real rigid_tol = 1e-12 * lambda_max;
+
+  Eigen::SimplicialLDLT<SparseMatrix> shifted(K + mu * M);
+  if (shifted.info() != Eigen::Success)
+    throw ModelStructureError("the stiffness matrix could not be factorised (is it indefinite?)");
+
+  Matrix null_space;
+  for (Index p = std::min<Index>(n, 12);; p = std::min<Index>(n, 2 * p)) {
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<Real> dist(-1.0, 1.0);
+    Matrix X(n, p);
+    for (Index j = 0; j < p; ++j)
+      for (Index i = 0; i < n; ++i) X(i, j) = dist(rng);
+    for (int it = 0; it < 6; ++it) {
+      X = shifted.solve(M * X);
+      X = Eigen::HouseholderQR<Matrix>(X).householderQ() * Matrix::Identity(n, p);
+    }
+    const Matrix kr = X.transpose() * (K * X);
+    const Matrix mr = X.transpose() * (M * X);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(0.5 * (kr + kr.transpose()),
+                                                          0.5 * (mr + mr.transpose()));
+    Index n_null = 0;
+    while (n_null < p && ritz.eigenvalues()(n_null) < rigid_tol) ++n_null;
+    if (n_null < p || p == n) {
+      null_space = X * ritz.eigenvectors().leftCols(n_null);
+      break;
+    }
+  }
+
+  std::vector<FreeMotionInfo> motions;
+  if (null_space.cols() == 0) return motions;
+  const Matrix full = assembler.dof_map().transformation() * null_space;
+  for (int family = 0; family < 4; ++family) {
+    Matrix part = Matrix::Zero(full.rows(), full.cols());
+    for (Index i = 0; i < full.rows(); ++i)
+      if (family_of(i) == family) part.row(i) = full.row(i);
+    Eigen::JacobiSVD<Matrix> svd(part, Eigen::ComputeThinU);
+    const Real smax = svd.singularValues().size() ? svd.singularValues()(0) : 0.0;
+    if (smax <= 0.0) continue;
+    Index rank = 0;
+    while (rank < svd.singularValues().size() && svd.singularValues()(rank) > 1e-6 * smax) ++rank;
+    for (Index r = 0; r < rank; ++r) {
+      const Vector q = svd.matrixU().col(r);
+      FreeMotionInfo info;
+      info.nodes = moving_nodes(q, family);
+      if (family == 0) {
+        info.family = FreeMotion::axial;
+        info.description = "translation along the x axis (axial)";
+      } else if (family == 1) {
+        info.family = FreeMotion::torsion;
+        info.description = "rotation about the x axis (torsion)";
+      } else {
+        info.family = FreeMotion::lateral;
+        info.description = rank > 1 ? (family == 2 ? "translation along y and rotation about z"
+                                                   : "translation along z and rotation about y")
+                                    : describe_plane_motion(model, q, family);
+      }
+      info.description += " of " + node_list(model, info.nodes);
+      motions.push_back(std::move(info));
+      if (family >= 2 && rank > 1) break;  // one description covers the plane
+    }
+  }
+  return motions;
+}
+
+void check_model(const Model& model, const Assembler& assembler) {
+  const DofMap& dofs = assembler.dof_map();
+  const SystemMatrices sys = assembler.at(0.0);
+  for (Index i = 0; i < sys.M.rows(); ++i) {
+    if (sys.M.coeff(i, i) > 0.0) continue;
+    const Index full = dofs.full_dof(i);
+    const Index node = full / dofs_per_node;
+    throw ModelStructureError(
+        fmt::format("the mass matrix is singular: node {} has no mass in DOF {}; attach a rigid "
+                    "body or a shaft to it, or fix or link that DOF",
+                    model.node_label(node), dof_name(static_cast<Dof>(full % dofs_per_node))),
+        node);
+  }
+  Eigen::SimplicialLLT<SparseMatrix> llt(sys.M);
+  if (llt.info() != Eigen::Success)
+    throw ModelStructureError("the mass matrix is not positive definite (check the rigid-body "
+                              "inertias and densities)");
+
+  std::vector<std::string> problems;
+  std::vector<std::string> names;
+  Index first_node = -1;
+  for (const FreeMotionInfo& m : find_free_motions(model, assembler)) {
+    const auto& allowed = model.options.free_motions;
+    if (std::find(allowed.begin(), allowed.end(), m.family) != allowed.end()) continue;
+    problems.push_back(m.description);
+    const char* name = m.family == FreeMotion::axial     ? "axial"
+                       : m.family == FreeMotion::torsion ? "torsion"
+                                                         : "lateral";
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.emplace_back(name);
+    if (first_node < 0 && !m.nodes.empty()) first_node = m.nodes.front();
+  }
+  if (problems.empty()) return;
+  std::vector<std::string> quoted;
+  for (const auto& n : names) quoted.push_back(fmt::format("\"{}\"", n));
+  throw ModelStructureError(
+      fmt::format("the stiffness matrix is singular after constraints: free rigid-body motion: "
+                  "{}. Hold it with springs or fixed DOFs, or allow it with [options] "
+                  "free_motions = [{}]",
+                  fmt::join(problems, "; "), fmt::join(quoted, ", ")),
+      first_node);
+}
+
+}  // namespace feran

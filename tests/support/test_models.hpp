@@ -1,0 +1,94 @@
+#pragma once
+// Small programmatic model builders shared by the tests. Each builds a Model the
+// same way the model reader does, without going through a file.
+
+#include <optional>
+#include <string>
+
+#include <feran/elements/rigid_body.hpp>
+#include <feran/elements/rotating_damper.hpp>
+#include <feran/elements/spring_damper.hpp>
+#include <feran/elements/timoshenko_beam.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran::test {
+
+inline Index add_node(Model& m, Real x, bool rotating = true, std::string name = {}) {
+  Node n;
+  n.number = static_cast<int>(m.nodes.size()) + 1;
+  n.name = std::move(name);
+  n.x = x;
+  n.rotating = rotating;
+  m.nodes.push_back(n);
+  return m.n_nodes() - 1;
+}
+
+inline Material steel(Real E = 211e9, Real G = 81.2e9, Real rho = 7810) {
+  return Material{"steel", E, G, rho};
+}
+
+// A uniform shaft from x0 of n_el elements, nodes appended; returns the first node.
+inline Index add_shaft(Model& m, Real x0, Real length, int n_el, Real d_out, const Material& mat,
+                       Real d_in = 0.0) {
+  const Index first = add_node(m, x0);
+  Index prev = first;
+  const Real le = length / n_el;
+  BeamOptions opt{m.options.shear_deformation, m.options.gyroscopic, true, m.options.shaft_damping};
+  for (int e = 0; e < n_el; ++e) {
+    const Index next = add_node(m, x0 + le * (e + 1));
+    m.elements.emplace_back(TimoshenkoBeam(prev, next, le, CircularSection{d_out, d_in}, mat, opt));
+    prev = next;
+  }
+  return first;
+}
+
+inline void add_body(Model& m, Index node, Real mass, Real Ja, Real Jp, Real offset = 0.0,
+                     bool rotating = true) {
+  m.elements.emplace_back(RigidBody(node, RigidBodyProperties{mass, Ja, Jp, offset}, rotating));
+}
+
+inline void add_isotropic_bearing(Model& m, Index node, Real k, Real c = 0.0,
+                                  std::optional<Index> to = std::nullopt) {
+  SpringDamperCoefficients sc;
+  sc.k[static_cast<std::size_t>(Dof::v)] = k;
+  sc.k[static_cast<std::size_t>(Dof::w)] = k;
+  sc.c[static_cast<std::size_t>(Dof::v)] = c;
+  sc.c[static_cast<std::size_t>(Dof::w)] = c;
+  m.elements.emplace_back(SpringDamper(node, to, sc));
+}
+
+inline void fix(Model& m, Index node, std::initializer_list<Dof> dofs) {
+  FixedDofs f;
+  f.node = node;
+  for (Dof d : dofs) f.dofs[static_cast<std::size_t>(d)] = true;
+  m.fixed.push_back(f);
+}
+
+inline void fix_all(Model& m, Index node) {
+  fix(m, node, {Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz});
+}
+
+// Friswell, Penny, Garvey & Lees (2010), Example 5.9.1: steel shaft 1.5 m, Ø 50 mm,
+// six Timoshenko elements; disks Ø 280 × 70 mm at 0.5 m and Ø 350 × 70 mm at 1.0 m
+// (bore = shaft diameter); isotropic bearings 1 MN/m at both ends. Axial and
+// torsional motion are held at the first bearing (the book's model is lateral only).
+inline Model friswell_5_9_1(int n_el = 6) {
+  Model m;
+  const Material mat = steel();
+  m.materials.push_back(mat);
+  add_shaft(m, 0.0, 1.5, n_el, 0.05, mat);
+  auto node_at = [&](Real x) {
+    for (Index i = 0; i < m.n_nodes(); ++i)
+      if (std::abs(m.nodes[static_cast<std::size_t>(i)].x - x) < 1e-9) return i;
+    return Index{-1};
+  };
+  add_body(m, node_at(0.5), 0, 0, 0);
+  m.elements.back() = RigidBody(node_at(0.5), RigidBody::disk(7810, 0.28, 0.05, 0.07), true);
+  m.elements.emplace_back(RigidBody(node_at(1.0), RigidBody::disk(7810, 0.35, 0.05, 0.07), true));
+  add_isotropic_bearing(m, node_at(0.0), 1e6);
+  add_isotropic_bearing(m, node_at(1.5), 1e6);
+  fix(m, 0, {Dof::u, Dof::rx});
+  return m;
+}
+
+}  // namespace feran::test
