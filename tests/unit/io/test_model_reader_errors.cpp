@@ -1,0 +1,146 @@
+// Every fixture in tests/models/invalid/ must be rejected with a ModelError at the
+// line, and with a message matching the regular expression, stated in its first
+// two lines:
+//
+//   # error-line: N
+//   # error-match: <ECMAScript regex, searched in ModelError::message()>
+
+#include <feran/io/model_reader.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace feran {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct InvalidFixture {
+  std::string name;  ///< file stem, also the test's name
+  std::string path;
+};
+
+// Names the fixture in gtest's output instead of dumping its bytes.
+void PrintTo(const InvalidFixture& fixture, std::ostream* os) { *os << fixture.path; }
+
+std::vector<InvalidFixture> invalid_fixtures() {
+  std::vector<InvalidFixture> out;
+  for (const auto& entry : fs::directory_iterator(fs::path(FERAN_TEST_MODELS) / "invalid"))
+    if (entry.path().extension() == ".toml")
+      out.push_back({entry.path().stem().string(), entry.path().string()});
+  std::sort(out.begin(), out.end(),
+            [](const InvalidFixture& a, const InvalidFixture& b) { return a.name < b.name; });
+  return out;
+}
+
+struct Expectation {
+  int line = 0;
+  std::string pattern;
+};
+
+Expectation read_expectation(const std::string& path) {
+  std::ifstream in(path);
+  std::string first, second;
+  std::getline(in, first);
+  std::getline(in, second);
+  const std::string line_tag = "# error-line: ", match_tag = "# error-match: ";
+  Expectation e;
+  if (first.rfind(line_tag, 0) == 0) e.line = std::stoi(first.substr(line_tag.size()));
+  if (second.rfind(match_tag, 0) == 0) e.pattern = second.substr(match_tag.size());
+  return e;
+}
+
+class InvalidModel : public ::testing::TestWithParam<InvalidFixture> {};
+
+TEST_P(InvalidModel, IsRejectedAtTheStatedLineWithTheStatedMessage) {
+  const InvalidFixture& fixture = GetParam();
+  const Expectation expected = read_expectation(fixture.path);
+  ASSERT_GT(expected.line, 0) << fixture.path << ": first line must be '# error-line: N'";
+  ASSERT_FALSE(expected.pattern.empty())
+      << fixture.path << ": second line must be '# error-match: <regex>'";
+  const std::regex pattern(expected.pattern, std::regex::ECMAScript);
+
+  try {
+    (void)read_model_file(fixture.path);
+    FAIL() << fixture.path << " was accepted";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.where().file, fixture.path);
+    EXPECT_EQ(e.where().line, expected.line) << e.what();
+    EXPECT_GE(e.where().column, 1) << e.what();
+    EXPECT_TRUE(std::regex_search(e.message(), pattern))
+        << "message: " << e.message() << "\npattern: " << expected.pattern;
+    // what() is "file:line:column: message", the form compilers use.
+    EXPECT_EQ(std::string(e.what()), fixture.path + ":" + std::to_string(e.where().line) + ":" +
+                                         std::to_string(e.where().column) + ": " + e.message());
+  }
+}
+
+std::string fixture_test_name(const ::testing::TestParamInfo<InvalidFixture>& param_info) {
+  std::string name = param_info.param.name;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, InvalidModel, ::testing::ValuesIn(invalid_fixtures()),
+                         fixture_test_name);
+
+// The error classes the reader promises to report; each must keep a fixture.
+TEST(InvalidModelFixtures, CoverEveryErrorClass) {
+  const std::vector<std::string> required = {
+      "syntax_error",         "unknown_key",      "missing_key",
+      "wrong_type",           "wrong_unit",       "negative_length",
+      "inner_not_smaller",    "unknown_node",     "unknown_material",
+      "duplicate_node_name",  "bad_coefficient_law", "zero_mass",
+      "singular_stiffness",   "conflicting_rigid_body"};
+  std::vector<std::string> present;
+  for (const InvalidFixture& f : invalid_fixtures()) present.push_back(f.name);
+  for (const std::string& name : required)
+    EXPECT_NE(std::find(present.begin(), present.end(), name), present.end())
+        << "missing fixture tests/models/invalid/" << name << ".toml";
+}
+
+TEST(ModelReaderErrors, MissingFileIsAnErrorButNotAModelError) {
+  const std::string path = std::string(FERAN_TEST_MODELS) + "/no/such/file.toml";
+  try {
+    (void)read_model_file(path);
+    FAIL() << "expected an error";
+  } catch (const ModelError&) {
+    FAIL() << "a missing file has no line to point at";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+}
+
+TEST(ModelReaderErrors, StringInputIsNamedInMessages) {
+  try {
+    (void)read_model_string("title = 3\n", "inline.toml");
+    FAIL() << "expected a ModelError";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.where().file, "inline.toml");
+    EXPECT_EQ(e.where().line, 1);
+    EXPECT_EQ(e.where().column, 9);  // the value, after "title = "
+    EXPECT_EQ(e.message(), "'title' must be a string, got an integer (3)");
+  }
+}
+
+TEST(ModelReaderErrors, SyntaxErrorKeepsTomlPosition) {
+  try {
+    (void)read_model_string("title = \"x\"\n[options\n", "broken.toml");
+    FAIL() << "expected a ModelError";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.where().line, 2);
+    EXPECT_NE(e.message().find("TOML syntax error"), std::string::npos) << e.message();
+  }
+}
+
+}  // namespace
+}  // namespace feran
