@@ -49,7 +49,7 @@ const std::vector<KindDef>& kinds() {
       {Quantity::speed, "a speed", "speed", "188.5", "30 Hz",
        {{"rad/s"}, {"Hz", 2.0 * pi}, {"rpm", 2.0 * pi, 60.0}}},
       {Quantity::frequency, "a frequency", "frequency", "3.98", "3.98 Hz", {{"Hz"}}},
-      {Quantity::angle, "an angle", "angle", "0.5", "30 deg", {{"rad"}, {"deg", pi, 180.0}}},
+      {Quantity::angle, "an angle", "angle", "0.5236", "30 deg", {{"rad"}, {"deg", pi, 180.0}}},
       {Quantity::force, "a force", "force", "5.2", "5.2 N", {{"N"}, {"kN", 1e3}}},
       {Quantity::moment, "a moment", "moment", "0.1", "0.1 N*m", {{"N*m"}, {"Nm"}}},
       {Quantity::time, "a time", "time", "0.001", "1 ms", {{"s"}, {"ms", 1.0, 1e3}}},
