@@ -1,1 +1,45 @@
-int main() { return 0; }
+// feran: finite-element rotor dynamics from the command line.
+#include <cstdio>
+#include <exception>
+#include <map>
+
+#include <CLI/CLI.hpp>
+
+#include <feran/core/error.hpp>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "feran: finite-element rotor dynamics.\n"
+      "Reads a rotor model (TOML, docs/model-format.md) and computes natural frequencies,\n"
+      "Campbell diagrams, critical speeds and stability thresholds.",
+      "feran"};
+  app.footer(
+      "Examples:\n"
+      "  feran modal examples/01_internal_damping/model.toml --speed 30Hz\n"
+      "  feran campbell examples/01_internal_damping/model.toml --stop 80Hz --points 161 --json c.json\n\n"
+      "Run 'feran <command> --help' for a command's options.");
+  app.set_version_flag("--version", "feran " FERAN_VERSION);
+  app.require_subcommand(1);
+
+  std::map<std::string, feran::app::Runner> runners;
+  runners["modal"] = feran::app::add_modal_command(app);
+  runners["campbell"] = feran::app::add_campbell_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    for (const CLI::App* sub : app.get_subcommands()) return runners.at(sub->get_name())();
+  } catch (const feran::Error& e) {
+    std::fprintf(stderr, "feran: error: %s\n", e.what());
+    return feran::app::input_error;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "feran: internal error: %s\n", e.what());
+    return 4;
+  }
+  return 0;
+}

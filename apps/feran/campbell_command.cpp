@@ -1,0 +1,84 @@
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/modal/campbell.hpp>
+#include <feran/core/error.hpp>
+#include <feran/io/model_reader.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+
+#include "commands.hpp"
+
+namespace feran::app {
+
+EigenSolver parse_solver_name(const std::string& name);
+
+namespace {
+struct CampbellArgs {
+  std::string model;
+  std::string start, stop;
+  int points = 0;
+  int modes = 0;
+  std::vector<int> orders;
+  std::string solver = "auto";
+  OutputOptions out;
+};
+}  // namespace
+
+Runner add_campbell_command(CLI::App& app) {
+  auto args = std::make_shared<CampbellArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "campbell", "Campbell diagram: tracked modes over a speed range, critical speeds, stability threshold");
+  cmd->footer(
+      "Example:\n  feran campbell examples/01_internal_damping/model.toml --start 0Hz --stop 80Hz "
+      "--points 161 \\\n      --orders 1 --json campbell.json --csv campbell.csv\n\n"
+      "Unset options take their values from the model file's [campbell] table, else\n"
+      "start 0, 101 points, 8 modes, order 1; --stop is required if the file has none.");
+  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  cmd->add_option("--start", args->start, "First speed with unit: 0Hz, 0rpm, 0rad/s");
+  cmd->add_option("--stop", args->stop, "Last speed with unit: 80Hz, 4800rpm, 502.7rad/s");
+  cmd->add_option("-p,--points", args->points, "Number of evenly spaced speeds (>= 2)")
+      ->check(CLI::Range(2, 1000000));
+  cmd->add_option("-n,--modes", args->modes, "Number of modes to track (the lowest at the first speed)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("-k,--orders", args->orders, "Harmonic orders k of the excitation lines f = k x speed, e.g. 1,2")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--solver", args->solver, "Eigen solver: auto, dense or sparse (see 'feran modal --help')")
+      ->check(CLI::IsMember({"auto", "dense", "sparse"}));
+  add_output_options(*cmd, args->out);
+
+  return [args]() {
+    const ModelFile file = read_model_file(args->model);
+    const Real start = args->start.empty() ? file.campbell.start.value_or(0.0)
+                                           : parse_speed_option(args->start, "--start");
+    if (args->stop.empty() && !file.campbell.stop)
+      throw Error("campbell: give the last speed with --stop (e.g. --stop 80Hz) or in the model's [campbell] table");
+    const Real stop = args->stop.empty() ? *file.campbell.stop : parse_speed_option(args->stop, "--stop");
+    if (!(stop > start)) throw Error("campbell: the last speed must be above the first");
+    const int points = args->points > 0 ? args->points : file.campbell.points.value_or(101);
+
+    CampbellOptions options;
+    for (int i = 0; i < points; ++i) options.speeds.push_back(start + (stop - start) * i / (points - 1));
+    options.n_modes = args->modes > 0 ? args->modes : file.campbell.modes.value_or(8);
+    options.orders = !args->orders.empty() ? args->orders
+                     : !file.campbell.orders.empty() ? file.campbell.orders
+                                                     : std::vector<int>{1};
+    options.modal.solver = parse_solver_name(args->solver);
+
+    const CampbellResult result = run_campbell(file.model, options);
+    const ResultSource source{file.path, file.title};
+    write_if_asked(args->out.json_path, campbell_json(result, options, source));
+    write_if_asked(args->out.csv_path, campbell_csv(result));
+    if (!args->out.quiet) std::fputs(campbell_report(result, options, file.model, source).c_str(), stdout);
+    if (!result.info.converged) {
+      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
+      return static_cast<int>(numerical_failure);
+    }
+    return static_cast<int>(ok);
+  };
+}
+
+}  // namespace feran::app

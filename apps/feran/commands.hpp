@@ -1,0 +1,39 @@
+#pragma once
+// The sub-commands of the feran program. Each registers its options on the CLI11
+// app and returns the function that runs it.
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace feran::app {
+
+/// Exit codes shared by the sub-commands.
+enum ExitCode : int {
+  ok = 0,
+  input_error = 1,      ///< bad model file or option
+  numerical_failure = 3 ///< a solve failed; results so far were written
+};
+
+using Runner = std::function<int()>;
+
+Runner add_modal_command(CLI::App& app);
+Runner add_campbell_command(CLI::App& app);
+
+/// Options every analysis shares.
+struct OutputOptions {
+  std::string json_path;
+  std::string csv_path;
+  bool quiet = false;
+};
+void add_output_options(CLI::App& cmd, OutputOptions& out);
+
+/// Parses a speed with its unit ("30Hz", "1800 rpm", "188.5rad/s") into rad/s;
+/// throws feran::Error naming @p option when it is not one.
+double parse_speed_option(const std::string& text, const std::string& option);
+
+/// Writes @p text to @p path (atomically) when the path is not empty.
+void write_if_asked(const std::string& path, const std::string& text);
+
+}  // namespace feran::app

@@ -1,0 +1,32 @@
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+#include <feran/io/result_writer.hpp>
+#include <feran/io/units.hpp>
+
+#include "commands.hpp"
+
+namespace feran::app {
+
+void add_output_options(CLI::App& cmd, OutputOptions& out) {
+  cmd.add_option("--json", out.json_path, "Write the results as JSON to this file (docs/output-format.md)");
+  cmd.add_option("--csv", out.csv_path, "Write the results as CSV to this file (docs/output-format.md)");
+  cmd.add_flag("-q,--quiet", out.quiet, "Do not print the table on standard output");
+}
+
+double parse_speed_option(const std::string& text, const std::string& option) {
+  const auto q = split_quantity(text);
+  if (!q || q->unit.empty())
+    throw Error(fmt::format("{} '{}': give a speed with its unit, e.g. 30Hz, 1800rpm or 188.5rad/s",
+                            option, text));
+  const auto si = to_si(Quantity::speed, q->value, q->unit);
+  if (!si || !std::isfinite(*si))
+    throw Error(fmt::format("{} '{}': the unit must be Hz, rpm or rad/s", option, text));
+  return *si;
+}
+
+void write_if_asked(const std::string& path, const std::string& text) {
+  if (!path.empty()) write_file_atomically(path, text);
+}
+
+}  // namespace feran::app

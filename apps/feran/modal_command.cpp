@@ -1,0 +1,72 @@
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/core/error.hpp>
+#include <feran/io/model_reader.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+
+#include "commands.hpp"
+
+namespace feran::app {
+
+namespace {
+struct ModalArgs {
+  std::string model;
+  std::string speed;
+  int modes = 0;
+  std::string solver = "auto";
+  bool shapes = false;
+  OutputOptions out;
+};
+
+EigenSolver solver_from(const std::string& name) {
+  return name == "dense" ? EigenSolver::dense : name == "sparse" ? EigenSolver::sparse : EigenSolver::automatic;
+}
+}  // namespace
+
+EigenSolver parse_solver_name(const std::string& name) { return solver_from(name); }
+
+Runner add_modal_command(CLI::App& app) {
+  auto args = std::make_shared<ModalArgs>();
+  CLI::App* cmd = app.add_subcommand("modal", "Natural frequencies, damping and mode shapes at one speed");
+  cmd->footer(
+      "Example:\n  feran modal examples/01_internal_damping/model.toml --speed 30Hz --json modes.json\n\n"
+      "The speed defaults to [modal] speed in the model file, else 0. Modes are sorted by\n"
+      "frequency; rigid-body modes are marked as such.");
+  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  cmd->add_option("-s,--speed", args->speed, "Rotor speed with unit: 30Hz, 1800rpm or 188.5rad/s");
+  cmd->add_option("-n,--modes", args->modes, "Number of modes (lowest first); default: all (dense) or 12 (sparse)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--solver", args->solver,
+                  "Eigen solver: auto (dense up to 400 DOF), dense (all modes, LAPACK QR) or sparse "
+                  "(lowest modes, shift-invert Arnoldi)")
+      ->check(CLI::IsMember({"auto", "dense", "sparse"}));
+  cmd->add_flag("--shapes", args->shapes, "Include the mode shapes in the JSON output");
+  add_output_options(*cmd, args->out);
+
+  return [args]() {
+    const ModelFile file = read_model_file(args->model);
+    Real speed = file.modal.speed.value_or(0.0);
+    if (!args->speed.empty()) speed = parse_speed_option(args->speed, "--speed");
+    ModalOptions options;
+    options.solver = solver_from(args->solver);
+    options.n_modes = args->modes > 0 ? args->modes : file.modal.modes.value_or(0);
+    options.shapes = args->shapes;
+    const ModalResult result = run_modal(file.model, speed, options);
+    const ResultSource source{file.path, file.title};
+    write_if_asked(args->out.json_path, modal_json(result, file.model, source, args->shapes));
+    write_if_asked(args->out.csv_path, modal_csv(result));
+    if (!args->out.quiet) std::fputs(modal_report(result, file.model, source).c_str(), stdout);
+    if (!result.info.converged) {
+      std::fprintf(stderr, "feran: error: %s\n", result.info.message.c_str());
+      return static_cast<int>(numerical_failure);
+    }
+    return static_cast<int>(ok);
+  };
+}
+
+}  // namespace feran::app

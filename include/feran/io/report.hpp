@@ -1,0 +1,21 @@
+#pragma once
+/// @file
+/// Results for people: plain-text tables for the terminal.
+
+#include <string>
+
+#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/io/result_writer.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// Table of the modes at one speed.
+std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source);
+/// Summary of a Campbell diagram: frequencies at selected speeds, critical speeds and
+/// the stability threshold.
+std::string campbell_report(const CampbellResult& result, const CampbellOptions& options,
+                            const Model& model, const ResultSource& source);
+
+}  // namespace feran

@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// Results for programs: JSON and CSV (format in docs/output-format.md).
+
+#include <string>
+
+#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// What a result file says about where it came from.
+struct ResultSource {
+  std::string model_path;
+  std::string title;
+};
+
+/// JSON text of a modal result. With @p shapes each mode carries its shape.
+std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source,
+                       bool shapes);
+/// CSV text of a modal result: one row per mode.
+std::string modal_csv(const ModalResult& result);
+
+/// JSON text of a Campbell result.
+std::string campbell_json(const CampbellResult& result, const CampbellOptions& options,
+                          const ResultSource& source);
+/// CSV text of a Campbell result: one row per speed, frequency and damping ratio of
+/// every tracked mode.
+std::string campbell_csv(const CampbellResult& result);
+
+/// Writes @p content to @p path through a temporary file in the same directory and
+/// a rename, so that a reader never sees a half-written file. Throws feran::Error.
+void write_file_atomically(const std::string& path, const std::string& content);
+
+}  // namespace feran
