@@ -1,0 +1,672 @@
+// Tests of io/model_reader on the valid fixtures in tests/models/valid/ and on
+// small models written inline.
+//
+// Tolerances. Values written in a unit are converted by one multiplication and one
+// division (e.g. "68 mm" is 68/1000, "30 Hz" is 30·2π), the same arithmetic the
+// expectations below spell out, so they agree to rounding: EXPECT_DOUBLE_EQ (4 ulp).
+// Node positions are sums of a few such lengths, hence EXPECT_NEAR with 1e-15 m,
+// about ten ulp of the 0.1 m positions. Element matrices are compared with exact
+// equality because reader and test build the same elements from the same doubles.
+
+#include <feran/elements/rigid_body.hpp>
+#include <feran/elements/rotating_damper.hpp>
+#include <feran/elements/spring_damper.hpp>
+#include <feran/elements/timoshenko_beam.hpp>
+#include <feran/io/model_reader.hpp>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace feran {
+namespace {
+
+const std::string models = FERAN_TEST_MODELS;
+
+/// 1-based number of the first line of @p path that contains @p needle, or 0.
+int line_of(const std::string& path, const std::string& needle) {
+  std::ifstream in(path);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.find(needle) != std::string::npos) return n;
+  return 0;
+}
+
+const Element& element(const Model& m, const std::string& label) {
+  for (const Element& e : m.elements)
+    if (e.label() == label) return e;
+  throw std::runtime_error("no element labelled " + label);
+}
+
+template <class E>
+const E& element_as(const Model& m, const std::string& label) {
+  const E* e = element(m, label).target<E>();
+  if (e == nullptr) throw std::runtime_error(label + " has another type");
+  return *e;
+}
+
+Index index_of(const Model& m, const std::string& name) {
+  const Index i = m.find_node(name);
+  if (i < 0) throw std::runtime_error("no node named " + name);
+  return i;
+}
+
+constexpr Real hz = 2.0 * pi;          // rad/s per Hz
+constexpr Real rpm = 2.0 * pi / 60.0;  // rad/s per rpm
+
+// ---------------------------------------------------------------------------------
+// everything.toml: every table, every key form and every coefficient law
+
+class EverythingModel : public ::testing::Test {
+ protected:
+  // Read once for all tests of the suite; a reading error fails each test with its message.
+  static void SetUpTestSuite() {
+    try {
+      file_ = new ModelFile(read_model_file(path_));
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    }
+  }
+  static void TearDownTestSuite() {
+    delete file_;
+    file_ = nullptr;
+  }
+  void SetUp() override { ASSERT_NE(file_, nullptr) << error_; }
+  static inline const std::string path_ = models + "/valid/everything.toml";
+  static inline ModelFile* file_ = nullptr;
+  static inline std::string error_;
+  const Model& m() const { return file_->model; }
+};
+
+TEST_F(EverythingModel, TitleAndPath) {
+  EXPECT_EQ(file_->title, "Every table");
+  EXPECT_EQ(m().name, "Every table");
+  EXPECT_EQ(file_->path, path_);
+}
+
+TEST_F(EverythingModel, Options) {
+  EXPECT_FALSE(m().options.shear_deformation);
+  EXPECT_EQ(m().options.gyroscopic, GyroscopicForm::lumped);
+  EXPECT_DOUBLE_EQ(m().options.shaft_damping, 0.1 / 1000.0);  // "0.1 ms"
+  EXPECT_EQ(m().options.free_motions, std::vector<FreeMotion>{FreeMotion::torsion});
+}
+
+TEST_F(EverythingModel, Materials) {
+  ASSERT_EQ(m().materials.size(), 2u);
+  const Material& steel = m().materials[0];
+  EXPECT_EQ(steel.name, "steel");
+  EXPECT_DOUBLE_EQ(steel.E, 210e9);
+  EXPECT_DOUBLE_EQ(steel.G, 210e9 / (2.0 * 1.3));  // from nu = 0.3
+  EXPECT_DOUBLE_EQ(steel.rho, 7850.0);              // "7.85 g/cm^3"
+  const Material& aluminium = m().materials[1];
+  EXPECT_EQ(aluminium.name, "aluminium");
+  EXPECT_DOUBLE_EQ(aluminium.E, 7e10);
+  EXPECT_DOUBLE_EQ(aluminium.G, 26e9);
+  EXPECT_DOUBLE_EQ(aluminium.rho, 2700.0);
+}
+
+TEST_F(EverythingModel, NodeNumbersNamesPositions) {
+  struct Expected {
+    int number;
+    const char* name;
+    Real x;
+    bool rotating;
+  };
+  // Shaft "rotor" from x = 10 mm: 68 mm in 2 elements, 30 mm in 3; the sleeve from
+  // 0, one 100 mm element; then [[nodes]]: next free number 9, explicit 20, and 21.
+  const std::vector<Expected> expected = {
+      {1, "drive", 0.010, true},      {2, "", 0.010 + 0.034, true},
+      {3, "bearing a", 0.078, true},  {4, "", 0.088, true},
+      {5, "", 0.098, true},           {6, "tip", 0.108, true},
+      {7, "sleeve a", 0.0, false},    {8, "", 0.1, false},
+      {9, "stator a", 0.078, false},  {20, "stator b", 0.108, false},
+      {21, "foot", 0.090, false},
+  };
+  ASSERT_EQ(m().nodes.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(m().nodes[i].number, expected[i].number);
+    EXPECT_EQ(m().nodes[i].name, expected[i].name);
+    EXPECT_NEAR(m().nodes[i].x, expected[i].x, 1e-15);
+    EXPECT_EQ(m().nodes[i].rotating, expected[i].rotating);
+  }
+}
+
+TEST_F(EverythingModel, NodeLocationsPointAtTheDefinitions) {
+  ASSERT_EQ(file_->node_locations.size(), m().nodes.size());
+  for (const SourceLocation& at : file_->node_locations) EXPECT_EQ(at.file, path_);
+  // The first node of a shaft is defined by its [[shafts]] table, the nodes of a
+  // section by the section, extra nodes by their [[nodes]] table.
+  EXPECT_EQ(file_->node_locations[0].line, line_of(path_, "name = \"rotor\"") - 1);
+  const int first_section = line_of(path_, "length = \"68 mm\"") - 1;
+  EXPECT_EQ(file_->node_locations[1].line, first_section);
+  EXPECT_EQ(file_->node_locations[2].line, first_section);
+  EXPECT_EQ(file_->node_locations[7].line, line_of(path_, "sections = [{"));
+  EXPECT_EQ(file_->node_locations[8].line, line_of(path_, "name = \"stator a\"") - 1);
+}
+
+TEST_F(EverythingModel, ShaftElements) {
+  // 2 + 3 elements of the rotor, 1 of the sleeve, 3 rigid bodies, 3 springs,
+  // 2 rotating dampers.
+  EXPECT_EQ(m().elements.size(), 14u);
+  int n_shaft = 0;
+  for (const Element& e : m().elements) n_shaft += e.kind() == "shaft" ? 1 : 0;
+  EXPECT_EQ(n_shaft, 6);
+
+  const auto& first = element_as<TimoshenkoBeam>(m(), "shaft rotor section 1 element 1");
+  EXPECT_EQ(first.node_a(), 0);
+  EXPECT_EQ(first.node_b(), 1);
+  EXPECT_DOUBLE_EQ(first.length(), 0.068 / 2.0);
+  EXPECT_DOUBLE_EQ(first.section().outer_diameter, 0.020);
+  EXPECT_EQ(first.section().inner_diameter, 0.0);
+  EXPECT_EQ(first.material().name, "steel");
+  EXPECT_FALSE(first.options().shear_deformation);
+  EXPECT_EQ(first.options().gyroscopic, GyroscopicForm::lumped);
+  EXPECT_TRUE(first.options().rotating);
+  EXPECT_DOUBLE_EQ(first.options().damping_beta, 1e-4);
+
+  const auto& hollow = element_as<TimoshenkoBeam>(m(), "shaft rotor section 2 element 3");
+  EXPECT_EQ(hollow.node_a(), 4);
+  EXPECT_EQ(hollow.node_b(), 5);
+  EXPECT_DOUBLE_EQ(hollow.length(), 0.03 / 3.0);
+  EXPECT_DOUBLE_EQ(hollow.section().outer_diameter, 0.013);
+  EXPECT_DOUBLE_EQ(hollow.section().inner_diameter, 0.005);
+  EXPECT_EQ(hollow.material().name, "aluminium");
+
+  // An unnamed shaft is labelled by its index; a non-rotating one has no rotating damping.
+  const auto& sleeve = element_as<TimoshenkoBeam>(m(), "shaft 2 section 1 element 1");
+  EXPECT_EQ(sleeve.node_a(), 6);
+  EXPECT_EQ(sleeve.node_b(), 7);
+  EXPECT_DOUBLE_EQ(sleeve.section().inner_diameter, 0.040);
+  EXPECT_FALSE(sleeve.options().rotating);
+  EXPECT_EQ(sleeve.options().damping_beta, 0.0);
+}
+
+TEST_F(EverythingModel, RigidBodies) {
+  const auto& rotor = element_as<RigidBody>(m(), "rotor mass");
+  EXPECT_EQ(rotor.node(), index_of(m(), "tip"));
+  EXPECT_DOUBLE_EQ(rotor.properties().mass, 1.93);
+  EXPECT_DOUBLE_EQ(rotor.properties().transverse_inertia, 0.0063);
+  EXPECT_DOUBLE_EQ(rotor.properties().polar_inertia, 0.0104);  // "10400 kg*mm^2"
+  EXPECT_DOUBLE_EQ(rotor.properties().offset, 0.005);
+  EXPECT_TRUE(rotor.rotating());  // default: the node's flag
+
+  // Disk form, by hand: annulus 60/20 mm, 10 mm wide, steel 7850 kg/m³.
+  const auto& disk = element_as<RigidBody>(m(), "disk");
+  const Real ro = 0.030, ri = 0.010, width = 0.010, rho = 7850.0;
+  const Real mass = rho * pi * (ro * ro - ri * ri) * width;  // 0.19729 kg
+  EXPECT_EQ(disk.node(), 1);                                  // node = 2
+  EXPECT_NEAR(disk.properties().mass, mass, 1e-12 * mass);
+  EXPECT_NEAR(disk.properties().polar_inertia, 0.5 * mass * (ro * ro + ri * ri), 1e-15);
+  EXPECT_NEAR(disk.properties().transverse_inertia,
+              0.25 * mass * (ro * ro + ri * ri) + mass * width * width / 12.0, 1e-15);
+  EXPECT_EQ(disk.properties().offset, 0.0);
+
+  const auto& stator = element_as<RigidBody>(m(), "rigid body 3");  // default label
+  EXPECT_EQ(stator.node(), index_of(m(), "stator a"));
+  EXPECT_FALSE(stator.rotating());
+  EXPECT_EQ(stator.properties().mass, 5.0);
+}
+
+TEST_F(EverythingModel, SpringsWithEveryLaw) {
+  using Law = SpeedCoefficient;
+  const auto& a = element_as<SpringDamper>(m(), "bearing a");
+  EXPECT_EQ(a.node_a(), index_of(m(), "bearing a"));
+  EXPECT_EQ(a.node_b(), index_of(m(), "stator a"));
+  const SpringDamperCoefficients& ca = a.coefficients();
+  EXPECT_EQ(ca.k[0], SpeedCoefficient(1e6));   // kx = "1 MN/m"
+  EXPECT_EQ(ca.k[1], SpeedCoefficient(6e7));   // ky = "6e7 N/m"
+  EXPECT_EQ(ca.k[2], SpeedCoefficient(6e7));   // kz = 6e7
+  EXPECT_EQ(ca.kyz, SpeedCoefficient(-1e5));   // cross terms may be negative
+  EXPECT_TRUE(ca.kzy.is_zero());
+  const auto* table = std::get_if<Law::Table>(&ca.c[1].law());
+  ASSERT_NE(table, nullptr);
+  ASSERT_EQ(table->speeds.size(), 3u);
+  EXPECT_EQ(table->speeds[0], 0.0);
+  EXPECT_DOUBLE_EQ(table->speeds[1], 50.0 * hz);
+  EXPECT_DOUBLE_EQ(table->speeds[2], 6000.0 * rpm);
+  ASSERT_EQ(table->values.size(), 3u);
+  EXPECT_EQ(table->values[0], 100.0);
+  EXPECT_EQ(table->values[1], 80.0);
+  EXPECT_DOUBLE_EQ(table->values[2], 60.0);  // "0.06 kN*s/m"
+
+  const auto& b = element_as<SpringDamper>(m(), "bearing b");
+  EXPECT_EQ(b.node_b(), index_of(m(), "stator b"));
+  const SpringDamperCoefficients& cb = b.coefficients();
+  const auto* step = std::get_if<Law::Step>(&cb.k[1].law());
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->below, 6e7);
+  EXPECT_EQ(step->above, 6e6);
+  EXPECT_DOUBLE_EQ(step->at, 2000.0 * rpm);
+  const auto* arctan = std::get_if<Law::Arctan>(&cb.k[2].law());
+  ASSERT_NE(arctan, nullptr);
+  EXPECT_EQ(*arctan, (Law::Arctan{6e7, 3.98, 0.55, 0.9, 0.1}));  // default c0, c1, c2
+  const auto* hz_table = std::get_if<Law::Table>(&cb.c[2].law());
+  ASSERT_NE(hz_table, nullptr);  // bare speeds in speed_unit = "Hz"
+  EXPECT_EQ(hz_table->speeds[0], 0.0);
+  EXPECT_DOUBLE_EQ(hz_table->speeds[1], 100.0 * hz);
+  const auto* cross = std::get_if<Law::Arctan>(&cb.czy.law());
+  ASSERT_NE(cross, nullptr);
+  EXPECT_EQ(*cross, (Law::Arctan{-5.0, 10.0, 0.5, 1.0, 0.2}));
+  const auto* hz_step = std::get_if<Law::Step>(&cb.k[4].law());  // kry
+  ASSERT_NE(hz_step, nullptr);
+  EXPECT_DOUBLE_EQ(hz_step->at, 50.0 * hz);
+
+  const auto& foot = element_as<SpringDamper>(m(), "spring 3");  // default label
+  EXPECT_EQ(foot.node_b(), index_of(m(), "foot"));
+  const SpringDamperCoefficients& cf = foot.coefficients();
+  for (int d = 0; d < 3; ++d) EXPECT_EQ(cf.k[static_cast<std::size_t>(d)], SpeedCoefficient(9000.0));
+  for (int d = 3; d < 6; ++d) EXPECT_EQ(cf.k[static_cast<std::size_t>(d)], SpeedCoefficient(180.0));
+  EXPECT_EQ(cf.c[0], SpeedCoefficient(75.0));
+  EXPECT_EQ(cf.c[3], SpeedCoefficient(0.06));
+  EXPECT_EQ(cf.c[4], SpeedCoefficient(0.06));
+  EXPECT_TRUE(cf.c[5].is_zero());
+}
+
+TEST_F(EverythingModel, RotatingDampersAndFriction) {
+  const auto& internal = element_as<RotatingDamper>(m(), "internal");
+  EXPECT_EQ(internal.node_a(), 0);
+  EXPECT_FALSE(internal.node_b());  // to = "axis" by default
+  EXPECT_EQ(internal.coefficients().translational, 638.0);
+  EXPECT_EQ(internal.coefficients().rotational, 0.57);
+  EXPECT_EQ(internal.coefficients().axial, 0.0);
+  const auto& second = element_as<RotatingDamper>(m(), "rotating damper 2");
+  EXPECT_EQ(second.node_a(), 5);
+  EXPECT_EQ(second.node_b(), 3);
+  EXPECT_EQ(second.coefficients().axial, 10.0);
+  EXPECT_EQ(second.coefficients().torsional, 0.1);
+
+  ASSERT_EQ(m().friction.size(), 2u);
+  const CoulombFriction& rub = m().friction[0];
+  EXPECT_EQ(rub.label, "rub");
+  EXPECT_EQ(rub.node_a, 5);
+  EXPECT_FALSE(rub.node_b);
+  EXPECT_EQ(rub.force, 5.2);
+  EXPECT_EQ(rub.moment, 0.1);
+  EXPECT_DOUBLE_EQ(rub.epsilon_t, 2e-4);  // "0.2 mm/s"
+  EXPECT_EQ(rub.epsilon_r, 0.002);
+  const CoulombFriction& second_friction = m().friction[1];
+  EXPECT_EQ(second_friction.label, "friction 2");
+  EXPECT_EQ(second_friction.node_b, 4);
+  EXPECT_DOUBLE_EQ(second_friction.force, 1.0);  // "0.001 kN"
+  EXPECT_EQ(second_friction.epsilon_t, 1e-4);    // defaults
+  EXPECT_EQ(second_friction.epsilon_r, 1e-3);
+}
+
+TEST_F(EverythingModel, ConstraintsAndUnbalances) {
+  ASSERT_EQ(m().links.size(), 1u);
+  EXPECT_EQ(m().links[0].leader, index_of(m(), "stator a"));
+  EXPECT_EQ(m().links[0].followers, std::vector<Index>{index_of(m(), "stator b")});
+
+  // Two entries for node 7 ("sleeve a" and 7) are merged into one.
+  ASSERT_EQ(m().fixed.size(), 2u);
+  EXPECT_EQ(m().fixed[0].node, index_of(m(), "foot"));
+  EXPECT_EQ(m().fixed[1].node, index_of(m(), "sleeve a"));
+  for (const FixedDofs& f : m().fixed)
+    for (const bool held : f.dofs) EXPECT_TRUE(held);
+
+  ASSERT_EQ(m().unbalances.size(), 2u);
+  const Unbalance& u = m().unbalances[0];
+  EXPECT_EQ(u.label, "rotor unbalance");
+  EXPECT_EQ(u.node, index_of(m(), "tip"));
+  EXPECT_DOUBLE_EQ(u.mass, 0.003);
+  EXPECT_DOUBLE_EQ(u.radius, 0.080);
+  EXPECT_DOUBLE_EQ(u.phase, pi / 2.0);
+  EXPECT_DOUBLE_EQ(u.lever, 0.005);
+  const Unbalance& v = m().unbalances[1];
+  EXPECT_EQ(v.label, "unbalance 2");
+  EXPECT_EQ(v.node, 1);
+  EXPECT_EQ(v.phase, 0.0);
+  EXPECT_EQ(v.lever, 0.0);
+}
+
+TEST_F(EverythingModel, AnalysisDefaults) {
+  ASSERT_TRUE(file_->modal.speed);
+  EXPECT_DOUBLE_EQ(*file_->modal.speed, 30.0 * hz);
+  EXPECT_EQ(file_->modal.modes, 8);
+  const CampbellDefaults& c = file_->campbell;
+  EXPECT_EQ(c.start, 0.0);
+  ASSERT_TRUE(c.stop);
+  EXPECT_DOUBLE_EQ(*c.stop, 200.0 * hz);
+  EXPECT_EQ(c.points, 51);
+  EXPECT_EQ(c.modes, 6);
+  EXPECT_EQ(c.orders, (std::vector<int>{1, 2}));
+}
+
+// ---------------------------------------------------------------------------------
+// Round trip: a file reads to exactly the Model built by hand.
+
+void expect_same_matrices(const Element& expected, const Element& actual, Real speed) {
+  const OperatingPoint op{speed};
+  const LocalMatrices a = expected.local_matrices(op), b = actual.local_matrices(op);
+  EXPECT_EQ(a.dofs, b.dofs);
+  EXPECT_EQ(a.M, b.M);
+  EXPECT_EQ(a.C, b.C);
+  EXPECT_EQ(a.K, b.K);
+  EXPECT_EQ(a.G, b.G);
+  EXPECT_EQ(a.Ci, b.Ci);
+  EXPECT_EQ(a.Ki, b.Ki);
+}
+
+void expect_same_model(const Model& expected, const Model& actual) {
+  EXPECT_EQ(actual.name, expected.name);
+  EXPECT_EQ(actual.materials, expected.materials);
+  ASSERT_EQ(actual.nodes.size(), expected.nodes.size());
+  for (std::size_t i = 0; i < expected.nodes.size(); ++i) {
+    SCOPED_TRACE("node " + std::to_string(i));
+    EXPECT_EQ(actual.nodes[i].number, expected.nodes[i].number);
+    EXPECT_EQ(actual.nodes[i].name, expected.nodes[i].name);
+    EXPECT_NEAR(actual.nodes[i].x, expected.nodes[i].x, 1e-15);
+    EXPECT_EQ(actual.nodes[i].rotating, expected.nodes[i].rotating);
+  }
+  ASSERT_EQ(actual.elements.size(), expected.elements.size());
+  for (std::size_t i = 0; i < expected.elements.size(); ++i) {
+    SCOPED_TRACE("element " + expected.elements[i].label());
+    EXPECT_EQ(actual.elements[i].label(), expected.elements[i].label());
+    EXPECT_EQ(actual.elements[i].kind(), expected.elements[i].kind());
+    for (const Real speed : {0.0, 100.0, 1000.0})
+      expect_same_matrices(expected.elements[i], actual.elements[i], speed);
+  }
+  ASSERT_EQ(actual.fixed.size(), expected.fixed.size());
+  for (std::size_t i = 0; i < expected.fixed.size(); ++i) {
+    EXPECT_EQ(actual.fixed[i].node, expected.fixed[i].node);
+    EXPECT_EQ(actual.fixed[i].dofs, expected.fixed[i].dofs);
+  }
+  ASSERT_EQ(actual.links.size(), expected.links.size());
+  for (std::size_t i = 0; i < expected.links.size(); ++i) {
+    EXPECT_EQ(actual.links[i].leader, expected.links[i].leader);
+    EXPECT_EQ(actual.links[i].followers, expected.links[i].followers);
+  }
+  ASSERT_EQ(actual.unbalances.size(), expected.unbalances.size());
+  for (std::size_t i = 0; i < expected.unbalances.size(); ++i) {
+    const Unbalance &a = actual.unbalances[i], &e = expected.unbalances[i];
+    EXPECT_EQ(a.node, e.node);
+    EXPECT_DOUBLE_EQ(a.mass, e.mass);
+    EXPECT_DOUBLE_EQ(a.radius, e.radius);
+    EXPECT_DOUBLE_EQ(a.phase, e.phase);
+    EXPECT_DOUBLE_EQ(a.lever, e.lever);
+    EXPECT_EQ(a.label, e.label);
+  }
+  EXPECT_EQ(actual.friction.size(), expected.friction.size());
+  EXPECT_EQ(actual.options.shear_deformation, expected.options.shear_deformation);
+  EXPECT_EQ(actual.options.gyroscopic, expected.options.gyroscopic);
+  EXPECT_EQ(actual.options.shaft_damping, expected.options.shaft_damping);
+  EXPECT_EQ(actual.options.free_motions, expected.options.free_motions);
+}
+
+TEST(ModelReaderRoundTrip, JeffcottRotor) {
+  Model expected;
+  expected.name = "Jeffcott rotor";
+  expected.options.shear_deformation = false;
+  const Material shaft_material{"massless steel", 210e9, 210e9 / 2.6, 0.0};
+  expected.materials = {shaft_material};
+  expected.nodes = {{1, "left", 0.0, true}, {2, "disk", 0.25, true}, {3, "right", 0.5, true}};
+  const BeamOptions beam{false, GyroscopicForm::consistent, true, 0.0};
+  const CircularSection section{0.012, 0.0};
+  expected.elements.emplace_back(TimoshenkoBeam(0, 1, 0.25, section, shaft_material, beam),
+                                 "shaft 1 section 1 element 1");
+  expected.elements.emplace_back(TimoshenkoBeam(1, 2, 0.25, section, shaft_material, beam),
+                                 "shaft 1 section 2 element 1");
+  expected.elements.emplace_back(RigidBody(1, RigidBodyProperties{5.0, 0.02, 0.04, 0.0}, true),
+                                 "disk");
+  FixedDofs all{0, {}};
+  all.dofs.fill(true);
+  expected.fixed = {all, all};
+  expected.fixed[1].node = 2;
+  expected.unbalances = {Unbalance{1, 0.001, 0.05, 0.0, 0.0, "unbalance 1"}};
+
+  const ModelFile file = read_model_file(models + "/valid/jeffcott.toml");
+  expect_same_model(expected, file.model);
+  EXPECT_EQ(file.modal.speed, 0.0);
+  EXPECT_EQ(file.modal.modes, 4);
+  EXPECT_FALSE(file.campbell.start);
+  EXPECT_TRUE(file.campbell.orders.empty());
+}
+
+TEST(ModelReaderRoundTrip, StatorJoinedByARigidLink) {
+  Model expected;
+  expected.name = "Rotor in a linked stator";
+  const Material steel{"steel", 2.1e11, 2.1e11 / 2.6, 7850.0};
+  expected.materials = {steel};
+  expected.nodes = {{1, "journal a", 0.0, true}, {2, "", 0.02, true},    {3, "", 0.04, true},
+                    {4, "journal b", 0.06, true}, {5, "", 0.08, true},   {6, "tip", 0.1, true},
+                    {7, "stator a", 0.0, false},  {8, "stator b", 0.06, false}};
+  const BeamOptions beam{};
+  const CircularSection section{0.020, 0.0};
+  for (int s = 0; s < 2; ++s)
+    for (int j = 0; j < (s == 0 ? 3 : 2); ++j) {
+      const Index a = s == 0 ? j : 3 + j;
+      // The reader divides each section's length by its element count.
+      const Real length = s == 0 ? 0.06 / 3.0 : 0.04 / 2.0;
+      expected.elements.emplace_back(
+          TimoshenkoBeam(a, a + 1, length, section, steel, beam),
+          "shaft rotor section " + std::to_string(s + 1) + " element " + std::to_string(j + 1));
+    }
+  expected.elements.emplace_back(RigidBody(6, RigidBodyProperties{5.0, 0.01, 0.01, 0.03}, false),
+                                 "stator");
+  expected.elements.emplace_back(RigidBody(5, RigidBodyProperties{1.93, 0.0063, 0.0104, 0.0}, true),
+                                 "rotor");
+  SpringDamperCoefficients bearing_a;
+  bearing_a.k = {6e7, 6e7, 6e7, 1.0, 0.0, 0.0};
+  expected.elements.emplace_back(SpringDamper(0, 6, bearing_a), "bearing a");
+  SpringDamperCoefficients bearing_b;
+  bearing_b.k = {0.0, 6e7, 6e7, 0.0, 0.0, 0.0};
+  expected.elements.emplace_back(SpringDamper(3, 7, bearing_b), "bearing b");
+  SpringDamperCoefficients foot;
+  foot.k = {9000.0, 9000.0, 9000.0, 180.0, 180.0, 180.0};
+  foot.c = {0.0, 75.0, 75.0, 0.0, 0.06, 0.06};
+  expected.elements.emplace_back(SpringDamper(6, std::nullopt, foot), "foot");
+  expected.links = {RigidLink{6, {7}}};
+  expected.unbalances = {Unbalance{5, 0.003, 0.08, 0.0, 0.0, "unbalance 1"}};
+
+  const ModelFile file = read_model_file(models + "/valid/stator_link.toml");
+  expect_same_model(expected, file.model);
+}
+
+TEST(ModelReaderValid, TwoDisksOnBearings) {
+  const ModelFile file = read_model_file(models + "/valid/two_disks.toml");
+  const Model& m = file.model;
+  EXPECT_EQ(m.nodes.size(), 9u);  // 1 + 2 + 4 + 2
+  EXPECT_EQ(m.find_node("disk 1"), 2);
+  EXPECT_EQ(m.find_node("disk 2"), 6);
+  EXPECT_NEAR(m.nodes[6].x, 0.6, 1e-15);
+  EXPECT_NEAR(m.nodes[8].x, 0.8, 1e-15);
+  // Disk 2 sits at an axial offset: its inertia about the node gains m·e².
+  const auto& disk = element_as<RigidBody>(m, "disk 2");
+  const RigidBodyProperties centre = RigidBody::disk(7810.0, 0.35, 0.05, 0.07);
+  EXPECT_DOUBLE_EQ(disk.properties().mass, centre.mass);
+  EXPECT_DOUBLE_EQ(disk.properties().transverse_inertia,
+                   centre.transverse_inertia + centre.mass * 0.01 * 0.01);
+  EXPECT_DOUBLE_EQ(disk.properties().offset, 0.01);
+  const auto& bearing = element_as<SpringDamper>(m, "bearing 2");
+  EXPECT_FALSE(bearing.node_b());  // to = "ground"
+  EXPECT_EQ(bearing.coefficients().k[1], SpeedCoefficient(1e7));  // "10 kN/mm"
+  EXPECT_DOUBLE_EQ(*file.campbell.stop, 6000.0 * rpm);
+}
+
+// ---------------------------------------------------------------------------------
+// Inline models: defaults, numbering, references
+
+const char* const steel_and_shaft = R"(
+[[materials]]
+name = "steel"
+E = 2.1e11
+nu = 0.3
+rho = 7850
+
+[[shafts]]
+material = "steel"
+sections = [{ length = 0.1, outer_diameter = 0.02, elements = 2 }]
+)";
+
+TEST(ModelReaderDefaults, ValuesLeftOutTakeTheirDefaults) {
+  const std::string text = std::string(steel_and_shaft) + R"(
+[[nodes]]
+x = 0.05
+
+[[rigid_bodies]]
+node = 4
+mass = 1
+Ja = 0.01
+Jp = 0.01
+
+[[springs]]
+node = 1
+kx = 1e6
+ky = 1e6
+kz = 1e6
+krx = 1e3
+krz = 1e3
+kry = 1e3
+
+[[springs]]
+node = 4
+to = 2
+kx = 1e6
+ky = 1e6
+kz = 1e6
+krx = 1e3
+krz = 1e3
+kry = 1e3
+
+[[unbalances]]
+node = 3
+mass = 0.001
+radius = 0.01
+)";
+  const ModelFile file = read_model_string(text, "defaults.toml");
+  const Model& m = file.model;
+  EXPECT_EQ(file.title, "");
+  EXPECT_TRUE(m.options.shear_deformation);
+  EXPECT_EQ(m.options.gyroscopic, GyroscopicForm::consistent);
+  EXPECT_EQ(m.options.shaft_damping, 0.0);
+  EXPECT_TRUE(m.options.free_motions.empty());
+  ASSERT_EQ(m.nodes.size(), 4u);
+  EXPECT_EQ(m.nodes[0].x, 0.0);        // shaft x defaults to 0
+  EXPECT_TRUE(m.nodes[0].rotating);    // shafts rotate by default
+  EXPECT_EQ(m.nodes[3].number, 4);     // next after the shaft's 1-3
+  EXPECT_FALSE(m.nodes[3].rotating);   // [[nodes]] do not rotate by default
+  const auto& beam = element_as<TimoshenkoBeam>(m, "shaft 1 section 1 element 2");
+  EXPECT_EQ(beam.section().inner_diameter, 0.0);
+  EXPECT_DOUBLE_EQ(beam.length(), 0.05);
+  EXPECT_FALSE(element_as<RigidBody>(m, "rigid body 1").rotating());  // from its node
+  EXPECT_EQ(element_as<RigidBody>(m, "rigid body 1").properties().offset, 0.0);
+  EXPECT_FALSE(element_as<SpringDamper>(m, "spring 1").node_b());     // to ground
+  EXPECT_TRUE(element_as<SpringDamper>(m, "spring 1").coefficients().c[1].is_zero());
+  EXPECT_EQ(m.unbalances[0].phase, 0.0);
+  EXPECT_EQ(m.unbalances[0].lever, 0.0);
+  EXPECT_FALSE(file.modal.speed);
+  EXPECT_FALSE(file.modal.modes);
+  EXPECT_FALSE(file.campbell.points);
+}
+
+TEST(ModelReaderNumbering, DefaultNumbersSkipNumbersClaimedLater) {
+  // The shaft takes 1-3. The first extra node would be 4, but a later entry claims
+  // 4, so it becomes 5; a second shaft continues after the highest number so far.
+  const std::string text = std::string(steel_and_shaft) + R"(
+[[nodes]]
+name = "a"
+x = 0
+
+[[nodes]]
+name = "b"
+number = 4
+x = 0
+
+[[nodes]]
+name = "c"
+x = 0
+number = 100
+
+[[nodes]]
+name = "d"
+x = 0
+)";
+  try {
+    (void)read_model_string(text, "numbers.toml");
+  } catch (const ModelError& e) {
+    // The extra nodes have no mass: check_model rejects the model, which is fine
+    // here; numbering is checked on the message's node.
+    EXPECT_NE(e.message().find("node 5 (a) has no mass"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where().line, 12);  // the [[nodes]] table of "a"
+    return;
+  }
+  FAIL() << "a massless node must be rejected";
+}
+
+TEST(ModelReaderNumbering, QuotedDigitsAreANameNotANumber) {
+  // Node "2" is the extra node (number 4), not shaft node 2.
+  const std::string text = std::string(steel_and_shaft) + R"(
+[[nodes]]
+name = "2"
+x = 0.05
+rotating = true
+
+[[rigid_bodies]]
+node = "2"
+mass = 1
+Ja = 0.01
+Jp = 0.01
+
+[[springs]]
+node = 1
+kx = 1e6
+ky = 1e6
+kz = 1e6
+krx = 1e3
+
+[[springs]]
+node = 3
+ky = 1e6
+kz = 1e6
+
+[[springs]]
+node = "2"
+to = 2
+kx = 1e6
+ky = 1e6
+kz = 1e6
+krx = 1e3
+kry = 1e3
+krz = 1e3
+)";
+  const ModelFile file = read_model_string(text, "digits.toml");
+  const Model& m = file.model;
+  EXPECT_EQ(element_as<RigidBody>(m, "rigid body 1").node(), 3);
+  EXPECT_EQ(element_as<SpringDamper>(m, "spring 3").node_a(), 3);
+  EXPECT_EQ(element_as<SpringDamper>(m, "spring 3").node_b(), 1);
+}
+
+TEST(ModelReaderStructure, CheckModelMessagesAreLocatedAtTheNode) {
+  // Torsion is free; check_model's message passes through, located at the shaft's
+  // first node (the [[shafts]] table on line 8 of steel_and_shaft).
+  const std::string text = std::string(steel_and_shaft) + R"(
+[[springs]]
+node = 1
+kx = 1e6
+ky = 1e6
+kz = 1e6
+
+[[springs]]
+node = 3
+ky = 1e6
+kz = 1e6
+)";
+  try {
+    (void)read_model_string(text, "torsion.toml");
+    FAIL() << "free torsion must be rejected";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.where().line, 8) << e.what();
+    EXPECT_NE(e.message().find("torsion"), std::string::npos) << e.what();
+  }
+  // Allowed with free_motions, the same model reads.
+  EXPECT_NO_THROW((void)read_model_string(text + "\n[options]\nfree_motions = [\"torsion\"]\n",
+                                          "torsion.toml"));
+}
+
+}  // namespace
+}  // namespace feran
