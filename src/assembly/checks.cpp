@@ -125,15 +125,16 @@ std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assemble
   std::vector<FreeMotionInfo> motions;
   if (null_space.cols() == 0) return motions;
   const Matrix full = assembler.dof_map().transformation() * null_space;
+  // A family takes part in the null space when its share of the basis is well above
+  // the round-off leaking into it from the other families (~1e-8 of the whole).
+  const Real basis_size = full.colwise().norm().maxCoeff();
   for (int family = 0; family < 4; ++family) {
     Matrix part = Matrix::Zero(full.rows(), full.cols());
     for (Index i = 0; i < full.rows(); ++i)
       if (family_of(i) == family) part.row(i) = full.row(i);
     Eigen::JacobiSVD<Matrix> svd(part, Eigen::ComputeThinU);
-    const Real smax = svd.singularValues().size() ? svd.singularValues()(0) : 0.0;
-    if (smax <= 0.0) continue;
     Index rank = 0;
-    while (rank < svd.singularValues().size() && svd.singularValues()(rank) > 1e-6 * smax) ++rank;
+    while (rank < svd.singularValues().size() && svd.singularValues()(rank) > 1e-4 * basis_size) ++rank;
     for (Index r = 0; r < rank; ++r) {
       const Vector q = svd.matrixU().col(r);
       FreeMotionInfo info;
