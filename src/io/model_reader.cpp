@@ -478,6 +478,11 @@ Index ModelBuilder::resolve_node(const toml::node& n, std::string_view name, con
                           number_ranges(numbers)));
   }
   if (const auto text = n.value_exact<std::string>()) {
+    // "ground" and "axis" are reserved, so they never name a node.
+    if (*text == ground_word || *text == axis_word)
+      t.fail(n, fmt::format("'{}' cannot be \"{}\" here; expected {}a node number or a node name",
+                            name, *text,
+                            special.empty() ? std::string{} : fmt::format("\"{}\", ", special)));
     const Index found = model_.find_node(*text);
     if (found >= 0) return found;
     std::vector<std::string> names;
