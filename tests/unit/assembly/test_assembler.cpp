@@ -1,0 +1,121 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <feran/assembly/assembler.hpp>
+#include <feran/assembly/checks.hpp>
+#include <feran/core/error.hpp>
+
+#include "test_models.hpp"
+
+namespace feran {
+namespace {
+
+// Structure of the assembled matrices (SPEC: M, K symmetric, G and K_i
+// skew-symmetric, M positive definite), on a model with every element kind, a
+// rigid link and fixed DOFs. Tolerances: exact up to the sum of a few
+// floating-point terms, 1e-12 of the largest entry.
+TEST(Assembler, SymmetryAndDefiniteness) {
+  Model m = test::friswell_5_9_1();
+  m.options.shaft_damping = 1e-5;
+  m.elements.emplace_back(RotatingDamper(3, std::nullopt, {100.0, 0.1, 0.0, 0.0}));
+  const Index stator = test::add_node(m, 1.5, false);
+  const Index stator2 = test::add_node(m, 1.6, false);
+  test::add_body(m, stator, 10.0, 0.1, 0.1, 0.0, false);
+  m.links.push_back({stator, {stator2}});
+  test::add_isotropic_bearing(m, stator, 1e7, 10.0);
+  test::fix(m, stator, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
+  const Assembler assembler(m);
+  const SystemMatrices s = assembler.at(100.0);
+  auto norm = [](const SparseMatrix& a) { return Matrix(a).cwiseAbs().maxCoeff(); };
+  auto asym = [](const SparseMatrix& a) { return Matrix(a - SparseMatrix(a.transpose())).cwiseAbs().maxCoeff(); };
+  auto sym = [](const SparseMatrix& a) { return Matrix(a + SparseMatrix(a.transpose())).cwiseAbs().maxCoeff(); };
+  EXPECT_LE(asym(s.M), 1e-12 * norm(s.M));
+  EXPECT_LE(asym(s.K), 1e-12 * norm(s.K));
+  EXPECT_LE(asym(s.C), 1e-12 * norm(s.C));
+  EXPECT_LE(asym(s.Ci), 1e-12 * norm(s.Ci));
+  EXPECT_LE(sym(s.G), 1e-12 * norm(s.G));
+  EXPECT_LE(sym(s.Ki), 1e-12 * norm(s.Ki));
+  EXPECT_GT(norm(s.G), 0.0);
+  EXPECT_GT(norm(s.Ki), 0.0);
+  const Eigen::SelfAdjointEigenSolver<Matrix> eig{Matrix(s.M)};
+  EXPECT_GT(eig.eigenvalues().minCoeff(), 0.0);
+}
+
+// The total translating mass seen by the assembled M: a unit y translation of every
+// node has kinetic-energy mass equal to shaft + disks (the stator is linked and
+// fixed otherwise). Hand value: ρπ/4·d²·L + both disks (RigidBody::disk).
+TEST(Assembler, RigidTranslationCarriesTheTotalMass) {
+  const Model m = test::friswell_5_9_1();
+  const Assembler assembler(m);
+  const SystemMatrices s = assembler.at(0.0);
+  const DofMap& d = assembler.dof_map();
+  Vector q = Vector::Zero(d.n_reduced());
+  for (Index r = 0; r < d.n_reduced(); ++r)
+    if (d.full_dof(r) % dofs_per_node == static_cast<Index>(Dof::v)) q(r) = 1.0;
+  const Real shaft = 7810 * pi / 4 * 0.05 * 0.05 * 1.5;
+  const Real disks = RigidBody::disk(7810, 0.28, 0.05, 0.07).mass + RigidBody::disk(7810, 0.35, 0.05, 0.07).mass;
+  EXPECT_NEAR(q.dot(s.M * q), shaft + disks, 1e-10 * (shaft + disks));
+}
+
+TEST(Assembler, SpeedDependentCoefficientsFollowTheSpeed) {
+  Model m = test::friswell_5_9_1();
+  SpringDamperCoefficients c;
+  c.k[static_cast<std::size_t>(Dof::v)] = SpeedCoefficient(SpeedCoefficient::Step{1e6, 2e6, 100.0});
+  m.elements.emplace_back(SpringDamper(3, std::nullopt, c));
+  const Assembler assembler(m);
+  ASSERT_TRUE(assembler.speed_dependent());
+  const Index r = assembler.dof_map().reduced_dof(global_dof(3, Dof::v));
+  const Real below = assembler.at(50.0).K.coeff(r, r), above = assembler.at(150.0).K.coeff(r, r);
+  EXPECT_DOUBLE_EQ(above - below, 1e6);
+}
+
+TEST(Checks, NamesTheFreeMotions) {
+  Model m = test::friswell_5_9_1();
+  m.fixed.clear();
+  const Assembler assembler(m);
+  const auto motions = find_free_motions(m, assembler);
+  ASSERT_EQ(motions.size(), 2u);
+  EXPECT_EQ(motions[0].family, FreeMotion::axial);
+  EXPECT_EQ(motions[1].family, FreeMotion::torsion);
+  EXPECT_NE(motions[1].description.find("rotation about the x axis"), std::string::npos);
+  try {
+    check_model(m, assembler);
+    FAIL() << "expected a singular-stiffness error";
+  } catch (const ModelStructureError& e) {
+    EXPECT_NE(std::string(e.what()).find("free_motions = [\"axial\", \"torsion\"]"), std::string::npos) << e.what();
+  }
+  m.options.free_motions = {FreeMotion::axial, FreeMotion::torsion};
+  EXPECT_NO_THROW(check_model(m, Assembler(m)));
+}
+
+// A shaft on a single isotropic bearing can pivot about it: the lateral free motion
+// is a rotation about an axis through the bearing.
+TEST(Checks, LocatesAPivot) {
+  Model m;
+  test::add_shaft(m, 0.0, 1.0, 4, 0.05, test::steel());
+  test::add_isotropic_bearing(m, 2, 1e6);
+  test::fix(m, 0, {Dof::u, Dof::rx});
+  const auto motions = find_free_motions(m, Assembler(m));
+  ASSERT_EQ(motions.size(), 2u);  // one per bending plane
+  EXPECT_NE(motions[0].description.find("rotation about the z axis through x = 0.5 m"), std::string::npos)
+      << motions[0].description;
+  EXPECT_NE(motions[1].description.find("rotation about the y axis through x = 0.5 m"), std::string::npos)
+      << motions[1].description;
+}
+
+TEST(Checks, NamesANodeWithoutMass) {
+  Model m = test::friswell_5_9_1();
+  const Index loose = test::add_node(m, 0.7, false, "housing");
+  test::fix(m, loose, {Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry});
+  try {
+    check_model(m, Assembler(m));
+    FAIL() << "expected a zero-mass error";
+  } catch (const ModelStructureError& e) {
+    EXPECT_EQ(e.node(), loose);
+    EXPECT_NE(std::string(e.what()).find("node 8 (housing) has no mass in DOF rz"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace feran
