@@ -19,6 +19,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -666,6 +667,55 @@ kz = 1e6
   // Allowed with free_motions, the same model reads.
   EXPECT_NO_THROW((void)read_model_string(text + "\n[options]\nfree_motions = [\"torsion\"]\n",
                                           "torsion.toml"));
+}
+
+// ---------------------------------------------------------------------------------
+// docs/model-format.md: its complete examples (```toml blocks starting with
+// "# Example:") must read, and have the nodes the text says.
+
+TEST(ModelFormatDocs, CompleteExamplesRead) {
+  std::ifstream in(std::string(FERAN_SOURCE_DIR) + "/docs/model-format.md");
+  ASSERT_TRUE(in) << "docs/model-format.md not found";
+  struct Example {
+    std::string name, text;
+  };
+  std::vector<Example> examples;
+  std::string line, block;
+  bool in_block = false;
+  while (std::getline(in, line)) {
+    if (!in_block && line == "```toml") {
+      in_block = true;
+      block.clear();
+    } else if (in_block && line == "```") {
+      in_block = false;
+      const std::string tag = "# Example: ";
+      if (block.rfind(tag, 0) == 0)
+        examples.push_back({block.substr(tag.size(), block.find('\n') - tag.size()), block});
+    } else if (in_block) {
+      block += line + "\n";
+    }
+  }
+  ASSERT_EQ(examples.size(), 3u);
+  // Node counts and named node numbers as the document states them.
+  const std::vector<std::vector<std::pair<std::string, int>>> named = {
+      {{"left", 1}, {"disk", 2}, {"right", 3}},
+      {{"bearing 1", 1}, {"disk 1", 3}, {"disk 2", 7}, {"bearing 2", 9}},
+      {{"journal a", 1}, {"journal b", 4}, {"tip", 6}, {"stator a", 7}, {"stator b", 8}}};
+  const std::vector<std::size_t> n_nodes = {3, 9, 8};
+  for (std::size_t i = 0; i < examples.size(); ++i) {
+    SCOPED_TRACE(examples[i].name);
+    try {
+      const ModelFile file = read_model_string(examples[i].text, "docs/model-format.md example");
+      EXPECT_EQ(file.model.nodes.size(), n_nodes[i]);
+      for (const auto& [name, number] : named[i]) {
+        const Index node = file.model.find_node(name);
+        ASSERT_GE(node, 0) << name;
+        EXPECT_EQ(file.model.nodes[static_cast<std::size_t>(node)].number, number) << name;
+      }
+    } catch (const ModelError& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
 }
 
 }  // namespace
