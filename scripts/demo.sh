@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Sets up, builds, and runs feran's main job on a shipped example: the Campbell
+# diagram of the paper's internal-damping rotor (examples/01_internal_damping),
+# printed and written to out/ as JSON, CSV and a PNG figure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+bash scripts/build.sh >/dev/null
+mkdir -p out
+./build/feran campbell examples/01_internal_damping/model.toml \
+  --json out/campbell.json --csv out/campbell.csv
+/usr/bin/python3 scripts/plot_campbell.py out/campbell.json out/campbell.png
+echo
+echo "Written: out/campbell.json, out/campbell.csv, out/campbell.png"
