@@ -488,14 +488,20 @@ Index ModelBuilder::resolve_node(const toml::node& n, std::string_view name, con
     std::vector<std::string> names;
     for (const Node& node : model_.nodes)
       if (!node.name.empty()) names.push_back(node.name);
-    if (!special.empty()) names.emplace_back(special);
+    std::vector<std::string> candidates = names;
+    if (!special.empty()) candidates.emplace_back(special);
     std::string message = fmt::format("node '{}' does not exist", *text);
-    if (const auto match = closest_match(*text, names, 2))
+    if (const auto match = closest_match(*text, candidates, 2))
       message += fmt::format("; did you mean '{}'?", *match);
     else if (all_digits(*text))
       message += fmt::format("; a quoted reference is a node name: to refer to node number {0}, "
                              "write {1} = {0} without quotes",
                              *text, name);
+    else if (names.empty())
+      message += fmt::format("; no node has a name, so refer to nodes by number (e.g. {} = 1)",
+                             name);
+    else if (names.size() <= 10)
+      message += fmt::format("; the node names are {}", join_list(names, "and", '\''));
     t.fail(n, message);
   }
   if (!special.empty())
@@ -600,7 +606,7 @@ void ModelBuilder::read_rigid_bodies() {
         inner = q->si;
       }
       const Material& material = resolve_material(
-          t.require("material", "the name of a material (the disk form needs a density)"), t);
+          t.require("material", "the name of a material, whose density the disk form uses"), t);
       props = RigidBody::disk(material.rho, outer.si, inner, width.si);
     }
 

@@ -30,8 +30,13 @@ std::string type_name(const toml::node& node) {
   switch (node.type()) {
     case toml::node_type::string: return fmt::format("a string (\"{}\")", *node.value<std::string>());
     case toml::node_type::integer: return fmt::format("an integer ({})", *node.value<std::int64_t>());
-    case toml::node_type::floating_point:
-      return fmt::format("a floating-point number ({})", *node.value<double>());
+    case toml::node_type::floating_point: {
+      // Show 1.0 as "1.0", not "1", so that the reader sees why it is not an integer.
+      const double v = *node.value<double>();
+      const bool integral = std::isfinite(v) && std::floor(v) == v && std::abs(v) < 1e15;
+      return integral ? fmt::format("a floating-point number ({:.1f})", v)
+                      : fmt::format("a floating-point number ({})", v);
+    }
     case toml::node_type::boolean: return "a boolean";
     case toml::node_type::date: return "a date";
     case toml::node_type::time: return "a time";
@@ -72,7 +77,9 @@ void TableReader::check_keys(std::initializer_list<std::string_view> allowed) co
   std::string message = fmt::format("unknown key '{}' {}", first_unknown->str(), where);
   // Keys are short, so a distance of 3 still catches transpositions and a missing
   // character or two without suggesting unrelated keys.
-  if (const auto match = closest_match(first_unknown->str(), candidates, 3))
+  if (!context_.empty() && first_unknown->str() == "title")
+    message += "; top-level keys such as 'title' must come before the first [table] header";
+  else if (const auto match = closest_match(first_unknown->str(), candidates, 3))
     message += fmt::format("; did you mean '{}'?", *match);
   else if (candidates.empty())
     message += " (this table takes no keys)";

@@ -198,12 +198,14 @@ std::string unit_hint(Quantity kind, std::string_view unit) {
   for (const UnitDef& u : kind_def(kind).units)
     if (iequal(u.name, normalized))
       return fmt::format("units are case-sensitive: did you mean '{}'?", u.name);
+  std::string nouns;
   for (const KindDef& k : kinds()) {
     if (k.kind == kind) continue;
     for (const UnitDef& u : k.units)
-      if (u.name == normalized) return fmt::format("'{}' is a unit of {}", trim(unit), k.noun);
+      if (u.name == normalized) nouns += std::string(nouns.empty() ? "" : " or ") + std::string(k.noun);
   }
-  return {};
+  if (nouns.empty()) return {};
+  return fmt::format("'{}' is a unit of {}", trim(unit), nouns);
 }
 
 Real parse_quantity(std::string_view text, Quantity kind) {
