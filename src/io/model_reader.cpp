@@ -67,7 +67,7 @@ bool all_digits(std::string_view s) {
 class ModelBuilder {
  public:
   ModelBuilder(const toml::table& root, const std::string& path)
-      : root_(root), path_(path), top_(root, "", path) {
+      : path_(path), top_(root, "", path) {
     out_.path = path;
   }
 
@@ -124,7 +124,6 @@ class ModelBuilder {
   Real read_speed(const toml::node& n, std::string_view name, const std::string& speed_unit,
                   const TableReader& t) const;
 
-  const toml::table& root_;
   const std::string& path_;
   TableReader top_;
   ModelFile out_;
@@ -740,11 +739,6 @@ SpeedCoefficient ModelBuilder::read_coefficient(const toml::node& n, const std::
 }
 
 void ModelBuilder::read_springs() {
-  struct CoefficientKey {
-    std::string_view key;
-    Quantity kind;
-    bool direct;
-  };
   for_each_table("springs", [&](const TableReader& t, int index) {
     t.check_keys({"name", "node", "to", "kx", "ky", "kz", "krx", "kry", "krz", "kyz", "kzy", "cx",
                   "cy", "cz", "crx", "cry", "crz", "cyz", "czy"});
