@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <vector>
@@ -45,7 +46,8 @@ concept ElementType = std::copyable<E> && requires(const E& e, const OperatingPo
 class Element {
  public:
   /// Wraps @p e; @p label is the user's name for it (may be empty).
-  template <ElementType E>
+  template <class E>
+    requires(!std::same_as<std::remove_cvref_t<E>, Element> && ElementType<E>)
   Element(E e, std::string label = {})  // NOLINT(google-explicit-constructor)
       : self_(std::make_unique<Holder<E>>(std::move(e))), label_(std::move(label)) {}
 
