@@ -18,8 +18,11 @@ std::string speed_text(Real speed) {
   return fmt::format("{:.4g} Hz ({:.6g} rpm)", rad_to_hz(speed), rad_to_hz(speed) * 60.0);
 }
 
-std::string cell(Real x, const char* format_spec, int width) {
+// A right-aligned number; "-" when it does not exist. Values that would print as
+// "-0.000" print as "0.000".
+std::string cell(Real x, const char* format_spec, int width, int decimals) {
   if (!std::isfinite(x)) return fmt::format("{:>{}}", "-", width);
+  if (std::abs(x) < 0.5 * std::pow(10.0, -decimals)) x = 0.0;
   return fmt::format(fmt::runtime(fmt::format("{{:>{}{}}}", width, format_spec)), x);
 }
 
@@ -35,9 +38,9 @@ std::string modal_report(const ModalResult& result, const Model& model, const Re
   int index = 0;
   for (const Mode& m : result.modes) {
     const char* note = m.rigid_body ? "rigid body" : (!m.oscillatory ? "non-oscillatory" : "");
-    out += fmt::format("{:>4}  {}  {}  {}  {:<9} {}  {:<10} {}\n", ++index, cell(m.frequency_hz, ".4f", 14),
-                       cell(100.0 * m.damping_ratio, ".3f", 12), cell(m.log_decrement, ".4f", 10),
-                       to_string(m.whirl), cell(m.directivity, ".3f", 11), to_string(m.type), note);
+    out += fmt::format("{:>4}  {}  {}  {}  {:<9} {}  {:<10} {}\n", ++index, cell(m.frequency_hz, ".4f", 14, 4),
+                       cell(100.0 * m.damping_ratio, ".3f", 12, 3), cell(m.log_decrement, ".4f", 10, 4),
+                       to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type), note);
   }
   if (!result.info.converged) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
@@ -62,10 +65,10 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t i = row_index(r);
-      out += cell(rad_to_hz(result.speeds[i]), ".2f", 11);
+      out += cell(rad_to_hz(result.speeds[i]), ".2f", 11, 2);
       for (const TrackedMode& m : result.modes) {
         out += ' ';
-        out += cell(value(m, i), spec, 12);
+        out += cell(value(m, i), spec, 12, 3);
       }
       out += '\n';
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 
@@ -159,7 +160,8 @@ ModalResult ModalSolver::solve(Real speed) const {
     mode.eigenvalue = p;
     mode.oscillatory = p.imag() > 0.0;
     mode.frequency_hz = p.imag() / (2.0 * pi);
-    mode.damping_ratio = std::abs(p) > 0 ? -p.real() / std::abs(p) : 0.0;
+    // A zero eigenvalue (rigid-body motion) has no damping ratio.
+    mode.damping_ratio = std::abs(p) > 0 ? -p.real() / std::abs(p) : std::numeric_limits<Real>::quiet_NaN();
     if (mode.oscillatory) mode.log_decrement = 2.0 * pi * (-p.real()) / p.imag();
 
     Real fam[3] = {0, 0, 0};
@@ -177,7 +179,10 @@ ModalResult ModalSolver::solve(Real speed) const {
     const WhirlResult whirl = classify_whirl(full);
     mode.whirl = whirl.whirl;
     mode.directivity = whirl.directivity;
-    if (mode.type == ModeType::axial || mode.type == ModeType::torsional) mode.whirl = Whirl::none;
+    if (mode.type == ModeType::axial || mode.type == ModeType::torsional) {
+      mode.whirl = Whirl::none;
+      mode.directivity = std::numeric_limits<Real>::quiet_NaN();
+    }
     mode.reduced_shape = phi;
     if (options_.shapes) mode.shape = normalise(full, mode.type);
     result.modes.push_back(std::move(mode));

@@ -33,13 +33,13 @@ const char* to_string(ModeType t);
 struct Mode {
   Complex eigenvalue;       ///< p = −δ + iω [1/s]
   Real frequency_hz = 0;    ///< damped natural frequency ω/2π [Hz]
-  Real damping_ratio = 0;   ///< D = −Re p/|p| (negative: unstable)
+  Real damping_ratio = 0;   ///< D = −Re p/|p| (negative: unstable); NaN when p = 0
   /// Logarithmic decrement 2π·δ/ω; NaN for a non-oscillatory mode.
   Real log_decrement = std::numeric_limits<Real>::quiet_NaN();
   Whirl whirl = Whirl::none;
   /// Amplitude-weighted directivity Σ(r_f² − r_b²)/Σ(r_f² + r_b²): +1 forward circles,
   /// 0 straight lines, −1 backward circles (r_f, r_b: forward and backward circular
-  /// components of each node's orbit).
+  /// components of each node's orbit). NaN for axial and torsional modes.
   Real directivity = 0;
   ModeType type = ModeType::lateral;
   bool rigid_body = false;   ///< no elastic deformation (strain energy ≈ 0)
