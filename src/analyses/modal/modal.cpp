@@ -192,8 +192,10 @@ ModalResult ModalSolver::solve(Real speed) const {
     if (a.frequency_hz != b.frequency_hz) return a.frequency_hz < b.frequency_hz;
     return std::abs(a.eigenvalue) < std::abs(b.eigenvalue);
   });
-  if (options_.n_modes > 0 && static_cast<Index>(result.modes.size()) > options_.n_modes)
-    result.modes.resize(static_cast<std::size_t>(options_.n_modes));
+  const Index limit = options_.n_modes > 0 ? options_.n_modes
+                      : resolved_solver() == EigenSolver::sparse ? 12 : 0;
+  if (limit > 0 && static_cast<Index>(result.modes.size()) > limit)
+    result.modes.resize(static_cast<std::size_t>(limit));
   return result;
 }
 
