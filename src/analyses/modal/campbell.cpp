@@ -67,11 +67,12 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options) 
   ModalOptions mo = options.modal;
   mo.shapes = false;
   const std::size_t n_track = static_cast<std::size_t>(std::max<Index>(options.n_modes, 1));
-  const std::size_t n_cand = n_track + std::max<std::size_t>(4, n_track / 2);
+  // Candidates beyond the tracked modes let modes enter from above.
+  const std::size_t n_cand = n_track + 4;
   mo.n_modes = 0;
   ModalSolver solver(model, mo);
   if (solver.resolved_solver() == EigenSolver::sparse) {
-    mo.n_modes = static_cast<Index>(n_cand) + 4;
+    mo.n_modes = static_cast<Index>(n_cand);
     solver = ModalSolver(model, mo);
   }
   auto solve = [&](Real speed) {
