@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-bash scripts/build.sh >/dev/null
+bash scripts/build.sh feran_cli >/dev/null
 mkdir -p out
 ./build/feran campbell examples/01_internal_damping/model.toml \
   --json out/campbell.json --csv out/campbell.csv
