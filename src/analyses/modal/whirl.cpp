@@ -57,7 +57,10 @@ WhirlResult classify_whirl(const ComplexVector& shape) {
   return out;
 }
 
-ComplexMatrix whirl_form(const ComplexMatrix& shapes) {
+namespace {
+// Σ over nodes of term(V_a, W_a, V_b, W_b) for every pair of columns a, b.
+template <class Term>
+ComplexMatrix node_form(const ComplexMatrix& shapes, Term term) {
   const Index m = shapes.cols();
   const bool tilt = m > 0 && translations_vanish(shapes.col(0));
   ComplexMatrix h = ComplexMatrix::Zero(m, m);
@@ -66,23 +69,22 @@ ComplexMatrix whirl_form(const ComplexMatrix& shapes) {
       for (Index b = 0; b < m; ++b) {
         const auto [Va, Wa] = orbit_pair(shapes.col(a), node, tilt);
         const auto [Vb, Wb] = orbit_pair(shapes.col(b), node, tilt);
-        h(a, b) += Complex(0, 0.5) * (std::conj(Va) * Wb - std::conj(Wa) * Vb);
+        h(a, b) += term(Va, Wa, Vb, Wb);
       }
   return h;
 }
+}  // namespace
+
+ComplexMatrix whirl_form(const ComplexMatrix& shapes) {
+  return node_form(shapes, [](Complex Va, Complex Wa, Complex Vb, Complex Wb) {
+    return Complex(0, 0.5) * (std::conj(Va) * Wb - std::conj(Wa) * Vb);
+  });
+}
 
 ComplexMatrix lateral_form(const ComplexMatrix& shapes) {
-  const Index m = shapes.cols();
-  const bool tilt = m > 0 && translations_vanish(shapes.col(0));
-  ComplexMatrix h = ComplexMatrix::Zero(m, m);
-  for (Index node = 0; node < shapes.rows() / dofs_per_node; ++node)
-    for (Index a = 0; a < m; ++a)
-      for (Index b = 0; b < m; ++b) {
-        const auto [Va, Wa] = orbit_pair(shapes.col(a), node, tilt);
-        const auto [Vb, Wb] = orbit_pair(shapes.col(b), node, tilt);
-        h(a, b) += std::conj(Va) * Vb + std::conj(Wa) * Wb;
-      }
-  return h;
+  return node_form(shapes, [](Complex Va, Complex Wa, Complex Vb, Complex Wb) {
+    return std::conj(Va) * Vb + std::conj(Wa) * Wb;
+  });
 }
 
 }  // namespace feran
