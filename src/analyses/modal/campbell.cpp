@@ -20,12 +20,16 @@ namespace {
 
 constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
 
-// The modes a Campbell diagram follows: oscillatory ones (a rigid-body mode at p = 0
-// has no frequency line to follow), lowest frequency first.
+// The modes a Campbell diagram follows: the @p count oscillatory ones nearest the
+// origin (a rigid-body mode at p = 0 has no frequency line to follow; overdamped
+// modes far out on the real axis are not among the lowest), by frequency.
 std::vector<Mode> oscillatory_modes(ModalResult&& r, std::size_t count) {
   std::vector<Mode> out;
   for (Mode& m : r.modes)
     if (m.oscillatory) out.push_back(std::move(m));
+  std::stable_sort(out.begin(), out.end(), [](const Mode& a, const Mode& b) {
+    return std::abs(a.eigenvalue) < std::abs(b.eigenvalue);
+  });
   if (out.size() > count) {
     // Keep a repeated pair whole (isotropic rotors at rest).
     std::size_t n = count;
@@ -34,6 +38,8 @@ std::vector<Mode> oscillatory_modes(ModalResult&& r, std::size_t count) {
       ++n;
     out.resize(n);
   }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Mode& a, const Mode& b) { return a.frequency_hz < b.frequency_hz; });
   return out;
 }
 

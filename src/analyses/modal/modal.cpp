@@ -188,14 +188,20 @@ ModalResult ModalSolver::solve(Real speed) const {
     result.modes.push_back(std::move(mode));
   }
 
-  std::stable_sort(result.modes.begin(), result.modes.end(), [](const Mode& a, const Mode& b) {
-    if (a.frequency_hz != b.frequency_hz) return a.frequency_hz < b.frequency_hz;
+  // The lowest modes are those nearest the origin of the complex plane: sorting by
+  // |p| keeps heavily overdamped modes (p far out on the negative real axis, with a
+  // small imaginary part under rotating damping) from displacing the physical ones.
+  auto by_magnitude = [](const Mode& a, const Mode& b) {
     return std::abs(a.eigenvalue) < std::abs(b.eigenvalue);
-  });
+  };
+  std::stable_sort(result.modes.begin(), result.modes.end(), by_magnitude);
   const Index limit = options_.n_modes > 0 ? options_.n_modes
                       : resolved_solver() == EigenSolver::sparse ? 12 : 0;
   if (limit > 0 && static_cast<Index>(result.modes.size()) > limit)
     result.modes.resize(static_cast<std::size_t>(limit));
+  std::stable_sort(result.modes.begin(), result.modes.end(), [](const Mode& a, const Mode& b) {
+    return a.frequency_hz < b.frequency_hz;
+  });
   return result;
 }
 

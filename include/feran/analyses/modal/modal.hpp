@@ -68,7 +68,7 @@ struct SolverInfo {
 };
 
 struct ModalOptions {
-  /// Number of oscillatory modes wanted (lowest frequencies). 0: all (dense) or 12 (sparse).
+  /// Number of modes wanted, the lowest by |p|. 0: all (dense) or 12 (sparse).
   Index n_modes = 0;
   EigenSolver solver = EigenSolver::automatic;
   /// Reduced DOF count up to which automatic selects the dense solver.
@@ -79,7 +79,7 @@ struct ModalOptions {
   bool shapes = true;
 };
 
-/// The modes of a model at one speed, sorted by increasing |p| with rigid-body modes first.
+/// The modes of a model at one speed: the n_modes smallest by |p|, listed by frequency.
 struct ModalResult {
   Real speed = 0;  ///< [rad/s]
   std::vector<Mode> modes;
