@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <feran/core/error.hpp>
+
 namespace feran {
 
 namespace {
@@ -19,6 +21,8 @@ Real SpeedCoefficient::at(Real speed) const {
       Overloaded{
           [](const Constant& c) { return c.value; },
           [speed](const Table& t) {
+            if (t.speeds.empty() || t.speeds.size() != t.values.size())
+              throw Error("a speed table needs as many values as speeds, and at least one");
             if (t.speeds.size() == 1 || speed <= t.speeds.front()) return t.values.front();
             if (speed >= t.speeds.back()) return t.values.back();
             const auto it = std::upper_bound(t.speeds.begin(), t.speeds.end(), speed);
