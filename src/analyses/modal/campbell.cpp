@@ -77,10 +77,7 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options) 
   const std::size_t n_cand = n_track + 4;
   mo.n_modes = 0;
   ModalSolver solver(model, mo);
-  if (solver.resolved_solver() == EigenSolver::sparse) {
-    mo.n_modes = static_cast<Index>(n_cand);
-    solver = ModalSolver(model, mo);
-  }
+  if (solver.resolved_solver() == EigenSolver::sparse) solver.set_n_modes(static_cast<Index>(n_cand));
   auto solve = [&](Real speed) {
     ++result.n_solves;
     return solver.solve(speed);

@@ -104,7 +104,7 @@ ComplexVector normalise(const ComplexVector& full, ModeType type) {
 }  // namespace
 
 ModalSolver::ModalSolver(const Model& model, ModalOptions options)
-    : model_(model), options_(options), assembler_(model) {
+    : options_(options), assembler_(model) {
   const SystemMatrices sys = assembler_.at(0.0);
   lambda_max_ = 0.0;
   for (Index i = 0; i < sys.M.rows(); ++i)

@@ -94,13 +94,13 @@ class ModalSolver {
   /// Modes at speed @p speed [rad/s].
   ModalResult solve(Real speed) const;
   const ModalOptions& options() const { return options_; }
+  /// Changes the number of modes wanted (see ModalOptions::n_modes).
+  void set_n_modes(Index n_modes) { options_.n_modes = n_modes; }
   const Assembler& assembler() const { return assembler_; }
-  const Model& model() const { return model_; }
   /// The solver the automatic choice resolves to for this model.
   EigenSolver resolved_solver() const;
 
  private:
-  Model model_;
   ModalOptions options_;
   Assembler assembler_;
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
