@@ -6,7 +6,7 @@ namespace {
 using Triplets = std::vector<Eigen::Triplet<Real>>;
 
 struct FullTriplets {
-  Triplets M, C, K, G, Ci, Ki;
+  Triplets M, C, K, G, Ci, Ki, Kh;
 };
 
 void scatter(const std::vector<Index>& dofs, const Matrix& local, Triplets& out) {
@@ -26,6 +26,7 @@ void add_element(const Element& e, const OperatingPoint& op, FullTriplets& t) {
   scatter(lm.dofs, lm.G, t.G);
   scatter(lm.dofs, lm.Ci, t.Ci);
   scatter(lm.dofs, lm.Ki, t.Ki);
+  if (lm.loss_factor != 0.0) scatter(lm.dofs, lm.loss_factor * lm.K, t.Kh);
 }
 
 SparseMatrix reduce(const Triplets& triplets, const SparseMatrix& T) {
@@ -37,7 +38,8 @@ SparseMatrix reduce(const Triplets& triplets, const SparseMatrix& T) {
 }
 
 SystemMatrices reduce(const FullTriplets& t, const SparseMatrix& T) {
-  return {reduce(t.M, T), reduce(t.C, T), reduce(t.K, T), reduce(t.G, T), reduce(t.Ci, T), reduce(t.Ki, T)};
+  return {reduce(t.M, T), reduce(t.C, T),  reduce(t.K, T), reduce(t.G, T),
+          reduce(t.Ci, T), reduce(t.Ki, T), reduce(t.Kh, T)};
 }
 }  // namespace
 
@@ -68,6 +70,7 @@ SystemMatrices Assembler::at(Real speed) const {
   out.G += var.G;
   out.Ci += var.Ci;
   out.Ki += var.Ki;
+  out.Kh += var.Kh;
   return out;
 }
 

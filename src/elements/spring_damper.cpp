@@ -49,6 +49,7 @@ LocalMatrices SpringDamper::local_matrices(const OperatingPoint& op) const {
     for (int d = 0; d < dofs_per_node; ++d) out.dofs.push_back(dofs_per_node * *node_b_ + d);
   out.K = relative(stiffness_6x6(op.speed), node_b_.has_value());
   out.C = relative(damping_6x6(op.speed), node_b_.has_value());
+  out.loss_factor = coeffs_.loss_factor;
   return out;
 }
 

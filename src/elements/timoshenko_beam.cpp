@@ -94,6 +94,7 @@ LocalMatrices TimoshenkoBeam::local_matrices(const OperatingPoint& /*op*/) const
   }
   out.K = Matrix::Zero(n, n);
   out.M = Matrix::Zero(n, n);
+  out.loss_factor = options_.loss_factor;
 
   // Axial (u) and torsion (rx): two-node bars with linear shape functions.
   auto add_bar = [](Matrix& target, int dof, Real stiff, Real mass_factor, Matrix& mass) {

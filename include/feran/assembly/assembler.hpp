@@ -14,6 +14,8 @@ namespace feran {
 /// G and K_i are per unit speed.
 struct SystemMatrices {
   SparseMatrix M, C, K, G, Ci, Ki;
+  /// Σ η_e·K_e over elements with a hysteretic loss factor (harmonic analyses add j·Kh).
+  SparseMatrix Kh;
 
   /// D(Ω) = C + C_i + Ω·G.
   SparseMatrix damping(Real speed) const;

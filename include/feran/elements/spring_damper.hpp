@@ -21,6 +21,7 @@ struct SpringDamperCoefficients {
   std::array<SpeedCoefficient, dofs_per_node> c{};  ///< [N s/m] or [N m s/rad]
   SpeedCoefficient kyz, kzy;                        ///< [N/m]
   SpeedCoefficient cyz, czy;                        ///< [N s/m]
+  Real loss_factor = 0.0;  ///< hysteretic loss factor η of the stiffness (harmonic analyses)
 };
 
 /// Spring–damper from @p node_a to @p node_b, or to ground when node_b is empty.

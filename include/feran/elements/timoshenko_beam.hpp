@@ -32,6 +32,7 @@ struct BeamOptions {
   GyroscopicForm gyroscopic = GyroscopicForm::consistent;
   bool rotating = true;     ///< a non-rotating beam has no G and no rotating damping
   Real damping_beta = 0.0;  ///< stiffness-proportional rotating damping β [s]
+  Real loss_factor = 0.0;   ///< hysteretic loss factor η (harmonic analyses only)
 };
 
 /// Timoshenko shaft element between nodes @p node_a (at x) and @p node_b (at x + L).

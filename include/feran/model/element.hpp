@@ -32,6 +32,8 @@ struct LocalMatrices {
   Matrix G;                 ///< gyroscopic, skew-symmetric, per unit speed
   Matrix Ci;                ///< rotating (internal) viscous damping
   Matrix Ki;                ///< circulatory stiffness of rotating damping, skew, per unit speed
+  /// Hysteretic loss factor η: harmonic analyses add j·η·K to the dynamic stiffness.
+  Real loss_factor = 0.0;
 };
 
 /// What an element type must provide.

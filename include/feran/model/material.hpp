@@ -14,6 +14,9 @@ struct Material {
   Real E = 0.0;    ///< Young's modulus [Pa]
   Real G = 0.0;    ///< shear modulus [Pa]
   Real rho = 0.0;  ///< density [kg/m³]
+  /// Hysteretic loss factor η of the material: adds j·η·K of its shafts to the
+  /// dynamic stiffness in harmonic (steady-state) analyses.
+  Real loss_factor = 0.0;
 
   /// Poisson's ratio ν = E/(2G) − 1.
   Real poisson() const { return E / (2.0 * G) - 1.0; }

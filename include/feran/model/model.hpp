@@ -61,6 +61,30 @@ struct Unbalance {
   std::string label;
 };
 
+/// A harmonic force or moment at a node. In a speed sweep it acts at the rotor
+/// speed (synchronous); in a frequency sweep at the swept frequency.
+struct HarmonicForce {
+  enum class Kind {
+    fixed,            ///< along a fixed DOF direction: F(t) = A·cos(ωt + phase)
+    rotating_force,   ///< lateral force rotating with the shaft: F_y + i·F_z = A·e^{i(Ωt + phase)}
+    rotating_moment   ///< lateral moment rotating with the shaft: M_y + i·M_z = A·e^{i(Ωt + phase)}
+  };
+  Index node = 0;
+  Kind kind = Kind::fixed;
+  Dof direction = Dof::v;  ///< for Kind::fixed
+  Real amplitude = 0.0;    ///< [N] or [N m]
+  Real phase = 0.0;        ///< [rad]
+  std::string label;
+};
+
+/// A static load at a node: forces [N] along x, y, z and moments [N m] about x, y, z,
+/// indexed by Dof.
+struct StaticLoad {
+  Index node = 0;
+  std::array<Real, dofs_per_node> load{};
+  std::string label;
+};
+
 /// Coulomb friction between rotating parts (paper eqs. 12–14): a force of magnitude
 /// @p force opposing the translational velocity seen in the rotating frame, and a
 /// moment of magnitude @p moment opposing the rotational one. Between @p node_a and
@@ -85,6 +109,8 @@ struct Model {
   std::vector<FixedDofs> fixed;
   std::vector<RigidLink> links;
   std::vector<Unbalance> unbalances;
+  std::vector<HarmonicForce> forces;
+  std::vector<StaticLoad> static_loads;
   std::vector<CoulombFriction> friction;
   ModelOptions options;
 
