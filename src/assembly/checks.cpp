@@ -77,12 +77,10 @@ std::string describe_plane_motion(const Model& model, const Vector& q, int famil
 
 }  // namespace
 
-std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler) {
-  const SystemMatrices sys = assembler.at(0.0);
-  const Index n = sys.K.rows();
-  if (n == 0) return {};
-  const SparseMatrix K = 0.5 * (sys.K + SparseMatrix(sys.K.transpose()));
-  const SparseMatrix& M = sys.M;
+Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
+  const Index n = K_in.rows();
+  if (n == 0) return Matrix(0, 0);
+  const SparseMatrix K = 0.5 * (K_in + SparseMatrix(K_in.transpose()));
 
   Real lambda_max = 0.0;
   for (Index i = 0; i < n; ++i)
@@ -99,7 +97,6 @@ std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assemble
   if (shifted.info() != Eigen::Success)
     throw ModelStructureError("the stiffness matrix could not be factorised (is it indefinite?)");
 
-  Matrix null_space;
   for (Index p = std::min<Index>(n, 12);; p = std::min<Index>(n, 2 * p)) {
     std::mt19937 rng(12345);
     std::uniform_real_distribution<Real> dist(-1.0, 1.0);
@@ -116,11 +113,13 @@ std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assemble
                                                           0.5 * (mr + mr.transpose()));
     Index n_null = 0;
     while (n_null < p && ritz.eigenvalues()(n_null) < rigid_tol) ++n_null;
-    if (n_null < p || p == n) {
-      null_space = X * ritz.eigenvectors().leftCols(n_null);
-      break;
-    }
+    if (n_null < p || p == n) return X * ritz.eigenvectors().leftCols(n_null);
   }
+}
+
+std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler) {
+  const SystemMatrices sys = assembler.at(0.0);
+  const Matrix null_space = stiffness_null_space(sys.K, sys.M);
 
   std::vector<FreeMotionInfo> motions;
   if (null_space.cols() == 0) return motions;

@@ -27,9 +27,11 @@ namespace feran {
 
 namespace {
 
+using detail::all_digits;
 using detail::closest_match;
 using detail::expected_quantity;
 using detail::join_list;
+using detail::number_ranges;
 using detail::QuantityValue;
 using detail::TableReader;
 using detail::type_name;
@@ -43,24 +45,6 @@ constexpr int max_elements_per_section = 100000;
 
 std::string format_location(const SourceLocation& at) {
   return fmt::format("line {}, column {}", at.line, at.column);
-}
-
-/// "1-8, 20" for the sorted node numbers in use.
-std::string number_ranges(std::vector<int> numbers) {
-  std::sort(numbers.begin(), numbers.end());
-  std::vector<std::string> parts;
-  for (std::size_t i = 0; i < numbers.size();) {
-    std::size_t j = i;
-    while (j + 1 < numbers.size() && numbers[j + 1] == numbers[j] + 1) ++j;
-    parts.push_back(j == i ? fmt::format("{}", numbers[i])
-                           : fmt::format("{}-{}", numbers[i], numbers[j]));
-    i = j + 1;
-  }
-  return join_list(parts, "and");
-}
-
-bool all_digits(std::string_view s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 /// Builds a ModelFile from a parsed TOML document.
@@ -92,8 +76,12 @@ class ModelBuilder {
   void read_rigid_links();
   void read_fixed();
   void read_unbalances();
+  void read_forces();
+  void read_static_loads();
   void read_modal();
   void read_campbell();
+  void read_response();
+  void read_static();
   void check_structure();
 
   /// Calls f(reader, index) for each table of the array of tables @p key (1-based index).
@@ -114,8 +102,9 @@ class ModelBuilder {
                                   Index from) const;
   /// The material named by the string at @p n.
   const Material& resolve_material(const toml::node& n, const TableReader& t) const;
-  /// Throws unless node @p index is rotating.
-  void require_rotating(Index index, const toml::node& at, std::string_view what,
+  /// Throws "<reason>, but node … is not rotating (…)" unless node @p index is rotating;
+  /// @p reason reads e.g. "a rotating damper acts between rotating parts".
+  void require_rotating(Index index, const toml::node& at, std::string_view reason,
                         const TableReader& t) const;
 
   SpeedCoefficient read_coefficient(const toml::node& n, const std::string& key, Quantity kind,
@@ -163,8 +152,8 @@ const toml::table* ModelBuilder::sub_table(std::string_view key) const {
 
 ModelFile ModelBuilder::build() {
   top_.check_keys({"title", "options", "materials", "shafts", "nodes", "rigid_bodies", "springs",
-                   "rotating_dampers", "friction", "rigid_links", "fixed", "unbalances", "modal",
-                   "campbell"});
+                   "rotating_dampers", "friction", "rigid_links", "fixed", "unbalances", "forces",
+                   "static_loads", "modal", "campbell", "response", "static"});
   if (const auto title = top_.string("title")) out_.title = *title;
   model_.name = out_.title;
 
@@ -184,8 +173,12 @@ ModelFile ModelBuilder::build() {
   read_rigid_links();
   read_fixed();
   read_unbalances();
+  read_forces();
+  read_static_loads();
   read_modal();
   read_campbell();
+  read_response();
+  read_static();
   check_structure();
   return std::move(out_);
 }
@@ -240,7 +233,7 @@ void ModelBuilder::read_options() {
 
 void ModelBuilder::read_materials() {
   for_each_table("materials", [&](const TableReader& t, int /*index*/) {
-    t.check_keys({"name", "E", "G", "nu", "rho"});
+    t.check_keys({"name", "E", "G", "nu", "rho", "loss_factor"});
     Material m;
     m.name = t.required_string("name", "the material's name, a string such as \"steel\"");
     const toml::node& name_node = *t.find("name");
@@ -277,6 +270,7 @@ void ModelBuilder::read_materials() {
     const QuantityValue rho = t.required_quantity("rho", Quantity::density);
     t.require_non_negative(rho, "rho");
     m.rho = rho.si;
+    m.loss_factor = t.non_negative_number("loss_factor").value_or(0.0);
 
     model_.materials.push_back(m);
     material_nodes_.push_back(&name_node);
@@ -399,6 +393,8 @@ void ModelBuilder::read_shafts() {
         s.fail_here(
             "missing key 'material' in [[shafts.sections]] (expected the name of a material; "
             "or give the shaft a default with 'material' in [[shafts]])");
+      BeamOptions section_options = beam_options;
+      section_options.loss_factor = material->loss_factor;
       const int n_elements = s.integer("elements", 1, max_elements_per_section).value_or(1);
       const toml::node* end_name_at = nullptr;
       std::string end_name;
@@ -418,7 +414,7 @@ void ModelBuilder::read_shafts() {
             add_node(node, *table, j == n_elements ? end_name_at : nullptr, s);
         model_.elements.emplace_back(
             TimoshenkoBeam(node_a, node_b, length.si / static_cast<Real>(n_elements), section,
-                           *material, beam_options),
+                           *material, section_options),
             fmt::format("shaft {} section {} element {}", shaft_label, section_index, j));
         node_a = node_b;
       }
@@ -471,10 +467,8 @@ Index ModelBuilder::resolve_node(const toml::node& n, std::string_view name, con
   if (const auto number = n.value_exact<std::int64_t>()) {
     for (Index i = 0; i < model_.n_nodes(); ++i)
       if (model_.nodes[static_cast<std::size_t>(i)].number == *number) return i;
-    std::vector<int> numbers;
-    for (const Node& node : model_.nodes) numbers.push_back(node.number);
     t.fail(n, fmt::format("node {} does not exist; the node numbers are {}", *number,
-                          number_ranges(numbers)));
+                          number_ranges(detail::node_numbers(model_))));
   }
   if (const auto text = n.value_exact<std::string>()) {
     // "ground" and "axis" are reserved, so they never name a node.
@@ -484,13 +478,11 @@ Index ModelBuilder::resolve_node(const toml::node& n, std::string_view name, con
                             special.empty() ? std::string{} : fmt::format("\"{}\", ", special)));
     const Index found = model_.find_node(*text);
     if (found >= 0) return found;
-    std::vector<std::string> names;
-    for (const Node& node : model_.nodes)
-      if (!node.name.empty()) names.push_back(node.name);
-    std::vector<std::string> candidates = names;
-    if (!special.empty()) candidates.emplace_back(special);
+    const std::vector<std::string> names = detail::node_names(model_);
+    std::vector<std::string> extra;
+    if (!special.empty()) extra.emplace_back(special);
     std::string message = fmt::format("node '{}' does not exist", *text);
-    if (const auto match = closest_match(*text, candidates, 2))
+    if (const auto match = detail::closest_node_name(model_, *text, extra))
       message += fmt::format("; did you mean '{}'?", *match);
     else if (all_digits(*text))
       message += fmt::format("; a quoted reference is a node name: to refer to node number {0}, "
@@ -528,13 +520,12 @@ std::optional<Index> ModelBuilder::other_node(const TableReader& t, std::string_
   return to;
 }
 
-void ModelBuilder::require_rotating(Index index, const toml::node& at, std::string_view what,
+void ModelBuilder::require_rotating(Index index, const toml::node& at, std::string_view reason,
                                     const TableReader& t) const {
   if (!model_.nodes[static_cast<std::size_t>(index)].rotating)
-    t.fail(at, fmt::format("{} acts between rotating parts, but node {} is not rotating (a "
-                           "shaft's nodes rotate unless the shaft says rotating = false; "
-                           "[[nodes]] entries need rotating = true)",
-                           what, model_.node_label(index)));
+    t.fail(at, fmt::format("{}, but node {} is not rotating (a shaft's nodes rotate unless the "
+                           "shaft says rotating = false; [[nodes]] entries need rotating = true)",
+                           reason, model_.node_label(index)));
 }
 
 // ---------------------------------------------------------------------------------
@@ -741,7 +732,7 @@ SpeedCoefficient ModelBuilder::read_coefficient(const toml::node& n, const std::
 void ModelBuilder::read_springs() {
   for_each_table("springs", [&](const TableReader& t, int index) {
     t.check_keys({"name", "node", "to", "kx", "ky", "kz", "krx", "kry", "krz", "kyz", "kzy", "cx",
-                  "cy", "cz", "crx", "cry", "crz", "cyz", "czy"});
+                  "cy", "cz", "crx", "cry", "crz", "cyz", "czy", "loss_factor"});
     const std::string label = t.string("name").value_or(fmt::format("spring {}", index));
     const Index node = required_node(t);
     const std::optional<Index> to = other_node(t, ground_word, node);
@@ -765,9 +756,13 @@ void ModelBuilder::read_springs() {
     read("kzy", Quantity::stiffness, false, c.kzy);
     read("cyz", Quantity::damping, false, c.cyz);
     read("czy", Quantity::damping, false, c.czy);
+    c.loss_factor = t.non_negative_number("loss_factor").value_or(0.0);
     if (!any)
-      t.fail_here("a spring needs at least one coefficient: kx, ky, kz, krx, kry, krz, kyz, kzy, "
-                  "cx, cy, cz, crx, cry, crz, cyz or czy");
+      t.fail_here(fmt::format("a spring needs at least one coefficient: kx, ky, kz, krx, kry, krz, "
+                              "kyz, kzy, cx, cy, cz, crx, cry, crz, cyz or czy{}",
+                              t.has("loss_factor") ? " ('loss_factor' only scales the stiffness "
+                                                     "coefficients, it is not one)"
+                                                   : ""));
     model_.elements.emplace_back(SpringDamper(node, to, c), label);
   });
 }
@@ -777,9 +772,9 @@ void ModelBuilder::read_rotating_dampers() {
     t.check_keys({"name", "node", "to", "ct", "cr", "cx", "crx"});
     const std::string label = t.string("name").value_or(fmt::format("rotating damper {}", index));
     const Index node = required_node(t);
-    require_rotating(node, *t.find("node"), "a rotating damper", t);
+    require_rotating(node, *t.find("node"), "a rotating damper acts between rotating parts", t);
     const std::optional<Index> to = other_node(t, axis_word, node);
-    if (to) require_rotating(*to, *t.find("to"), "a rotating damper", t);
+    if (to) require_rotating(*to, *t.find("to"), "a rotating damper acts between rotating parts", t);
 
     RotatingDamperCoefficients c;
     const auto read = [&](std::string_view key, Quantity kind) {
@@ -804,9 +799,10 @@ void ModelBuilder::read_friction() {
     CoulombFriction f;
     f.label = t.string("name").value_or(fmt::format("friction {}", index));
     f.node_a = required_node(t);
-    require_rotating(f.node_a, *t.find("node"), "Coulomb friction", t);
+    require_rotating(f.node_a, *t.find("node"), "Coulomb friction acts between rotating parts", t);
     f.node_b = other_node(t, axis_word, f.node_a);
-    if (f.node_b) require_rotating(*f.node_b, *t.find("to"), "Coulomb friction", t);
+    if (f.node_b)
+      require_rotating(*f.node_b, *t.find("to"), "Coulomb friction acts between rotating parts", t);
     if (const auto q = t.quantity("force", Quantity::force)) {
       t.require_non_negative(*q, "force");
       f.force = q->si;

@@ -72,4 +72,42 @@ std::string join_list(const std::vector<std::string>& items, std::string_view co
   return out;
 }
 
+std::string number_ranges(std::vector<int> numbers) {
+  std::sort(numbers.begin(), numbers.end());
+  std::vector<std::string> parts;
+  for (std::size_t i = 0; i < numbers.size();) {
+    std::size_t j = i;
+    while (j + 1 < numbers.size() && numbers[j + 1] == numbers[j] + 1) ++j;
+    parts.push_back(j == i ? std::to_string(numbers[i])
+                           : std::to_string(numbers[i]) + "-" + std::to_string(numbers[j]));
+    i = j + 1;
+  }
+  return join_list(parts, "and");
+}
+
+std::vector<std::string> node_names(const Model& model) {
+  std::vector<std::string> names;
+  for (const Node& node : model.nodes)
+    if (!node.name.empty()) names.push_back(node.name);
+  return names;
+}
+
+std::vector<int> node_numbers(const Model& model) {
+  std::vector<int> numbers;
+  for (const Node& node : model.nodes) numbers.push_back(node.number);
+  return numbers;
+}
+
+std::optional<std::string> closest_node_name(const Model& model, std::string_view text,
+                                             const std::vector<std::string>& extra) {
+  std::vector<std::string> candidates = node_names(model);
+  candidates.insert(candidates.end(), extra.begin(), extra.end());
+  return closest_match(text, candidates, node_name_distance);
+}
+
+bool all_digits(std::string_view s) {
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 }  // namespace feran::detail

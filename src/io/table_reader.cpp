@@ -177,6 +177,13 @@ std::optional<Real> TableReader::number(std::string_view key) const {
   fail(*n, fmt::format("'{}' must be a number without unit, got {}", key, type_name(*n)));
 }
 
+std::optional<Real> TableReader::non_negative_number(std::string_view key) const {
+  const auto value = number(key);
+  if (value && !(*value >= 0.0))
+    fail(*find(key), fmt::format("'{}' must not be negative, got {}", key, *value));
+  return value;
+}
+
 std::optional<bool> TableReader::boolean(std::string_view key) const {
   const toml::node* n = find(key);
   if (n == nullptr) return std::nullopt;

@@ -18,6 +18,11 @@ struct FreeMotionInfo {
   std::vector<Index> nodes;   ///< nodes that take part
 };
 
+/// An M-orthonormal basis (reduced coordinates) of the motions along which the
+/// symmetric part of @p K is singular: Rayleigh quotient below 1e-12·max(K_ii/M_ii).
+/// Zero columns when K is regular.
+Matrix stiffness_null_space(const SparseMatrix& K, const SparseMatrix& M);
+
 /// The rigid-body motions of @p model at zero speed (may be empty).
 std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler);
 

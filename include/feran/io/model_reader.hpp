@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include <feran/core/error.hpp>
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
@@ -29,6 +31,29 @@ struct ModalDefaults {
   std::optional<int> modes;   ///< number of modes (≥ 1)
 };
 
+/// Defaults for a steady-state (harmonic) response given in the model file's
+/// [response] table. Empty members were not given.
+struct ResponseDefaults {
+  std::optional<Real> start;  ///< first speed or frequency of the sweep [rad/s]
+  std::optional<Real> stop;   ///< last one [rad/s]; > start when both are given
+  std::optional<int> points;  ///< number of sweep points (≥ 2)
+  /// Nodes whose response is reported, as indices into model.nodes (no duplicates;
+  /// empty when not given).
+  std::vector<Index> probes;
+  /// Global hysteretic loss factor η ≥ 0: adds j·η·K of every element to the
+  /// dynamic stiffness, on top of the elements' own loss factors.
+  std::optional<Real> loss_factor;
+};
+
+/// Defaults for a static analysis given in the model file's [static] table.
+struct StaticDefaults {
+  /// Gravitational acceleration vector (x, y, z) [m/s²]; the zero vector for
+  /// gravity = "none"; empty when not given.
+  std::optional<Eigen::Vector3d> gravity;
+  /// Speed at which speed-dependent coefficients are evaluated [rad/s].
+  std::optional<Real> speed;
+};
+
 /// A model file as read: the model and the analysis defaults it states.
 struct ModelFile {
   Model model;
@@ -36,6 +61,8 @@ struct ModelFile {
   std::string title;  ///< the file's title (also model.name); may be empty
   ModalDefaults modal;
   CampbellDefaults campbell;
+  ResponseDefaults response;
+  StaticDefaults static_;  ///< the [static] table ("static" is a C++ keyword)
   /// Per node index (model.nodes order): where the node was defined, for messages.
   std::vector<SourceLocation> node_locations;
 };

@@ -40,6 +40,7 @@ enum class Quantity {
   time,                  ///< s; also ms
   velocity,              ///< m/s; also mm/s
   angular_velocity,      ///< rad/s
+  acceleration,          ///< m/s^2; also mm/s^2 (appended: keep the order of the others)
 };
 
 /// Name of the kind with its article, for messages: "a length", "an angle".
