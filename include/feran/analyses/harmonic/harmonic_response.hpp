@@ -1,0 +1,105 @@
+#pragma once
+/// @file
+/// Steady-state (harmonic) response to unbalance and harmonic forces (paper
+/// section 2.3): the complex dynamic stiffness
+///   K(jω) = K(Ω) + Ω·K_i − ω²M + jω(C + C_i + Ω·G) + j(Σ η_e K_e + η·K)
+/// solved by a sparse complex LU at each point. In a speed sweep the excitation is
+/// synchronous (ω = Ω); in a frequency sweep the rotor speed Ω is fixed and ω runs.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <feran/analyses/common/orbit.hpp>
+#include <feran/analyses/common/shaft_sections.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/core/types.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+struct HarmonicOptions {
+  /// Speed sweep: rotor speeds [rad/s]; the excitation is synchronous. Used when
+  /// @p frequencies is empty.
+  std::vector<Real> speeds;
+  /// Frequency sweep: excitation frequencies [rad/s] at the constant rotor speed @p speed.
+  std::vector<Real> frequencies;
+  Real speed = 0.0;  ///< rotor speed of a frequency sweep [rad/s]
+  /// Include the model's unbalances (speed sweeps only: in a frequency sweep they
+  /// act at the rotor speed, not at the swept frequency).
+  bool unbalance = true;
+  bool model_forces = true;                ///< include Model::forces
+  std::vector<HarmonicForce> extra_forces; ///< forces added for this analysis
+  Real loss_factor = 0.0;                  ///< global hysteretic loss factor η (adds jηK)
+  std::vector<Index> probes;               ///< nodes whose motion is reported
+};
+
+/// Complex amplitudes of the six DOFs of a node, indexed by Dof.
+using NodeAmplitudes = std::array<Complex, dofs_per_node>;
+
+struct ProbeResponse {
+  Index node = 0;
+  std::vector<NodeAmplitudes> q;  ///< per point: u, v, w, rx, ry, rz
+  std::vector<Orbit> orbit;       ///< per point: orbit of (v, w)
+};
+
+/// Force a spring–damper transmits to its second node (or ground), per point:
+/// (K(1 + jη) + jωC)·(q_a − q_b), six components indexed by Dof.
+struct SpringForceResponse {
+  Index element = 0;
+  std::vector<NodeAmplitudes> force;
+  std::vector<Real> peak_lateral;  ///< largest |(F_y, F_z)| over a period [N]
+};
+
+/// Force transmitted to the supports at the fixed DOFs of a node, per point.
+struct ReactionResponse {
+  Index node = 0;
+  std::array<bool, dofs_per_node> fixed{};
+  std::vector<NodeAmplitudes> force;
+  std::vector<Real> peak_lateral;
+};
+
+struct StationResponse {
+  ShaftStation station;
+  std::vector<SectionForces> forces;
+  std::vector<SectionStress> stress;
+};
+
+struct HarmonicResult {
+  bool frequency_sweep = false;
+  std::vector<Real> speeds;       ///< rotor speed per point [rad/s]
+  std::vector<Real> frequencies;  ///< excitation frequency per point [rad/s]
+  std::vector<ProbeResponse> probes;
+  std::vector<SpringForceResponse> springs;
+  std::vector<ReactionResponse> reactions;
+  std::vector<StationResponse> stations;
+  /// converged = false when the dynamic stiffness was singular at some point (an
+  /// undamped resonance hit exactly); the vectors then stop before that point.
+  SolverInfo info;
+};
+
+/// The largest values of a harmonic result.
+struct ResponseSummary {
+  struct Peak {
+    Real value = 0;   ///< the peak
+    Index point = -1; ///< where in the sweep (-1: nothing to report)
+    Index item = -1;  ///< which probe / spring / reaction / station
+  };
+  std::vector<Peak> probe_peaks;  ///< per probe: largest major semi-axis of the (v, w) orbit
+  Peak spring_force;              ///< largest peak lateral spring force
+  Peak reaction_force;            ///< largest peak lateral support reaction
+  Peak stress;                    ///< largest equivalent stress
+};
+
+HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& options);
+ResponseSummary summarize(const HarmonicResult& result);
+
+/// Complex force amplitudes of all unconstrained DOFs for the unbalances of @p model
+/// at speed @p speed (paper eq. 5: m·r·Ω² rotating at angle Ωt + phase, with the
+/// moments −l·F_z about y and l·F_y about z of an axial lever l).
+ComplexVector unbalance_forces(const Model& model, Real speed);
+/// Complex amplitudes of harmonic forces (see HarmonicForce), added into @p f.
+void add_harmonic_forces(const std::vector<HarmonicForce>& forces, ComplexVector& f);
+
+}  // namespace feran

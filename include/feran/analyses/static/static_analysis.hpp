@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// Static analysis: deflection, spring and support forces, shaft internal forces and
+/// stresses under gravity and static point loads: K·q = f.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <feran/analyses/common/shaft_sections.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/core/types.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+struct StaticOptions {
+  /// Gravitational acceleration vector (x, y, z) [m/s²]; zero for none.
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  /// Speed at which speed-dependent spring coefficients are evaluated [rad/s].
+  Real speed = 0.0;
+  bool loads = true;  ///< include Model::static_loads
+};
+
+/// Six real components indexed by Dof (forces [N], moments [N m]).
+using NodeValues = std::array<Real, dofs_per_node>;
+
+struct StaticResult {
+  Vector q;  ///< displacements of all unconstrained DOFs (global_dof order)
+  /// Force each spring–damper transmits to its second node or ground: K·(q_a − q_b).
+  std::vector<std::pair<Index, NodeValues>> springs;  ///< (element, force)
+  /// Force transmitted to the supports at fixed DOFs, per node with fixed DOFs.
+  std::vector<std::pair<Index, NodeValues>> reactions;  ///< (node, force)
+  std::vector<ShaftStation> stations;
+  std::vector<SectionForces> section_forces;  ///< real values (imaginary parts zero)
+  std::vector<SectionStress> stresses;
+  NodeValues total_load{};  ///< sum of the applied forces (moments about the origin) [N], [N m]
+  SolverInfo info;
+};
+
+/// Runs the static analysis. Throws feran::Error when the load drives a free motion
+/// (a rigid-body motion allowed by free_motions that the load does not leave alone).
+StaticResult run_static(const Model& model, const StaticOptions& options);
+
+}  // namespace feran

@@ -1,0 +1,158 @@
+#include <feran/analyses/static/static_analysis.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/SparseLU>
+#include <fmt/format.h>
+
+#include <feran/assembly/assembler.hpp>
+#include <feran/assembly/checks.hpp>
+#include <feran/core/error.hpp>
+#include <feran/elements/spring_damper.hpp>
+
+namespace feran {
+
+namespace {
+
+// Load vector over all unconstrained DOFs: gravity as M·(rigid translation by g),
+// which carries the moments of offset masses and consistent shaft masses, plus the
+// static point loads.
+Vector load_vector(const Model& model, const StaticOptions& options) {
+  Vector f = Vector::Zero(model.n_dofs());
+  if (options.gravity.squaredNorm() > 0) {
+    for (const Element& e : model.elements) {
+      const LocalMatrices lm = e.local_matrices({options.speed});
+      if (lm.M.size() == 0) continue;
+      const auto n = static_cast<Index>(lm.dofs.size());
+      Vector g = Vector::Zero(n);
+      for (Index i = 0; i < n; ++i) {
+        const Index local = lm.dofs[static_cast<std::size_t>(i)] % dofs_per_node;
+        if (local < 3) g(i) = options.gravity(local);
+      }
+      const Vector fe = lm.M * g;
+      for (Index i = 0; i < n; ++i) f(lm.dofs[static_cast<std::size_t>(i)]) += fe(i);
+    }
+  }
+  if (options.loads)
+    for (const StaticLoad& l : model.static_loads)
+      for (int d = 0; d < dofs_per_node; ++d) f(dofs_per_node * l.node + d) += l.load[static_cast<std::size_t>(d)];
+  return f;
+}
+
+}  // namespace
+
+StaticResult run_static(const Model& model, const StaticOptions& options) {
+  StaticResult result;
+  result.info.method = "sparse-lu";
+  const Assembler assembler(model);
+  const SparseMatrix& T = assembler.dof_map().transformation();
+  const SystemMatrices sys = assembler.at(options.speed);
+  const Vector f_full = load_vector(model, options);
+  const Vector f = T.transpose() * f_full;
+
+  // Free motions (allowed by free_motions) make K singular. The load must leave them
+  // alone; then the solution orthogonal to them (in M) is unique, found with the
+  // shifted matrix K + μM and one step of iterative refinement.
+  const Matrix N = stiffness_null_space(sys.K, sys.M);
+  Vector q;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  if (N.cols() == 0) {
+    lu.compute(sys.K);
+    if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
+    q = lu.solve(f);
+  } else {
+    const Vector work = N.transpose() * f;  // work of the load along each free motion
+    const Real scale = f.norm() * std::sqrt(N.colwise().squaredNorm().maxCoeff());
+    if (work.cwiseAbs().maxCoeff() > 1e-9 * scale) {
+      std::vector<std::string> names;
+      for (const FreeMotionInfo& m : find_free_motions(model, assembler)) names.push_back(m.description);
+      throw Error(fmt::format("static analysis: the load drives a free motion of the model ({}); hold "
+                              "it with a spring or a fixed DOF",
+                              fmt::join(names, "; ")));
+    }
+    Real lambda_max = 0;
+    for (Index i = 0; i < sys.M.rows(); ++i)
+      lambda_max = std::max(lambda_max, sys.K.coeff(i, i) / sys.M.coeff(i, i));
+    lu.compute(SparseMatrix(sys.K + 1e-8 * lambda_max * sys.M));
+    if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
+    auto project = [&](Vector& x) { x -= N * (N.transpose() * (sys.M * x)); };
+    q = lu.solve(f);
+    project(q);
+    for (int it = 0; it < 3; ++it) {
+      Vector dq = lu.solve(Vector(f - sys.K * q));
+      project(dq);
+      q += dq;
+    }
+  }
+  result.q = T * q;
+
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const auto* sd = model.elements[e].target<SpringDamper>();
+    if (!sd) continue;
+    Eigen::Matrix<Real, dofs_per_node, 1> dq = result.q.segment<dofs_per_node>(dofs_per_node * sd->node_a());
+    if (sd->node_b()) dq -= result.q.segment<dofs_per_node>(dofs_per_node * *sd->node_b());
+    const Eigen::Matrix<Real, dofs_per_node, 1> force = sd->stiffness_6x6(options.speed) * dq;
+    NodeValues out;
+    for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = force(d);
+    result.springs.emplace_back(static_cast<Index>(e), out);
+  }
+
+  // Support reactions: element forces at the fixed DOFs minus the load applied there.
+  std::vector<std::array<bool, dofs_per_node>> fixed(static_cast<std::size_t>(model.n_nodes()));
+  bool any_fixed = false;
+  for (const FixedDofs& fd : model.fixed)
+    for (int d = 0; d < dofs_per_node; ++d)
+      if (fd.dofs[static_cast<std::size_t>(d)]) fixed[static_cast<std::size_t>(fd.node)][static_cast<std::size_t>(d)] = any_fixed = true;
+  if (any_fixed) {
+    Vector r = -f_full;
+    for (const Element& e : model.elements) {
+      const LocalMatrices lm = e.local_matrices({options.speed});
+      const auto n = static_cast<Index>(lm.dofs.size());
+      const bool touches = std::any_of(lm.dofs.begin(), lm.dofs.end(), [&](Index dof) {
+        return fixed[static_cast<std::size_t>(dof / dofs_per_node)][static_cast<std::size_t>(dof % dofs_per_node)];
+      });
+      if (!touches || lm.K.size() == 0) continue;
+      Vector qe(n);
+      for (Index i = 0; i < n; ++i) qe(i) = result.q(lm.dofs[static_cast<std::size_t>(i)]);
+      const Vector fe = lm.K * qe;
+      for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) += fe(i);
+    }
+    for (Index node = 0; node < model.n_nodes(); ++node) {
+      const auto& mask = fixed[static_cast<std::size_t>(node)];
+      if (std::none_of(mask.begin(), mask.end(), [](bool b) { return b; })) continue;
+      NodeValues out{};
+      for (int d = 0; d < dofs_per_node; ++d)
+        if (mask[static_cast<std::size_t>(d)]) out[static_cast<std::size_t>(d)] = r(dofs_per_node * node + d);
+      result.reactions.emplace_back(node, out);
+    }
+  }
+
+  const ComplexVector qc = result.q.cast<Complex>();
+  result.stations = shaft_stations(model);
+  for (const ShaftStation& st : result.stations) {
+    const Element& el = model.elements[static_cast<std::size_t>(st.element)];
+    const auto* beam = el.target<TimoshenkoBeam>();
+    // Static stresses are elastic: cancel the element's hysteretic loss factor.
+    const SectionForces sf = section_forces(*beam, el.local_matrices({}).K, qc, st.end, -beam->options().loss_factor);
+    result.section_forces.push_back(sf);
+    result.stresses.push_back(section_stress(beam->section(), sf));
+  }
+
+  for (Index node = 0; node < model.n_nodes(); ++node) {
+    const Real x = model.nodes[static_cast<std::size_t>(node)].x;
+    const Real fx = f_full(global_dof(node, Dof::u)), fy = f_full(global_dof(node, Dof::v)),
+               fz = f_full(global_dof(node, Dof::w));
+    result.total_load[0] += fx;
+    result.total_load[1] += fy;
+    result.total_load[2] += fz;
+    result.total_load[3] += f_full(global_dof(node, Dof::rx));
+    // Moment of a force at (x, 0, 0) about the origin: (0, −x·F_z, x·F_y).
+    result.total_load[4] += f_full(global_dof(node, Dof::ry)) - x * fz;
+    result.total_load[5] += f_full(global_dof(node, Dof::rz)) + x * fy;
+  }
+  result.info.n_converged = 1;
+  return result;
+}
+
+}  // namespace feran
