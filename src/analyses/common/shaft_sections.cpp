@@ -18,22 +18,21 @@ std::vector<ShaftStation> shaft_stations(const Model& model) {
   return out;
 }
 
-SectionForces section_forces(const TimoshenkoBeam& beam, const Matrix& K_e, const ComplexVector& q_full,
-                             int end, Real extra_loss_factor) {
-  Eigen::Matrix<Complex, 2 * dofs_per_node, 1> q;
-  for (int d = 0; d < dofs_per_node; ++d) {
-    q(d) = q_full(dofs_per_node * beam.node_a() + d);
-    q(d + dofs_per_node) = q_full(dofs_per_node * beam.node_b() + d);
-  }
-  const Complex factor(1.0, beam.options().loss_factor + extra_loss_factor);
-  const Eigen::Matrix<Complex, 2 * dofs_per_node, 1> f = factor * (K_e.cast<Complex>() * q);
-  // End forces act on the element; the section resultant on the +x face is the force
-  // at the end node b, and minus the force at node a.
-  const int o = end == 0 ? 0 : dofs_per_node;
+ComplexVector element_values(const TimoshenkoBeam& beam, const ComplexVector& q_full) {
+  ComplexVector q(2 * dofs_per_node);
+  q.head<dofs_per_node>() = q_full.segment<dofs_per_node>(dofs_per_node * beam.node_a());
+  q.tail<dofs_per_node>() = q_full.segment<dofs_per_node>(dofs_per_node * beam.node_b());
+  return q;
+}
+
+SectionForces section_forces(const ComplexVector& f, int end) {
+  // The resultant on the +x face is the force node b exerts on the element, and
+  // minus the force node a exerts on it.
+  const Index o = end == 0 ? 0 : dofs_per_node;
   const Real s = end == 0 ? -1.0 : 1.0;
-  return {s * f(o + static_cast<int>(Dof::u)),  s * f(o + static_cast<int>(Dof::v)),
-          s * f(o + static_cast<int>(Dof::w)),  s * f(o + static_cast<int>(Dof::rx)),
-          s * f(o + static_cast<int>(Dof::ry)), s * f(o + static_cast<int>(Dof::rz))};
+  return {s * f(o + static_cast<Index>(Dof::u)),  s * f(o + static_cast<Index>(Dof::v)),
+          s * f(o + static_cast<Index>(Dof::w)),  s * f(o + static_cast<Index>(Dof::rx)),
+          s * f(o + static_cast<Index>(Dof::ry)), s * f(o + static_cast<Index>(Dof::rz))};
 }
 
 SectionStress section_stress(const CircularSection& section, const SectionForces& f) {

@@ -29,8 +29,22 @@ Real peak_lateral(const NodeAmplitudes& f) {
 struct BeamData {
   Index element;
   const TimoshenkoBeam* beam;
-  Matrix K;
+  LocalMatrices matrices;  // speed-independent for shaft elements
 };
+
+// An element's dynamic stiffness at rotor speed Ω and excitation frequency ω:
+// (1 + jη)K + ΩK_i − ω²M + jω(C + C_i + ΩG), η its loss factor plus @p extra_eta.
+ComplexMatrix dynamic_stiffness(const LocalMatrices& lm, Real speed, Real omega, Real extra_eta) {
+  const auto n = static_cast<Index>(lm.dofs.size());
+  ComplexMatrix Z = ComplexMatrix::Zero(n, n);
+  if (lm.K.size()) Z += Complex(1.0, lm.loss_factor + extra_eta) * lm.K.cast<Complex>();
+  if (lm.M.size()) Z -= omega * omega * lm.M.cast<Complex>();
+  if (lm.C.size()) Z += I * omega * lm.C.cast<Complex>();
+  if (lm.Ci.size()) Z += I * omega * lm.Ci.cast<Complex>();
+  if (lm.G.size()) Z += I * omega * speed * lm.G.cast<Complex>();
+  if (lm.Ki.size()) Z += speed * lm.Ki.cast<Complex>();
+  return Z;
+}
 
 }  // namespace
 
@@ -79,7 +93,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   std::vector<std::pair<Index, const SpringDamper*>> springs;
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const Element& el = model.elements[e];
-    if (const auto* b = el.target<TimoshenkoBeam>()) beams.push_back({static_cast<Index>(e), b, el.local_matrices({}).K});
+    if (const auto* b = el.target<TimoshenkoBeam>()) beams.push_back({static_cast<Index>(e), b, el.local_matrices({})});
     if (const auto* s = el.target<SpringDamper>()) springs.emplace_back(static_cast<Index>(e), s);
   }
   // Elements touching a fixed DOF: their end forces give the support reactions.
@@ -159,23 +173,16 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       result.springs[s].peak_lateral.push_back(peak_lateral(out));
     }
     if (!result.reactions.empty()) {
-      // Element forces at the fixed DOFs minus the applied load there: the force the
-      // structure puts on its supports.
-      ComplexVector r = -f_full;
+      // The force the structure puts on its supports at the fixed DOFs: the applied
+      // load there minus the element forces (dynamic stiffness times motion).
+      ComplexVector r = f_full;
       for (Index e : reaction_elements) {
         const LocalMatrices lm = model.elements[static_cast<std::size_t>(e)].local_matrices({speed});
         const auto n = static_cast<Index>(lm.dofs.size());
         ComplexVector q(n);
         for (Index i = 0; i < n; ++i) q(i) = q_full(lm.dofs[static_cast<std::size_t>(i)]);
-        ComplexMatrix Z = ComplexMatrix::Zero(n, n);
-        if (lm.K.size()) Z += Complex(1.0, lm.loss_factor + options.loss_factor) * lm.K.cast<Complex>();
-        if (lm.M.size()) Z -= omega * omega * lm.M.cast<Complex>();
-        if (lm.C.size()) Z += I * omega * lm.C.cast<Complex>();
-        if (lm.Ci.size()) Z += I * omega * lm.Ci.cast<Complex>();
-        if (lm.G.size()) Z += I * omega * speed * lm.G.cast<Complex>();
-        if (lm.Ki.size()) Z += speed * lm.Ki.cast<Complex>();
-        const ComplexVector fe = Z * q;
-        for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) += fe(i);
+        const ComplexVector fe = dynamic_stiffness(lm, speed, omega, options.loss_factor) * q;
+        for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) -= fe(i);
       }
       for (ReactionResponse& rr : result.reactions) {
         NodeAmplitudes out{};
@@ -185,10 +192,17 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
         rr.peak_lateral.push_back(peak_lateral(out));
       }
     }
+    // Each element's end forces include its own inertia and gyroscopic moments, so
+    // the section forces are in equilibrium with the element's motion.
     std::size_t b = 0;
+    ComplexVector end_forces;
     for (StationResponse& st : result.stations) {
-      while (beams[b].element != st.station.element) ++b;
-      const SectionForces f = section_forces(*beams[b].beam, beams[b].K, q_full, st.station.end, options.loss_factor);
+      if (beams[b].element != st.station.element || end_forces.size() == 0) {
+        while (beams[b].element != st.station.element) ++b;
+        end_forces = dynamic_stiffness(beams[b].matrices, speed, omega, options.loss_factor) *
+                     element_values(*beams[b].beam, q_full);
+      }
+      const SectionForces f = section_forces(end_forces, st.station.end);
       st.forces.push_back(f);
       st.stress.push_back(section_stress(beams[b].beam->section(), f));
     }

@@ -98,14 +98,15 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
     result.springs.emplace_back(static_cast<Index>(e), out);
   }
 
-  // Support reactions: element forces at the fixed DOFs minus the load applied there.
+  // Force on the supports at the fixed DOFs: the load applied there minus the element
+  // forces K_e·q_e.
   std::vector<std::array<bool, dofs_per_node>> fixed(static_cast<std::size_t>(model.n_nodes()));
   bool any_fixed = false;
   for (const FixedDofs& fd : model.fixed)
     for (int d = 0; d < dofs_per_node; ++d)
       if (fd.dofs[static_cast<std::size_t>(d)]) fixed[static_cast<std::size_t>(fd.node)][static_cast<std::size_t>(d)] = any_fixed = true;
   if (any_fixed) {
-    Vector r = -f_full;
+    Vector r = f_full;
     for (const Element& e : model.elements) {
       const LocalMatrices lm = e.local_matrices({options.speed});
       const auto n = static_cast<Index>(lm.dofs.size());
@@ -116,7 +117,7 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
       Vector qe(n);
       for (Index i = 0; i < n; ++i) qe(i) = result.q(lm.dofs[static_cast<std::size_t>(i)]);
       const Vector fe = lm.K * qe;
-      for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) += fe(i);
+      for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) -= fe(i);
     }
     for (Index node = 0; node < model.n_nodes(); ++node) {
       const auto& mask = fixed[static_cast<std::size_t>(node)];
@@ -128,13 +129,24 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
     }
   }
 
+  // Section forces from the element end forces K_e·q_e minus the element's share of
+  // the gravity load M_e·g (consistent, so the results are in equilibrium).
   const ComplexVector qc = result.q.cast<Complex>();
   result.stations = shaft_stations(model);
+  ComplexVector end_forces;
+  Index last = -1;
   for (const ShaftStation& st : result.stations) {
     const Element& el = model.elements[static_cast<std::size_t>(st.element)];
     const auto* beam = el.target<TimoshenkoBeam>();
-    // Static stresses are elastic: cancel the element's hysteretic loss factor.
-    const SectionForces sf = section_forces(*beam, el.local_matrices({}).K, qc, st.end, -beam->options().loss_factor);
+    if (st.element != last) {
+      const LocalMatrices lm = el.local_matrices({});
+      Vector g = Vector::Zero(2 * dofs_per_node);
+      for (int k = 0; k < 2; ++k)
+        for (int d = 0; d < 3; ++d) g(dofs_per_node * k + d) = options.gravity(d);
+      end_forces = (lm.K * element_values(*beam, qc).real() - lm.M * g).cast<Complex>();
+      last = st.element;
+    }
+    const SectionForces sf = section_forces(end_forces, st.end);
     result.section_forces.push_back(sf);
     result.stresses.push_back(section_stress(beam->section(), sf));
   }

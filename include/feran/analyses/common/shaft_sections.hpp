@@ -41,11 +41,14 @@ struct SectionStress {
 /// Both ends of every shaft element of @p model, in element order.
 std::vector<ShaftStation> shaft_stations(const Model& model);
 
-/// Section forces at @p end of @p beam from the displacements @p q_full of all
-/// unconstrained DOFs: the element's elastic end forces (1 + i·η)·K_e·q_e, with η
-/// the element's loss factor plus @p extra_loss_factor.
-SectionForces section_forces(const TimoshenkoBeam& beam, const Matrix& K_e, const ComplexVector& q_full,
-                             int end, Real extra_loss_factor = 0.0);
+/// The 12 DOF values of @p beam (node a then node b) taken from all unconstrained DOFs.
+ComplexVector element_values(const TimoshenkoBeam& beam, const ComplexVector& q_full);
+
+/// Section forces at @p end of a shaft element from its end forces @p f (12 values:
+/// the forces the two nodes exert on the element, node a then node b). For
+/// equilibrium-consistent results f is the element's dynamic stiffness times its
+/// displacements minus the loads distributed over it (gravity, …).
+SectionForces section_forces(const ComplexVector& f, int end);
 
 /// Peak stresses of a circular section under @p f.
 SectionStress section_stress(const CircularSection& section, const SectionForces& f);
