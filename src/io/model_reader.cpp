@@ -40,6 +40,9 @@ using detail::type_name;
 constexpr std::string_view ground_word = "ground";
 constexpr std::string_view axis_word = "axis";
 
+/// Gravitational acceleration used when [static] gives a direction but no 'g' [m/s²].
+constexpr Real default_gravity = 9.81;
+
 /// Upper bound on elements per section: guards against a typo such as 1e9 elements.
 constexpr int max_elements_per_section = 100000;
 
@@ -774,7 +777,8 @@ void ModelBuilder::read_rotating_dampers() {
     const Index node = required_node(t);
     require_rotating(node, *t.find("node"), "a rotating damper acts between rotating parts", t);
     const std::optional<Index> to = other_node(t, axis_word, node);
-    if (to) require_rotating(*to, *t.find("to"), "a rotating damper acts between rotating parts", t);
+    if (to)
+      require_rotating(*to, *t.find("to"), "a rotating damper acts between rotating parts", t);
 
     RotatingDamperCoefficients c;
     const auto read = [&](std::string_view key, Quantity kind) {
@@ -921,6 +925,115 @@ void ModelBuilder::read_unbalances() {
   });
 }
 
+void ModelBuilder::read_forces() {
+  using Kind = HarmonicForce::Kind;
+  struct KindName {
+    std::string_view name;
+    Kind kind;
+  };
+  constexpr std::array<KindName, 3> kinds = {{{"fixed", Kind::fixed},
+                                              {"rotating_force", Kind::rotating_force},
+                                              {"rotating_moment", Kind::rotating_moment}}};
+  // Directions name axes; Dof gives the storage order u, v, w, rx, ry, rz.
+  constexpr std::array<std::string_view, dofs_per_node> directions = {"x",  "y",  "z",
+                                                                      "rx", "ry", "rz"};
+  const std::vector<std::string> direction_list(directions.begin(), directions.end());
+
+  for_each_table("forces", [&](const TableReader& t, int index) {
+    t.check_keys({"name", "node", "kind", "direction", "amplitude", "phase"});
+    HarmonicForce f;
+    f.label = t.string("name").value_or(fmt::format("force {}", index));
+    f.node = required_node(t);
+
+    std::string kind_name = "fixed";
+    if (const auto kind = t.string("kind")) {
+      const auto it = std::find_if(kinds.begin(), kinds.end(),
+                                    [&](const KindName& k) { return k.name == *kind; });
+      if (it == kinds.end()) {
+        const std::vector<std::string> names = {"fixed", "rotating_force", "rotating_moment"};
+        std::string message = fmt::format("'kind' must be {}, got \"{}\"",
+                                          join_list(names, "or", '"'), *kind);
+        std::vector<std::string> extending;
+        for (const std::string& n : names)
+          if (!kind->empty() && n.starts_with(*kind)) extending.push_back(n);
+        if (const auto m = closest_match(*kind, names, 3))
+          message += fmt::format("; did you mean \"{}\"?", *m);
+        else if (!extending.empty())
+          message += fmt::format("; did you mean {}?", join_list(extending, "or", '"'));
+        t.fail(*t.find("kind"), message);
+      }
+      f.kind = it->kind;
+      kind_name = *kind;
+    }
+
+    bool moment = f.kind == Kind::rotating_moment;
+    if (f.kind == Kind::fixed) {
+      const std::string direction = t.required_string(
+          "direction", fmt::format("{} for a force of kind \"fixed\"",
+                                   join_list(direction_list, "or", '"')));
+      const auto it = std::find(directions.begin(), directions.end(), direction);
+      if (it == directions.end()) {
+        std::string message =
+            fmt::format("'direction' must be {}, got \"{}\"", join_list(direction_list, "or", '"'),
+                        direction);
+        const std::string unsigned_direction =
+            !direction.empty() && (direction.front() == '+' || direction.front() == '-')
+                ? direction.substr(1)
+                : std::string{};
+        if (direction == "u" || direction == "v" || direction == "w")
+          message += fmt::format("; did you mean \"{}\"? (directions name axes, not DOFs)",
+                                 direction == "u" ? "x" : direction == "v" ? "y" : "z");
+        else if (std::find(directions.begin(), directions.end(), unsigned_direction) !=
+                 directions.end())
+          message += fmt::format("; did you mean \"{}\"? (a direction has no sign: the force "
+                                 "acts along +{}; phase = \"180 deg\" reverses it)",
+                                 unsigned_direction, unsigned_direction);
+        else if (const auto m = closest_match(direction, direction_list, 0))
+          message += fmt::format("; did you mean \"{}\"?", *m);
+        t.fail(*t.find("direction"), message);
+      }
+      f.direction = static_cast<Dof>(it - directions.begin());
+      moment = f.direction == Dof::rx || f.direction == Dof::ry || f.direction == Dof::rz;
+    } else {
+      if (const toml::node* direction = t.find("direction"))
+        t.fail(*direction,
+               fmt::format("'direction' is only for a force of kind \"fixed\"; a {} turns with "
+                           "the shaft in the y-z plane, so leave 'direction' out",
+                           f.kind == Kind::rotating_force ? "rotating force" : "rotating moment"));
+      require_rotating(f.node, *t.find("node"),
+                       fmt::format("a force of kind \"{}\" turns with the shaft", kind_name), t);
+    }
+
+    const QuantityValue amplitude =
+        t.required_quantity("amplitude", moment ? Quantity::moment : Quantity::force);
+    t.require_positive(amplitude, "amplitude");
+    f.amplitude = amplitude.si;
+    if (const auto phase = t.quantity("phase", Quantity::angle)) f.phase = phase->si;
+    model_.forces.push_back(f);
+  });
+}
+
+void ModelBuilder::read_static_loads() {
+  constexpr std::array<std::string_view, dofs_per_node> keys = {"fx", "fy", "fz",
+                                                                "mx", "my", "mz"};
+  for_each_table("static_loads", [&](const TableReader& t, int index) {
+    t.check_keys({"name", "node", "fx", "fy", "fz", "mx", "my", "mz"});
+    StaticLoad load;
+    load.label = t.string("name").value_or(fmt::format("static load {}", index));
+    load.node = required_node(t);
+    bool any = false;
+    for (std::size_t d = 0; d < keys.size(); ++d)
+      if (const auto q = t.quantity(keys[d], d < 3 ? Quantity::force : Quantity::moment)) {
+        load.load[d] = q->si;
+        any = any || q->si != 0.0;
+      }
+    if (!any)
+      t.fail_here("a static load needs at least one non-zero component: the forces fx, fy, fz "
+                  "or the moments mx, my, mz");
+    model_.static_loads.push_back(load);
+  });
+}
+
 void ModelBuilder::read_modal() {
   const toml::table* table = sub_table("modal");
   if (table == nullptr) return;
@@ -949,6 +1062,80 @@ void ModelBuilder::read_campbell() {
     for (std::size_t i = 0; i < orders->size(); ++i)
       c.orders.push_back(t.integer_at(*orders->get(i), fmt::format("orders[{}]", i), 1));
   }
+}
+
+void ModelBuilder::read_response() {
+  const toml::table* table = sub_table("response");
+  if (table == nullptr) return;
+  const TableReader t(*table, "[response]", path_);
+  t.check_keys({"start", "stop", "points", "probes", "loss_factor"});
+  ResponseDefaults& r = out_.response;
+  const auto start = t.quantity("start", Quantity::speed);
+  const auto stop = t.quantity("stop", Quantity::speed);
+  if (start) r.start = start->si;
+  if (stop) r.stop = stop->si;
+  if (start && stop && !(stop->si > start->si))
+    t.fail(*stop->node, fmt::format("'stop' ({}) must be greater than 'start' ({})", stop->written,
+                                    start->written));
+  r.points = t.integer("points", 2);
+  if (const toml::array* probes = t.array("probes")) {
+    if (probes->empty())
+      t.fail(*probes, "'probes' must not be empty (leave it out for the analysis's default)");
+    for (std::size_t i = 0; i < probes->size(); ++i) {
+      const toml::node& entry = *probes->get(i);
+      const Index node = resolve_node(entry, fmt::format("probes[{}]", i), t);
+      if (std::find(r.probes.begin(), r.probes.end(), node) != r.probes.end())
+        t.fail(entry, fmt::format("node {} appears twice in 'probes'", model_.node_label(node)));
+      r.probes.push_back(node);
+    }
+  }
+  r.loss_factor = t.non_negative_number("loss_factor");
+}
+
+void ModelBuilder::read_static() {
+  const toml::table* table = sub_table("static");
+  if (table == nullptr) return;
+  const TableReader t(*table, "[static]", path_);
+  t.check_keys({"gravity", "g", "speed"});
+  StaticDefaults& s = out_.static_;
+  const auto g = t.quantity("g", Quantity::acceleration);
+  const std::vector<std::string> choices = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
+  const std::string expected =
+      fmt::format("'gravity' must be {} (the direction in which gravity pulls)",
+                  join_list(choices, "or", '"'));
+  if (const toml::node* n = t.find("gravity")) {
+    const auto gravity = n->value_exact<std::string>();
+    if (!gravity) t.fail(*n, fmt::format("{}, got {}", expected, type_name(*n)));
+    if (*gravity == "none") {
+      if (g)
+        t.fail(*g->node, "'g' cannot be given with gravity = \"none\"; give a direction such as "
+                         "gravity = \"-z\", or leave 'g' out");
+      s.gravity = Eigen::Vector3d::Zero();
+    } else {
+      const auto it = std::find(choices.begin(), choices.end(), *gravity);
+      if (it == choices.end()) {
+        std::string message = fmt::format("{}, got \"{}\"", expected, *gravity);
+        if (*gravity == "x" || *gravity == "y" || *gravity == "z")
+          message += fmt::format("; give its sign: \"-{0}\" or \"+{0}\"", *gravity);
+        else if (const auto m = closest_match(*gravity, choices, 0))
+          message += fmt::format("; did you mean \"{}\"?", *m);
+        t.fail(*n, message);
+      }
+      Real magnitude = default_gravity;
+      if (g) {
+        t.require_positive(*g, "g");
+        magnitude = g->si;
+      }
+      const auto axis = static_cast<Eigen::Index>((it - choices.begin()) / 2);
+      const Real sign = (it - choices.begin()) % 2 == 0 ? 1.0 : -1.0;
+      Eigen::Vector3d vector = Eigen::Vector3d::Zero();
+      vector[axis] = sign * magnitude;
+      s.gravity = vector;
+    }
+  } else if (g) {
+    t.fail(*g->node, "'g' needs a direction: give 'gravity' as well, e.g. gravity = \"-z\"");
+  }
+  if (const auto speed = t.quantity("speed", Quantity::speed)) s.speed = speed->si;
 }
 
 void ModelBuilder::check_structure() {

@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -103,11 +104,13 @@ TEST_F(EverythingModel, Materials) {
   EXPECT_DOUBLE_EQ(steel.E, 210e9);
   EXPECT_DOUBLE_EQ(steel.G, 210e9 / (2.0 * 1.3));  // from nu = 0.3
   EXPECT_DOUBLE_EQ(steel.rho, 7850.0);              // "7.85 g/cm^3"
+  EXPECT_EQ(steel.loss_factor, 0.002);
   const Material& aluminium = m().materials[1];
   EXPECT_EQ(aluminium.name, "aluminium");
   EXPECT_DOUBLE_EQ(aluminium.E, 7e10);
   EXPECT_DOUBLE_EQ(aluminium.G, 26e9);
   EXPECT_DOUBLE_EQ(aluminium.rho, 2700.0);
+  EXPECT_EQ(aluminium.loss_factor, 0.0);  // default
 }
 
 TEST_F(EverythingModel, NodeNumbersNamesPositions) {
@@ -169,6 +172,8 @@ TEST_F(EverythingModel, ShaftElements) {
   EXPECT_EQ(first.options().gyroscopic, GyroscopicForm::lumped);
   EXPECT_TRUE(first.options().rotating);
   EXPECT_DOUBLE_EQ(first.options().damping_beta, 1e-4);
+  EXPECT_EQ(first.options().loss_factor, 0.002);  // the section's material (steel)
+  EXPECT_EQ(first.local_matrices(OperatingPoint{}).loss_factor, 0.002);
 
   const auto& hollow = element_as<TimoshenkoBeam>(m(), "shaft rotor section 2 element 3");
   EXPECT_EQ(hollow.node_a(), 4);
@@ -177,6 +182,7 @@ TEST_F(EverythingModel, ShaftElements) {
   EXPECT_DOUBLE_EQ(hollow.section().outer_diameter, 0.013);
   EXPECT_DOUBLE_EQ(hollow.section().inner_diameter, 0.005);
   EXPECT_EQ(hollow.material().name, "aluminium");
+  EXPECT_EQ(hollow.options().loss_factor, 0.0);  // aluminium has none
 
   // An unnamed shaft is labelled by its index; a non-rotating one has no rotating damping.
   const auto& sleeve = element_as<TimoshenkoBeam>(m(), "shaft 2 section 1 element 1");
@@ -185,6 +191,7 @@ TEST_F(EverythingModel, ShaftElements) {
   EXPECT_DOUBLE_EQ(sleeve.section().inner_diameter, 0.040);
   EXPECT_FALSE(sleeve.options().rotating);
   EXPECT_EQ(sleeve.options().damping_beta, 0.0);
+  EXPECT_EQ(sleeve.options().loss_factor, 0.002);  // hysteretic damping is not only for rotors
 }
 
 TEST_F(EverythingModel, RigidBodies) {
@@ -224,6 +231,8 @@ TEST_F(EverythingModel, SpringsWithEveryLaw) {
   EXPECT_EQ(ca.k[2], SpeedCoefficient(6e7));   // kz = 6e7
   EXPECT_EQ(ca.kyz, SpeedCoefficient(-1e5));   // cross terms may be negative
   EXPECT_TRUE(ca.kzy.is_zero());
+  EXPECT_EQ(ca.loss_factor, 0.1);
+  EXPECT_EQ(a.local_matrices(OperatingPoint{}).loss_factor, 0.1);
   const auto* table = std::get_if<Law::Table>(&ca.c[1].law());
   ASSERT_NE(table, nullptr);
   ASSERT_EQ(table->speeds.size(), 3u);
@@ -238,6 +247,7 @@ TEST_F(EverythingModel, SpringsWithEveryLaw) {
   const auto& b = element_as<SpringDamper>(m(), "bearing b");
   EXPECT_EQ(b.node_b(), index_of(m(), "stator b"));
   const SpringDamperCoefficients& cb = b.coefficients();
+  EXPECT_EQ(cb.loss_factor, 0.0);  // default
   const auto* step = std::get_if<Law::Step>(&cb.k[1].law());
   ASSERT_NE(step, nullptr);
   EXPECT_EQ(step->below, 6e7);
@@ -336,6 +346,78 @@ TEST_F(EverythingModel, AnalysisDefaults) {
   EXPECT_EQ(c.points, 51);
   EXPECT_EQ(c.modes, 6);
   EXPECT_EQ(c.orders, (std::vector<int>{1, 2}));
+}
+
+TEST_F(EverythingModel, HarmonicForces) {
+  using Kind = HarmonicForce::Kind;
+  ASSERT_EQ(m().forces.size(), 5u);
+  const HarmonicForce& shaker = m().forces[0];
+  EXPECT_EQ(shaker.label, "shaker");
+  EXPECT_EQ(shaker.node, index_of(m(), "stator a"));
+  EXPECT_EQ(shaker.kind, Kind::fixed);  // default
+  EXPECT_EQ(shaker.direction, Dof::v);  // "y"
+  EXPECT_EQ(shaker.amplitude, 10.0);
+  EXPECT_DOUBLE_EQ(shaker.phase, pi / 6.0);  // "30 deg"
+
+  const HarmonicForce& rotating = m().forces[1];
+  EXPECT_EQ(rotating.label, "force 2");  // default label
+  EXPECT_EQ(rotating.node, index_of(m(), "tip"));
+  EXPECT_EQ(rotating.kind, Kind::rotating_force);
+  EXPECT_EQ(rotating.amplitude, 2.5);
+  EXPECT_EQ(rotating.phase, 0.0);  // default
+
+  const HarmonicForce& moment = m().forces[2];
+  EXPECT_EQ(moment.node, 3);  // node = 4
+  EXPECT_EQ(moment.kind, Kind::rotating_moment);
+  EXPECT_EQ(moment.amplitude, 0.5);  // "0.5 N*m"
+  EXPECT_EQ(moment.phase, 1.0);
+
+  const HarmonicForce& tilt = m().forces[3];
+  EXPECT_EQ(tilt.node, index_of(m(), "stator b"));
+  EXPECT_EQ(tilt.direction, Dof::rz);
+  EXPECT_EQ(tilt.amplitude, 3.0);  // "3 Nm": a moment for a rotational direction
+
+  const HarmonicForce& axial = m().forces[4];
+  EXPECT_EQ(axial.kind, Kind::fixed);
+  EXPECT_EQ(axial.direction, Dof::u);  // "x"
+  EXPECT_DOUBLE_EQ(axial.amplitude, 10.0);  // "0.01 kN"
+}
+
+TEST_F(EverythingModel, StaticLoads) {
+  ASSERT_EQ(m().static_loads.size(), 2u);
+  const StaticLoad& coupling = m().static_loads[0];
+  EXPECT_EQ(coupling.label, "coupling");
+  EXPECT_EQ(coupling.node, index_of(m(), "drive"));
+  // Indexed by Dof: fx, fy, fz, mx, my, mz.
+  EXPECT_EQ(coupling.load, (std::array<Real, dofs_per_node>{0.0, 0.0, -20.0, 0.0, 0.5, 0.0}));
+  const StaticLoad& second = m().static_loads[1];
+  EXPECT_EQ(second.label, "static load 2");
+  EXPECT_EQ(second.node, 4);  // node = 5
+  EXPECT_EQ(second.load[0], 1.0);
+  EXPECT_DOUBLE_EQ(second.load[1], -2.0);  // "-0.002 kN"
+  EXPECT_EQ(second.load[2], 0.0);
+  EXPECT_EQ(second.load[3], 2.0);
+  EXPECT_EQ(second.load[4], 0.0);
+  EXPECT_EQ(second.load[5], -0.25);
+}
+
+TEST_F(EverythingModel, ResponseAndStaticDefaults) {
+  const ResponseDefaults& r = file_->response;
+  ASSERT_TRUE(r.start);
+  EXPECT_DOUBLE_EQ(*r.start, 10.0 * hz);
+  ASSERT_TRUE(r.stop);
+  EXPECT_DOUBLE_EQ(*r.stop, 6000.0 * rpm);
+  EXPECT_EQ(r.points, 91);
+  EXPECT_EQ(r.probes, (std::vector<Index>{index_of(m(), "tip"), 1, index_of(m(), "stator a")}));
+  EXPECT_EQ(r.loss_factor, 0.01);
+
+  const StaticDefaults& s = file_->static_;
+  ASSERT_TRUE(s.gravity);
+  EXPECT_EQ(s.gravity->x(), 0.0);
+  EXPECT_EQ(s.gravity->y(), 0.0);
+  EXPECT_DOUBLE_EQ(s.gravity->z(), -9.81);  // gravity = "-z", g = "9810 mm/s^2"
+  ASSERT_TRUE(s.speed);
+  EXPECT_DOUBLE_EQ(*s.speed, 1000.0 * rpm);
 }
 
 // ---------------------------------------------------------------------------------
@@ -563,6 +645,80 @@ radius = 0.01
   EXPECT_FALSE(file.modal.speed);
   EXPECT_FALSE(file.modal.modes);
   EXPECT_FALSE(file.campbell.points);
+  // No loss factors, loads or response and static defaults unless given.
+  EXPECT_EQ(m.materials[0].loss_factor, 0.0);
+  EXPECT_EQ(beam.options().loss_factor, 0.0);
+  EXPECT_EQ(element_as<SpringDamper>(m, "spring 1").coefficients().loss_factor, 0.0);
+  EXPECT_TRUE(m.forces.empty());
+  EXPECT_TRUE(m.static_loads.empty());
+  EXPECT_FALSE(file.response.start);
+  EXPECT_FALSE(file.response.stop);
+  EXPECT_FALSE(file.response.points);
+  EXPECT_TRUE(file.response.probes.empty());
+  EXPECT_FALSE(file.response.loss_factor);
+  EXPECT_FALSE(file.static_.gravity);
+  EXPECT_FALSE(file.static_.speed);
+}
+
+// A clamped-clamped shaft (valid structure) followed by @p extra.
+ModelFile read_with(const std::string& extra) {
+  return read_model_string(std::string(steel_and_shaft) + R"(
+[[fixed]]
+node = 1
+
+[[fixed]]
+node = 3
+)" + extra,
+                           "extra.toml");
+}
+
+TEST(ModelReaderStatic, GravityDirectionsAndDefaultMagnitude) {
+  struct Case {
+    const char* gravity;
+    Eigen::Vector3d expected;
+  };
+  const std::vector<Case> cases = {
+      {"+x", {9.81, 0.0, 0.0}},  {"-x", {-9.81, 0.0, 0.0}}, {"+y", {0.0, 9.81, 0.0}},
+      {"-y", {0.0, -9.81, 0.0}}, {"+z", {0.0, 0.0, 9.81}},  {"-z", {0.0, 0.0, -9.81}},
+      {"none", Eigen::Vector3d::Zero()}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.gravity);
+    const ModelFile file = read_with(std::string("[static]\ngravity = \"") + c.gravity + "\"\n");
+    ASSERT_TRUE(file.static_.gravity);
+    EXPECT_EQ(*file.static_.gravity, c.expected);  // 9.81 exactly: no conversion
+    EXPECT_FALSE(file.static_.speed);
+  }
+  const ModelFile moon = read_with("[static]\ngravity = \"-y\"\ng = \"1620 mm/s^2\"\n");
+  EXPECT_DOUBLE_EQ(moon.static_.gravity->y(), -1.62);
+}
+
+TEST(ModelReaderResponse, ProbesByNumberAndNameInTheOrderGiven) {
+  const ModelFile file = read_with(R"(
+[response]
+probes = [3, 1]
+points = 2
+)");
+  EXPECT_EQ(file.response.probes, (std::vector<Index>{2, 0}));
+  EXPECT_EQ(file.response.points, 2);
+  EXPECT_FALSE(file.response.start);
+  EXPECT_FALSE(file.response.loss_factor);
+}
+
+TEST(ModelReaderForces, PhaseMayBeNegativeAndAmplitudeTakesAUnit) {
+  const ModelFile file = read_with(R"(
+[[forces]]
+node = 2
+direction = "z"
+amplitude = "0.2 kN"
+phase = "-90 deg"
+)");
+  ASSERT_EQ(file.model.forces.size(), 1u);
+  const HarmonicForce& f = file.model.forces[0];
+  EXPECT_EQ(f.label, "force 1");
+  EXPECT_EQ(f.node, 1);
+  EXPECT_EQ(f.direction, Dof::w);
+  EXPECT_DOUBLE_EQ(f.amplitude, 200.0);
+  EXPECT_DOUBLE_EQ(f.phase, -pi / 2.0);
 }
 
 TEST(ModelReaderNumbering, DefaultNumbersSkipNumbersClaimedLater) {
@@ -695,18 +851,26 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
       block += line + "\n";
     }
   }
-  ASSERT_EQ(examples.size(), 3u);
+  ASSERT_EQ(examples.size(), 4u);
   // Node counts and named node numbers as the document states them.
   const std::vector<std::vector<std::pair<std::string, int>>> named = {
       {{"left", 1}, {"disk", 2}, {"right", 3}},
       {{"bearing 1", 1}, {"disk 1", 3}, {"disk 2", 7}, {"bearing 2", 9}},
-      {{"journal a", 1}, {"journal b", 4}, {"tip", 6}, {"stator a", 7}, {"stator b", 8}}};
-  const std::vector<std::size_t> n_nodes = {3, 9, 8};
+      {{"journal a", 1}, {"journal b", 4}, {"tip", 6}, {"stator a", 7}, {"stator b", 8}},
+      {{"left", 1}, {"disk", 3}, {"right", 5}}};
+  const std::vector<std::size_t> n_nodes = {3, 9, 8, 5};
   for (std::size_t i = 0; i < examples.size(); ++i) {
     SCOPED_TRACE(examples[i].name);
     try {
       const ModelFile file = read_model_string(examples[i].text, "docs/model-format.md example");
       EXPECT_EQ(file.model.nodes.size(), n_nodes[i]);
+      if (i == 3) {  // the loads example, as its text describes it
+        EXPECT_EQ(file.model.forces.size(), 2u);
+        EXPECT_EQ(file.model.static_loads.size(), 1u);
+        EXPECT_EQ(file.response.probes, (std::vector<Index>{2, 0}));
+        ASSERT_TRUE(file.static_.gravity);
+        EXPECT_EQ(*file.static_.gravity, Eigen::Vector3d(0.0, 0.0, -9.81));
+      }
       for (const auto& [name, number] : named[i]) {
         const Index node = file.model.find_node(name);
         ASSERT_GE(node, 0) << name;

@@ -100,7 +100,11 @@ TEST(InvalidModelFixtures, CoverEveryErrorClass) {
       "wrong_type",           "wrong_unit",       "negative_length",
       "inner_not_smaller",    "unknown_node",     "unknown_material",
       "duplicate_node_name",  "bad_coefficient_law", "zero_mass",
-      "singular_stiffness",   "conflicting_rigid_body"};
+      "singular_stiffness",   "conflicting_rigid_body",
+      // Loads, loss factors and the [response] and [static] defaults.
+      "force_missing_amplitude", "force_direction_for_rotating", "force_bad_direction",
+      "rotating_force_on_stator", "response_unknown_probe", "static_g_with_none",
+      "static_bad_gravity", "static_load_no_component", "negative_loss_factor"};
   std::vector<std::string> present;
   for (const InvalidFixture& f : invalid_fixtures()) present.push_back(f.name);
   for (const std::string& name : required)

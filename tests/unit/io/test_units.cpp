@@ -91,6 +91,36 @@ TEST(Units, AngleForceMomentTimeVelocity) {
   EXPECT_DOUBLE_EQ(parse_quantity("0.001 rad/s", Quantity::angular_velocity), 0.001);
 }
 
+TEST(Units, Acceleration) {
+  EXPECT_DOUBLE_EQ(parse_quantity("9.81 m/s^2", Quantity::acceleration), 9.81);
+  EXPECT_DOUBLE_EQ(parse_quantity("9.81 m/s²", Quantity::acceleration), 9.81);
+  EXPECT_DOUBLE_EQ(parse_quantity("9810 mm/s^2", Quantity::acceleration), 9.81);
+  EXPECT_DOUBLE_EQ(parse_quantity("9810mm/s²", Quantity::acceleration), 9.81);
+  EXPECT_DOUBLE_EQ(parse_quantity("9.81", Quantity::acceleration), 9.81);
+  EXPECT_EQ(si_unit(Quantity::acceleration), "m/s^2");
+  EXPECT_EQ(quantity_name(Quantity::acceleration), "an acceleration");
+  EXPECT_EQ(accepted_units_text(Quantity::acceleration), "m/s^2 or mm/s^2");
+  // A velocity unit is not an acceleration, and the message says what it is.
+  try {
+    parse_quantity("9.81 m/s", Quantity::acceleration);
+    FAIL() << "expected a QuantityError";
+  } catch (const QuantityError& e) {
+    EXPECT_EQ(e.reason(), QuantityError::Reason::wrong_unit);
+    EXPECT_STREQ(e.what(),
+                 "\"9.81 m/s\" has unit 'm/s', expected an acceleration in m/s^2 or mm/s^2 "
+                 "('m/s' is a unit of velocity)");
+  }
+  EXPECT_THROW(parse_quantity("1 g", Quantity::acceleration), QuantityError);  // g is grams
+  EXPECT_THROW(parse_quantity("1 m/s^2", Quantity::velocity), QuantityError);
+}
+
+TEST(Units, EnumOrderIsStable) {
+  // Quantity values may be stored or passed as integers; new kinds are appended.
+  EXPECT_EQ(static_cast<int>(Quantity::length), 0);
+  EXPECT_EQ(static_cast<int>(Quantity::angular_velocity), 16);
+  EXPECT_EQ(static_cast<int>(Quantity::acceleration), 17);
+}
+
 TEST(Units, NumbersWithoutUnitAreSi) {
   EXPECT_DOUBLE_EQ(parse_quantity("0.068", Quantity::length), 0.068);
   EXPECT_DOUBLE_EQ(parse_quantity("  -1.5e3 ", Quantity::force), -1500.0);
@@ -187,7 +217,7 @@ TEST(Units, DescribesKinds) {
   EXPECT_EQ(accepted_units_text(Quantity::speed), "rad/s, Hz or rpm");
   EXPECT_EQ(accepted_units_text(Quantity::inertia), "kg*m^2, kg*mm^2 or kg m^2");
   // Every accepted unit converts, and its example parses.
-  for (int k = 0; k <= static_cast<int>(Quantity::angular_velocity); ++k) {
+  for (int k = 0; k <= static_cast<int>(Quantity::acceleration); ++k) {
     const auto kind = static_cast<Quantity>(k);
     for (const auto unit : accepted_units(kind)) EXPECT_TRUE(to_si(kind, 1.0, unit)) << unit;
     EXPECT_NO_THROW(parse_quantity(unit_example(kind), kind)) << unit_example(kind);
