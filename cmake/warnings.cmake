@@ -6,6 +6,9 @@ function(feran_set_warnings target)
     # g++ 12 reports a false use-after-free inside Eigen's aligned_free when sparse
     # products are inlined (GCC bug 104475 family); the code path is Eigen's own.
     target_compile_options(${target} PRIVATE -Wno-use-after-free)
+    # ... and a false -Wrestrict in std::string's operator+ with a literal
+    # (GCC bug 105329).
+    target_compile_options(${target} PRIVATE -Wno-restrict)
   endif()
   if(FERAN_WARNINGS_AS_ERRORS)
     target_compile_options(${target} PRIVATE -Werror)

@@ -20,6 +20,8 @@ using Runner = std::function<int()>;
 
 Runner add_modal_command(CLI::App& app);
 Runner add_campbell_command(CLI::App& app);
+Runner add_response_command(CLI::App& app);
+Runner add_static_command(CLI::App& app);
 
 /// Options every analysis shares.
 struct OutputOptions {

@@ -13,12 +13,15 @@ int main(int argc, char** argv) {
   CLI::App app{
       "feran: finite-element rotor dynamics.\n"
       "Reads a rotor model (TOML, docs/model-format.md) and computes natural frequencies,\n"
-      "Campbell diagrams, critical speeds and stability thresholds.",
+      "Campbell diagrams, critical speeds, stability thresholds, steady-state unbalance\n"
+      "response and static deflection, with bearing forces and shaft stresses.",
       "feran"};
   app.footer(
       "Examples:\n"
       "  feran modal examples/01_internal_damping/model.toml --speed 30Hz\n"
-      "  feran campbell examples/01_internal_damping/model.toml --stop 80Hz --points 161 --json c.json\n\n"
+      "  feran campbell examples/01_internal_damping/model.toml --stop 80Hz --points 161 --json c.json\n"
+      "  feran response examples/01_internal_damping/model.toml --stop 80Hz --probe rotor\n"
+      "  feran static examples/01_internal_damping/model.toml --gravity -y\n\n"
       "Run 'feran <command> --help' for a command's options.");
   app.set_version_flag("--version", "feran " FERAN_VERSION);
   app.require_subcommand(1);
@@ -26,6 +29,8 @@ int main(int argc, char** argv) {
   std::map<std::string, feran::app::Runner> runners;
   runners["modal"] = feran::app::add_modal_command(app);
   runners["campbell"] = feran::app::add_campbell_command(app);
+  runners["response"] = feran::app::add_response_command(app);
+  runners["static"] = feran::app::add_static_command(app);
 
   try {
     app.parse(argc, argv);

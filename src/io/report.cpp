@@ -102,4 +102,129 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
   return out;
 }
 
+namespace {
+
+std::string node_name(const Model& model, Index node) { return model.node_label(node); }
+
+std::string element_name(const Model& model, Index element) {
+  const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
+  return label.empty() ? fmt::format("element {}", element + 1) : label;
+}
+
+std::string point_text(const HarmonicResult& r, Index k) {
+  const auto i = static_cast<std::size_t>(k);
+  if (r.frequency_sweep) return fmt::format("{:.4g} Hz excitation", rad_to_hz(r.frequencies[i]));
+  return speed_text(r.speeds[i]);
+}
+
+}  // namespace
+
+std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
+                            const ResultSource& source) {
+  std::string out = source_line("response", source);
+  const std::size_t n = result.speeds.size();
+  if (n == 0) return out + "no point could be solved\n";
+  if (result.frequency_sweep)
+    out += fmt::format("frequency sweep {:.4g} to {:.4g} Hz ({} points) at rotor speed {}", rad_to_hz(result.frequencies.front()),
+                       rad_to_hz(result.frequencies.back()), n, speed_text(options.speed));
+  else
+    out += fmt::format("speed sweep {} to {} ({} points), synchronous excitation", speed_text(result.speeds.front()),
+                       speed_text(result.speeds.back()), n);
+  out += fmt::format(", {} unbalance(s), {} force(s), loss factor {}\n\n",
+                     (!result.frequency_sweep && options.unbalance) ? model.unbalances.size() : std::size_t{0},
+                     (options.model_forces ? model.forces.size() : 0) + options.extra_forces.size(), options.loss_factor);
+
+  if (!result.probes.empty()) {
+    const std::size_t rows = std::min<std::size_t>(n, 11);
+    out += "Orbit size (major semi-axis, = largest |r|) [mm] and phase of v [deg]\n";
+    out += fmt::format("{:>12}", result.frequency_sweep ? "freq. [Hz]" : "speed [Hz]");
+    for (const ProbeResponse& p : result.probes) out += fmt::format(" {:>14} {:>7}", node_name(model, p.node), "phase");
+    out += '\n';
+    for (std::size_t r = 0; r < rows; ++r) {
+      const std::size_t k = rows == 1 ? 0 : r * (n - 1) / (rows - 1);
+      out += cell(rad_to_hz(result.frequency_sweep ? result.frequencies[k] : result.speeds[k]), ".2f", 12, 2);
+      for (const ProbeResponse& p : result.probes) {
+        out += ' ';
+        out += cell(1e3 * p.orbit[k].major, ".5f", 14, 5);
+        out += ' ';
+        out += cell(std::arg(p.q[k][static_cast<std::size_t>(Dof::v)]) * 180 / pi, ".1f", 7, 1);
+      }
+      out += '\n';
+    }
+    out += '\n';
+  }
+
+  const ResponseSummary sum = summarize(result);
+  out += "Peaks:\n";
+  for (std::size_t p = 0; p < sum.probe_peaks.size(); ++p)
+    if (sum.probe_peaks[p].point >= 0)
+      out += fmt::format("  orbit at node {:<18} {:.5g} mm at {}\n", node_name(model, result.probes[p].node),
+                         1e3 * sum.probe_peaks[p].value, point_text(result, sum.probe_peaks[p].point));
+  if (sum.spring_force.point >= 0)
+    out += fmt::format("  largest spring-damper force: {} {:.5g} N at {}\n",
+                       element_name(model, result.springs[static_cast<std::size_t>(sum.spring_force.item)].element),
+                       sum.spring_force.value, point_text(result, sum.spring_force.point));
+  if (sum.reaction_force.point >= 0)
+    out += fmt::format("  largest support force: node {} {:.5g} N at {}\n",
+                       node_name(model, result.reactions[static_cast<std::size_t>(sum.reaction_force.item)].node),
+                       sum.reaction_force.value, point_text(result, sum.reaction_force.point));
+  if (sum.stress.point >= 0) {
+    const ShaftStation& st = result.stations[static_cast<std::size_t>(sum.stress.item)].station;
+    out += fmt::format("  largest equivalent stress: {:.5g} MPa at x = {:.4g} mm ({} {}), at {}\n", 1e-6 * sum.stress.value,
+                       1e3 * st.x, element_name(model, st.element), st.end == 0 ? "start" : "end",
+                       point_text(result, sum.stress.point));
+  }
+  if (!result.info.converged) out += fmt::format("\nwarning: {}\n", result.info.message);
+  return out;
+}
+
+std::string static_report(const StaticResult& result, const StaticOptions& options, const Model& model,
+                          const ResultSource& source) {
+  std::string out = source_line("static", source);
+  out += fmt::format("gravity ({:.4g}, {:.4g}, {:.4g}) m/s^2, {} static load(s), coefficients at {}\n\n",
+                     options.gravity(0), options.gravity(1), options.gravity(2),
+                     options.loads ? model.static_loads.size() : 0, speed_text(options.speed));
+  out += "Displacements [mm, mrad]\n";
+  out += fmt::format("{:>20} {:>9} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "node", "x [mm]", "u", "v", "w", "rx",
+                     "ry", "rz");
+  for (Index node = 0; node < model.n_nodes(); ++node) {
+    out += fmt::format("{:>20} {:>9.2f}", node_name(model, node), 1e3 * model.nodes[static_cast<std::size_t>(node)].x);
+    for (int d = 0; d < dofs_per_node; ++d) out += " " + cell(1e3 * result.q(dofs_per_node * node + d), ".5f", 10, 5);
+    out += '\n';
+  }
+  auto forces = [&](const NodeValues& f) {
+    std::string s;
+    for (int d = 0; d < dofs_per_node; ++d) s += " " + cell(f[static_cast<std::size_t>(d)], ".4g", 10, 12);
+    return s;
+  };
+  const std::string head = fmt::format("{:>10} {:>10} {:>10} {:>10} {:>10} {:>10}", "Fx [N]", "Fy [N]", "Fz [N]",
+                                       "Mx [Nm]", "My [Nm]", "Mz [Nm]");
+  if (!result.springs.empty()) {
+    out += fmt::format("\nForces on the spring-dampers' second node or ground\n{:>30}{}\n", "", head);
+    for (const auto& [e, f] : result.springs) out += fmt::format("{:>30}{}\n", element_name(model, e), forces(f));
+  }
+  if (!result.reactions.empty()) {
+    out += fmt::format("\nForces on the supports (fixed DOFs)\n{:>30}{}\n", "", head);
+    for (const auto& [node, f] : result.reactions) out += fmt::format("{:>30}{}\n", "node " + node_name(model, node), forces(f));
+  }
+  out += fmt::format("{:>30}{}\n", "total applied load", forces(result.total_load));
+  if (!result.stations.empty()) {
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < result.stresses.size(); ++i)
+      if (result.stresses[i].von_mises > result.stresses[worst].von_mises) worst = i;
+    out += "\nShaft section forces and stresses (element ends)\n";
+    out += fmt::format("{:>9} {:>10} {:>10} {:>10} {:>10} {:>12} {:>12}\n", "x [mm]", "N [N]", "|V| [N]", "T [Nm]",
+                       "|M| [Nm]", "bending[MPa]", "eq. [MPa]");
+    for (std::size_t i = 0; i < result.stations.size(); ++i) {
+      const SectionForces& f = result.section_forces[i];
+      out += fmt::format("{:>9.2f} {} {} {} {} {} {}{}\n", 1e3 * result.stations[i].x, cell(f.N.real(), ".4g", 10, 12),
+                         cell(std::hypot(f.Vy.real(), f.Vz.real()), ".4g", 10, 12), cell(f.T.real(), ".4g", 10, 12),
+                         cell(std::hypot(f.My.real(), f.Mz.real()), ".4g", 10, 12),
+                         cell(1e-6 * result.stresses[i].bending, ".4f", 12, 4),
+                         cell(1e-6 * result.stresses[i].von_mises, ".4f", 12, 4), i == worst ? "  <- largest" : "");
+    }
+  }
+  return out;
+}
+
 }  // namespace feran

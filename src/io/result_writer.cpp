@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <feran/core/error.hpp>
+#include <feran/elements/spring_damper.hpp>
 
 namespace feran {
 
@@ -49,7 +50,271 @@ std::string csv_name(std::string label) {
   return label;
 }
 
+
+json node_json(const Model& model, Index node) {
+  const Node& n = model.nodes[static_cast<std::size_t>(node)];
+  return {{"node", n.number}, {"name", n.name}, {"x_m", n.x}};
+}
+
+Real degrees(Complex c) { return std::arg(c) * 180.0 / pi; }
+
+// Amplitude and phase per point of the DOFs whose mask is set, keyed by DOF name.
+json dof_series(const std::vector<NodeAmplitudes>& values, const std::array<bool, dofs_per_node>& mask,
+                const char* const names[dofs_per_node]) {
+  json out = json::object();
+  for (int d = 0; d < dofs_per_node; ++d) {
+    if (!mask[static_cast<std::size_t>(d)]) continue;
+    std::vector<Real> amp, phase;
+    for (const NodeAmplitudes& v : values) {
+      amp.push_back(std::abs(v[static_cast<std::size_t>(d)]));
+      phase.push_back(degrees(v[static_cast<std::size_t>(d)]));
+    }
+    out[names[d]] = {{"amplitude", numbers(amp)}, {"phase_deg", numbers(phase)}};
+  }
+  return out;
+}
+
+constexpr const char* dof_names[dofs_per_node] = {"u", "v", "w", "rx", "ry", "rz"};
+constexpr const char* direction_names[dofs_per_node] = {"x", "y", "z", "rx", "ry", "rz"};
+constexpr std::array<bool, dofs_per_node> all_dofs{true, true, true, true, true, true};
+
+std::string element_label(const Model& model, Index element) {
+  const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
+  return label.empty() ? fmt::format("element {}", element + 1) : label;
+}
+
+json station_json(const Model& model, const ShaftStation& st) {
+  json j = node_json(model, st.node);
+  j["element"] = element_label(model, st.element);
+  j["end"] = st.end == 0 ? "start" : "end";
+  return j;
+}
+
 }  // namespace
+
+std::string response_json(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
+                          const ResultSource& source) {
+  json j = header("response", source);
+  const std::size_t n = result.speeds.size();
+  const std::size_t wanted = result.frequency_sweep ? options.frequencies.size() : options.speeds.size();
+  j["sweep"] = result.frequency_sweep ? "frequency" : "speed";
+  j["complete"] = result.info.converged && n == wanted;
+  std::vector<Real> speeds, freqs;
+  for (std::size_t k = 0; k < n; ++k) {
+    speeds.push_back(rad_to_hz(result.speeds[k]));
+    freqs.push_back(rad_to_hz(result.frequencies[k]));
+  }
+  j["speeds_hz"] = numbers(speeds);
+  j["frequencies_hz"] = numbers(freqs);
+  j["loss_factor"] = options.loss_factor;
+  j["unbalance"] = options.unbalance && !result.frequency_sweep && !model.unbalances.empty();
+  j["solver"] = solver_json(result.info);
+
+  json probes = json::array();
+  for (const ProbeResponse& p : result.probes) {
+    json jp = node_json(model, p.node);
+    std::vector<Real> major, minor, incl, phase;
+    json whirl = json::array();
+    for (std::size_t k = 0; k < p.orbit.size(); ++k) {
+      major.push_back(p.orbit[k].major);
+      minor.push_back(p.orbit[k].minor);
+      incl.push_back(p.orbit[k].inclination * 180.0 / pi);
+      phase.push_back(degrees(p.q[k][static_cast<std::size_t>(Dof::v)]));
+      whirl.push_back(to_string(p.orbit[k].whirl));
+    }
+    jp["amplitude_m"] = numbers(major);
+    jp["phase_deg"] = numbers(phase);
+    jp["minor_m"] = numbers(minor);
+    jp["inclination_deg"] = numbers(incl);
+    jp["whirl"] = whirl;
+    jp["dofs"] = dof_series(p.q, all_dofs, dof_names);
+    probes.push_back(jp);
+  }
+  j["probes"] = probes;
+
+  json springs = json::array();
+  for (const SpringForceResponse& s : result.springs) {
+    const auto* sd = model.elements[static_cast<std::size_t>(s.element)].target<SpringDamper>();
+    json js = {{"label", element_label(model, s.element)},
+               {"node", model.nodes[static_cast<std::size_t>(sd->node_a())].number},
+               {"peak_lateral_force_n", numbers(s.peak_lateral)},
+               {"force", dof_series(s.force, all_dofs, direction_names)}};
+    js["to"] = sd->node_b() ? json(model.nodes[static_cast<std::size_t>(*sd->node_b())].number) : json("ground");
+    springs.push_back(js);
+  }
+  j["springs"] = springs;
+
+  json reactions = json::array();
+  for (const ReactionResponse& r : result.reactions) {
+    json jr = node_json(model, r.node);
+    jr["peak_lateral_force_n"] = numbers(r.peak_lateral);
+    jr["force"] = dof_series(r.force, r.fixed, direction_names);
+    reactions.push_back(jr);
+  }
+  j["reactions"] = reactions;
+
+  json stations = json::array();
+  for (const StationResponse& st : result.stations) {
+    json js = station_json(model, st.station);
+    std::vector<Real> vm, ax, be, to, sh;
+    for (const SectionStress& s : st.stress) {
+      vm.push_back(s.von_mises), ax.push_back(s.axial), be.push_back(s.bending);
+      to.push_back(s.torsion), sh.push_back(s.shear);
+    }
+    js["von_mises_pa"] = numbers(vm);
+    js["axial_pa"] = numbers(ax);
+    js["bending_pa"] = numbers(be);
+    js["torsion_pa"] = numbers(to);
+    js["shear_pa"] = numbers(sh);
+    stations.push_back(js);
+  }
+  j["stations"] = stations;
+
+  const ResponseSummary sum = summarize(result);
+  auto at = [&](Index k) {
+    return json{{"speed_hz", rad_to_hz(result.speeds[static_cast<std::size_t>(k)])},
+                {"frequency_hz", rad_to_hz(result.frequencies[static_cast<std::size_t>(k)])}};
+  };
+  json summary;
+  json peaks = json::array();
+  for (std::size_t p = 0; p < sum.probe_peaks.size(); ++p) {
+    if (sum.probe_peaks[p].point < 0) continue;
+    json jp = node_json(model, result.probes[p].node);
+    jp["peak_amplitude_m"] = sum.probe_peaks[p].value;
+    jp.update(at(sum.probe_peaks[p].point));
+    peaks.push_back(jp);
+  }
+  summary["probes"] = peaks;
+  summary["largest_spring_force"] = nullptr;
+  if (sum.spring_force.point >= 0) {
+    json js = {{"label", element_label(model, result.springs[static_cast<std::size_t>(sum.spring_force.item)].element)},
+               {"peak_lateral_force_n", sum.spring_force.value}};
+    js.update(at(sum.spring_force.point));
+    summary["largest_spring_force"] = js;
+  }
+  summary["largest_reaction"] = nullptr;
+  if (sum.reaction_force.point >= 0) {
+    json jr = node_json(model, result.reactions[static_cast<std::size_t>(sum.reaction_force.item)].node);
+    jr["peak_lateral_force_n"] = sum.reaction_force.value;
+    jr.update(at(sum.reaction_force.point));
+    summary["largest_reaction"] = jr;
+  }
+  summary["largest_stress"] = nullptr;
+  if (sum.stress.point >= 0) {
+    json js = station_json(model, result.stations[static_cast<std::size_t>(sum.stress.item)].station);
+    js["von_mises_pa"] = sum.stress.value;
+    js.update(at(sum.stress.point));
+    summary["largest_stress"] = js;
+  }
+  j["summary"] = summary;
+  return j.dump(2) + "\n";
+}
+
+std::string response_csv(const HarmonicResult& result, const Model& model) {
+  std::ostringstream out;
+  auto node_tag = [&](Index node) {
+    const Node& nd = model.nodes[static_cast<std::size_t>(node)];
+    return nd.name.empty() ? fmt::format("node{}", nd.number) : csv_name(nd.name);
+  };
+  out << "speed_hz,frequency_hz";
+  for (const ProbeResponse& p : result.probes) {
+    const std::string t = node_tag(p.node);
+    out << ',' << t << "_amplitude_m," << t << "_minor_m," << t << "_v_amplitude_m," << t << "_v_phase_deg," << t
+        << "_w_amplitude_m," << t << "_w_phase_deg";
+  }
+  for (const SpringForceResponse& s : result.springs)
+    out << ',' << csv_name(element_label(model, s.element)) << "_peak_lateral_force_n";
+  for (const ReactionResponse& r : result.reactions) out << ',' << node_tag(r.node) << "_support_peak_lateral_force_n";
+  out << ",max_von_mises_pa\n";
+  for (std::size_t k = 0; k < result.speeds.size(); ++k) {
+    out << csv_number(rad_to_hz(result.speeds[k])) << ',' << csv_number(rad_to_hz(result.frequencies[k]));
+    for (const ProbeResponse& p : result.probes) {
+      const Complex v = p.q[k][static_cast<std::size_t>(Dof::v)], w = p.q[k][static_cast<std::size_t>(Dof::w)];
+      out << ',' << csv_number(p.orbit[k].major) << ',' << csv_number(p.orbit[k].minor) << ',' << csv_number(std::abs(v))
+          << ',' << csv_number(degrees(v)) << ',' << csv_number(std::abs(w)) << ',' << csv_number(degrees(w));
+    }
+    for (const SpringForceResponse& s : result.springs) out << ',' << csv_number(s.peak_lateral[k]);
+    for (const ReactionResponse& r : result.reactions) out << ',' << csv_number(r.peak_lateral[k]);
+    Real vm = 0;
+    for (const StationResponse& st : result.stations) vm = std::max(vm, st.stress[k].von_mises);
+    out << ',' << csv_number(vm) << '\n';
+  }
+  return out.str();
+}
+
+std::string static_json(const StaticResult& result, const StaticOptions& options, const Model& model,
+                        const ResultSource& source) {
+  json j = header("static", source);
+  j["gravity_m_s2"] = {options.gravity(0), options.gravity(1), options.gravity(2)};
+  j["speed_hz"] = rad_to_hz(options.speed);
+  j["solver"] = solver_json(result.info);
+  json nodes = json::array();
+  for (Index node = 0; node < model.n_nodes(); ++node) {
+    json jn = node_json(model, node);
+    for (int d = 0; d < dofs_per_node; ++d) jn[dof_names[d]] = result.q(dofs_per_node * node + d);
+    nodes.push_back(jn);
+  }
+  j["displacements"] = nodes;
+  auto components = [](const NodeValues& v, const std::array<bool, dofs_per_node>& mask) {
+    json out = json::object();
+    for (int d = 0; d < dofs_per_node; ++d)
+      if (mask[static_cast<std::size_t>(d)]) out[direction_names[d]] = v[static_cast<std::size_t>(d)];
+    return out;
+  };
+  json springs = json::array();
+  for (const auto& [e, f] : result.springs) {
+    const auto* sd = model.elements[static_cast<std::size_t>(e)].target<SpringDamper>();
+    json js = {{"label", element_label(model, e)},
+               {"node", model.nodes[static_cast<std::size_t>(sd->node_a())].number},
+               {"force", components(f, all_dofs)}};
+    js["to"] = sd->node_b() ? json(model.nodes[static_cast<std::size_t>(*sd->node_b())].number) : json("ground");
+    springs.push_back(js);
+  }
+  j["springs"] = springs;
+  json reactions = json::array();
+  for (const auto& [node, f] : result.reactions) {
+    std::array<bool, dofs_per_node> mask{};
+    for (const FixedDofs& fd : model.fixed)
+      if (fd.node == node)
+        for (int d = 0; d < dofs_per_node; ++d) mask[static_cast<std::size_t>(d)] |= fd.dofs[static_cast<std::size_t>(d)];
+    json jr = node_json(model, node);
+    jr["force"] = components(f, mask);
+    reactions.push_back(jr);
+  }
+  j["reactions"] = reactions;
+  json stations = json::array();
+  for (std::size_t i = 0; i < result.stations.size(); ++i) {
+    const SectionForces& f = result.section_forces[i];
+    const SectionStress& s = result.stresses[i];
+    json js = station_json(model, result.stations[i]);
+    js["forces"] = {{"N", f.N.real()}, {"Vy", f.Vy.real()}, {"Vz", f.Vz.real()},
+                    {"T", f.T.real()}, {"My", f.My.real()}, {"Mz", f.Mz.real()}};
+    js["stress_pa"] = {{"axial", s.axial}, {"bending", s.bending}, {"torsion", s.torsion},
+                       {"shear", s.shear}, {"von_mises", s.von_mises}};
+    stations.push_back(js);
+  }
+  j["stations"] = stations;
+  j["total_load"] = components(result.total_load, all_dofs);
+  return j.dump(2) + "\n";
+}
+
+std::string static_csv(const StaticResult& result, const Model& model) {
+  std::ostringstream out;
+  out << "element,end,node,x_m,u_m,v_m,w_m,rx_rad,ry_rad,rz_rad,N_n,Vy_n,Vz_n,T_nm,My_nm,Mz_nm,"
+         "axial_pa,bending_pa,torsion_pa,shear_pa,von_mises_pa\n";
+  for (std::size_t i = 0; i < result.stations.size(); ++i) {
+    const ShaftStation& st = result.stations[i];
+    const SectionForces& f = result.section_forces[i];
+    const SectionStress& s = result.stresses[i];
+    out << st.element + 1 << ',' << (st.end == 0 ? "start" : "end") << ','
+        << model.nodes[static_cast<std::size_t>(st.node)].number << ',' << csv_number(st.x);
+    for (int d = 0; d < dofs_per_node; ++d) out << ',' << csv_number(result.q(dofs_per_node * st.node + d));
+    for (Complex c : {f.N, f.Vy, f.Vz, f.T, f.My, f.Mz}) out << ',' << csv_number(c.real());
+    out << ',' << csv_number(s.axial) << ',' << csv_number(s.bending) << ',' << csv_number(s.torsion) << ','
+        << csv_number(s.shear) << ',' << csv_number(s.von_mises) << '\n';
+  }
+  return out.str();
+}
 
 std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source,
                        bool shapes) {

@@ -4,7 +4,9 @@
 
 #include <string>
 
+#include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/model/model.hpp>
@@ -17,5 +19,12 @@ std::string modal_report(const ModalResult& result, const Model& model, const Re
 /// the stability threshold.
 std::string campbell_report(const CampbellResult& result, const CampbellOptions& options,
                             const Model& model, const ResultSource& source);
+
+/// Summary of a steady-state response: orbit sizes at selected points and the peaks.
+std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
+                            const ResultSource& source);
+/// Static result: deflections, spring and support forces, shaft stresses.
+std::string static_report(const StaticResult& result, const StaticOptions& options, const Model& model,
+                          const ResultSource& source);
 
 }  // namespace feran

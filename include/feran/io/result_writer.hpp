@@ -4,7 +4,9 @@
 
 #include <string>
 
+#include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/model/model.hpp>
 
@@ -28,6 +30,21 @@ std::string campbell_json(const CampbellResult& result, const CampbellOptions& o
 /// CSV text of a Campbell result: one row per speed, frequency and damping ratio of
 /// every tracked mode.
 std::string campbell_csv(const CampbellResult& result);
+
+/// JSON text of a steady-state response (speed or frequency sweep).
+std::string response_json(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
+                          const ResultSource& source);
+/// CSV text of a steady-state response: one row per point with, per probe, the orbit
+/// size and the amplitude and phase of v and w; per spring–damper the peak lateral
+/// force; and the largest equivalent stress along the shaft.
+std::string response_csv(const HarmonicResult& result, const Model& model);
+
+/// JSON text of a static result.
+std::string static_json(const StaticResult& result, const StaticOptions& options, const Model& model,
+                        const ResultSource& source);
+/// CSV text of a static result: one row per shaft station (element end) with the
+/// displacements of its node, the section forces and the stresses.
+std::string static_csv(const StaticResult& result, const Model& model);
 
 /// Writes @p content to @p path through a temporary file in the same directory and
 /// a rename, so that a reader never sees a half-written file. Throws feran::Error.

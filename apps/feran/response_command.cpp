@@ -1,0 +1,178 @@
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/core/error.hpp>
+#include <feran/io/model_reader.hpp>
+#include <feran/io/node_reference.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+#include <feran/io/units.hpp>
+
+#include "commands.hpp"
+
+namespace feran::app {
+
+namespace {
+
+struct ResponseArgs {
+  std::string model;
+  std::string start, stop;
+  int points = 0;
+  std::string speed;
+  std::string freq_start, freq_stop;
+  int freq_points = 0;
+  std::vector<std::string> probes;
+  std::vector<std::string> forces;
+  double loss_factor = -1.0;
+  bool no_unbalance = false;
+  OutputOptions out;
+};
+
+std::vector<Real> linspace(Real a, Real b, int n) {
+  std::vector<Real> v;
+  for (int i = 0; i < n; ++i) v.push_back(n == 1 ? a : a + (b - a) * i / (n - 1));
+  return v;
+}
+
+// "NODE:DIRECTION:AMPLITUDE[:PHASE]", e.g. "rotor:y:10N", "3:rotating:2N:90deg".
+HarmonicForce parse_force(const Model& model, const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i)
+    if (i == text.size() || text[i] == ':') {
+      parts.push_back(text.substr(start, i - start));
+      start = i + 1;
+    }
+  if (parts.size() < 3 || parts.size() > 4)
+    throw Error(fmt::format("--force '{}': expected NODE:DIRECTION:AMPLITUDE[:PHASE], e.g. rotor:y:10N or "
+                            "rotor:rotating:2N:90deg",
+                            text));
+  HarmonicForce f;
+  f.node = find_node_reference(model, parts[0], "--force");
+  f.label = "--force " + text;
+  const std::string& dir = parts[1];
+  static const std::pair<const char*, Dof> dirs[] = {{"x", Dof::u},   {"y", Dof::v},   {"z", Dof::w},
+                                                     {"rx", Dof::rx}, {"ry", Dof::ry}, {"rz", Dof::rz}};
+  bool moment = false;
+  if (dir == "rotating") {
+    f.kind = HarmonicForce::Kind::rotating_force;
+  } else if (dir == "rotating_moment") {
+    f.kind = HarmonicForce::Kind::rotating_moment;
+    moment = true;
+  } else {
+    const auto* it = std::find_if(std::begin(dirs), std::end(dirs), [&](const auto& p) { return dir == p.first; });
+    if (it == std::end(dirs))
+      throw Error(fmt::format("--force '{}': direction '{}' is not one of x, y, z, rx, ry, rz, rotating, "
+                              "rotating_moment",
+                              text, dir));
+    f.direction = it->second;
+    moment = f.direction == Dof::rx || f.direction == Dof::ry || f.direction == Dof::rz;
+  }
+  try {
+    f.amplitude = parse_quantity(parts[2], moment ? Quantity::moment : Quantity::force);
+    if (parts.size() == 4) f.phase = parse_quantity(parts[3], Quantity::angle);
+  } catch (const Error& e) {
+    throw Error(fmt::format("--force '{}': {}", text, e.what()));
+  }
+  if (!(f.amplitude > 0)) throw Error(fmt::format("--force '{}': the amplitude must be positive", text));
+  return f;
+}
+
+}  // namespace
+
+Runner add_response_command(CLI::App& app) {
+  auto args = std::make_shared<ResponseArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "response", "Steady-state response to unbalance and harmonic forces: orbits, bearing forces, stresses");
+  cmd->footer(
+      "Examples:\n"
+      "  feran response examples/01_internal_damping/model.toml --start 0Hz --stop 80Hz --points 161 \\\n"
+      "      --probe rotor --json response.json --csv response.csv\n"
+      "  feran response MODEL --speed 30Hz --freq-start 1Hz --freq-stop 200Hz --freq-points 400 \\\n"
+      "      --force rotor:y:1N --no-unbalance --probe rotor        (frequency response function)\n\n"
+      "A speed sweep excites at the rotor speed (unbalances and the model's [[forces]]); a\n"
+      "frequency sweep (--freq-start/--freq-stop) holds the rotor at --speed and excites\n"
+      "with the forces at each frequency. Unset options come from the model's [response]\n"
+      "table; probes default to every node carrying an unbalance.");
+  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  cmd->add_option("--start", args->start, "Speed sweep: first speed with unit (0Hz, 0rpm)");
+  cmd->add_option("--stop", args->stop, "Speed sweep: last speed with unit (80Hz, 4800rpm)");
+  cmd->add_option("-p,--points", args->points, "Number of evenly spaced points (>= 1)")->check(CLI::Range(1, 10000000));
+  cmd->add_option("-s,--speed", args->speed, "Frequency sweep: the constant rotor speed (default 0)");
+  cmd->add_option("--freq-start", args->freq_start, "Frequency sweep: first excitation frequency (1Hz)");
+  cmd->add_option("--freq-stop", args->freq_stop, "Frequency sweep: last excitation frequency (200Hz)");
+  cmd->add_option("--freq-points", args->freq_points, "Frequency sweep: number of frequencies (default 201)")
+      ->check(CLI::Range(1, 10000000));
+  cmd->add_option("--probe", args->probes, "Node to report (name or number); repeat for several")->take_all();
+  cmd->add_option("--force", args->forces,
+                  "Add a harmonic force NODE:DIRECTION:AMPLITUDE[:PHASE]; DIRECTION x, y, z, rx, ry, rz "
+                  "(fixed), rotating or rotating_moment (turning with the shaft), e.g. rotor:y:10N:90deg")
+      ->take_all();
+  cmd->add_option("--loss-factor", args->loss_factor, "Global hysteretic loss factor eta: adds j*eta*K")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-unbalance", args->no_unbalance, "Leave the model's unbalances out");
+  add_output_options(*cmd, args->out);
+
+  return [args]() {
+    const ModelFile file = read_model_file(args->model);
+    const Model& model = file.model;
+    HarmonicOptions options;
+    options.unbalance = !args->no_unbalance;
+    options.loss_factor = args->loss_factor >= 0 ? args->loss_factor : file.response.loss_factor.value_or(0.0);
+    for (const std::string& f : args->forces) options.extra_forces.push_back(parse_force(model, f));
+
+    const bool frequency_sweep = !args->freq_start.empty() || !args->freq_stop.empty();
+    if (frequency_sweep) {
+      if (args->freq_start.empty() || args->freq_stop.empty())
+        throw Error("response: a frequency sweep needs both --freq-start and --freq-stop");
+      const Real a = parse_speed_option(args->freq_start, "--freq-start");
+      const Real b = parse_speed_option(args->freq_stop, "--freq-stop");
+      if (!(b > a)) throw Error("response: --freq-stop must be above --freq-start");
+      options.frequencies = linspace(a, b, args->freq_points > 0 ? args->freq_points : 201);
+      options.speed = args->speed.empty() ? 0.0 : parse_speed_option(args->speed, "--speed");
+      if (model.forces.empty() && options.extra_forces.empty())
+        throw Error("response: a frequency sweep needs a harmonic force: add --force NODE:DIRECTION:AMPLITUDE "
+                    "or [[forces]] in the model");
+    } else {
+      const Real start = !args->start.empty() ? parse_speed_option(args->start, "--start")
+                                              : file.response.start.value_or(0.0);
+      if (args->stop.empty() && !file.response.stop)
+        throw Error("response: give the last speed with --stop (e.g. --stop 80Hz) or in the model's [response] table");
+      const Real stop = !args->stop.empty() ? parse_speed_option(args->stop, "--stop") : *file.response.stop;
+      if (!(stop > start)) throw Error("response: the last speed must be above the first");
+      options.speeds = linspace(start, stop, args->points > 0 ? args->points : file.response.points.value_or(201));
+      if ((model.unbalances.empty() || !options.unbalance) && model.forces.empty() && options.extra_forces.empty())
+        throw Error("response: nothing excites the rotor: the model has no [[unbalances]] or [[forces]] and no "
+                    "--force was given");
+    }
+    if (!args->probes.empty()) {
+      for (const std::string& p : args->probes) options.probes.push_back(find_node_reference(model, p, "--probe"));
+    } else if (!file.response.probes.empty()) {
+      options.probes = file.response.probes;
+    } else {
+      for (const Unbalance& u : model.unbalances)
+        if (std::find(options.probes.begin(), options.probes.end(), u.node) == options.probes.end())
+          options.probes.push_back(u.node);
+      for (const HarmonicForce& f : options.extra_forces)
+        if (std::find(options.probes.begin(), options.probes.end(), f.node) == options.probes.end())
+          options.probes.push_back(f.node);
+    }
+
+    const HarmonicResult result = run_harmonic_response(model, options);
+    const ResultSource source{file.path, file.title};
+    write_if_asked(args->out.json_path, response_json(result, options, model, source));
+    write_if_asked(args->out.csv_path, response_csv(result, model));
+    if (!args->out.quiet) std::fputs(response_report(result, options, model, source).c_str(), stdout);
+    if (!result.info.converged) {
+      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
+      return static_cast<int>(numerical_failure);
+    }
+    return static_cast<int>(ok);
+  };
+}
+
+}  // namespace feran::app

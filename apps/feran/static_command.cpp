@@ -1,0 +1,75 @@
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/core/error.hpp>
+#include <feran/io/model_reader.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+#include <feran/io/units.hpp>
+
+#include "commands.hpp"
+
+namespace feran::app {
+
+namespace {
+struct StaticArgs {
+  std::string model;
+  std::string gravity;
+  std::string g;
+  std::string speed;
+  bool no_loads = false;
+  OutputOptions out;
+};
+}  // namespace
+
+Runner add_static_command(CLI::App& app) {
+  auto args = std::make_shared<StaticArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "static", "Static deflection, spring and support forces, shaft stresses under gravity and static loads");
+  cmd->footer(
+      "Example:\n  feran static examples/02_centrifuge/model.toml --gravity -x --json static.json\n\n"
+      "Gravity comes from --gravity, else the model's [static] table, else -y at 9.81 m/s^2.\n"
+      "The model's [[static_loads]] act too unless --no-loads is given.");
+  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  cmd->add_option("--gravity", args->gravity, "Direction of gravity: +x, -x, +y, -y, +z, -z or none")
+      ->check(CLI::IsMember({"+x", "-x", "+y", "-y", "+z", "-z", "x", "y", "z", "none"}));
+  cmd->add_option("--g", args->g, "Gravitational acceleration with unit (default 9.81m/s^2)");
+  cmd->add_option("-s,--speed", args->speed, "Speed at which speed-dependent coefficients are taken (default 0)");
+  cmd->add_flag("--no-loads", args->no_loads, "Leave the model's [[static_loads]] out");
+  add_output_options(*cmd, args->out);
+
+  return [args]() {
+    const ModelFile file = read_model_file(args->model);
+    StaticOptions options;
+    Real g = 9.81;
+    if (!args->g.empty()) {
+      g = parse_quantity(args->g, Quantity::acceleration);
+      if (!(g > 0)) throw Error("--g must be positive");
+    }
+    if (!args->gravity.empty()) {
+      if (args->gravity != "none") {
+        const std::string& d = args->gravity;
+        const int axis = d.back() - 'x';
+        options.gravity(axis) = (d.front() == '-' ? -g : g);
+      }
+    } else if (file.static_.gravity) {
+      options.gravity = *file.static_.gravity;
+      if (!args->g.empty() && options.gravity.norm() > 0) options.gravity *= g / options.gravity.norm();
+    } else {
+      options.gravity(1) = -g;
+    }
+    options.speed = !args->speed.empty() ? parse_speed_option(args->speed, "--speed") : file.static_.speed.value_or(0.0);
+    options.loads = !args->no_loads;
+    const StaticResult result = run_static(file.model, options);
+    const ResultSource source{file.path, file.title};
+    write_if_asked(args->out.json_path, static_json(result, options, file.model, source));
+    write_if_asked(args->out.csv_path, static_csv(result, file.model));
+    if (!args->out.quiet) std::fputs(static_report(result, options, file.model, source).c_str(), stdout);
+    return static_cast<int>(ok);
+  };
+}
+
+}  // namespace feran::app
