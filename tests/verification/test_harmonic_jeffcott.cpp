@@ -76,5 +76,31 @@ TEST(HarmonicJeffcott, SpringForceIsStiffnessTimesDisplacement) {
   EXPECT_NEAR(r.springs[0].peak_lateral[0], std::abs(expected), 1e-10 * std::abs(expected));
 }
 
+// Hysteretic damping: a loss factor η on the spring, or a global one, turns k into
+// k(1 + iη): R = m_u e Ω² e^{iφ}/(k(1 + iη) − mΩ²).
+TEST(HarmonicJeffcott, LossFactorMakesTheStiffnessComplex) {
+  const Real wn = std::sqrt(k / m), eta = 0.04;
+  for (bool global : {false, true}) {
+    Model model = jeffcott(0.0, 0.0);
+    HarmonicOptions opt;
+    if (global) {
+      opt.loss_factor = eta;
+    } else {
+      SpringDamperCoefficients c = model.elements[1].target<SpringDamper>()->coefficients();
+      c.loss_factor = eta;
+      model.elements[1] = SpringDamper(0, std::nullopt, c);
+    }
+    opt.speeds = {0.5 * wn, wn, 1.7 * wn};
+    opt.probes = {0};
+    const HarmonicResult r = run_harmonic_response(model, opt);
+    for (std::size_t i = 0; i < opt.speeds.size(); ++i) {
+      const Real W = opt.speeds[i];
+      const Complex R = mu * e * W * W * std::polar(1.0, 0.3) / (Complex(k, k * eta) - m * W * W);
+      const Complex v = r.probes[0].q[i][static_cast<std::size_t>(Dof::v)];
+      EXPECT_NEAR(std::abs(v - R), 0.0, 1e-10 * std::abs(R)) << (global ? "global" : "element");
+    }
+  }
+}
+
 }  // namespace
 }  // namespace feran
