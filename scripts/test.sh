@@ -1,7 +1,15 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the whole test suite through ctest.
+# Sets up, builds and runs the whole test suite through ctest, twice:
+#  1. the Release build, warnings as errors;
+#  2. a Debug build with AddressSanitizer and UndefinedBehaviorSanitizer, so that
+#     Eigen's and feran's debug assertions and memory errors are checked too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+jobs=$(nproc 2>/dev/null || echo 2)
 bash scripts/setup.sh
 FERAN_WARNINGS_AS_ERRORS=ON bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j "$(nproc 2>/dev/null || echo 2)"
+ctest --test-dir build --output-on-failure -j "$jobs"
+
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DFERAN_SANITIZE=ON -DFERAN_WARNINGS_AS_ERRORS=ON >/dev/null
+cmake --build build-sanitize -j "$jobs" >/dev/null
+ctest --test-dir build-sanitize --output-on-failure -j "$jobs"
