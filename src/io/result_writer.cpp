@@ -156,11 +156,19 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
   json stations = json::array();
   for (const StationResponse& st : result.stations) {
     json js = station_json(model, st.station);
-    std::vector<Real> vm, ax, be, to, sh;
+    std::vector<Real> vm, ax, be, to, sh, fn, fv, ft, fm;
     for (const SectionStress& s : st.stress) {
       vm.push_back(s.von_mises), ax.push_back(s.axial), be.push_back(s.bending);
       to.push_back(s.torsion), sh.push_back(s.shear);
     }
+    for (const SectionForces& f : st.forces) {
+      fn.push_back(std::abs(f.N)), ft.push_back(std::abs(f.T));
+      fv.push_back(orbit(f.Vy, f.Vz).major), fm.push_back(orbit(f.My, f.Mz).major);
+    }
+    js["axial_force_n"] = numbers(fn);
+    js["shear_force_n"] = numbers(fv);
+    js["torque_nm"] = numbers(ft);
+    js["bending_moment_nm"] = numbers(fm);
     js["von_mises_pa"] = numbers(vm);
     js["axial_pa"] = numbers(ax);
     js["bending_pa"] = numbers(be);
