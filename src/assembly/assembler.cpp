@@ -58,11 +58,15 @@ Assembler::Assembler(const Model& model) : dofs_(model) {
   constant_ = reduce(t, dofs_.transformation());
 }
 
-SystemMatrices Assembler::at(Real speed) const {
-  if (speed_dependent_elements_.empty()) return constant_;
+SystemMatrices Assembler::variable_at(Real speed) const {
   FullTriplets t;
   for (const Element& e : speed_dependent_elements_) add_element(e, OperatingPoint{speed}, t);
-  SystemMatrices var = reduce(t, dofs_.transformation());
+  return reduce(t, dofs_.transformation());
+}
+
+SystemMatrices Assembler::at(Real speed) const {
+  if (speed_dependent_elements_.empty()) return constant_;
+  const SystemMatrices var = variable_at(speed);
   SystemMatrices out = constant_;
   out.M += var.M;
   out.C += var.C;

@@ -34,6 +34,11 @@ class Assembler {
   SystemMatrices at(Real speed) const;
   /// True when some element's matrices depend on speed (beyond G and K_i).
   bool speed_dependent() const { return !speed_dependent_elements_.empty(); }
+  /// The speed-independent part (assembled once).
+  const SystemMatrices& constant() const { return constant_; }
+  /// Only the speed-dependent elements' contribution at @p speed (zero matrices of
+  /// the right size when there are none).
+  SystemMatrices variable_at(Real speed) const;
 
  private:
   DofMap dofs_;

@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// A feran model as a SecondOrderSystem for the time integrators.
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+
+#include <feran/analyses/nonlinear/nonlinear_force.hpp>
+#include <feran/analyses/transient/second_order_system.hpp>
+#include <feran/analyses/transient/speed_profile.hpp>
+#include <feran/assembly/assembler.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+/// M q'' = f(t) + f_nl(t, q, q', Ω) − (C(Ω) + C_i + Ω G) q' − (K(Ω) + Ω K_i) q in
+/// reduced coordinates, with Ω = Ω(t) from a speed profile. f(t) holds the
+/// unbalances, m·r·(Ω² − jΩ')·e^{j(φ + phase)} with φ = ∫Ω dt (plus their lever
+/// moments), the model's harmonic forces at the angle φ, and optionally the static
+/// loads. Speed-dependent coefficients follow Ω(t).
+class RotorSystem final : public SecondOrderSystem {
+ public:
+  /// @p model must outlive the system.
+  RotorSystem(const Model& model, SpeedProfile profile, bool static_loads = false);
+
+  Index size() const override { return M_.rows(); }
+  void rhs(Real t, const Vector& x, const Vector& v, Vector& r) override;
+  void mass_times(const Vector& u, Vector& y) const override { y = M_ * u; }
+  void solve_mass(const Vector& r, Vector& a) override { a = mass_.solve(r); }
+  void set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) override;
+  void stiffness_times(const Vector& u, Vector& y) const override { y = KT_ * u; }
+  void damping_times(const Vector& u, Vector& y) const override { y = DT_ * u; }
+  bool factor_tangent(Real c_x, Real c_v, Real c_a) override;
+  void solve_tangent(const Vector& rhs, Vector& delta) override { delta = lu_.solve(rhs); }
+  Real highest_frequency() override;
+
+  const DofMap& dof_map() const { return assembler_.dof_map(); }
+  const SpeedProfile& profile() const { return profile_; }
+  /// Displacements (or velocities) of all unconstrained DOFs.
+  Vector expand(const Vector& reduced) const { return assembler_.dof_map().expand(reduced); }
+
+ private:
+  void update_speed(Real speed);
+  void external_forces(Real t, Vector& f_full) const;
+
+  const Model& model_;
+  Assembler assembler_;
+  SpeedProfile profile_;
+  bool static_loads_;
+  SparseMatrix M_, C_, K_, G_, Ci_, Ki_;  // speed-independent parts
+  SparseMatrix Cv_, Kv_;                  // speed-dependent parts at cached_speed_
+  Real cached_speed_;
+  Eigen::SimplicialLDLT<SparseMatrix> mass_;
+  std::vector<NonlinearForce> forces_;
+  std::vector<SparseMatrix> selectors_;  // per force: rows of T for its DOFs
+  SparseMatrix DT_, KT_;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+  Index pattern_nonzeros_ = -1;
+  Vector f_full_;
+};
+
+}  // namespace feran

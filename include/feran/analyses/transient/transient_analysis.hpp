@@ -1,0 +1,71 @@
+#pragma once
+/// @file
+/// Run-up / run-down simulation (paper section 2.4): time integration of the rotor
+/// model along a speed profile, with output sampled at a fixed interval.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/transient/integrator.hpp>
+#include <feran/analyses/transient/speed_profile.hpp>
+#include <feran/model/model.hpp>
+
+namespace feran {
+
+struct TransientOptions {
+  SpeedProfile profile = SpeedProfile::constant(0.0);
+  Real duration = 1.0;                     ///< [s]
+  std::string integrator = "trapezoidal";  ///< see integrator_names()
+  IntegratorSettings settings;
+  Real output_interval = 1e-3;             ///< sampling interval of the output [s]
+  std::vector<Index> probes;               ///< nodes whose motion is recorded
+  std::vector<Index> springs;              ///< spring–damper elements whose force is recorded
+  bool static_loads = false;               ///< apply Model::static_loads as constant forces
+  /// The run stops when a displacement exceeds this [m] or a rotation this [rad].
+  Real blowup_limit = 1.0;
+  Index envelope_bins = 400;               ///< speed bins of the |r| envelope
+  bool keep_samples = true;                ///< keep the samples in the result
+};
+
+/// The recorded state at one output time.
+struct TransientSample {
+  Real t = 0;
+  Real speed = 0;                                         ///< [rad/s]
+  std::vector<std::array<Real, dofs_per_node>> probes;    ///< per probe node: u, v, w, rx, ry, rz
+  std::vector<Real> magnitude;                            ///< per probe: |r| = √(v² + w²)
+  std::vector<std::array<Real, dofs_per_node>> springs;   ///< per recorded spring: K·Δq + C·Δq'
+};
+
+/// Largest |r| of a probe within speed bins (evaluated at every step, not only at
+/// the output times).
+struct Envelope {
+  std::vector<Real> speed;      ///< bin centres [rad/s]
+  std::vector<Real> magnitude;  ///< largest |r| in the bin [m]; NaN when never visited
+  Real peak = 0;                ///< largest |r| of the run [m]
+  Real peak_time = 0;           ///< [s]
+  Real peak_speed = 0;          ///< [rad/s]
+};
+
+struct TransientResult {
+  std::vector<TransientSample> samples;  ///< when keep_samples
+  std::vector<Envelope> envelopes;       ///< per probe
+  /// converged = false when the run stopped early (integrator failure, blow-up,
+  /// non-finite values); message says when and where. Results up to then are kept.
+  SolverInfo info;
+  std::string warning;  ///< e.g. rk3 run above its stability limit on request
+  Real t_end = 0;       ///< time reached [s]
+  Index steps = 0, rejected = 0, factorizations = 0, newton_iterations = 0;
+};
+
+using SampleSink = std::function<void(const TransientSample&)>;
+/// Called every few steps with the time reached and the current step size.
+using ProgressSink = std::function<void(Real t, Real dt)>;
+
+/// Integrates from rest (q = q' = 0 at t = 0). Throws feran::Error for a bad option
+/// (unknown integrator, non-positive step or interval).
+TransientResult run_transient(const Model& model, const TransientOptions& options,
+                              const SampleSink& sink = {}, const ProgressSink& progress = {});
+
+}  // namespace feran

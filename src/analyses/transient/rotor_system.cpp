@@ -1,0 +1,138 @@
+#include <feran/analyses/transient/rotor_system.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, bool static_loads)
+    : model_(model),
+      assembler_(model),
+      profile_(std::move(profile)),
+      static_loads_(static_loads),
+      cached_speed_(std::numeric_limits<Real>::quiet_NaN()) {
+  const SystemMatrices& c = assembler_.constant();
+  M_ = c.M, C_ = c.C, K_ = c.K, G_ = c.G, Ci_ = c.Ci, Ki_ = c.Ki;
+  mass_.compute(M_);
+  if (mass_.info() != Eigen::Success) throw Error("transient: the mass matrix is not positive definite");
+  // The rows of T for a force's DOFs map reduced coordinates to its local ones.
+  const Eigen::SparseMatrix<Real, Eigen::RowMajor> Tr = assembler_.dof_map().transformation();
+  for (NonlinearForce& f : nonlinear_forces(model)) {
+    const std::vector<Index> dofs = f.dofs();
+    SparseMatrix sel(static_cast<Index>(dofs.size()), Tr.cols());
+    std::vector<Eigen::Triplet<Real>> trip;
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      for (Eigen::SparseMatrix<Real, Eigen::RowMajor>::InnerIterator it(Tr, dofs[i]); it; ++it)
+        trip.emplace_back(static_cast<Index>(i), it.col(), it.value());
+    sel.setFromTriplets(trip.begin(), trip.end());
+    selectors_.push_back(sel);
+    forces_.push_back(std::move(f));
+  }
+  f_full_.resize(model.n_dofs());
+  update_speed(profile_.speed(0.0));
+}
+
+void RotorSystem::update_speed(Real speed) {
+  if (!assembler_.speed_dependent() || speed == cached_speed_) return;
+  const SystemMatrices v = assembler_.variable_at(speed);
+  Cv_ = v.C;
+  Kv_ = v.K;
+  cached_speed_ = speed;
+}
+
+void RotorSystem::external_forces(Real t, Vector& f) const {
+  f.setZero();
+  const Real W = profile_.speed(t), dW = profile_.acceleration(t), phi = profile_.angle(t);
+  for (const Unbalance& u : model_.unbalances) {
+    // F_y + j·F_z = m r (Ω² − jΩ') e^{j(φ + phase)}
+    const Complex F = u.mass * u.radius * Complex(W * W, -dW) * std::polar(1.0, phi + u.phase);
+    f(global_dof(u.node, Dof::v)) += F.real();
+    f(global_dof(u.node, Dof::w)) += F.imag();
+    f(global_dof(u.node, Dof::ry)) += -u.lever * F.imag();
+    f(global_dof(u.node, Dof::rz)) += u.lever * F.real();
+  }
+  for (const HarmonicForce& h : model_.forces) {
+    const Complex a = h.amplitude * std::polar(1.0, phi + h.phase);
+    switch (h.kind) {
+      case HarmonicForce::Kind::fixed: f(global_dof(h.node, h.direction)) += a.real(); break;
+      case HarmonicForce::Kind::rotating_force:
+        f(global_dof(h.node, Dof::v)) += a.real();
+        f(global_dof(h.node, Dof::w)) += a.imag();
+        break;
+      case HarmonicForce::Kind::rotating_moment:
+        f(global_dof(h.node, Dof::ry)) += a.real();
+        f(global_dof(h.node, Dof::rz)) += a.imag();
+        break;
+    }
+  }
+  if (static_loads_)
+    for (const StaticLoad& l : model_.static_loads)
+      for (int d = 0; d < dofs_per_node; ++d) f(dofs_per_node * l.node + d) += l.load[static_cast<std::size_t>(d)];
+}
+
+void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
+  const Real W = profile_.speed(t);
+  update_speed(W);
+  external_forces(t, f_full_);
+  r = assembler_.dof_map().transformation().transpose() * f_full_;
+  r -= C_ * v + Ci_ * v + W * (G_ * v) + K_ * x + W * (Ki_ * x);
+  if (assembler_.speed_dependent()) r -= Cv_ * v + Kv_ * x;
+  const MotionState state{t, W};
+  for (std::size_t i = 0; i < forces_.size(); ++i) {
+    const NonlinearForceValue f = forces_[i].force(state, selectors_[i] * x, selectors_[i] * v);
+    r += selectors_[i].transpose() * f.f;
+  }
+}
+
+void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) {
+  const Real W = profile_.speed(t);
+  update_speed(W);
+  DT_ = C_ + Ci_ + W * G_;
+  KT_ = K_ + W * Ki_;
+  if (assembler_.speed_dependent()) {
+    DT_ += Cv_;
+    KT_ += Kv_;
+  }
+  const MotionState state{t, W};
+  for (std::size_t i = 0; i < forces_.size(); ++i) {
+    const SparseMatrix& S = selectors_[i];
+    NonlinearForceValue f = forces_[i].force(state, S * x, S * v);
+    if (!exact) f.dfdx.setZero(), f.dfdv.setZero();  // keep the pattern, drop the values
+    DT_ -= SparseMatrix(S.transpose() * f.dfdv.sparseView(0.0, 0.0) * S);
+    KT_ -= SparseMatrix(S.transpose() * f.dfdx.sparseView(0.0, 0.0) * S);
+  }
+}
+
+bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
+  SparseMatrix S = c_a * M_ + c_v * DT_ + c_x * KT_;
+  S.makeCompressed();
+  if (S.nonZeros() != pattern_nonzeros_) {
+    lu_.analyzePattern(S);
+    pattern_nonzeros_ = S.nonZeros();
+  }
+  lu_.factorize(S);
+  return lu_.info() == Eigen::Success;
+}
+
+Real RotorSystem::highest_frequency() {
+  // Power iteration on M⁻¹K_s (K_s the symmetric stiffness at the current speed):
+  // 60 iterations from a fixed start vector, then 10 % margin, since the iteration
+  // approaches the largest eigenvalue from below.
+  SparseMatrix K = K_;
+  if (assembler_.speed_dependent()) K += Kv_;
+  const SparseMatrix Ks = 0.5 * (K + SparseMatrix(K.transpose()));
+  Vector u = Vector::LinSpaced(size(), 1.0, 2.0);
+  Real lambda = 0.0;
+  for (int it = 0; it < 60; ++it) {
+    Vector w = mass_.solve(Ks * u);
+    const Real norm = w.norm();
+    if (norm == 0.0) break;
+    lambda = u.dot(M_ * w) / u.dot(M_ * u);
+    u = w / norm;
+  }
+  return 1.1 * std::sqrt(std::max(lambda, 0.0));
+}
+
+}  // namespace feran

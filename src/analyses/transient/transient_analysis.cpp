@@ -1,0 +1,176 @@
+#include <feran/analyses/transient/transient_analysis.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/transient/rotor_system.hpp>
+#include <feran/core/error.hpp>
+#include <feran/elements/spring_damper.hpp>
+
+namespace feran {
+
+namespace {
+
+constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+
+// Cubic Hermite interpolation between two states (x, v at both ends): fourth-order
+// accurate, so sampling adds no error beyond the integrators' own.
+void interpolate(const State& a, const State& b, Real t, Vector& x, Vector& v) {
+  const Real h = b.t - a.t, s = (t - a.t) / h;
+  const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
+  const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
+  const Real d00 = 6 * s * s - 6 * s, d10 = 3 * s * s - 4 * s + 1, d01 = -6 * s * s + 6 * s, d11 = 3 * s * s - 2 * s;
+  x = h00 * a.x + (h10 * h) * a.v + h01 * b.x + (h11 * h) * b.v;
+  v = (d00 / h) * a.x + d10 * a.v + (d01 / h) * b.x + d11 * b.v;
+}
+
+}  // namespace
+
+TransientResult run_transient(const Model& model, const TransientOptions& options, const SampleSink& sink,
+                              const ProgressSink& progress) {
+  if (!(options.duration > 0)) throw Error("transient: the duration must be positive");
+  if (!(options.output_interval > 0)) throw Error("transient: the output interval must be positive");
+  if (!(options.settings.dt > 0)) throw Error("transient: the time step must be positive");
+  for (Index e : options.springs)
+    if (!model.elements.at(static_cast<std::size_t>(e)).target<SpringDamper>())
+      throw Error("transient: a recorded element is not a spring-damper");
+
+  TransientResult result;
+  RotorSystem sys(model, options.profile, options.static_loads);
+  std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
+  result.info.method = std::string(integrator->name());
+  const DofMap& dofs = sys.dof_map();
+  const Index n = sys.size();
+
+  // Envelope bins over the speeds the profile visits within the run.
+  Real w_lo = options.profile.speed(0.0), w_hi = w_lo;
+  for (const auto& [t, w] : options.profile.points())
+    if (t <= options.duration) w_lo = std::min(w_lo, w), w_hi = std::max(w_hi, w);
+  w_lo = std::min(w_lo, options.profile.speed(options.duration));
+  w_hi = std::max(w_hi, options.profile.speed(options.duration));
+  const Index bins = w_hi > w_lo ? std::max<Index>(options.envelope_bins, 1) : 1;
+  for (std::size_t p = 0; p < options.probes.size(); ++p) {
+    Envelope e;
+    for (Index b = 0; b < bins; ++b) e.speed.push_back(w_lo + (w_hi - w_lo) * (static_cast<Real>(b) + 0.5) / static_cast<Real>(bins));
+    e.magnitude.assign(static_cast<std::size_t>(bins), nan);
+    result.envelopes.push_back(e);
+  }
+  auto update_envelopes = [&](const State& s) {
+    const Vector x = sys.expand(s.x);
+    const Real w = options.profile.speed(s.t);
+    const Index b = bins == 1 ? 0 : std::clamp<Index>(static_cast<Index>((w - w_lo) / (w_hi - w_lo) * static_cast<Real>(bins)), 0, bins - 1);
+    for (std::size_t p = 0; p < options.probes.size(); ++p) {
+      const Real r = std::hypot(x(global_dof(options.probes[p], Dof::v)), x(global_dof(options.probes[p], Dof::w)));
+      Envelope& e = result.envelopes[p];
+      Real& m = e.magnitude[static_cast<std::size_t>(b)];
+      if (std::isnan(m) || r > m) m = r;
+      if (r > e.peak) e.peak = r, e.peak_time = s.t, e.peak_speed = w;
+    }
+  };
+
+  Vector x_full, v_full;
+  auto emit = [&](Real t, const Vector& x, const Vector& v) {
+    TransientSample sample;
+    sample.t = t;
+    sample.speed = options.profile.speed(t);
+    x_full = sys.expand(x);
+    v_full = sys.expand(v);
+    for (Index node : options.probes) {
+      std::array<Real, dofs_per_node> q{};
+      for (int d = 0; d < dofs_per_node; ++d) q[static_cast<std::size_t>(d)] = x_full(dofs_per_node * node + d);
+      sample.probes.push_back(q);
+      sample.magnitude.push_back(std::hypot(q[static_cast<std::size_t>(Dof::v)], q[static_cast<std::size_t>(Dof::w)]));
+    }
+    for (Index e : options.springs) {
+      const SpringDamper& sd = *model.elements[static_cast<std::size_t>(e)].target<SpringDamper>();
+      Eigen::Matrix<Real, dofs_per_node, 1> dx = x_full.segment<dofs_per_node>(dofs_per_node * sd.node_a());
+      Eigen::Matrix<Real, dofs_per_node, 1> dv = v_full.segment<dofs_per_node>(dofs_per_node * sd.node_a());
+      if (sd.node_b()) {
+        dx -= x_full.segment<dofs_per_node>(dofs_per_node * *sd.node_b());
+        dv -= v_full.segment<dofs_per_node>(dofs_per_node * *sd.node_b());
+      }
+      const Eigen::Matrix<Real, dofs_per_node, 1> f = sd.stiffness_6x6(sample.speed) * dx + sd.damping_6x6(sample.speed) * dv;
+      std::array<Real, dofs_per_node> out{};
+      for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = f(d);
+      sample.springs.push_back(out);
+    }
+    if (sink) sink(sample);
+    if (options.keep_samples) result.samples.push_back(std::move(sample));
+  };
+
+  State s{0.0, Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
+  const StepReport started = integrator->start(sys, s);
+  if (!started.ok) {
+    result.info.converged = false;
+    result.info.message = started.message;
+    return result;
+  }
+  result.warning = started.message;
+  emit(0.0, s.x, s.v);
+  update_envelopes(s);
+
+  Index next_output = 1;
+  Real dt = options.settings.dt;
+  const Real t_end = options.duration;
+  State previous = s;
+  Vector xi, vi;
+  auto fail = [&](const std::string& why) {
+    result.info.converged = false;
+    result.info.message = fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
+                                      rad_to_hz(options.profile.speed(s.t)), why);
+  };
+  while (s.t < t_end * (1 - 1e-12)) {
+    const Real h = std::min(dt, t_end - s.t);
+    previous = s;
+    const StepReport rep = integrator->step(sys, s, h);
+    ++result.steps;
+    result.rejected += rep.rejected;
+    result.factorizations += rep.factorizations;
+    result.newton_iterations += rep.iterations;
+    if (!rep.ok) {
+      s = previous;
+      fail(rep.message);
+      break;
+    }
+    if (integrator->adaptive()) dt = rep.dt_next;
+    // Blow-up and non-finite values, located at a node and DOF.
+    Index worst = -1;
+    Real worst_value = 0;
+    for (Index i = 0; i < n; ++i) {
+      const Real a = std::abs(s.x(i));
+      if (!std::isfinite(s.x(i)) || !std::isfinite(s.v(i))) {
+        worst = i, worst_value = nan;
+        break;
+      }
+      if (a > worst_value) worst = i, worst_value = a;
+    }
+    if (worst >= 0 && (std::isnan(worst_value) || worst_value > options.blowup_limit)) {
+      const Index full = dofs.full_dof(worst);
+      const std::string where = fmt::format("node {} DOF {}", model.node_label(full / dofs_per_node),
+                                            dof_name(static_cast<Dof>(full % dofs_per_node)));
+      const std::string why = std::isnan(worst_value)
+                                  ? fmt::format("a non-finite value appeared at {}", where)
+                                  : fmt::format("the motion blew up: |{}| reached {:.3g} (limit {:.3g})", where,
+                                                worst_value, options.blowup_limit);
+      fail(why);
+      s = previous;
+      break;
+    }
+    while (static_cast<Real>(next_output) * options.output_interval <= s.t * (1 + 1e-12) &&
+           static_cast<Real>(next_output) * options.output_interval <= t_end * (1 + 1e-12)) {
+      const Real to = std::min(static_cast<Real>(next_output) * options.output_interval, s.t);
+      interpolate(previous, s, to, xi, vi);
+      emit(to, xi, vi);
+      ++next_output;
+    }
+    update_envelopes(s);
+    if (progress && result.steps % 200 == 0) progress(s.t, rep.dt);
+  }
+  result.t_end = s.t;
+  return result;
+}
+
+}  // namespace feran
