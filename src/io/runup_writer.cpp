@@ -1,0 +1,147 @@
+#include <feran/io/runup_writer.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+namespace {
+
+using nlohmann::json;
+
+json number(Real x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+std::string node_tag(const Model& model, Index node) {
+  const Node& n = model.nodes[static_cast<std::size_t>(node)];
+  std::string s = n.name.empty() ? fmt::format("node{}", n.number) : n.name;
+  for (char& c : s)
+    if (c == ' ') c = '_';
+  return s;
+}
+
+std::string element_tag(const Model& model, Index element) {
+  std::string s = model.elements[static_cast<std::size_t>(element)].label();
+  if (s.empty()) s = fmt::format("element{}", element + 1);
+  for (char& c : s)
+    if (c == ' ') c = '_';
+  return s;
+}
+
+std::string csv(Real x) { return std::isfinite(x) ? fmt::format("{:.10g}", x) : ""; }
+
+constexpr const char* dof_names[dofs_per_node] = {"u", "v", "w", "rx", "ry", "rz"};
+constexpr const char* direction_names[dofs_per_node] = {"x", "y", "z", "rx", "ry", "rz"};
+
+}  // namespace
+
+RunupCsvWriter::RunupCsvWriter(const std::string& path, const Model& model, const TransientOptions& options)
+    : path_(path), out_(path + ".part", std::ios::trunc) {
+  if (!out_) throw Error(fmt::format("cannot write '{}'", path));
+  out_ << "time_s,speed_hz";
+  for (Index node : options.probes) {
+    const std::string t = node_tag(model, node);
+    out_ << ',' << t << "_magnitude_m";
+    for (const char* d : dof_names) out_ << ',' << t << '_' << d;
+  }
+  for (Index e : options.springs)
+    for (const char* d : direction_names) out_ << ',' << element_tag(model, e) << "_f" << d;
+  out_ << '\n';
+}
+
+RunupCsvWriter::~RunupCsvWriter() {
+  if (!finished_) {
+    out_.close();
+    std::remove((path_ + ".part").c_str());
+  }
+}
+
+void RunupCsvWriter::write(const TransientSample& s) {
+  out_ << csv(s.t) << ',' << csv(rad_to_hz(s.speed));
+  for (std::size_t p = 0; p < s.probes.size(); ++p) {
+    out_ << ',' << csv(s.magnitude[p]);
+    for (Real q : s.probes[p]) out_ << ',' << csv(q);
+  }
+  for (const auto& f : s.springs)
+    for (Real c : f) out_ << ',' << csv(c);
+  out_ << '\n';
+}
+
+void RunupCsvWriter::finish() {
+  out_.close();
+  if (!out_ || std::rename((path_ + ".part").c_str(), path_.c_str()) != 0)
+    throw Error(fmt::format("cannot write '{}'", path_));
+  finished_ = true;
+}
+
+std::string runup_json(const TransientResult& result, const TransientOptions& options, const Model& model,
+                       const ResultSource& source) {
+  json j = {{"program", "feran"},
+            {"format_version", 1},
+            {"analysis", "runup"},
+            {"model", {{"path", source.model_path}, {"title", source.title}}}};
+  j["integrator"] = options.integrator;
+  j["complete"] = result.info.converged;
+  j["message"] = result.info.message;
+  j["warning"] = result.warning;
+  j["duration_s"] = options.duration;
+  j["t_end_s"] = result.t_end;
+  j["statistics"] = {{"steps", result.steps},
+                     {"rejected_steps", result.rejected},
+                     {"factorizations", result.factorizations},
+                     {"newton_iterations", result.newton_iterations}};
+  json profile = json::array();
+  for (const auto& [t, w] : options.profile.points()) profile.push_back({{"time_s", t}, {"speed_hz", rad_to_hz(w)}});
+  j["profile"] = profile;
+  json time = json::array(), speed = json::array();
+  for (const TransientSample& s : result.samples) {
+    time.push_back(s.t);
+    speed.push_back(rad_to_hz(s.speed));
+  }
+  j["time_s"] = time;
+  j["speed_hz"] = speed;
+  json probes = json::array();
+  for (std::size_t p = 0; p < options.probes.size(); ++p) {
+    const Node& n = model.nodes[static_cast<std::size_t>(options.probes[p])];
+    json jp = {{"node", n.number}, {"name", n.name}, {"x_m", n.x}};
+    json mag = json::array();
+    json dofs = json::object();
+    for (const char* d : dof_names) dofs[d] = json::array();
+    for (const TransientSample& s : result.samples) {
+      mag.push_back(number(s.magnitude[p]));
+      for (int d = 0; d < dofs_per_node; ++d) dofs[dof_names[d]].push_back(number(s.probes[p][static_cast<std::size_t>(d)]));
+    }
+    jp["magnitude_m"] = mag;
+    jp["dofs"] = dofs;
+    const Envelope& e = result.envelopes[p];
+    json es = json::array(), em = json::array();
+    for (std::size_t b = 0; b < e.speed.size(); ++b) {
+      es.push_back(rad_to_hz(e.speed[b]));
+      em.push_back(number(e.magnitude[b]));
+    }
+    jp["envelope"] = {{"speed_hz", es}, {"magnitude_m", em}};
+    jp["peak"] = {{"magnitude_m", e.peak}, {"time_s", e.peak_time}, {"speed_hz", rad_to_hz(e.peak_speed)}};
+    probes.push_back(jp);
+  }
+  j["probes"] = probes;
+  json springs = json::array();
+  for (std::size_t k = 0; k < options.springs.size(); ++k) {
+    json js = {{"label", model.elements[static_cast<std::size_t>(options.springs[k])].label()}};
+    json force = json::object();
+    for (int d = 0; d < dofs_per_node; ++d) {
+      json series = json::array();
+      for (const TransientSample& s : result.samples) series.push_back(number(s.springs[k][static_cast<std::size_t>(d)]));
+      force[direction_names[d]] = series;
+    }
+    js["force_n"] = force;
+    springs.push_back(js);
+  }
+  j["springs"] = springs;
+  return j.dump(1) + "\n";
+}
+
+}  // namespace feran
