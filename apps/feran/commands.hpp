@@ -22,6 +22,7 @@ Runner add_modal_command(CLI::App& app);
 Runner add_campbell_command(CLI::App& app);
 Runner add_response_command(CLI::App& app);
 Runner add_static_command(CLI::App& app);
+Runner add_runup_command(CLI::App& app);
 
 /// Options every analysis shares.
 struct OutputOptions {

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   runners["campbell"] = feran::app::add_campbell_command(app);
   runners["response"] = feran::app::add_response_command(app);
   runners["static"] = feran::app::add_static_command(app);
+  runners["runup"] = feran::app::add_runup_command(app);
 
   try {
     app.parse(argc, argv);

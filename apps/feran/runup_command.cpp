@@ -1,0 +1,229 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/transient/transient_analysis.hpp>
+#include <feran/core/error.hpp>
+#include <feran/elements/spring_damper.hpp>
+#include <feran/io/model_reader.hpp>
+#include <feran/io/node_reference.hpp>
+#include <feran/io/runup_writer.hpp>
+#include <feran/io/units.hpp>
+
+#include "commands.hpp"
+
+namespace feran::app {
+
+namespace {
+
+struct RunupArgs {
+  std::string model;
+  std::string speed, from, to, ramp_time, table;
+  std::string duration;
+  std::string integrator;
+  std::string dt, output_interval;
+  double rtol = 0, atol = 0;
+  std::vector<std::string> probes, springs;
+  double newton_tol = 0;
+  int newton_max_iter = 0;
+  bool allow_unstable = false;
+  std::string jacobian = "exact";
+  int jacobian_interval = 1;
+  std::string blowup;
+  bool static_loads = false;
+  OutputOptions out;
+};
+
+Real time_option(const std::string& text, const std::string& option) {
+  try {
+    const Real t = parse_quantity(text, Quantity::time);
+    if (!(t > 0)) throw Error("must be positive");
+    return t;
+  } catch (const Error& e) {
+    throw Error(fmt::format("{} '{}': {} (a time such as 5s or 0.1ms)", option, text, e.what()));
+  }
+}
+
+// "0s:0Hz,2s:50Hz,5s:50Hz"
+std::vector<std::pair<Real, Real>> parse_table(const std::string& text) {
+  std::vector<std::pair<Real, Real>> points;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    const std::size_t colon = item.find(':');
+    if (colon == std::string::npos)
+      throw Error(fmt::format("--table '{}': each point is TIME:SPEED, e.g. 0s:0Hz,5s:80Hz", text));
+    const Real t = parse_quantity(item.substr(0, colon), Quantity::time);
+    points.emplace_back(t, parse_speed_option(item.substr(colon + 1), "--table"));
+    start = end + 1;
+  }
+  return points;
+}
+
+}  // namespace
+
+Runner add_runup_command(CLI::App& app) {
+  auto args = std::make_shared<RunupArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "runup", "Run-up (time integration along a speed profile): time histories, |r| envelope, forces");
+  cmd->footer(
+      "Examples:\n"
+      "  feran runup examples/01_internal_damping/model.toml --from 0Hz --to 80Hz --ramp-time 5s \\\n"
+      "      --integrator trapezoidal --dt 1e-4s --probe rotor --csv runup.csv\n"
+      "  feran runup MODEL --speed 40Hz --duration 2s --integrator ros34pw2 --rtol 1e-6\n\n"
+      "The speed profile is one of: --speed (constant), --from/--to/--ramp-time (linear,\n"
+      "then held), --table TIME:SPEED,... (piecewise linear). Unset options come from the\n"
+      "model's [runup] table. Integrators: trapezoidal (Newton), rk3 (explicit),\n"
+      "wolfbrandt (W-method, order 2), ros34pw2 (W-method, order 3, adaptive).");
+  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  cmd->add_option("-s,--speed", args->speed, "Constant speed with unit (40Hz, 2400rpm)");
+  cmd->add_option("--from", args->from, "Ramp: start speed (default 0Hz)");
+  cmd->add_option("--to", args->to, "Ramp: end speed (80Hz)");
+  cmd->add_option("--ramp-time", args->ramp_time, "Ramp: time to go from --from to --to (5s)");
+  cmd->add_option("--table", args->table, "Piecewise-linear profile TIME:SPEED,... (0s:0Hz,2s:50Hz,5s:50Hz)");
+  cmd->add_option("-t,--duration", args->duration, "Simulated time (default: the ramp or table time)");
+  cmd->add_option("-i,--integrator", args->integrator, "trapezoidal (default), rk3, wolfbrandt or ros34pw2")
+      ->check(CLI::IsMember(integrator_names()));
+  cmd->add_option("--dt", args->dt, "Time step (fixed-step methods) or first step (ros34pw2), e.g. 1e-4s");
+  cmd->add_option("--rtol", args->rtol, "ros34pw2: relative tolerance (default 1e-6)")->check(CLI::PositiveNumber);
+  cmd->add_option("--atol", args->atol, "ros34pw2: absolute tolerance (default 1e-9)")->check(CLI::PositiveNumber);
+  cmd->add_option("--output-interval", args->output_interval, "Time between recorded samples (default 1ms)");
+  cmd->add_option("--probe", args->probes, "Node to record (name or number); repeat for several")->take_all();
+  cmd->add_option("--spring", args->springs, "Spring-damper (by name) whose force is recorded; repeat")->take_all();
+  cmd->add_option("--newton-tol", args->newton_tol, "trapezoidal: Newton tolerance (default 1e-10)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--newton-max-iter", args->newton_max_iter, "trapezoidal: Newton iteration limit (default 25)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--allow-unstable", args->allow_unstable, "rk3: warn instead of refusing a step above the stability limit");
+  cmd->add_option("--jacobian", args->jacobian, "W-methods: exact (with friction tangents) or linear")
+      ->check(CLI::IsMember({"exact", "linear"}));
+  cmd->add_option("--jacobian-interval", args->jacobian_interval, "W-methods: refresh the Jacobian every N steps")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--blowup", args->blowup, "Stop when a displacement exceeds this length (default 1m)");
+  cmd->add_flag("--static-loads", args->static_loads, "Apply the model's [[static_loads]] as constant forces");
+  add_output_options(*cmd, args->out);
+
+  return [args]() {
+    const ModelFile file = read_model_file(args->model);
+    const Model& model = file.model;
+    const RunupDefaults& d = file.runup;
+    TransientOptions options;
+
+    const int forms = !args->speed.empty() + (!args->to.empty() || !args->ramp_time.empty() || !args->from.empty()) +
+                      !args->table.empty();
+    if (forms > 1) throw Error("runup: give one speed profile: --speed, --from/--to/--ramp-time, or --table");
+    std::optional<Real> natural_duration;
+    if (!args->speed.empty()) {
+      options.profile = SpeedProfile::constant(parse_speed_option(args->speed, "--speed"));
+    } else if (!args->to.empty() || !args->ramp_time.empty() || !args->from.empty()) {
+      if (args->to.empty() || args->ramp_time.empty()) throw Error("runup: a ramp needs --to and --ramp-time");
+      const Real from = args->from.empty() ? 0.0 : parse_speed_option(args->from, "--from");
+      const Real ramp = time_option(args->ramp_time, "--ramp-time");
+      options.profile = SpeedProfile::ramp(from, parse_speed_option(args->to, "--to"), ramp);
+      natural_duration = ramp;
+    } else if (!args->table.empty()) {
+      options.profile = SpeedProfile(parse_table(args->table));
+      natural_duration = options.profile.points().back().first;
+    } else if (!d.profile.empty()) {
+      options.profile = SpeedProfile(d.profile);
+      if (d.profile.size() > 1) natural_duration = d.profile.back().first;
+    } else {
+      throw Error("runup: give a speed profile (--speed, --from/--to/--ramp-time or --table) or a [runup] table");
+    }
+    if (!args->duration.empty()) options.duration = time_option(args->duration, "--duration");
+    else if (forms == 0 && d.duration) options.duration = *d.duration;
+    else if (natural_duration && *natural_duration > 0) options.duration = *natural_duration;
+    else throw Error("runup: give the simulated time with --duration (e.g. --duration 2s)");
+
+    options.integrator = !args->integrator.empty() ? args->integrator : d.integrator.value_or("trapezoidal");
+    IntegratorSettings& s = options.settings;
+    s.dt = !args->dt.empty() ? time_option(args->dt, "--dt") : d.dt.value_or(1e-4);
+    if (args->rtol > 0) s.rel_tol = args->rtol;
+    else if (d.rel_tol) s.rel_tol = *d.rel_tol;
+    if (args->atol > 0) s.abs_tol = args->atol;
+    else if (d.abs_tol) s.abs_tol = *d.abs_tol;
+    if (args->newton_tol > 0) s.newton_tol = args->newton_tol;
+    if (args->newton_max_iter > 0) s.newton_max_iterations = args->newton_max_iter;
+    s.allow_unstable_step = args->allow_unstable;
+    s.exact_jacobian = args->jacobian == "exact";
+    s.jacobian_interval = args->jacobian_interval;
+    options.output_interval = !args->output_interval.empty() ? time_option(args->output_interval, "--output-interval")
+                                                             : d.output_interval.value_or(1e-3);
+    if (!args->blowup.empty()) {
+      options.blowup_limit = parse_quantity(args->blowup, Quantity::length);
+      if (!(options.blowup_limit > 0)) throw Error("--blowup must be positive");
+    }
+    options.static_loads = args->static_loads;
+    if (!args->probes.empty()) {
+      for (const std::string& p : args->probes) options.probes.push_back(find_node_reference(model, p, "--probe"));
+    } else if (!d.probes.empty()) {
+      options.probes = d.probes;
+    } else {
+      for (const Unbalance& u : model.unbalances)
+        if (std::find(options.probes.begin(), options.probes.end(), u.node) == options.probes.end())
+          options.probes.push_back(u.node);
+    }
+    if (!args->springs.empty()) {
+      for (const std::string& name : args->springs) {
+        Index found = -1;
+        for (std::size_t e = 0; e < model.elements.size(); ++e)
+          if (model.elements[e].target<SpringDamper>() && model.elements[e].label() == name) found = static_cast<Index>(e);
+        if (found < 0) throw Error(fmt::format("--spring '{}': no spring-damper has that name", name));
+        options.springs.push_back(found);
+      }
+    } else {
+      options.springs = d.springs;
+    }
+
+    std::optional<RunupCsvWriter> csv;
+    if (!args->out.csv_path.empty()) csv.emplace(args->out.csv_path, model, options);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto last_print = t0;
+    bool printed = false;
+    const bool show_progress = !args->out.quiet;
+    const TransientResult result = run_transient(
+        model, options, [&](const TransientSample& sample) { if (csv) csv->write(sample); },
+        [&](Real t, Real dt) {
+          if (!show_progress) return;
+          const auto now = std::chrono::steady_clock::now();
+          if (now - t0 < std::chrono::seconds(1) || now - last_print < std::chrono::milliseconds(500)) return;
+          last_print = now;
+          printed = true;
+          std::fprintf(stderr, "\r  %s: t = %.4g / %.4g s (%3.0f %%), speed %.4g Hz, step %.3g s   ",
+                       options.integrator.c_str(), t, options.duration, 100 * t / options.duration,
+                       rad_to_hz(options.profile.speed(t)), dt);
+        });
+    if (printed) std::fputs("\n", stderr);
+    const Real wall = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
+    if (csv) csv->finish();
+    const ResultSource source{file.path, file.title};
+    write_if_asked(args->out.json_path, runup_json(result, options, model, source));
+    if (!args->out.quiet) {
+      std::string out = fmt::format("feran runup: {} ({})\n", file.title.empty() ? file.path : file.title, file.path);
+      out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz; {} steps ({} rejected), {} "
+                         "factorizations, {} Newton iterations; {:.3g} s wall\n",
+                         options.integrator, 0.0, result.t_end, rad_to_hz(options.profile.speed(0.0)),
+                         rad_to_hz(options.profile.speed(result.t_end)), result.steps, result.rejected,
+                         result.factorizations, result.newton_iterations, wall);
+      for (std::size_t p = 0; p < options.probes.size(); ++p) {
+        const Envelope& e = result.envelopes[p];
+        out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {:.4g} Hz\n",
+                           model.node_label(options.probes[p]), 1e3 * e.peak, e.peak_time, rad_to_hz(e.peak_speed));
+      }
+      if (!result.warning.empty()) out += "warning: " + result.warning + "\n";
+      std::fputs(out.c_str(), stdout);
+    }
+    if (!result.info.converged) {
+      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
+      return static_cast<int>(numerical_failure);
+    }
+    return static_cast<int>(ok);
+  };
+}
+
+}  // namespace feran::app
