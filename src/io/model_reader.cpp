@@ -46,6 +46,17 @@ constexpr Real default_gravity = 9.81;
 /// Upper bound on elements per section: guards against a typo such as 1e9 elements.
 constexpr int max_elements_per_section = 100000;
 
+/// The integrators [runup] may name: the names the transient analysis registers
+/// (make_integrator() in analyses/transient/integrator.hpp).
+const std::vector<std::string> runup_integrators = {"trapezoidal", "rk3", "wolfbrandt",
+                                                    "ros34pw2"};
+
+/// True when @p a is written before @p b in the file.
+bool written_before(const toml::node& a, const toml::node& b) {
+  const auto p = a.source().begin, q = b.source().begin;
+  return p.line < q.line || (p.line == q.line && p.column < q.column);
+}
+
 std::string format_location(const SourceLocation& at) {
   return fmt::format("line {}, column {}", at.line, at.column);
 }
@@ -85,7 +96,13 @@ class ModelBuilder {
   void read_campbell();
   void read_response();
   void read_static();
+  void read_runup();
   void check_structure();
+
+  /// `probes`: node references, non-empty, no node twice (as in [response]).
+  void read_probes(const TableReader& t, std::vector<Index>& probes) const;
+  /// The spring–damper element named by the string @p name written at @p n.
+  Index resolve_spring(const toml::node& n, const std::string& name, const TableReader& t) const;
 
   /// Calls f(reader, index) for each table of the array of tables @p key (1-based index).
   template <class F>
@@ -124,6 +141,9 @@ class ModelBuilder {
   std::vector<SourceLocation> name_locations_;        ///< where each node's name is
   std::set<int> claimed_numbers_;                     ///< explicit [[nodes]] numbers
   std::vector<int> fixed_index_;                      ///< node → index in model_.fixed
+  /// [[springs]] entries with a 'name' (references from [runup]): name, element index.
+  std::vector<std::pair<std::string, Index>> named_springs_;
+  std::vector<std::string> unnamed_spring_labels_;    ///< default labels, for hints
 };
 
 template <class F>
@@ -156,7 +176,7 @@ const toml::table* ModelBuilder::sub_table(std::string_view key) const {
 ModelFile ModelBuilder::build() {
   top_.check_keys({"title", "options", "materials", "shafts", "nodes", "rigid_bodies", "springs",
                    "rotating_dampers", "friction", "rigid_links", "fixed", "unbalances", "forces",
-                   "static_loads", "modal", "campbell", "response", "static"});
+                   "static_loads", "modal", "campbell", "response", "static", "runup"});
   if (const auto title = top_.string("title")) out_.title = *title;
   model_.name = out_.title;
 
@@ -182,6 +202,7 @@ ModelFile ModelBuilder::build() {
   read_campbell();
   read_response();
   read_static();
+  read_runup();
   check_structure();
   return std::move(out_);
 }
@@ -736,7 +757,8 @@ void ModelBuilder::read_springs() {
   for_each_table("springs", [&](const TableReader& t, int index) {
     t.check_keys({"name", "node", "to", "kx", "ky", "kz", "krx", "kry", "krz", "kyz", "kzy", "cx",
                   "cy", "cz", "crx", "cry", "crz", "cyz", "czy", "loss_factor"});
-    const std::string label = t.string("name").value_or(fmt::format("spring {}", index));
+    const auto name = t.string("name");
+    const std::string label = name.value_or(fmt::format("spring {}", index));
     const Index node = required_node(t);
     const std::optional<Index> to = other_node(t, ground_word, node);
 
@@ -766,6 +788,10 @@ void ModelBuilder::read_springs() {
                               t.has("loss_factor") ? " ('loss_factor' only scales the stiffness "
                                                      "coefficients, it is not one)"
                                                    : ""));
+    if (name)
+      named_springs_.emplace_back(*name, static_cast<Index>(model_.elements.size()));
+    else
+      unnamed_spring_labels_.push_back(label);
     model_.elements.emplace_back(SpringDamper(node, to, c), label);
   });
 }
@@ -1078,18 +1104,22 @@ void ModelBuilder::read_response() {
     t.fail(*stop->node, fmt::format("'stop' ({}) must be greater than 'start' ({})", stop->written,
                                     start->written));
   r.points = t.integer("points", 2);
-  if (const toml::array* probes = t.array("probes")) {
-    if (probes->empty())
-      t.fail(*probes, "'probes' must not be empty (leave it out for the analysis's default)");
-    for (std::size_t i = 0; i < probes->size(); ++i) {
-      const toml::node& entry = *probes->get(i);
-      const Index node = resolve_node(entry, fmt::format("probes[{}]", i), t);
-      if (std::find(r.probes.begin(), r.probes.end(), node) != r.probes.end())
-        t.fail(entry, fmt::format("node {} appears twice in 'probes'", model_.node_label(node)));
-      r.probes.push_back(node);
-    }
-  }
+  read_probes(t, r.probes);
   r.loss_factor = t.non_negative_number("loss_factor");
+}
+
+void ModelBuilder::read_probes(const TableReader& t, std::vector<Index>& probes) const {
+  const toml::array* entries = t.array("probes");
+  if (entries == nullptr) return;
+  if (entries->empty())
+    t.fail(*entries, "'probes' must not be empty (leave it out for the analysis's default)");
+  for (std::size_t i = 0; i < entries->size(); ++i) {
+    const toml::node& entry = *entries->get(i);
+    const Index node = resolve_node(entry, fmt::format("probes[{}]", i), t);
+    if (std::find(probes.begin(), probes.end(), node) != probes.end())
+      t.fail(entry, fmt::format("node {} appears twice in 'probes'", model_.node_label(node)));
+    probes.push_back(node);
+  }
 }
 
 void ModelBuilder::read_static() {
@@ -1136,6 +1166,180 @@ void ModelBuilder::read_static() {
     t.fail(*g->node, "'g' needs a direction: give 'gravity' as well, e.g. gravity = \"-z\"");
   }
   if (const auto speed = t.quantity("speed", Quantity::speed)) s.speed = speed->si;
+}
+
+/// Reads the speed profile of [runup] into @p profile, in whichever of its three
+/// forms is given. Returns the run's default duration: the ramp time or the last
+/// table time (when > 0).
+std::optional<Real> read_speed_profile(const TableReader& t,
+                                       std::vector<std::pair<Real, Real>>& profile) {
+  // The first key of each form that is present, to name two of them if they are mixed.
+  struct FormKey {
+    std::string_view key;
+    const toml::node* node;
+  };
+  std::vector<FormKey> forms;
+  for (const auto& keys : {std::vector<std::string_view>{"speed"},
+                           std::vector<std::string_view>{"from", "to", "ramp_time"},
+                           std::vector<std::string_view>{"table"}}) {
+    std::optional<FormKey> first;
+    for (const std::string_view key : keys)
+      if (const toml::node* n = t.find(key);
+          n != nullptr && (!first || written_before(*n, *first->node)))
+        first = FormKey{key, n};
+    if (first) forms.push_back(*first);
+  }
+  if (forms.empty()) return std::nullopt;
+  std::sort(forms.begin(), forms.end(),
+            [](const FormKey& a, const FormKey& b) { return written_before(*a.node, *b.node); });
+  if (forms.size() > 1)
+    t.fail(*forms[1].node,
+           fmt::format("the speed profile is given either by 'speed' (a constant speed), by "
+                       "'from', 'to' and 'ramp_time' (a linear ramp) or by 'table' (time and "
+                       "speed points); this [runup] mixes '{}' and '{}'",
+                       forms[0].key, forms[1].key));
+
+  if (const auto speed = t.quantity("speed", Quantity::speed)) {
+    t.require_non_negative(*speed, "speed");
+    profile = {{0.0, speed->si}};
+    return std::nullopt;
+  }
+
+  if (const toml::array* table = t.array("table")) {
+    if (table->empty())
+      t.fail(*table, "'table' needs at least one [time, speed] pair, e.g. "
+                     "[[\"0 s\", \"0 Hz\"], [\"5 s\", \"80 Hz\"]]");
+    std::string previous_time;
+    for (std::size_t i = 0; i < table->size(); ++i) {
+      const toml::node& entry = *table->get(i);
+      const toml::array* pair = entry.as_array();
+      if (pair == nullptr || pair->size() != 2)
+        t.fail(entry, fmt::format("each entry of 'table' must be a [time, speed] pair such as "
+                                  "[\"2 s\", \"50 Hz\"], got {}",
+                                  pair != nullptr ? fmt::format("an array of {} values", pair->size())
+                                                  : type_name(entry)));
+      const QuantityValue time =
+          t.quantity_at(*pair->get(0), fmt::format("table[{}][0]", i), Quantity::time);
+      const QuantityValue speed =
+          t.quantity_at(*pair->get(1), fmt::format("table[{}][1]", i), Quantity::speed);
+      if (i == 0 && time.si != 0.0)
+        t.fail(*time.node, fmt::format("'table' must start at time 0, where the run-up starts, "
+                                       "but its first time is {}",
+                                       time.written));
+      if (i > 0 && !(time.si > profile.back().first))
+        t.fail(*time.node,
+               fmt::format("the times in 'table' must be strictly increasing, but table[{}] ({}) "
+                           "does not come after table[{}] ({})",
+                           i, time.written, i - 1, previous_time));
+      t.require_non_negative(speed, fmt::format("table[{}][1]", i));
+      profile.emplace_back(time.si, speed.si);
+      previous_time = time.written;
+    }
+    if (profile.back().first > 0.0) return profile.back().first;
+    return std::nullopt;
+  }
+
+  // The ramp: 'to' and 'ramp_time' are required, 'from' defaults to rest.
+  const QuantityValue to = t.quantity_at(
+      t.require("to", fmt::format("the ramp's final speed, {}", expected_quantity(Quantity::speed))),
+      "to", Quantity::speed);
+  t.require_non_negative(to, "to");
+  const QuantityValue ramp_time =
+      t.quantity_at(t.require("ramp_time", fmt::format("the ramp's duration, {}",
+                                                       expected_quantity(Quantity::time))),
+                    "ramp_time", Quantity::time);
+  t.require_positive(ramp_time, "ramp_time");
+  Real from = 0.0;
+  if (const auto q = t.quantity("from", Quantity::speed)) {
+    t.require_non_negative(*q, "from");
+    from = q->si;
+  }
+  profile = {{0.0, from}, {ramp_time.si, to.si}};
+  return ramp_time.si;
+}
+
+void ModelBuilder::read_runup() {
+  const toml::table* table = sub_table("runup");
+  if (table == nullptr) return;
+  const TableReader t(*table, "[runup]", path_);
+  t.check_keys({"speed", "from", "to", "ramp_time", "table", "duration", "integrator", "dt",
+                "rel_tol", "abs_tol", "output_interval", "probes", "springs"});
+  RunupDefaults& r = out_.runup;
+  const std::optional<Real> profile_duration = read_speed_profile(t, r.profile);
+
+  const auto positive_time = [&](std::string_view key) -> std::optional<Real> {
+    const auto q = t.quantity(key, Quantity::time);
+    if (!q) return std::nullopt;
+    t.require_positive(*q, key);
+    return q->si;
+  };
+  r.duration = positive_time("duration");
+  if (!r.duration) r.duration = profile_duration;
+
+  if (const auto integrator = t.string("integrator")) {
+    if (std::find(runup_integrators.begin(), runup_integrators.end(), *integrator) ==
+        runup_integrators.end()) {
+      std::string message = fmt::format("'integrator' must be {}, got \"{}\"",
+                                        join_list(runup_integrators, "or", '"'), *integrator);
+      if (const auto m = closest_match(*integrator, runup_integrators, 2))
+        message += fmt::format("; did you mean \"{}\"?", *m);
+      t.fail(*t.find("integrator"), message);
+    }
+    r.integrator = *integrator;
+  }
+  r.dt = positive_time("dt");
+  r.rel_tol = t.positive_number("rel_tol");
+  r.abs_tol = t.positive_number("abs_tol");
+  r.output_interval = positive_time("output_interval");
+  read_probes(t, r.probes);
+
+  if (const toml::array* springs = t.array("springs")) {
+    if (springs->empty())
+      t.fail(*springs, "'springs' must not be empty (leave it out for the analysis's default)");
+    for (std::size_t i = 0; i < springs->size(); ++i) {
+      const toml::node& entry = *springs->get(i);
+      const auto name = entry.value_exact<std::string>();
+      if (!name)
+        t.fail(entry, fmt::format("'springs[{}]' must be the name of a spring (a string, the "
+                                  "'name' of a [[springs]] entry), got {}",
+                                  i, type_name(entry)));
+      const Index element = resolve_spring(entry, *name, t);
+      if (std::find(r.springs.begin(), r.springs.end(), element) != r.springs.end())
+        t.fail(entry, fmt::format("spring '{}' appears twice in 'springs'", *name));
+      r.springs.push_back(element);
+    }
+  }
+}
+
+Index ModelBuilder::resolve_spring(const toml::node& n, const std::string& name,
+                                   const TableReader& t) const {
+  std::vector<Index> found;
+  std::vector<std::string> names;
+  for (const auto& [spring_name, element] : named_springs_) {
+    if (spring_name == name) found.push_back(element);
+    if (std::find(names.begin(), names.end(), spring_name) == names.end())
+      names.push_back(spring_name);
+  }
+  if (found.size() == 1) return found.front();
+  if (found.size() > 1)
+    t.fail(n, fmt::format("spring name '{}' is ambiguous: {} [[springs]] entries have it; give "
+                          "them different names",
+                          name, found.size()));
+  std::string message = fmt::format("spring '{}' does not exist", name);
+  if (std::find(unnamed_spring_labels_.begin(), unnamed_spring_labels_.end(), name) !=
+      unnamed_spring_labels_.end())
+    message += fmt::format("; '{}' is the label of a [[springs]] entry without a 'name', and "
+                           "only named springs can be referenced: give that entry a 'name'",
+                           name);
+  else if (const auto match = closest_match(name, names, 2))
+    message += fmt::format("; did you mean '{}'?", *match);
+  else if (names.empty())
+    message += "; no [[springs]] entry has a 'name', and only named springs can be referenced";
+  else if (names.size() == 1)
+    message += fmt::format("; the only named spring is '{}'", names.front());
+  else if (names.size() <= 10)
+    message += fmt::format("; the named springs are {}", join_list(names, "and", '\''));
+  t.fail(n, message);
 }
 
 void ModelBuilder::check_structure() {

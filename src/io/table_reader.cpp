@@ -184,6 +184,13 @@ std::optional<Real> TableReader::non_negative_number(std::string_view key) const
   return value;
 }
 
+std::optional<Real> TableReader::positive_number(std::string_view key) const {
+  const auto value = number(key);
+  if (value && !(*value > 0.0))
+    fail(*find(key), fmt::format("'{}' must be positive, got {}", key, *value));
+  return value;
+}
+
 std::optional<bool> TableReader::boolean(std::string_view key) const {
   const toml::node* n = find(key);
   if (n == nullptr) return std::nullopt;

@@ -70,6 +70,8 @@ class TableReader {
   std::optional<Real> number(std::string_view key) const;
   /// A dimensionless number ≥ 0; throws "'key' must not be negative, got …".
   std::optional<Real> non_negative_number(std::string_view key) const;
+  /// A dimensionless number > 0; throws "'key' must be positive, got …".
+  std::optional<Real> positive_number(std::string_view key) const;
   std::optional<bool> boolean(std::string_view key) const;
   std::optional<std::string> string(std::string_view key) const;
   std::string required_string(std::string_view key, std::string_view expected) const;

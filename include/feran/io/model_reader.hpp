@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,6 +55,32 @@ struct StaticDefaults {
   std::optional<Real> speed;
 };
 
+/// Defaults for a run-up (transient) analysis given in the model file's [runup] table.
+/// Empty members were not given.
+struct RunupDefaults {
+  /// Speed profile as (time [s], speed [rad/s]) points, piecewise linear, held
+  /// constant after the last point; empty when not given. Times start at 0 and are
+  /// strictly increasing; speeds are ≥ 0. A constant speed is one point (0, Ω), a
+  /// ramp the two points (0, from) and (ramp_time, to).
+  std::vector<std::pair<Real, Real>> profile;
+  /// Length of the run [s] (> 0); when not given, the ramp time or the last table
+  /// time (if > 0).
+  std::optional<Real> duration;
+  /// Time integrator: "trapezoidal", "rk3", "wolfbrandt" or "ros34pw2".
+  std::optional<std::string> integrator;
+  std::optional<Real> dt;               ///< fixed step / initial step [s] (> 0)
+  std::optional<Real> rel_tol;          ///< relative tolerance of adaptive stepping (> 0)
+  std::optional<Real> abs_tol;          ///< absolute tolerance of adaptive stepping (> 0)
+  std::optional<Real> output_interval;  ///< time between recorded samples [s] (> 0)
+  /// Nodes whose response is recorded, as indices into model.nodes (no duplicates;
+  /// empty when not given).
+  std::vector<Index> probes;
+  /// Spring–dampers whose forces are recorded, as indices into model.elements, in
+  /// the order given (no duplicates; empty when not given). Only a [[springs]] entry
+  /// with a 'name' can be referenced.
+  std::vector<Index> springs;
+};
+
 /// A model file as read: the model and the analysis defaults it states.
 struct ModelFile {
   Model model;
@@ -63,6 +90,7 @@ struct ModelFile {
   CampbellDefaults campbell;
   ResponseDefaults response;
   StaticDefaults static_;  ///< the [static] table ("static" is a C++ keyword)
+  RunupDefaults runup;
   /// Per node index (model.nodes order): where the node was defined, for messages.
   std::vector<SourceLocation> node_locations;
 };

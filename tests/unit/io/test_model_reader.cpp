@@ -51,6 +51,12 @@ const E& element_as(const Model& m, const std::string& label) {
   return *e;
 }
 
+Index element_index(const Model& m, const std::string& label) {
+  for (std::size_t i = 0; i < m.elements.size(); ++i)
+    if (m.elements[i].label() == label) return static_cast<Index>(i);
+  throw std::runtime_error("no element labelled " + label);
+}
+
 Index index_of(const Model& m, const std::string& name) {
   const Index i = m.find_node(name);
   if (i < 0) throw std::runtime_error("no node named " + name);
@@ -420,6 +426,28 @@ TEST_F(EverythingModel, ResponseAndStaticDefaults) {
   EXPECT_DOUBLE_EQ(*s.speed, 1000.0 * rpm);
 }
 
+TEST_F(EverythingModel, RunupDefaultsWithARamp) {
+  const RunupDefaults& r = file_->runup;
+  // from = "10 Hz", to = "4800 rpm", ramp_time = "5 s"
+  ASSERT_EQ(r.profile.size(), 2u);
+  EXPECT_EQ(r.profile[0].first, 0.0);
+  EXPECT_DOUBLE_EQ(r.profile[0].second, 10.0 * hz);
+  EXPECT_EQ(r.profile[1].first, 5.0);
+  EXPECT_DOUBLE_EQ(r.profile[1].second, 4800.0 * rpm);
+  EXPECT_EQ(r.duration, 5.0);  // the ramp time, by default
+  EXPECT_EQ(r.integrator, "ros34pw2");
+  ASSERT_TRUE(r.dt);
+  EXPECT_DOUBLE_EQ(*r.dt, 0.1 / 1000.0);
+  EXPECT_EQ(r.rel_tol, 1e-5);
+  EXPECT_EQ(r.abs_tol, 1e-8);
+  ASSERT_TRUE(r.output_interval);
+  EXPECT_DOUBLE_EQ(*r.output_interval, 2.0 / 1000.0);
+  EXPECT_EQ(r.probes, (std::vector<Index>{index_of(m(), "tip"), 1}));
+  EXPECT_EQ(r.springs,
+            (std::vector<Index>{element_index(m(), "bearing b"), element_index(m(), "bearing a")}));
+  EXPECT_NE(element(m(), "bearing b").target<SpringDamper>(), nullptr);
+}
+
 // ---------------------------------------------------------------------------------
 // Round trip: a file reads to exactly the Model built by hand.
 
@@ -658,6 +686,16 @@ radius = 0.01
   EXPECT_FALSE(file.response.loss_factor);
   EXPECT_FALSE(file.static_.gravity);
   EXPECT_FALSE(file.static_.speed);
+  // No run-up defaults without [runup].
+  EXPECT_TRUE(file.runup.profile.empty());
+  EXPECT_FALSE(file.runup.duration);
+  EXPECT_FALSE(file.runup.integrator);
+  EXPECT_FALSE(file.runup.dt);
+  EXPECT_FALSE(file.runup.rel_tol);
+  EXPECT_FALSE(file.runup.abs_tol);
+  EXPECT_FALSE(file.runup.output_interval);
+  EXPECT_TRUE(file.runup.probes.empty());
+  EXPECT_TRUE(file.runup.springs.empty());
 }
 
 // A clamped-clamped shaft (valid structure) followed by @p extra.
@@ -702,6 +740,126 @@ points = 2
   EXPECT_EQ(file.response.points, 2);
   EXPECT_FALSE(file.response.start);
   EXPECT_FALSE(file.response.loss_factor);
+}
+
+// ---------------------------------------------------------------------------------
+// [runup]: the three forms of the speed profile, defaults and references
+
+TEST(ModelReaderRunup, ConstantSpeedIsOnePointAndHasNoDefaultDuration) {
+  const ModelFile file = read_with("[runup]\nspeed = \"30 Hz\"\n");
+  ASSERT_EQ(file.runup.profile.size(), 1u);
+  EXPECT_EQ(file.runup.profile[0].first, 0.0);
+  EXPECT_DOUBLE_EQ(file.runup.profile[0].second, 30.0 * hz);
+  EXPECT_FALSE(file.runup.duration);
+  EXPECT_FALSE(file.runup.integrator);
+  EXPECT_FALSE(file.runup.dt);
+  EXPECT_TRUE(file.runup.probes.empty());
+  EXPECT_TRUE(file.runup.springs.empty());
+
+  const ModelFile timed = read_with("[runup]\nspeed = 100\nduration = \"250 ms\"\n");
+  EXPECT_EQ(timed.runup.profile, (std::vector<std::pair<Real, Real>>{{0.0, 100.0}}));
+  ASSERT_TRUE(timed.runup.duration);
+  EXPECT_DOUBLE_EQ(*timed.runup.duration, 0.25);
+}
+
+TEST(ModelReaderRunup, RampStartsAtRestByDefaultAndMayRunDown) {
+  // The paper's Fig. 5 run-up.
+  const ModelFile up = read_with("[runup]\nto = \"80 Hz\"\nramp_time = \"5 s\"\n");
+  ASSERT_EQ(up.runup.profile.size(), 2u);
+  EXPECT_EQ(up.runup.profile[0], (std::pair<Real, Real>{0.0, 0.0}));
+  EXPECT_EQ(up.runup.profile[1].first, 5.0);
+  EXPECT_DOUBLE_EQ(up.runup.profile[1].second, 80.0 * hz);
+  EXPECT_EQ(up.runup.duration, 5.0);
+
+  // A run-down; an explicit duration (longer than the ramp: the speed is then held)
+  // replaces the ramp time.
+  const ModelFile down = read_with(R"([runup]
+from = "6000 rpm"
+to = 0
+ramp_time = "1500 ms"
+duration = "2 s"
+)");
+  ASSERT_EQ(down.runup.profile.size(), 2u);
+  EXPECT_DOUBLE_EQ(down.runup.profile[0].second, 6000.0 * rpm);
+  EXPECT_DOUBLE_EQ(down.runup.profile[1].first, 1.5);
+  EXPECT_EQ(down.runup.profile[1].second, 0.0);
+  EXPECT_EQ(down.runup.duration, 2.0);
+}
+
+TEST(ModelReaderRunup, TableGivesThePointsAndItsLastTimeIsTheDefaultDuration) {
+  const ModelFile file = read_with(R"([runup]
+table = [["0 s", "0 Hz"], ["2 s", "50 Hz"], [5, "3000 rpm"], ["5500 ms", 10]]
+)");
+  const auto& p = file.runup.profile;
+  ASSERT_EQ(p.size(), 4u);
+  EXPECT_EQ(p[0], (std::pair<Real, Real>{0.0, 0.0}));
+  EXPECT_EQ(p[1].first, 2.0);
+  EXPECT_DOUBLE_EQ(p[1].second, 50.0 * hz);
+  EXPECT_EQ(p[2].first, 5.0);
+  EXPECT_DOUBLE_EQ(p[2].second, 3000.0 * rpm);
+  EXPECT_DOUBLE_EQ(p[3].first, 5.5);
+  EXPECT_EQ(p[3].second, 10.0);  // a bare speed is in rad/s
+  ASSERT_TRUE(file.runup.duration);
+  EXPECT_DOUBLE_EQ(*file.runup.duration, 5.5);
+
+  // One point at t = 0 is a constant speed: no default duration.
+  const ModelFile single = read_with("[runup]\ntable = [[0, \"20 Hz\"]]\n");
+  ASSERT_EQ(single.runup.profile.size(), 1u);
+  EXPECT_DOUBLE_EQ(single.runup.profile[0].second, 20.0 * hz);
+  EXPECT_FALSE(single.runup.duration);
+}
+
+TEST(ModelReaderRunup, EveryIntegratorNameIsAccepted) {
+  for (const char* name : {"trapezoidal", "rk3", "wolfbrandt", "ros34pw2"}) {
+    SCOPED_TRACE(name);
+    const ModelFile file = read_with(std::string("[runup]\nintegrator = \"") + name + "\"\n");
+    EXPECT_EQ(file.runup.integrator, name);
+    EXPECT_TRUE(file.runup.profile.empty());  // the profile may be left to the analysis
+  }
+}
+
+TEST(ModelReaderRunup, StepTolerancesAndOutput) {
+  const ModelFile file = read_with(R"([runup]
+dt = 1e-4
+rel_tol = 1e-6
+abs_tol = 2e-9
+output_interval = "0.5 ms"
+)");
+  EXPECT_EQ(file.runup.dt, 1e-4);
+  EXPECT_EQ(file.runup.rel_tol, 1e-6);
+  EXPECT_EQ(file.runup.abs_tol, 2e-9);
+  ASSERT_TRUE(file.runup.output_interval);
+  EXPECT_DOUBLE_EQ(*file.runup.output_interval, 0.5e-3);
+  EXPECT_FALSE(file.runup.duration);
+}
+
+TEST(ModelReaderRunup, ProbesAndNamedSpringsInTheOrderGiven) {
+  const ModelFile file = read_with(R"(
+[[springs]]
+node = 2
+ky = 1e5
+
+[[springs]]
+name = "left"
+node = 1
+to = 2
+kz = 1e5
+
+[[springs]]
+name = "right"
+node = 3
+to = 2
+kz = 1e5
+
+[runup]
+probes = [2, 1]
+springs = ["right", "left"]
+)");
+  const Model& m = file.model;
+  EXPECT_EQ(file.runup.probes, (std::vector<Index>{1, 0}));
+  EXPECT_EQ(file.runup.springs,
+            (std::vector<Index>{element_index(m, "right"), element_index(m, "left")}));
+  EXPECT_EQ(element_as<SpringDamper>(m, "left").node_a(), 0);
 }
 
 TEST(ModelReaderForces, PhaseMayBeNegativeAndAmplitudeTakesAUnit) {
@@ -827,7 +985,8 @@ kz = 1e6
 
 // ---------------------------------------------------------------------------------
 // docs/model-format.md: its complete examples (```toml blocks starting with
-// "# Example:") must read, and have the nodes the text says.
+// "# Example:") must read, and have the nodes the text says; its [runup] snippets
+// (blocks starting with "[runup]") must read when added to the first example.
 
 TEST(ModelFormatDocs, CompleteExamplesRead) {
   std::ifstream in(std::string(FERAN_SOURCE_DIR) + "/docs/model-format.md");
@@ -836,6 +995,7 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
     std::string name, text;
   };
   std::vector<Example> examples;
+  std::vector<std::string> runup_snippets;
   std::string line, block;
   bool in_block = false;
   while (std::getline(in, line)) {
@@ -847,6 +1007,8 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
       const std::string tag = "# Example: ";
       if (block.rfind(tag, 0) == 0)
         examples.push_back({block.substr(tag.size(), block.find('\n') - tag.size()), block});
+      else if (block.rfind("[runup]\n", 0) == 0)
+        runup_snippets.push_back(block);
     } else if (in_block) {
       block += line + "\n";
     }
@@ -880,6 +1042,25 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
       ADD_FAILURE() << e.what();
     }
   }
+
+  ASSERT_EQ(runup_snippets.size(), 3u);
+  for (const std::string& snippet : runup_snippets) {
+    SCOPED_TRACE(snippet);
+    try {
+      const ModelFile file =
+          read_model_string(examples[0].text + "\n" + snippet, "docs/model-format.md snippet");
+      EXPECT_FALSE(file.runup.profile.empty());
+      EXPECT_TRUE(file.runup.duration);
+    } catch (const ModelError& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
+  // The first snippet is the paper's Fig. 5 run-up.
+  const ModelFile fig5 = read_model_string(examples[0].text + "\n" + runup_snippets[0], "fig5");
+  ASSERT_EQ(fig5.runup.profile.size(), 2u);
+  EXPECT_EQ(fig5.runup.profile[0], (std::pair<Real, Real>{0.0, 0.0}));
+  EXPECT_EQ(fig5.runup.profile[1].first, 5.0);
+  EXPECT_DOUBLE_EQ(fig5.runup.profile[1].second, 80.0 * hz);
 }
 
 }  // namespace

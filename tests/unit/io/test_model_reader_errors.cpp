@@ -104,12 +104,132 @@ TEST(InvalidModelFixtures, CoverEveryErrorClass) {
       // Loads, loss factors and the [response] and [static] defaults.
       "force_missing_amplitude", "force_direction_for_rotating", "force_bad_direction",
       "rotating_force_on_stator", "response_unknown_probe", "static_g_with_none",
-      "static_bad_gravity", "static_load_no_component", "negative_loss_factor"};
+      "static_bad_gravity", "static_load_no_component", "negative_loss_factor",
+      // The [runup] defaults.
+      "runup_mixed_profile_forms", "runup_table_not_increasing", "runup_table_not_at_zero",
+      "runup_negative_speed", "runup_unknown_integrator", "runup_unknown_spring",
+      "runup_unnamed_spring", "runup_zero_dt"};
   std::vector<std::string> present;
   for (const InvalidFixture& f : invalid_fixtures()) present.push_back(f.name);
   for (const std::string& name : required)
     EXPECT_NE(std::find(present.begin(), present.end(), name), present.end())
         << "missing fixture tests/models/invalid/" << name << ".toml";
+}
+
+// [runup] errors beyond the fixtures: each case is a [runup] table (and springs)
+// appended to a clamped shaft with nodes 1-3, rejected at the stated line of the
+// appended text with a message matching the stated expression.
+TEST(ModelReaderErrors, RunupProblemsAreLocatedAndExplained) {
+  const std::string base = R"([[materials]]
+name = "steel"
+E = 2.1e11
+nu = 0.3
+rho = 7850
+
+[[shafts]]
+material = "steel"
+sections = [{ length = 0.1, outer_diameter = 0.02, elements = 2 }]
+
+[[fixed]]
+node = 1
+
+[[fixed]]
+node = 3
+
+[[springs]]
+name = "bearing"
+node = 2
+ky = 1e5
+
+[[springs]]
+name = "bearing"
+node = 2
+kz = 1e5
+
+[[springs]]
+name = "seal"
+node = 2
+cy = 10
+)";
+  const int base_lines = static_cast<int>(std::count(base.begin(), base.end(), '\n'));
+  struct Case {
+    const char* text;
+    int line;  ///< in text, from 1
+    const char* pattern;
+  };
+  const std::vector<Case> cases = {
+      {"[runup]\ntable = [[0, 0]]\nramp_time = 1\nspeed = 3\n", 3,
+       "^the speed profile .* mixes 'table' and 'ramp_time'$"},
+      {"[runup]\nfrom = \"10 Hz\"\nramp_time = \"2 s\"\n", 1,
+       "^missing key 'to' in \\[runup\\] \\(expected the ramp's final speed, a speed"},
+      {"[runup]\nto = \"10 Hz\"\n", 1,
+       "^missing key 'ramp_time' in \\[runup\\] \\(expected the ramp's duration, a time"},
+      {"[runup]\nto = \"10 Hz\"\nramp_time = 0\n", 3, "^'ramp_time' must be positive, got 0 s$"},
+      {"[runup]\nfrom = -1\nto = 1\nramp_time = 1\n", 2,
+       "^'from' must not be negative, got -1 rad/s$"},
+      {"[runup]\nspeed = \"-3 Hz\"\n", 2, "^'speed' must not be negative, got -3 Hz$"},
+      {"[runup]\ntable = []\n", 2, "^'table' needs at least one \\[time, speed\\] pair"},
+      {"[runup]\ntable = [[0, 0], [1, 2, 3]]\n", 2,
+       "^each entry of 'table' must be a \\[time, speed\\] pair .*, got an array of 3 values$"},
+      {"[runup]\ntable = [[0, 0],\n  [1, \"-5 Hz\"]]\n", 3,
+       "^'table\\[1\\]\\[1\\]' must not be negative, got -5 Hz$"},
+      {"[runup]\ntable = [[0, \"5 kg\"]]\n", 2,
+       "^'table\\[0\\]\\[1\\]' has unit 'kg', expected a speed"},
+      {"[runup]\nduration = \"-1 s\"\n", 2, "^'duration' must be positive, got -1 s$"},
+      {"[runup]\noutput_interval = 0\n", 2, "^'output_interval' must be positive, got 0 s$"},
+      {"[runup]\nrel_tol = 0\n", 2, "^'rel_tol' must be positive, got 0$"},
+      {"[runup]\nabs_tol = \"1e-9 m\"\n", 2, "^'abs_tol' must be a number without unit"},
+      {"[runup]\nintegrator = \"euler\"\n", 2,
+       "^'integrator' must be \"trapezoidal\", \"rk3\", \"wolfbrandt\" or \"ros34pw2\", "
+       "got \"euler\"$"},
+      {"[runup]\nramptime = 1\n", 2, "^unknown key 'ramptime' in \\[runup\\]; did you mean 'ramp_time'\\?$"},
+      {"[runup]\nprobes = [2, 2]\n", 2, "^node 2 appears twice in 'probes'$"},
+      {"[runup]\nsprings = [\"seal\", \"seal\"]\n", 2, "^spring 'seal' appears twice in 'springs'$"},
+      {"[runup]\nsprings = [\"bearing\"]\n", 2,
+       "^spring name 'bearing' is ambiguous: 2 \\[\\[springs\\]\\] entries have it"},
+      {"[runup]\nsprings = [3]\n", 2,
+       "^'springs\\[0\\]' must be the name of a spring .*, got an integer \\(3\\)$"},
+      {"[runup]\nsprings = []\n", 2, "^'springs' must not be empty"},
+      {"[runup]\nsprings = [\"thrust\"]\n", 2,
+       "^spring 'thrust' does not exist; the named springs are 'bearing' and 'seal'$"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.text);
+    try {
+      (void)read_model_string(base + c.text, "runup.toml");
+      ADD_FAILURE() << "accepted";
+    } catch (const ModelError& e) {
+      EXPECT_EQ(e.where().line, base_lines + c.line) << e.what();
+      EXPECT_TRUE(std::regex_search(e.message(), std::regex(c.pattern))) << e.message();
+    }
+  }
+
+  // Without any named spring, the message says that only named ones can be referenced.
+  const std::string unnamed = R"([[materials]]
+name = "steel"
+E = 2.1e11
+nu = 0.3
+rho = 7850
+
+[[shafts]]
+material = "steel"
+sections = [{ length = 0.1, outer_diameter = 0.02 }]
+
+[[springs]]
+node = 1
+ky = 1e5
+
+[runup]
+springs = ["bearing"]
+)";
+  try {
+    (void)read_model_string(unnamed, "unnamed.toml");
+    ADD_FAILURE() << "accepted";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.where().line, 16) << e.what();
+    EXPECT_EQ(e.message(), "spring 'bearing' does not exist; no [[springs]] entry has a 'name', "
+                           "and only named springs can be referenced");
+  }
 }
 
 TEST(ModelReaderErrors, MissingFileIsAnErrorButNotAModelError) {
