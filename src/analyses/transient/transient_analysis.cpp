@@ -102,6 +102,10 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   };
 
   State s{0.0, Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
+  for (Index i = 0; i < n; ++i) {
+    if (options.initial_displacement.size() == model.n_dofs()) s.x(i) = options.initial_displacement(dofs.full_dof(i));
+    if (options.initial_velocity.size() == model.n_dofs()) s.v(i) = options.initial_velocity(dofs.full_dof(i));
+  }
   const StepReport started = integrator->start(sys, s);
   if (!started.ok) {
     result.info.converged = false;

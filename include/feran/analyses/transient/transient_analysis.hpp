@@ -27,6 +27,9 @@ struct TransientOptions {
   Real blowup_limit = 1.0;
   Index envelope_bins = 400;               ///< speed bins of the |r| envelope
   bool keep_samples = true;                ///< keep the samples in the result
+  /// Initial displacements and velocities of all unconstrained DOFs (global_dof
+  /// order); empty: at rest. Values at fixed or follower DOFs are ignored.
+  Vector initial_displacement, initial_velocity;
 };
 
 /// The recorded state at one output time.
@@ -63,7 +66,7 @@ using SampleSink = std::function<void(const TransientSample&)>;
 /// Called every few steps with the time reached and the current step size.
 using ProgressSink = std::function<void(Real t, Real dt)>;
 
-/// Integrates from rest (q = q' = 0 at t = 0). Throws feran::Error for a bad option
+/// Integrates from the initial state (rest unless given). Throws feran::Error for a bad option
 /// (unknown integrator, non-positive step or interval).
 TransientResult run_transient(const Model& model, const TransientOptions& options,
                               const SampleSink& sink = {}, const ProgressSink& progress = {});
