@@ -1,0 +1,115 @@
+#include <feran/analyses/transient/newmark.hpp>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+namespace {
+
+// Modified Newton keeps the old matrix while each correction is at least this much
+// smaller than the one before; a slower contraction switches to full Newton.
+constexpr Real max_contraction = 0.2;
+
+}  // namespace
+
+Newmark::Newmark(const IntegratorSettings& settings, NewmarkParameters parameters)
+    : settings_(settings), parameters_(parameters) {
+  if (!(parameters_.beta > 0.0))
+    throw Error(fmt::format("Newmark: beta must be positive (got {})", parameters_.beta));
+  if (!(settings_.newton_tol > 0.0))
+    throw Error(fmt::format("Newmark: newton_tol must be positive (got {})", settings_.newton_tol));
+  if (settings_.newton_max_iterations < 1)
+    throw Error(fmt::format("Newmark: newton_max_iterations must be at least 1 (got {})",
+                            settings_.newton_max_iterations));
+}
+
+std::string_view Newmark::name() const {
+  const NewmarkParameters avg = NewmarkParameters::average_acceleration();
+  return parameters_.beta == avg.beta && parameters_.gamma == avg.gamma ? "trapezoidal"
+                                                                          : "newmark";
+}
+
+StepReport Newmark::start(SecondOrderSystem& sys, State& s) {
+  StepReport report;
+  const Index n = sys.size();
+  if (s.x.size() != n || s.v.size() != n) {
+    report.ok = false;
+    report.message = fmt::format("{}: state has {} displacements and {} velocities, the system {} unknowns",
+                                 name(), s.x.size(), s.v.size(), n);
+    return report;
+  }
+  r_.resize(n);
+  sys.rhs(s.t, s.x, s.v, r_);
+  s.a.resize(n);
+  sys.solve_mass(r_, s.a);
+  factored_ = false;
+  return report;
+}
+
+StepReport Newmark::step(SecondOrderSystem& sys, State& s, Real dt) {
+  StepReport report;
+  report.dt = dt;
+  report.dt_next = dt;
+  const Real beta = parameters_.beta;
+  const Real gamma = parameters_.gamma;
+  const Real t1 = s.t + dt;
+  const Real c_a = 1.0 / (beta * dt * dt);
+  const Real c_v = gamma / (beta * dt);
+  const Real a_old = 1.0 / (2.0 * beta) - 1.0;  // coefficient of a_n in a_{n+1}
+
+  // Predictor x_n + Δt·v_n + Δt²/2·a_n, for which Newmark's a_{n+1} equals a_n.
+  x1_ = s.x + dt * s.v + (0.5 * dt * dt) * s.a;
+  bool refresh = !factored_ || dt != dt_factored_;
+  bool full_newton = false;
+  Real previous_norm = 0.0;
+  Real norm = 0.0;
+  for (int k = 1; k <= settings_.newton_max_iterations; ++k) {
+    a1_ = c_a * (x1_ - s.x - dt * s.v) - a_old * s.a;
+    v1_ = s.v + dt * ((1.0 - gamma) * s.a + gamma * a1_);
+    if (refresh || full_newton) {
+      sys.set_jacobian(t1, x1_, v1_, true);
+      ++report.factorizations;
+      if (!sys.factor_tangent(1.0, c_v, c_a)) {
+        factored_ = false;
+        report.ok = false;
+        report.iterations = k;
+        report.message = fmt::format("{}: singular Newton matrix at t = {:.9g} (dt = {:.6g})", name(), t1, dt);
+        return report;
+      }
+      factored_ = true;
+      dt_factored_ = dt;
+      refresh = false;
+    }
+    sys.rhs(t1, x1_, v1_, r_);
+    sys.mass_times(a1_, ma_);
+    residual_ = r_ - ma_;  // −R
+    sys.solve_tangent(residual_, delta_);
+    x1_ += delta_;
+    norm = delta_.norm();
+    report.iterations = k;
+    if (!std::isfinite(norm)) break;
+    if (norm <= settings_.newton_tol * (1.0 + x1_.norm())) {
+      a1_ = c_a * (x1_ - s.x - dt * s.v) - a_old * s.a;
+      v1_ = s.v + dt * ((1.0 - gamma) * s.a + gamma * a1_);
+      s.t = t1;
+      s.x.swap(x1_);
+      s.v.swap(v1_);
+      s.a.swap(a1_);
+      return report;
+    }
+    if (k >= 2 && norm > max_contraction * previous_norm) full_newton = true;
+    previous_norm = norm;
+  }
+  report.ok = false;
+  report.message = fmt::format(
+      "{}: Newton did not converge in {} iteration(s) at t = {:.9g} (dt = {:.6g}): last correction "
+      "norm {:.3e}, tolerance {:.3e}",
+      name(), report.iterations, t1, dt, norm, settings_.newton_tol * (1.0 + x1_.norm()));
+  return report;
+}
+
+}  // namespace feran
