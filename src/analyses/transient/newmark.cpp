@@ -34,18 +34,8 @@ std::string_view Newmark::name() const {
 }
 
 StepReport Newmark::start(SecondOrderSystem& sys, State& s) {
-  StepReport report;
-  const Index n = sys.size();
-  if (s.x.size() != n || s.v.size() != n) {
-    report.ok = false;
-    report.message = fmt::format("{}: state has {} displacements and {} velocities, the system {} unknowns",
-                                 name(), s.x.size(), s.v.size(), n);
-    return report;
-  }
-  r_.resize(n);
-  sys.rhs(s.t, s.x, s.v, r_);
-  s.a.resize(n);
-  sys.solve_mass(r_, s.a);
+  StepReport report = detail::initial_acceleration(name(), sys, s, r_);
+  if (!report.ok) return report;
   factored_ = false;
   return report;
 }

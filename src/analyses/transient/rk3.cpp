@@ -32,18 +32,8 @@ std::string Rk3::check_limit(Real dt) const {
 }
 
 StepReport Rk3::start(SecondOrderSystem& sys, State& s) {
-  StepReport report;
-  const Index n = sys.size();
-  if (s.x.size() != n || s.v.size() != n) {
-    report.ok = false;
-    report.message = fmt::format("rk3: state has {} displacements and {} velocities, the system {} unknowns",
-                                 s.x.size(), s.v.size(), n);
-    return report;
-  }
-  r_.resize(n);
-  sys.rhs(s.t, s.x, s.v, r_);
-  s.a.resize(n);
-  sys.solve_mass(r_, s.a);
+  StepReport report = detail::initial_acceleration("rk3", sys, s, r_);
+  if (!report.ok) return report;
 
   omega_max_ = sys.highest_frequency();
   dt_limit_ = omega_max_ > 0.0 ? imaginary_axis_limit / omega_max_

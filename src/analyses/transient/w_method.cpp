@@ -94,18 +94,8 @@ WMethod::WMethod(WTableau tableau, const IntegratorSettings& settings, bool adap
 }
 
 StepReport WMethod::start(SecondOrderSystem& sys, State& s) {
-  StepReport report;
-  const Index n = sys.size();
-  if (s.x.size() != n || s.v.size() != n) {
-    report.ok = false;
-    report.message = fmt::format("{}: state has {} displacements and {} velocities, the system {} unknowns",
-                                 name(), s.x.size(), s.v.size(), n);
-    return report;
-  }
-  r_.resize(n);
-  sys.rhs(s.t, s.x, s.v, r_);
-  s.a.resize(n);
-  sys.solve_mass(r_, s.a);
+  StepReport report = detail::initial_acceleration(name(), sys, s, r_);
+  if (!report.ok) return report;
   jacobian_set_ = false;
   jacobian_current_ = false;
   steps_since_jacobian_ = 0;

@@ -60,6 +60,13 @@ class Integrator {
   virtual StepReport step(SecondOrderSystem& sys, State& s, Real dt) = 0;
 };
 
+namespace detail {
+/// The common start of every integrator: checks that @p s matches the system's size
+/// and computes s.a from M·a = r(t, x, v), using @p r as work space. A report with
+/// ok = false names @p method and the mismatch.
+StepReport initial_acceleration(std::string_view method, SecondOrderSystem& sys, State& s, Vector& r);
+}  // namespace detail
+
 /// The integrator named @p name ("trapezoidal", "rk3", "wolfbrandt", "ros34pw2").
 /// Throws feran::Error for an unknown name, listing the known ones.
 std::unique_ptr<Integrator> make_integrator(const std::string& name, const IntegratorSettings& settings);
