@@ -219,7 +219,8 @@ Runner add_runup_command(CLI::App& app) {
       std::fputs(out.c_str(), stdout);
     }
     if (!result.info.converged) {
-      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
+      std::fprintf(stderr, "feran: error: %s%s\n", result.info.message.c_str(),
+                   result.steps > 0 ? " (results up to there were kept)" : "");
       return static_cast<int>(numerical_failure);
     }
     return static_cast<int>(ok);
