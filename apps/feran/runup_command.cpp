@@ -199,6 +199,9 @@ Runner add_runup_command(CLI::App& app) {
                        rad_to_hz(options.profile.speed(t)), dt);
         });
     if (printed) std::fputs("\n", stderr);
+    // Refused before the first step (e.g. rk3 above its stability limit): a bad
+    // option, not a failed run; nothing is written.
+    if (!result.info.converged && result.steps == 0) throw Error(result.info.message);
     const Real wall = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->finish();
     const ResultSource source{file.path, file.title};
@@ -219,8 +222,7 @@ Runner add_runup_command(CLI::App& app) {
       std::fputs(out.c_str(), stdout);
     }
     if (!result.info.converged) {
-      std::fprintf(stderr, "feran: error: %s%s\n", result.info.message.c_str(),
-                   result.steps > 0 ? " (results up to there were kept)" : "");
+      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
       return static_cast<int>(numerical_failure);
     }
     return static_cast<int>(ok);
