@@ -68,6 +68,19 @@ inline void fix_all(Model& m, Index node) {
   fix(m, node, {Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz});
 }
 
+// Jeffcott rotor: a point mass m (tiny tilt inertia, tilts fixed) on an isotropic
+// spring k with external damping c_a and, when c_i > 0, a rotating damper c_i to the
+// shaft axis.
+inline Model jeffcott(Real m, Real k, Real ca, Real ci) {
+  Model model;
+  const Index n = add_node(model, 0.0, true, "disk");
+  add_body(model, n, m, 1e-3, 1e-3);
+  add_isotropic_bearing(model, n, k, ca);
+  if (ci > 0) model.elements.emplace_back(RotatingDamper(n, std::nullopt, {ci, 0, 0, 0}));
+  fix(model, n, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
+  return model;
+}
+
 // Friswell, Penny, Garvey & Lees (2010), Example 5.9.1: steel shaft 1.5 m, Ø 50 mm,
 // six Timoshenko elements; disks Ø 280 × 70 mm at 0.5 m and Ø 350 × 70 mm at 1.0 m
 // (bore = shaft diameter); isotropic bearings 1 MN/m at both ends. Axial and

@@ -17,13 +17,8 @@ namespace {
 constexpr Real m = 9.1, k = 1.6e5, mu = 0.01, e = 0.08;
 
 Model jeffcott(Real ca, Real ci) {
-  Model model;
-  const Index n = test::add_node(model, 0.0, true, "disk");
-  test::add_body(model, n, m, 1e-3, 1e-3);
-  test::add_isotropic_bearing(model, n, k, ca);
-  if (ci > 0) model.elements.emplace_back(RotatingDamper(n, std::nullopt, {ci, 0, 0, 0}));
-  test::fix(model, n, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
-  model.unbalances.push_back({n, mu, e, 0.3, 0.0, "u"});
+  Model model = test::jeffcott(m, k, ca, ci);
+  model.unbalances.push_back({0, mu, e, 0.3, 0.0, "u"});
   return model;
 }
 

@@ -18,15 +18,7 @@ namespace {
 
 constexpr Real m = 9.1, k = 1.6e5, c_a = 250.0, c_i = 638.0;
 
-Model jeffcott(Real ca, Real ci) {
-  Model model;
-  const Index n = test::add_node(model, 0.0, true, "disk");
-  test::add_body(model, n, m, 1e-3, 1e-3);
-  test::add_isotropic_bearing(model, n, k, ca);
-  if (ci > 0) model.elements.emplace_back(RotatingDamper(n, std::nullopt, {ci, 0, 0, 0}));
-  test::fix(model, n, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
-  return model;
-}
+Model jeffcott(Real ca, Real ci) { return test::jeffcott(m, k, ca, ci); }
 
 std::vector<Real> linspace(Real a, Real b, int n) {
   std::vector<Real> v;

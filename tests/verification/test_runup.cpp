@@ -17,12 +17,8 @@ constexpr Real m = 9.1, k = 1.6e5;
 const Real wn = std::sqrt(k / m);  // 132.6 rad/s
 
 Model jeffcott(Real ca, Real ci, Real unbalance = 0.0, Real friction = 0.0) {
-  Model model;
-  const Index n = test::add_node(model, 0.0, true, "disk");
-  test::add_body(model, n, m, 1e-3, 1e-3);
-  test::add_isotropic_bearing(model, n, k, ca);
-  if (ci > 0) model.elements.emplace_back(RotatingDamper(n, std::nullopt, {ci, 0, 0, 0}));
-  test::fix(model, n, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
+  Model model = test::jeffcott(m, k, ca, ci);
+  const Index n = 0;
   if (unbalance > 0) model.unbalances.push_back({n, unbalance, 0.05, 0.0, 0.0, "u"});
   if (friction > 0) {
     CoulombFriction f;
