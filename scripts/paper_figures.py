@@ -46,6 +46,11 @@ def critical(campbell):
     return {c["mode"]: c["speed_hz"] for c in campbell["critical_speeds"] if c["order"] == 1}
 
 
+def curve(campbell, label, key="frequency_hz"):
+    """One tracked mode's values per speed (NaN where it was not followed)."""
+    return series(mode(campbell, label)[key])
+
+
 def save(fig, out, name, title):
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
@@ -76,7 +81,7 @@ def campbell_panel(ax, r, labels, xmax, ymax):
     for label in labels:
         colour, style = WHIRL_STYLE[label]
         name = label.replace(" ", " whirl ")
-        ax.plot(speeds, series(mode(r, label)["frequency_hz"]), style, color=colour, label=name)
+        ax.plot(speeds, curve(r, label), style, color=colour, label=name)
     ax.plot([0, xmax], [0, xmax], color="black", lw=0.8, label="run-up")
     frame(ax, (0, xmax), (0, ymax), REV_SHORT, "eigenfrequency [Hz]", "upper left")
 
@@ -128,7 +133,7 @@ def fig01(data, out):
     save(fig, out, "fig01", "Fig. 1: Campbell diagram of the centrifuge")
     crit = critical(r)
     return [("Fig. 1", "first critical speed (forward 1), centrifuge", f"{crit['forward 1']:.2f} Hz"),
-            ("Fig. 1", "forward whirl 3 at 200 Hz", f"{series(mode(r, 'forward 3')['frequency_hz'])[-1]:.1f} Hz")]
+            ("Fig. 1", "forward whirl 3 at 200 Hz", f"{curve(r, 'forward 3')[-1]:.1f} Hz")]
 
 
 def fig04(data, out):
@@ -137,8 +142,8 @@ def fig04(data, out):
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
     campbell_panel(left, with_, WHIRLS, 80, 160)
     speeds = np.array(with_["speeds_hz"])
-    d_without = 100 * series(mode(without, "forward 1")["damping_ratio"])
-    d_with = 100 * series(mode(with_, "forward 1")["damping_ratio"])
+    d_without = 100 * curve(without, "forward 1", "damping_ratio")
+    d_with = 100 * curve(with_, "forward 1", "damping_ratio")
     right.plot(speeds, d_without, color="tab:blue", label="without internal damping")
     right.plot(speeds, d_with, color="tab:red", label="with internal damping")
     right.axhline(0, color="black", lw=0.8)
@@ -260,7 +265,7 @@ def fig07(data, out):
     right.plot(speeds[after], -f[after], ".", ms=2, color="tab:blue",
                label="whirl in the run-up (backward)")
     cs = np.array(soft["speeds_hz"])
-    bw1 = series(mode(soft, "backward 1")["frequency_hz"])
+    bw1 = curve(soft, "backward 1")
     right.plot(cs[cs >= 40], bw1[cs >= 40], color="black", lw=0.8, label="backward whirl 1 (Campbell, Fig. 8)")
     right.axhline(0.98, color="grey", lw=0.5, ls=":")
     right.axhline(0.68, color="grey", lw=0.5, ls=":")
@@ -283,14 +288,14 @@ def fig08(data, out):
     speeds = np.array(r["speeds_hz"])
     for label in WHIRLS:
         colour, style = WHIRL_STYLE[label]
-        right.plot(speeds, 100 * series(mode(r, label)["damping_ratio"]), style, color=colour,
+        right.plot(speeds, 100 * curve(r, label, "damping_ratio"), style, color=colour,
                    label=label.replace(" ", " whirl "))
     right.axvline(40, color="grey", lw=0.6, ls=":")
     frame(right, (0, 60), (0, 60), REV_SHORT, "damping [%]", "upper left")
     save(fig, out, "fig08",
          "Fig. 8: Campbell diagram (left) and damping (right), mounting stiffness stepped to 10 % at 40 Hz")
-    bw1 = series(mode(r, "backward 1")["frequency_hz"])
-    largest = max(np.nanmax(series(mode(r, label)["damping_ratio"])) for label in WHIRLS)
+    bw1 = curve(r, "backward 1")
+    largest = max(np.nanmax(curve(r, label, "damping_ratio")) for label in WHIRLS)
     return [("Fig. 8", "backward whirl 1 at 40 / 60 Hz", f"{bw1[speeds == 40.0][0]:.3f} / {bw1[-1]:.3f} Hz"),
             ("Fig. 8", "largest damping of whirls 1-2", f"{100 * largest:.1f} %")]
 
