@@ -17,6 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from PIL import Image  # noqa: E402  (python3-pil, a dependency of python3-matplotlib)
 
 WHIRLS = ["backward 1", "forward 1", "backward 2", "forward 2"]
 WHIRL_STYLE = {"backward 1": ("tab:blue", "--"), "forward 1": ("tab:blue", "-"),
@@ -54,9 +55,12 @@ def curve(campbell, label, key="frequency_hz"):
 def save(fig, out, name, title):
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, name + ".png"), dpi=PNG_DPI)
+    png = os.path.join(out, name + ".png")
+    fig.savefig(png, dpi=PNG_DPI)
     fig.savefig(os.path.join(out, name + ".svg"))
     plt.close(fig)
+    # A 64-colour palette keeps the PNGs small (a quarter of the size) at no visible cost.
+    Image.open(png).convert("RGB").quantize(colors=64).save(png, optimize=True)
 
 
 REV = "frequency of revolution [Hz]"
