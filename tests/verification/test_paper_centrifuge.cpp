@@ -129,6 +129,8 @@ TEST(PaperCentrifuge, FirstCriticalSpeedOfTheUnchangedModelLiesAboveTheSwitching
   EXPECT_GT(critical, f_as);
   EXPECT_LE(critical, 1.40 * f_as);
   EXPECT_NEAR(critical, 5.346, 0.005 * 5.346);
+  // The second forward critical speed, quoted in docs/validation.md (regression, 0.5 %).
+  EXPECT_NEAR(critical_hz(base_campbell(), "forward 2"), 20.92, 0.005 * 20.92);
 }
 
 // The paper's sentence points at Fig. 9 right, the configuration softened by the

@@ -140,6 +140,9 @@ TEST(PaperInternalDamping, DampingAndGrowthOfForwardWhirlOneAsQuoted) {
       if (hz[i] >= f) return growth[i - 1] + (growth[i] - growth[i - 1]) * (f - hz[i - 1]) / (hz[i] - hz[i - 1]);
     return growth.back();
   };
+  EXPECT_NEAR(rate(s.options.speeds.size() - 1), 19.4, 0.1);  // growth rate at 80 Hz [1/s], as quoted
+  // Forward whirl 2 at 80 Hz, quoted for the explicit Runge-Kutta step limit (0.5 Hz).
+  EXPECT_NEAR(mode(s.with, "forward 2").frequency_hz.back(), 135.9, 0.5);
   EXPECT_NEAR(g(72.8), 8.6, 0.01 * 8.6);
   EXPECT_NEAR(g(80.0), 16.1, 0.01 * 16.1);
   Real weaker = NAN;  // where 0.7·G reaches G(72.8)
