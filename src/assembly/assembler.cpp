@@ -1,5 +1,10 @@
 #include <feran/assembly/assembler.hpp>
 
+#include <algorithm>
+#include <utility>
+
+#include <feran/core/error.hpp>
+
 namespace feran {
 
 namespace {
@@ -56,6 +61,80 @@ Assembler::Assembler(const Model& model) : dofs_(model) {
       add_element(e, OperatingPoint{}, t);
   }
   constant_ = reduce(t, dofs_.transformation());
+  build_variable_scatter();
+}
+
+void Assembler::build_variable_scatter() {
+  // Each local DOF i maps to the reduced DOFs of row i of T; a local entry (i, j)
+  // touches every (a, b) with T(i, a)·T(j, b) ≠ 0.
+  const Eigen::SparseMatrix<Real, Eigen::RowMajor> T = dofs_.transformation();
+  const Index n = T.cols();
+  std::vector<std::vector<std::pair<Index, Real>>> rows(static_cast<std::size_t>(T.rows()));
+  for (Index r = 0; r < T.rows(); ++r)
+    for (Eigen::SparseMatrix<Real, Eigen::RowMajor>::InnerIterator it(T, r); it; ++it)
+      rows[static_cast<std::size_t>(r)].emplace_back(it.col(), it.value());
+  auto row = [&](Index dof) -> const std::vector<std::pair<Index, Real>>& { return rows[static_cast<std::size_t>(dof)]; };
+
+  std::vector<std::vector<Index>> element_dofs;
+  Triplets pattern;
+  for (const Element& e : speed_dependent_elements_) {
+    element_dofs.push_back(e.local_matrices(OperatingPoint{}).dofs);
+    for (const Index di : element_dofs.back())
+      for (const Index dj : element_dofs.back())
+        for (const auto& [a, ta] : row(di))
+          for (const auto& [b, tb] : row(dj)) pattern.emplace_back(a, b, 1.0);
+  }
+  variable_pattern_.resize(n, n);
+  variable_pattern_.setFromTriplets(pattern.begin(), pattern.end());
+  variable_pattern_.makeCompressed();
+  auto value_index = [&](Index a, Index b) {
+    using StorageIndex = SparseMatrix::StorageIndex;
+    const StorageIndex* inner = variable_pattern_.innerIndexPtr();
+    const StorageIndex* begin = inner + variable_pattern_.outerIndexPtr()[b];
+    const StorageIndex* end = inner + variable_pattern_.outerIndexPtr()[b + 1];
+    return static_cast<Index>(std::lower_bound(begin, end, static_cast<StorageIndex>(a)) - inner);
+  };
+  for (const std::vector<Index>& dofs : element_dofs) {
+    std::vector<Scatter> scatter_list;
+    const auto m = static_cast<Index>(dofs.size());
+    for (Index j = 0; j < m; ++j)
+      for (Index i = 0; i < m; ++i)
+        for (const auto& [a, ta] : row(dofs[static_cast<std::size_t>(i)]))
+          for (const auto& [b, tb] : row(dofs[static_cast<std::size_t>(j)]))
+            scatter_list.push_back({i + j * m, value_index(a, b), ta * tb});
+    variable_scatter_.push_back(std::move(scatter_list));
+    variable_dof_counts_.push_back(dofs.size());
+  }
+}
+
+void Assembler::variable_values(Real speed, SystemMatrices& out) const {
+  SparseMatrix* const parts[] = {&out.M, &out.C, &out.K, &out.G, &out.Ci, &out.Ki, &out.Kh};
+  for (SparseMatrix* p : parts) {
+    if (p->rows() != variable_pattern_.rows() || p->nonZeros() != variable_pattern_.nonZeros()) {
+      *p = variable_pattern_;
+    }
+    std::fill_n(p->valuePtr(), p->nonZeros(), 0.0);
+  }
+  for (std::size_t e = 0; e < speed_dependent_elements_.size(); ++e) {
+    const LocalMatrices lm = speed_dependent_elements_[e].local_matrices(OperatingPoint{speed});
+    if (lm.dofs.size() != variable_dof_counts_[e])
+      throw Error("assembly: a speed-dependent element changed its DOFs with the speed");
+    auto add = [&](const Matrix& local, Real factor, SparseMatrix& target) {
+      if (local.size() == 0 || factor == 0.0) return;
+      if (local.rows() != static_cast<Index>(lm.dofs.size()) || local.cols() != local.rows())
+        throw Error("assembly: an element's matrix does not match its DOF list");
+      Real* values = target.valuePtr();
+      const Real* l = local.data();
+      for (const Scatter& s : variable_scatter_[e]) values[s.value] += factor * s.weight * l[s.local];
+    };
+    add(lm.M, 1.0, out.M);
+    add(lm.C, 1.0, out.C);
+    add(lm.K, 1.0, out.K);
+    add(lm.G, 1.0, out.G);
+    add(lm.Ci, 1.0, out.Ci);
+    add(lm.Ki, 1.0, out.Ki);
+    add(lm.K, lm.loss_factor, out.Kh);
+  }
 }
 
 SystemMatrices Assembler::variable_at(Real speed) const {

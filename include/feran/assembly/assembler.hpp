@@ -39,11 +39,29 @@ class Assembler {
   /// Only the speed-dependent elements' contribution at @p speed (zero matrices of
   /// the right size when there are none).
   SystemMatrices variable_at(Real speed) const;
+  /// The same values as variable_at(@p speed), written in place into @p out: the first
+  /// call sizes @p out with a sparsity pattern that holds every entry the
+  /// speed-dependent elements can touch (explicit zeros included); later calls only
+  /// evaluate the elements and scatter their values, without allocating. For
+  /// time integration, where the speed changes at every step.
+  void variable_values(Real speed, SystemMatrices& out) const;
 
  private:
+  void build_variable_scatter();
+
   DofMap dofs_;
   SystemMatrices constant_;
   std::vector<Element> speed_dependent_elements_;
+  /// Where a local entry of a speed-dependent element lands in the pattern of
+  /// variable_values(): entry `local` (column-major in the element's matrices) adds
+  /// `weight`·value to `value` of the reduced matrices' value arrays.
+  struct Scatter {
+    Index local, value;
+    Real weight;
+  };
+  std::vector<std::vector<Scatter>> variable_scatter_;  // per speed-dependent element
+  std::vector<std::size_t> variable_dof_counts_;        // local DOFs per element
+  SparseMatrix variable_pattern_;
 };
 
 }  // namespace feran

@@ -36,9 +36,7 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, bool static_l
 
 void RotorSystem::update_speed(Real speed) {
   if (!assembler_.speed_dependent() || speed == cached_speed_) return;
-  const SystemMatrices v = assembler_.variable_at(speed);
-  Cv_ = v.C;
-  Kv_ = v.K;
+  assembler_.variable_values(speed, variable_);
   cached_speed_ = speed;
 }
 
@@ -78,7 +76,7 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
   external_forces(t, f_full_);
   r = assembler_.dof_map().transformation().transpose() * f_full_;
   r -= C_ * v + Ci_ * v + W * (G_ * v) + K_ * x + W * (Ki_ * x);
-  if (assembler_.speed_dependent()) r -= Cv_ * v + Kv_ * x;
+  if (assembler_.speed_dependent()) r -= variable_.C * v + variable_.K * x;
   const MotionState state{t, W};
   for (std::size_t i = 0; i < forces_.size(); ++i) {
     const NonlinearForceValue f = forces_[i].force(state, selectors_[i] * x, selectors_[i] * v);
@@ -92,8 +90,8 @@ void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool ex
   DT_ = C_ + Ci_ + W * G_;
   KT_ = K_ + W * Ki_;
   if (assembler_.speed_dependent()) {
-    DT_ += Cv_;
-    KT_ += Kv_;
+    DT_ += variable_.C;
+    KT_ += variable_.K;
   }
   const MotionState state{t, W};
   for (std::size_t i = 0; i < forces_.size(); ++i) {
@@ -121,7 +119,7 @@ Real RotorSystem::highest_frequency() {
   // 60 iterations from a fixed start vector, then 10 % margin, since the iteration
   // approaches the largest eigenvalue from below.
   SparseMatrix K = K_;
-  if (assembler_.speed_dependent()) K += Kv_;
+  if (assembler_.speed_dependent()) K += variable_.K;
   const SparseMatrix Ks = 0.5 * (K + SparseMatrix(K.transpose()));
   Vector u = Vector::LinSpaced(size(), 1.0, 2.0);
   Real lambda = 0.0;

@@ -70,6 +70,48 @@ TEST(Assembler, SpeedDependentCoefficientsFollowTheSpeed) {
   EXPECT_DOUBLE_EQ(above - below, 1e6);
 }
 
+// variable_values() writes into a fixed pattern what variable_at() assembles from
+// scratch. Checked on speed-dependent springs between a shaft node and a stator tied
+// by a rigid link (so rows of T have several entries) with fixed DOFs, cross-coupled
+// terms, a loss factor and the arctan law, at speeds on both sides of a step and
+// after the pattern was made (the second call must reuse it). Tolerance 1e-13 of the
+// largest entry: the same products summed in another order.
+TEST(Assembler, VariableValuesInPlaceEqualTheAssembledOnes) {
+  Model m = test::friswell_5_9_1();
+  const Index stator = test::add_node(m, 1.5, false);
+  const Index stator2 = test::add_node(m, 1.6, false);
+  test::add_body(m, stator, 10.0, 0.1, 0.1, 0.0, false);
+  m.links.push_back({stator, {stator2}});
+  test::fix(m, stator, {Dof::u, Dof::rx});
+  SpringDamperCoefficients c;
+  c.k[static_cast<std::size_t>(Dof::v)] = SpeedCoefficient(SpeedCoefficient::Step{1e6, 2e6, 100.0});
+  c.k[static_cast<std::size_t>(Dof::w)] = SpeedCoefficient(SpeedCoefficient::Step{1.5e6, 2e6, 120.0});
+  c.k[static_cast<std::size_t>(Dof::ry)] = SpeedCoefficient(3e4);
+  c.c[static_cast<std::size_t>(Dof::v)] = SpeedCoefficient(SpeedCoefficient::Step{50.0, 80.0, 90.0});
+  c.kyz = SpeedCoefficient(SpeedCoefficient::Step{1e5, -2e5, 110.0});
+  c.loss_factor = 0.02;
+  m.elements.emplace_back(SpringDamper(3, stator2, c));
+  SpringDamperCoefficients ground;
+  ground.k[static_cast<std::size_t>(Dof::v)] = SpeedCoefficient(SpeedCoefficient::Step{4e5, 4e6, 60.0});
+  ground.k[static_cast<std::size_t>(Dof::w)] = SpeedCoefficient(SpeedCoefficient::Step{4e5, 4e6, 60.0});
+  m.elements.emplace_back(SpringDamper(stator, std::nullopt, ground));
+  const Assembler assembler(m);
+  ASSERT_TRUE(assembler.speed_dependent());
+  SystemMatrices in_place;
+  for (const Real speed : {0.0, 50.0, 95.0, 115.0, 150.0, 50.0}) {
+    assembler.variable_values(speed, in_place);
+    const SystemMatrices ref = assembler.variable_at(speed);
+    auto diff = [](const SparseMatrix& a, const SparseMatrix& b) { return Matrix(Matrix(a) - Matrix(b)).cwiseAbs().maxCoeff(); };
+    const Real scale = Matrix(ref.K).cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 1e5);
+    EXPECT_LE(diff(in_place.K, ref.K), 1e-13 * scale) << speed;
+    EXPECT_LE(diff(in_place.C, ref.C), 1e-13 * scale) << speed;
+    EXPECT_LE(diff(in_place.Kh, ref.Kh), 1e-13 * scale) << speed;
+    EXPECT_LE(diff(in_place.M, ref.M) + diff(in_place.G, ref.G), 1e-13 * scale) << speed;
+    EXPECT_GT(Matrix(in_place.Kh).cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
 TEST(Checks, NamesTheFreeMotions) {
   Model m = test::friswell_5_9_1();
   m.fixed.clear();

@@ -51,7 +51,7 @@ class RotorSystem final : public SecondOrderSystem {
   SpeedProfile profile_;
   bool static_loads_;
   SparseMatrix M_, C_, K_, G_, Ci_, Ki_;  // speed-independent parts
-  SparseMatrix Cv_, Kv_;                  // speed-dependent parts at cached_speed_
+  SystemMatrices variable_;               // speed-dependent parts at cached_speed_
   Real cached_speed_;
   Eigen::SimplicialLDLT<SparseMatrix> mass_;
   std::vector<NonlinearForce> forces_;
