@@ -289,12 +289,10 @@ TEST(PaperCentrifuge, ArctanLawReducesTheMaximumDeflectionByAbout30Percent) {
   const Real base_max = *std::max_element(base.begin(), base.end());
   const Real arctan_max = *std::max_element(arctan.begin(), arctan.end());
   EXPECT_NEAR(1.0 - arctan_max / base_max, 0.30, 0.10);
-  // As quoted in docs/validation.md (regression values, the rounding of the quote),
-  // with the steady-state peak of the 10 % mounting (the dotted curve of Fig. 10).
-  const std::vector<Real> soft = rotor_deflection(models().soft, speeds);
+  // As quoted in docs/validation.md (regression values, the rounding of the quote).
+  // The 10 % mounting's peak is checked with the run-ups (test_paper_runups.cpp).
   EXPECT_NEAR(base_max, 0.222e-3, 0.0005e-3);
   EXPECT_NEAR(arctan_max, 0.154e-3, 0.0005e-3);
-  EXPECT_NEAR(*std::max_element(soft.begin(), soft.end()), 0.116e-3, 0.0005e-3);
   EXPECT_NEAR(1.0 - arctan_max / base_max, 0.305, 0.0005);
   // Fig. 10's deflection axis ends at 0.25 mm.
   EXPECT_LT(base_max, 0.25e-3);
