@@ -23,6 +23,7 @@ struct CampbellArgs {
   int modes = 0;
   std::vector<int> orders;
   std::string solver = "auto";
+  int threads = 0;
   OutputOptions out;
 };
 }  // namespace
@@ -48,6 +49,7 @@ Runner add_campbell_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--solver", args->solver, "Eigen solver: auto, dense or sparse (see 'feran modal --help')")
       ->check(CLI::IsMember({"auto", "dense", "sparse"}));
+  add_threads_option(*cmd, args->threads);
   add_output_options(*cmd, args->out);
 
   return [args]() {
@@ -67,11 +69,12 @@ Runner add_campbell_command(CLI::App& app) {
                      : !file.campbell.orders.empty() ? file.campbell.orders
                                                      : std::vector<int>{1};
     options.modal.solver = parse_solver_name(args->solver);
+    options.n_threads = args->threads;
 
     const CampbellResult result = run_campbell(file.model, options);
     const ResultSource source{file.path, file.title};
-    write_if_asked(args->out.json_path, campbell_json(result, options, source));
-    write_if_asked(args->out.csv_path, campbell_csv(result));
+    write_if_asked(args->out.json_path, [&] { return campbell_json(result, options, source); });
+    write_if_asked(args->out.csv_path, [&] { return campbell_csv(result); });
     if (!args->out.quiet) std::fputs(campbell_report(result, options, file.model, source).c_str(), stdout);
     if (!result.info.converged) {
       std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());

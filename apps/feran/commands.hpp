@@ -38,5 +38,10 @@ double parse_speed_option(const std::string& text, const std::string& option);
 
 /// Writes @p text to @p path (atomically) when the path is not empty.
 void write_if_asked(const std::string& path, const std::string& text);
+/// Same, building the text only when it is written (large sweeps make large files).
+void write_if_asked(const std::string& path, const std::function<std::string()>& make_text);
+
+/// Adds --threads (speed sweeps: 0 = all cores) to a sub-command.
+void add_threads_option(CLI::App& cmd, int& threads);
 
 }  // namespace feran::app

@@ -29,4 +29,13 @@ void write_if_asked(const std::string& path, const std::string& text) {
   if (!path.empty()) write_file_atomically(path, text);
 }
 
+void write_if_asked(const std::string& path, const std::function<std::string()>& make_text) {
+  if (!path.empty()) write_file_atomically(path, make_text());
+}
+
+void add_threads_option(CLI::App& cmd, int& threads) {
+  cmd.add_option("--threads", threads, "Threads for the sweep's points (default 0: all cores)")
+      ->check(CLI::NonNegativeNumber);
+}
+
 }  // namespace feran::app

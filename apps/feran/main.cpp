@@ -3,13 +3,26 @@
 #include <exception>
 #include <map>
 
+#include <dlfcn.h>
+
 #include <CLI/CLI.hpp>
 
 #include <feran/core/error.hpp>
 
 #include "commands.hpp"
 
+namespace {
+// feran runs the points of a sweep on all cores itself; a threaded OpenBLAS (when it
+// is the LAPACK in use) would start threads of its own inside each small dense solve,
+// which only competes with them. Looked up at run time: other BLAS builds lack it.
+void single_threaded_blas() {
+  using SetThreads = void (*)(int);
+  if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
+  single_threaded_blas();
   CLI::App app{
       "feran: finite-element rotor dynamics.\n"
       "Reads a rotor model (TOML, docs/model-format.md) and computes natural frequencies,\n"

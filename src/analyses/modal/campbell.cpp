@@ -5,7 +5,10 @@
 #include <limits>
 #include <map>
 
+#include <atomic>
+
 #include <feran/core/assignment.hpp>
+#include <feran/core/parallel.hpp>
 #include <feran/core/root_finding.hpp>
 
 namespace feran {
@@ -66,6 +69,18 @@ Real cost(const Track& t, Real speed, const Mode& c) {
 
 bool lateral_family(ModeType t) { return t == ModeType::lateral || t == ModeType::coupled; }
 
+// A sign change on the grid interval (speed_a, speed_b) of track @p mode, refined
+// after the sweep: of f − order·Ω/2π (a critical speed) or, with order 0, of the
+// damping ratio (the stability threshold).
+struct Bracket {
+  Index mode = 0;
+  int order = 0;
+  Track a, b;
+  Real g0 = 0, g1 = 0;
+  Whirl whirl = Whirl::none;  // at speed b, kept if the refinement fails
+  Real frequency_hz = 0;      // at speed b, likewise
+};
+
 }  // namespace
 
 CampbellResult run_campbell(const Model& model, const CampbellOptions& options) {
@@ -75,13 +90,18 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options) 
   const std::size_t n_track = static_cast<std::size_t>(std::max<Index>(options.n_modes, 1));
   // Candidates beyond the tracked modes let modes enter from above.
   const std::size_t n_cand = n_track + 4;
-  mo.n_modes = 0;
-  ModalSolver solver(model, mo);
-  if (solver.resolved_solver() == EigenSolver::sparse) solver.set_n_modes(static_cast<Index>(n_cand));
+  mo.n_modes = static_cast<Index>(n_cand);
+  mo.oscillatory_only = true;
+  const ModalSolver solver(model, mo);
+  std::atomic<Index> n_refinement_solves{0};
   auto solve = [&](Real speed) {
-    ++result.n_solves;
+    ++n_refinement_solves;
     return solver.solve(speed);
   };
+  // All grid speeds first, in parallel; tracking then walks through them in order.
+  std::vector<ModalResult> grid(options.speeds.size());
+  parallel_for(static_cast<Index>(grid.size()), options.n_threads,
+               [&](Index i, int) { grid[static_cast<std::size_t>(i)] = solver.solve(options.speeds[static_cast<std::size_t>(i)]); });
 
   std::vector<Track> tracks;
   auto record = [&](TrackedMode& tm, const Mode* m, Real corr) {
@@ -117,9 +137,11 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options) 
   };
 
   std::vector<StabilityThreshold> thresholds;
+  std::vector<Bracket> brackets;
   for (std::size_t i = 0; i < options.speeds.size(); ++i) {
     const Real speed = options.speeds[i];
-    ModalResult r = solve(speed);
+    ModalResult r = std::move(grid[i]);
+    ++result.n_solves;
     if (result.info.method.empty()) result.info = r.info;
     if (!r.info.converged) {
       result.info = r.info;
@@ -183,34 +205,44 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options) 
           const Real g0 = tm.frequency_hz[i - 1] - k * rad_to_hz(s0);
           const Real g1 = tm.frequency_hz[i] - k * rad_to_hz(speed);
           if (!((g0 > 0 && g1 <= 0) || (g0 < 0 && g1 >= 0))) continue;
-          Whirl w = tm.whirl_at[i];
-          auto f = [&](Real s) {
-            const std::optional<Mode> mm = match_between(before, t, s);
-            if (!mm) return nan;
-            w = mm->whirl;
-            return mm->frequency_hz - k * rad_to_hz(s);
-          };
-          const RootResult root = brent_root(f, s0, speed, g0, g1, options.speed_tolerance);
-          const Real s = std::isnan(root.fx) ? s0 + (speed - s0) * g0 / (g0 - g1) : root.x;
-          result.critical_speeds.push_back({s, k * rad_to_hz(s), static_cast<Index>(j), k, w});
+          brackets.push_back({static_cast<Index>(j), k, before, t, g0, g1, tm.whirl_at[i], tm.frequency_hz[i]});
         }
 
       // Stability: the damping ratio drops below −tolerance on this interval.
       const Real d0 = tm.damping_ratio[i - 1] + options.damping_tolerance;
       const Real d1 = tm.damping_ratio[i] + options.damping_tolerance;
-      if (d0 >= 0 && d1 < 0) {
-        Real freq = tm.frequency_hz[i];
-        auto f = [&](Real s) {
-          const std::optional<Mode> mm = match_between(before, t, s);
-          if (!mm) return nan;
-          freq = mm->frequency_hz;
-          return mm->damping_ratio + options.damping_tolerance;
-        };
-        const RootResult root = brent_root(f, s0, speed, d0, d1, options.speed_tolerance);
-        const Real s = std::isnan(root.fx) ? s0 + (speed - s0) * d0 / (d0 - d1) : root.x;
-        thresholds.push_back({s, static_cast<Index>(j), freq, false});
-      }
+      if (d0 >= 0 && d1 < 0)
+        brackets.push_back({static_cast<Index>(j), 0, before, t, d0, d1, tm.whirl_at[i], tm.frequency_hz[i]});
     }
+  }
+
+  // Refine every bracket by Brent's method, each trial speed a fresh eigen solve;
+  // the brackets are independent, so they run in parallel.
+  std::vector<std::optional<CriticalSpeed>> criticals(brackets.size());
+  std::vector<std::optional<StabilityThreshold>> crossings(brackets.size());
+  parallel_for(static_cast<Index>(brackets.size()), options.n_threads, [&](Index bi, int) {
+    const Bracket& br = brackets[static_cast<std::size_t>(bi)];
+    const Real s0 = br.a.speed_last, s1 = br.b.speed_last;
+    Whirl w = br.whirl;
+    Real freq = br.frequency_hz;
+    auto f = [&](Real s) {
+      const std::optional<Mode> mm = match_between(br.a, br.b, s);
+      if (!mm) return nan;
+      w = mm->whirl;
+      freq = mm->frequency_hz;
+      return br.order > 0 ? mm->frequency_hz - br.order * rad_to_hz(s) : mm->damping_ratio + options.damping_tolerance;
+    };
+    const RootResult root = brent_root(f, s0, s1, br.g0, br.g1, options.speed_tolerance);
+    const Real s = std::isnan(root.fx) ? s0 + (s1 - s0) * br.g0 / (br.g0 - br.g1) : root.x;
+    if (br.order > 0)
+      criticals[static_cast<std::size_t>(bi)] = CriticalSpeed{s, br.order * rad_to_hz(s), br.mode, br.order, w};
+    else
+      crossings[static_cast<std::size_t>(bi)] = StabilityThreshold{s, br.mode, freq, false};
+  });
+  result.n_solves += n_refinement_solves;
+  for (std::size_t b = 0; b < brackets.size(); ++b) {
+    if (criticals[b]) result.critical_speeds.push_back(*criticals[b]);
+    if (crossings[b]) thresholds.push_back(*crossings[b]);
   }
 
   std::sort(result.critical_speeds.begin(), result.critical_speeds.end(),

@@ -101,6 +101,62 @@ ComplexVector normalise(const ComplexVector& full, ModeType type) {
   return full / full(best);
 }
 
+// Groups of reduced DOFs that no nonzero entry of M, D or K couples, each in
+// increasing order, the groups ordered by their first DOF (union–find).
+std::vector<std::vector<Index>> decoupled_blocks(const SparseMatrix& M, const SparseMatrix& D,
+                                                 const SparseMatrix& K) {
+  const Index n = M.rows();
+  std::vector<Index> parent(static_cast<std::size_t>(n));
+  for (Index i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
+  auto root = [&](Index i) {
+    while (parent[static_cast<std::size_t>(i)] != i)
+      i = parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+    return i;
+  };
+  for (const SparseMatrix* A : {&M, &D, &K})
+    for (Index j = 0; j < A->outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(*A, j); it; ++it) {
+        if (it.value() == 0.0) continue;
+        const Index a = root(it.row()), b = root(j);
+        if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+      }
+  std::vector<Index> block_of(static_cast<std::size_t>(n), -1);
+  std::vector<std::vector<Index>> blocks;
+  for (Index i = 0; i < n; ++i) {
+    Index& b = block_of[static_cast<std::size_t>(root(i))];
+    if (b < 0) {
+      b = static_cast<Index>(blocks.size());
+      blocks.emplace_back();
+    }
+    blocks[static_cast<std::size_t>(b)].push_back(i);
+  }
+  return blocks;
+}
+
+// The rows and columns @p dofs of @p A (@p local maps a DOF to its position in
+// @p dofs, −1 outside).
+SparseMatrix submatrix(const SparseMatrix& A, const std::vector<Index>& dofs, const std::vector<Index>& local) {
+  std::vector<Eigen::Triplet<Real>> t;
+  for (std::size_t c = 0; c < dofs.size(); ++c)
+    for (SparseMatrix::InnerIterator it(A, dofs[c]); it; ++it) {
+      const Index r = local[static_cast<std::size_t>(it.row())];
+      if (r >= 0) t.emplace_back(r, static_cast<Index>(c), it.value());
+    }
+  const auto nb = static_cast<Index>(dofs.size());
+  SparseMatrix out(nb, nb);
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+// y = A·x for a real sparse A and a complex vector x.
+ComplexVector times(const SparseMatrix& A, const ComplexVector& x) {
+  const Vector re = A * x.real(), im = A * x.imag();
+  ComplexVector y(re.size());
+  y.real() = re;
+  y.imag() = im;
+  return y;
+}
+
 }  // namespace
 
 ModalSolver::ModalSolver(const Model& model, ModalOptions options)
@@ -125,35 +181,83 @@ ModalResult ModalSolver::solve(Real speed) const {
   const SparseMatrix D = sys.damping(speed);
   const SparseMatrix K = sys.stiffness(speed);
   const Index n = sys.M.rows();
+  // Strain energy of rigid-body motion is round-off: below 1e-12·λ_max (see checks.cpp).
+  const Real rigid_tol = 1e-12 * lambda_max_;
+  const Real zero_tol = 1e-6 * std::sqrt(lambda_max_);
 
   ModalResult result;
   result.speed = speed;
+  const bool sparse = resolved_solver() == EigenSolver::sparse;
+  const Index wanted = options_.n_modes > 0 ? options_.n_modes : sparse ? 12 : 0;
+  // Automatic shift: just below zero, so that rigid-body modes (p = 0) do not make
+  // K + σD + σ²M singular, yet close enough to find the lowest modes first.
+  const Real sigma = std::isnan(options_.shift) ? -std::max(1.0, 1e-6 * std::sqrt(lambda_max_)) : options_.shift;
+
+  // Each decoupled block on its own; the lowest modes of the whole are among the
+  // lowest `wanted` of each block. The largest block goes first: its `wanted`-th
+  // lowest |p| is the cutoff the other blocks' modes must beat to count.
   detail::StateEigenpairs pairs;
-  if (resolved_solver() == EigenSolver::dense) {
-    pairs = detail::dense_state_eigen(Matrix(sys.M), Matrix(D), Matrix(K));
-  } else {
-    const Index wanted = options_.n_modes > 0 ? options_.n_modes : 12;
-    // Automatic shift: just below zero, so that rigid-body modes (p = 0) do not make
-    // K + σD + σ²M singular, yet close enough to find the lowest modes first.
-    const Real sigma = std::isnan(options_.shift) ? -std::max(1.0, 1e-6 * std::sqrt(lambda_max_))
-                                                  : options_.shift;
-    pairs = detail::sparse_state_eigen(sys.M, D, K, std::min(wanted, n - 1), sigma);
+  pairs.info.method = "dense-qr";
+  pairs.vectors = ComplexMatrix::Zero(n, 0);
+  std::vector<Index> local(static_cast<std::size_t>(n), -1);
+  std::vector<std::vector<Index>> blocks = decoupled_blocks(sys.M, D, K);
+  std::stable_sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  Real cutoff = std::numeric_limits<Real>::infinity();
+  for (const std::vector<Index>& dofs : blocks) {
+    const auto nb = static_cast<Index>(dofs.size());
+    for (Index i = 0; i < nb; ++i) local[static_cast<std::size_t>(dofs[static_cast<std::size_t>(i)])] = i;
+    const SparseMatrix Mb = submatrix(sys.M, dofs, local), Db = submatrix(D, dofs, local),
+                       Kb = submatrix(K, dofs, local);
+    for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
+    const Index wanted_b = std::min(wanted, nb - 1);
+    detail::StateEigenpairs part;
+    // Arnoldi pays only when its subspace is smaller than the block's state space.
+    if (sparse && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb) {
+      // Past the largest block, a few modes first and more only while all of them lie
+      // below the cutoff: fewer wanted modes converge faster, and a block whose higher
+      // modes cluster (e.g. torsion between heavy disks) does not stall the iteration.
+      const bool first = &dofs == &blocks.front();
+      for (Index k = first ? wanted_b : std::min<Index>(wanted_b, 4);; k = std::min(wanted_b, 2 * k)) {
+        part = detail::sparse_state_eigen(Mb, Db, Kb, k, sigma);
+        const bool beyond = part.values.size() > 0 && part.values.cwiseAbs().maxCoeff() > cutoff;
+        if (!part.info.converged || k == wanted_b || beyond) break;
+      }
+      if (first) {
+        std::vector<Real> magnitudes;
+        for (const Complex& p : part.values)
+          if (!options_.oscillatory_only || p.imag() > 0.0) magnitudes.push_back(std::abs(p));
+        std::sort(magnitudes.begin(), magnitudes.end());
+        if (static_cast<Index>(magnitudes.size()) >= wanted) cutoff = magnitudes[static_cast<std::size_t>(wanted - 1)];
+      }
+    } else {
+      part = detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb), {wanted, options_.oscillatory_only, zero_tol});
+    }
+    if (part.info.method != "dense-qr") pairs.info.method = part.info.method;
+    pairs.info.iterations += part.info.iterations;
+    pairs.info.n_converged += part.info.n_converged;
+    if (!part.info.converged && pairs.info.converged) {
+      pairs.info.converged = false;
+      pairs.info.message = part.info.message;
+    }
+    const Index m0 = pairs.values.size(), m = part.values.size();
+    pairs.values.conservativeResize(m0 + m);
+    pairs.values.tail(m) = part.values;
+    pairs.vectors.conservativeResize(n, m0 + m);
+    pairs.vectors.rightCols(m).setZero();
+    for (Index i = 0; i < nb; ++i) pairs.vectors.row(dofs[static_cast<std::size_t>(i)]).tail(m) = part.vectors.row(i);
   }
   result.info = pairs.info;
   split_repeated(pairs.values, pairs.vectors, assembler_.dof_map());
 
-  // Strain energy of rigid-body motion is round-off: below 1e-12·λ_max (see checks.cpp).
-  const Real rigid_tol = 1e-12 * lambda_max_;
-  const Real zero_tol = 1e-6 * std::sqrt(lambda_max_);
   const SparseMatrix Ksym = 0.5 * (sys.K + SparseMatrix(sys.K.transpose()));
   const SparseMatrix& T = assembler_.dof_map().transformation();
 
   for (Index j = 0; j < pairs.values.size(); ++j) {
     Mode mode;
     const ComplexVector phi = pairs.vectors.col(j);
-    const ComplexVector Mphi = sys.M.cast<Complex>() * phi;
-    const Real kinetic = (phi.adjoint() * Mphi)(0).real();
-    const Real strain = (phi.adjoint() * (Ksym.cast<Complex>() * phi))(0).real();
+    const ComplexVector Mphi = times(sys.M, phi);
+    const Real kinetic = phi.dot(Mphi).real();
+    const Real strain = phi.dot(times(Ksym, phi)).real();
     mode.rigid_body = kinetic > 0 && strain / kinetic < rigid_tol;
     Complex p = pairs.values(j);
     if (mode.rigid_body && std::abs(p) < zero_tol) p = 0.0;
@@ -175,7 +279,8 @@ ModalResult ModalSolver::solve(Real speed) const {
                 : dominant == 1                          ? ModeType::axial
                                                          : ModeType::torsional;
 
-    const ComplexVector full = T.cast<Complex>() * phi;
+    if (options_.oscillatory_only && !mode.oscillatory) continue;
+    const ComplexVector full = times(T, phi);
     const WhirlResult whirl = classify_whirl(full);
     mode.whirl = whirl.whirl;
     mode.directivity = whirl.directivity;
@@ -197,8 +302,15 @@ ModalResult ModalSolver::solve(Real speed) const {
   std::stable_sort(result.modes.begin(), result.modes.end(), by_magnitude);
   const Index limit = options_.n_modes > 0 ? options_.n_modes
                       : resolved_solver() == EigenSolver::sparse ? 12 : 0;
-  if (limit > 0 && static_cast<Index>(result.modes.size()) > limit)
-    result.modes.resize(static_cast<std::size_t>(limit));
+  if (limit > 0 && static_cast<Index>(result.modes.size()) > limit) {
+    auto keep = static_cast<std::size_t>(limit);
+    // Keep a repeated pair whole (isotropic rotors at rest), as split_repeated does.
+    while (options_.oscillatory_only && keep < result.modes.size() &&
+           std::abs(result.modes[keep].eigenvalue - result.modes[keep - 1].eigenvalue) <=
+               1e-7 * std::abs(result.modes[keep].eigenvalue))
+      ++keep;
+    result.modes.resize(keep);
+  }
   std::stable_sort(result.modes.begin(), result.modes.end(), [](const Mode& a, const Mode& b) {
     return a.frequency_hz < b.frequency_hz;
   });

@@ -13,9 +13,30 @@ struct StateEigenpairs {
   SolverInfo info;
 };
 
-// All 2n eigenpairs of A = [[0, I], [−M⁻¹K, −M⁻¹D]] by LAPACK dgeev (balancing,
-// Hessenberg reduction, shifted QR). Only eigenvalues with Im p ≥ 0 are returned.
-StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix& K);
+// Which eigenpairs a dense solve returns vectors for: all (count = 0), or the
+// @p count eigenvalues nearest the origin, counting only those with Im p > 0 when
+// @p oscillatory_only, plus every eigenvalue with |p| < zero_tol (rigid-body modes,
+// told apart only by their vectors) and the partners of repeated eigenvalues at
+// the cut (1e-7 relative, as ModalSolver keeps pairs whole).
+struct DenseSelection {
+  Index count = 0;
+  bool oscillatory_only = false;
+  Real zero_tol = 0.0;
+};
+
+// Eigenpairs of A = [[0, I], [−M⁻¹K, −M⁻¹D]] with Im p ≥ 0. All of them: LAPACK
+// dgeev (balancing, Hessenberg reduction, shifted QR, vectors from the Schur form).
+// A selection: the same balancing, reduction and QR for the eigenvalues only
+// (dhseqr), then the selected vectors by inverse iteration on the Hessenberg form
+// (dhsein), which is several times cheaper when few modes are wanted. Repeated
+// eigenvalues among the selected fall back to dgeev: inverse iteration does not give
+// a well-conditioned basis of a multiple eigenvalue's eigenspace.
+StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix& K,
+                                  const DenseSelection& selection = {});
+
+// Size of the Krylov subspace sparse_state_eigen builds for @p n_wanted modes of a
+// system with @p n DOF (at most the state dimension 2n).
+Index arnoldi_subspace_size(Index n, Index n_wanted);
 
 // The @p n_wanted eigenvalues nearest the real shift @p sigma (and their conjugates
 // dropped), by shift-invert Arnoldi: (A − σI)⁻¹ is applied through one sparse LU of

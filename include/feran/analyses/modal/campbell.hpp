@@ -23,6 +23,10 @@ struct CampbellOptions {
   /// A damping ratio below −this counts as negative: round-off in the damping
   /// ratio of an undamped mode is ~1e-13, physical ones are ≥ 1e-5.
   Real damping_tolerance = 1e-9;
+  /// Threads for the eigen solves (0: all cores). The speeds, and then the
+  /// refinements of critical speeds and thresholds, are independent solves; the
+  /// results do not depend on the number of threads.
+  int n_threads = 0;
 };
 
 /// One mode followed over the sweep. Vectors are indexed like CampbellResult::speeds;

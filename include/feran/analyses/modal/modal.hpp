@@ -77,6 +77,10 @@ struct ModalOptions {
   Real shift = std::numeric_limits<Real>::quiet_NaN();
   /// Compute full mode shapes (Mode::shape).
   bool shapes = true;
+  /// Keep only oscillatory modes (Im p > 0), n_modes of them, and a repeated pair at
+  /// the cut whole (what a Campbell diagram follows). Rigid-body and overdamped modes
+  /// are dropped.
+  bool oscillatory_only = false;
 };
 
 /// The modes of a model at one speed: the n_modes smallest by |p|, listed by frequency.
@@ -87,7 +91,10 @@ struct ModalResult {
 };
 
 /// Modal solver for one model: assembles the speed-independent matrices once and
-/// solves at any number of speeds.
+/// solves at any number of speeds. Groups of DOFs that no matrix entry couples (e.g.
+/// axial, torsional and lateral motion of a straight rotor; the two bending planes at
+/// rest) are solved separately, which is cheaper and keeps the repeated eigenvalues of
+/// an isotropic rotor at rest apart. solve() may be called from several threads.
 class ModalSolver {
  public:
   explicit ModalSolver(const Model& model, ModalOptions options = {});

@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// A minimal parallel loop for independent work items (speed sweeps).
+
+#include <functional>
+
+#include <feran/core/types.hpp>
+
+namespace feran {
+
+/// Number of threads a sweep uses when asked for @p requested: the hardware
+/// concurrency for 0, else @p requested (at least 1).
+int resolve_threads(int requested);
+
+/// Calls @p body(i, worker) for i = 0 … n−1 on up to @p n_threads threads
+/// (0: the hardware concurrency); worker ∈ [0, n_threads) identifies the calling
+/// thread, so that each can use its own workspace. Items are handed out in order,
+/// one at a time, so uneven items balance. The first exception thrown by a body is
+/// rethrown after all threads have stopped; items not yet started are skipped.
+/// With one thread (or n ≤ 1) everything runs on the calling thread.
+void parallel_for(Index n, int n_threads, const std::function<void(Index i, int worker)>& body);
+
+}  // namespace feran

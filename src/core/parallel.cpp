@@ -1,0 +1,46 @@
+#include <feran/core/parallel.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace feran {
+
+int resolve_threads(int requested) {
+  if (requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+void parallel_for(Index n, int n_threads, const std::function<void(Index i, int worker)>& body) {
+  const int threads = static_cast<int>(std::min<Index>(resolve_threads(n_threads), std::max<Index>(n, 1)));
+  if (threads <= 1) {
+    for (Index i = 0; i < n; ++i) body(i, 0);
+    return;
+  }
+  std::atomic<Index> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto work = [&](int worker) {
+    for (Index i = next++; i < n && !failed; i = next++) {
+      try {
+        body(i, worker);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < threads; ++w) pool.emplace_back(work, w);
+  work(0);
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace feran
