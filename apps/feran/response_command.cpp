@@ -29,6 +29,7 @@ struct ResponseArgs {
   std::vector<std::string> forces;
   double loss_factor = -1.0;
   bool no_unbalance = false;
+  int threads = 0;
   OutputOptions out;
 };
 
@@ -115,6 +116,7 @@ Runner add_response_command(CLI::App& app) {
   cmd->add_option("--loss-factor", args->loss_factor, "Global hysteretic loss factor eta: adds j*eta*K")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-unbalance", args->no_unbalance, "Leave the model's unbalances out");
+  add_threads_option(*cmd, args->threads);
   add_output_options(*cmd, args->out);
 
   return [args]() {
@@ -122,6 +124,7 @@ Runner add_response_command(CLI::App& app) {
     const Model& model = file.model;
     HarmonicOptions options;
     options.unbalance = !args->no_unbalance;
+    options.n_threads = args->threads;
     options.loss_factor = args->loss_factor >= 0 ? args->loss_factor : file.response.loss_factor.value_or(0.0);
     for (const std::string& f : args->forces) options.extra_forces.push_back(parse_force(model, f));
 
@@ -164,8 +167,8 @@ Runner add_response_command(CLI::App& app) {
 
     const HarmonicResult result = run_harmonic_response(model, options);
     const ResultSource source{file.path, file.title};
-    write_if_asked(args->out.json_path, response_json(result, options, model, source));
-    write_if_asked(args->out.csv_path, response_csv(result, model));
+    write_if_asked(args->out.json_path, [&] { return response_json(result, options, model, source); });
+    write_if_asked(args->out.csv_path, [&] { return response_csv(result, model); });
     if (!args->out.quiet) std::fputs(response_report(result, options, model, source).c_str(), stdout);
     if (!result.info.converged) {
       std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());

@@ -1,12 +1,16 @@
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <mutex>
+#include <optional>
 
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
 
 #include <feran/assembly/assembler.hpp>
+#include <feran/core/parallel.hpp>
 #include <feran/elements/spring_damper.hpp>
 
 namespace feran {
@@ -32,19 +36,128 @@ struct BeamData {
   LocalMatrices matrices;  // speed-independent for shaft elements
 };
 
-// An element's dynamic stiffness at rotor speed Ω and excitation frequency ω:
-// (1 + jη)K + ΩK_i − ω²M + jω(C + C_i + ΩG), η its loss factor plus @p extra_eta.
-ComplexMatrix dynamic_stiffness(const LocalMatrices& lm, Real speed, Real omega, Real extra_eta) {
+// An element's end forces Z·q for its dynamic stiffness at rotor speed Ω and
+// excitation frequency ω, Z = (1 + jη)K + ΩK_i − ω²M + jω(C + C_i + ΩG), η its loss
+// factor plus @p extra_eta. Z's real and imaginary parts are formed apart (real
+// matrices: this runs for every shaft element at every point).
+ComplexVector element_forces(const LocalMatrices& lm, Real speed, Real omega, Real extra_eta, const ComplexVector& q) {
   const auto n = static_cast<Index>(lm.dofs.size());
-  ComplexMatrix Z = ComplexMatrix::Zero(n, n);
-  if (lm.K.size()) Z += Complex(1.0, lm.loss_factor + extra_eta) * lm.K.cast<Complex>();
-  if (lm.M.size()) Z -= omega * omega * lm.M.cast<Complex>();
-  if (lm.C.size()) Z += I * omega * lm.C.cast<Complex>();
-  if (lm.Ci.size()) Z += I * omega * lm.Ci.cast<Complex>();
-  if (lm.G.size()) Z += I * omega * speed * lm.G.cast<Complex>();
-  if (lm.Ki.size()) Z += speed * lm.Ki.cast<Complex>();
-  return Z;
+  Matrix re = Matrix::Zero(n, n), im = Matrix::Zero(n, n);
+  if (lm.K.size()) re += lm.K, im += (lm.loss_factor + extra_eta) * lm.K;
+  if (lm.M.size()) re -= (omega * omega) * lm.M;
+  if (lm.Ki.size()) re += speed * lm.Ki;
+  if (lm.C.size()) im += omega * lm.C;
+  if (lm.Ci.size()) im += omega * lm.Ci;
+  if (lm.G.size()) im += (omega * speed) * lm.G;
+  const Vector qr = q.real(), qi = q.imag();
+  ComplexVector f(n);
+  f.real() = re * qr - im * qi;
+  f.imag() = re * qi + im * qr;
+  return f;
 }
+
+// Positions in @p pattern's value array of the nonzeros of @p A (same size, both
+// compressed, column-major); −1 for an entry outside the pattern.
+std::vector<Index> positions(const SparseMatrix& A, const ComplexSparse& pattern) {
+  std::vector<Index> pos;
+  pos.reserve(static_cast<std::size_t>(A.nonZeros()));
+  for (Index j = 0; j < A.outerSize(); ++j) {
+    Index p = pattern.outerIndexPtr()[j];
+    const Index end = pattern.outerIndexPtr()[j + 1];
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+      while (p < end && pattern.innerIndexPtr()[p] < it.row()) ++p;
+      pos.push_back(p < end && pattern.innerIndexPtr()[p] == it.row() ? p : -1);
+    }
+  }
+  return pos;
+}
+
+// The dynamic stiffness K(1 + jη) + Ω·K_i − ω²M + jω(C + C_i + Ω·G) + j·K_h on one
+// sparsity pattern, the union of the matrices' patterns: a sweep only rewrites the
+// values, so the LU's symbolic analysis (ordering, elimination tree) is done once.
+class DynamicStiffness {
+ public:
+  explicit DynamicStiffness(const SystemMatrices& constant) : constant_(constant) {
+    SparseMatrix sum = abs_sum(constant_);
+    A_ = sum.cast<Complex>();
+    A_.makeCompressed();
+    locate();
+  }
+
+  // A at the point; false when a speed-dependent element fills an entry outside
+  // the pattern (a coefficient that was zero when the pattern was made), after
+  // which the pattern has been widened and needs a new analysis.
+  bool assemble(const SystemMatrices* variable, Real speed, Real omega, Real eta, ComplexSparse& A) const {
+    A = A_;
+    std::fill(A.valuePtr(), A.valuePtr() + A.nonZeros(), Complex(0.0));
+    add(constant_, constant_positions_, speed, omega, eta, A);
+    if (!variable) return true;
+    std::array<std::vector<Index>, 7> pos;
+    for (std::size_t m = 0; m < pos.size(); ++m) {
+      pos[m] = positions(*parts(*variable)[m], A_);
+      if (std::find(pos[m].begin(), pos[m].end(), -1) != pos[m].end()) return false;
+    }
+    add(*variable, pos, speed, omega, eta, A);
+    return true;
+  }
+
+  // Adds the pattern of @p variable to the union.
+  void widen(const SystemMatrices& variable) {
+    SparseMatrix sum = abs_sum(constant_) + abs_sum(variable) + SparseMatrix(A_.real().cwiseAbs());
+    A_ = sum.cast<Complex>();
+    A_.makeCompressed();
+    locate();
+  }
+
+  const ComplexSparse& pattern() const { return A_; }
+
+ private:
+  static std::array<const SparseMatrix*, 7> parts(const SystemMatrices& s) {
+    return {&s.M, &s.C, &s.K, &s.G, &s.Ci, &s.Ki, &s.Kh};
+  }
+  static SparseMatrix abs_sum(const SystemMatrices& s) {
+    SparseMatrix sum = s.M.cwiseAbs();
+    for (const SparseMatrix* m : parts(s)) sum += m->cwiseAbs();
+    return sum;
+  }
+  void locate() {
+    for (std::size_t m = 0; m < constant_positions_.size(); ++m)
+      constant_positions_[m] = positions(*parts(constant_)[m], A_);
+  }
+  // Coefficients of M, C, K, G, C_i, K_i, K_h in the dynamic stiffness.
+  static void add(const SystemMatrices& s, const std::array<std::vector<Index>, 7>& pos, Real speed, Real omega,
+                  Real eta, ComplexSparse& A) {
+    const std::array<Complex, 7> coef{Complex(-omega * omega, 0.0), Complex(0.0, omega),      Complex(1.0, eta),
+                                      Complex(0.0, omega * speed),  Complex(0.0, omega),      Complex(speed, 0.0),
+                                      Complex(0.0, 1.0)};
+    Complex* values = A.valuePtr();
+    const auto mats = parts(s);
+    for (std::size_t m = 0; m < mats.size(); ++m) {
+      const Real* v = mats[m]->valuePtr();
+      const std::vector<Index>& p = pos[m];
+      for (std::size_t k = 0; k < p.size(); ++k) values[p[k]] += coef[m] * v[k];
+    }
+  }
+
+  SystemMatrices constant_;
+  ComplexSparse A_;  // the pattern (values unused)
+  std::array<std::vector<Index>, 7> constant_positions_;
+};
+
+// One point of a sweep, computed independently of the others.
+struct PointResult {
+  bool solved = false;
+  std::vector<NodeAmplitudes> probes, springs, reactions;
+  std::vector<SectionForces> forces;
+  std::vector<SectionStress> stress;
+};
+
+// Per thread: the matrix and its LU (analysed for the pattern it was last given).
+struct Workspace {
+  ComplexSparse A;
+  Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> lu;
+  Index analysed_for = -1;  // pattern generation the LU was analysed for
+};
 
 }  // namespace
 
@@ -122,40 +235,50 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   for (const ShaftStation& st : shaft_stations(model)) result.stations.push_back({st, {}, {}});
 
   const std::size_t n_points = result.frequency_sweep ? options.frequencies.size() : options.speeds.size();
-  Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> lu;
-  for (std::size_t k = 0; k < n_points; ++k) {
+  DynamicStiffness stiffness(assembler.constant());
+  Index generation = 0;  // changes when a speed-dependent coefficient widens the pattern
+  std::mutex pattern_mutex;
+  std::vector<Workspace> workspaces(static_cast<std::size_t>(resolve_threads(options.n_threads)));
+  std::vector<PointResult> points(n_points);
+
+  auto solve_point = [&](std::size_t k, Workspace& ws) {
     const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
     const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
-    const SystemMatrices sys = assembler.at(speed);
-
-    const SparseMatrix real_part = sys.stiffness(speed) - omega * omega * sys.M;
-    const SparseMatrix imag_part = omega * sys.damping(speed) + sys.Kh + options.loss_factor * sys.K;
-    ComplexSparse A = real_part.cast<Complex>() + I * imag_part.cast<Complex>();
-    A.makeCompressed();
+    std::optional<SystemMatrices> variable;
+    if (assembler.speed_dependent()) variable = assembler.variable_at(speed);
+    const SystemMatrices* var = variable ? &*variable : nullptr;
+    for (;;) {
+      Index gen = 0;
+      bool filled = false;
+      {
+        const std::lock_guard<std::mutex> lock(pattern_mutex);
+        gen = generation;
+        filled = stiffness.assemble(var, speed, omega, options.loss_factor, ws.A);
+        if (!filled) {
+          stiffness.widen(*var);
+          ++generation;
+        }
+      }
+      if (!filled) continue;
+      if (ws.analysed_for != gen) {
+        ws.lu.analyzePattern(ws.A);
+        ws.analysed_for = gen;
+      }
+      break;
+    }
 
     ComplexVector f_full = ComplexVector::Zero(model.n_dofs());
     if (!result.frequency_sweep && options.unbalance) f_full += unbalance_forces(model, speed);
     if (options.model_forces) add_harmonic_forces(model.forces, f_full);
     add_harmonic_forces(options.extra_forces, f_full);
 
-    lu.compute(A);
-    if (lu.info() != Eigen::Success) {
-      result.info.converged = false;
-      result.info.message = fmt::format(
-          "the dynamic stiffness is singular at {:.6g} Hz (an undamped resonance on the grid); "
-          "add damping or move the grid",
-          rad_to_hz(result.frequency_sweep ? omega : speed));
-      break;
-    }
-    const ComplexVector q_full = T * ComplexVector(lu.solve(Tt * f_full));
-    result.speeds.push_back(speed);
-    result.frequencies.push_back(omega);
-    ++result.info.n_converged;
+    ws.lu.factorize(ws.A);
+    PointResult& out = points[k];
+    if (ws.lu.info() != Eigen::Success) return;
+    const ComplexVector q_full = T * ComplexVector(ws.lu.solve(Tt * f_full));
+    out.solved = true;
 
-    for (ProbeResponse& p : result.probes) {
-      p.q.push_back(node_values(q_full, p.node));
-      p.orbit.push_back(orbit(p.q.back()[static_cast<std::size_t>(Dof::v)], p.q.back()[static_cast<std::size_t>(Dof::w)]));
-    }
+    for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));
     for (std::size_t s = 0; s < springs.size(); ++s) {
       const SpringDamper& sd = *springs[s].second;
       NodeAmplitudes dq = node_values(q_full, sd.node_a());
@@ -167,10 +290,9 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       const Eigen::Matrix<Complex, dofs_per_node, 1> force =
           (Complex(1.0, sd.coefficients().loss_factor + options.loss_factor) * sd.stiffness_6x6(speed).cast<Complex>() +
            I * omega * sd.damping_6x6(speed).cast<Complex>()) * delta;
-      NodeAmplitudes out;
-      for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = force(d);
-      result.springs[s].force.push_back(out);
-      result.springs[s].peak_lateral.push_back(peak_lateral(out));
+      NodeAmplitudes f;
+      for (int d = 0; d < dofs_per_node; ++d) f[static_cast<std::size_t>(d)] = force(d);
+      out.springs.push_back(f);
     }
     if (!result.reactions.empty()) {
       // The force the structure puts on its supports at the fixed DOFs: the applied
@@ -181,31 +303,68 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
         const auto n = static_cast<Index>(lm.dofs.size());
         ComplexVector q(n);
         for (Index i = 0; i < n; ++i) q(i) = q_full(lm.dofs[static_cast<std::size_t>(i)]);
-        const ComplexVector fe = dynamic_stiffness(lm, speed, omega, options.loss_factor) * q;
+        const ComplexVector fe = element_forces(lm, speed, omega, options.loss_factor, q);
         for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) -= fe(i);
       }
-      for (ReactionResponse& rr : result.reactions) {
-        NodeAmplitudes out{};
+      for (const ReactionResponse& rr : result.reactions) {
+        NodeAmplitudes f{};
         for (int d = 0; d < dofs_per_node; ++d)
-          if (rr.fixed[static_cast<std::size_t>(d)]) out[static_cast<std::size_t>(d)] = r(dofs_per_node * rr.node + d);
-        rr.force.push_back(out);
-        rr.peak_lateral.push_back(peak_lateral(out));
+          if (rr.fixed[static_cast<std::size_t>(d)]) f[static_cast<std::size_t>(d)] = r(dofs_per_node * rr.node + d);
+        out.reactions.push_back(f);
       }
     }
     // Each element's end forces include its own inertia and gyroscopic moments, so
     // the section forces are in equilibrium with the element's motion.
     std::size_t b = 0;
     ComplexVector end_forces;
-    for (StationResponse& st : result.stations) {
+    for (const StationResponse& st : result.stations) {
       if (beams[b].element != st.station.element || end_forces.size() == 0) {
         while (beams[b].element != st.station.element) ++b;
-        end_forces = dynamic_stiffness(beams[b].matrices, speed, omega, options.loss_factor) *
-                     element_values(*beams[b].beam, q_full);
+        end_forces = element_forces(beams[b].matrices, speed, omega, options.loss_factor,
+                                    element_values(*beams[b].beam, q_full));
       }
-      const SectionForces f = section_forces(end_forces, st.station.end);
-      st.forces.push_back(f);
-      st.stress.push_back(section_stress(beams[b].beam->section(), f));
+      out.forces.push_back(section_forces(end_forces, st.station.end));
+      out.stress.push_back(section_stress(beams[b].beam->section(), out.forces.back()));
     }
+  };
+  parallel_for(static_cast<Index>(n_points), options.n_threads, [&](Index k, int worker) {
+    solve_point(static_cast<std::size_t>(k), workspaces[static_cast<std::size_t>(worker)]);
+  });
+
+  // Results in sweep order, up to the first point that could not be solved.
+  for (std::size_t k = 0; k < n_points; ++k) {
+    PointResult& pt = points[k];
+    const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
+    const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
+    if (!pt.solved) {
+      result.info.converged = false;
+      result.info.message = fmt::format(
+          "the dynamic stiffness is singular at {:.6g} Hz (an undamped resonance on the grid); "
+          "add damping or move the grid",
+          rad_to_hz(result.frequency_sweep ? omega : speed));
+      break;
+    }
+    result.speeds.push_back(speed);
+    result.frequencies.push_back(omega);
+    ++result.info.n_converged;
+    for (std::size_t p = 0; p < result.probes.size(); ++p) {
+      ProbeResponse& pr = result.probes[p];
+      pr.q.push_back(pt.probes[p]);
+      pr.orbit.push_back(orbit(pt.probes[p][static_cast<std::size_t>(Dof::v)], pt.probes[p][static_cast<std::size_t>(Dof::w)]));
+    }
+    for (std::size_t s = 0; s < result.springs.size(); ++s) {
+      result.springs[s].force.push_back(pt.springs[s]);
+      result.springs[s].peak_lateral.push_back(peak_lateral(pt.springs[s]));
+    }
+    for (std::size_t r = 0; r < result.reactions.size(); ++r) {
+      result.reactions[r].force.push_back(pt.reactions[r]);
+      result.reactions[r].peak_lateral.push_back(peak_lateral(pt.reactions[r]));
+    }
+    for (std::size_t s = 0; s < result.stations.size(); ++s) {
+      result.stations[s].forces.push_back(pt.forces[s]);
+      result.stations[s].stress.push_back(pt.stress[s]);
+    }
+    pt = PointResult{};  // free as we go
   }
   return result;
 }

@@ -3,7 +3,8 @@
 /// Steady-state (harmonic) response to unbalance and harmonic forces (paper
 /// section 2.3): the complex dynamic stiffness
 ///   K(jω) = K(Ω) + Ω·K_i − ω²M + jω(C + C_i + Ω·G) + j(Σ η_e K_e + η·K)
-/// solved by a sparse complex LU at each point. In a speed sweep the excitation is
+/// solved by a sparse complex LU at each point (the LU's symbolic analysis is shared
+/// by all points; the points are solved in parallel). In a speed sweep the excitation is
 /// synchronous (ω = Ω); in a frequency sweep the rotor speed Ω is fixed and ω runs.
 
 #include <array>
@@ -33,6 +34,8 @@ struct HarmonicOptions {
   std::vector<HarmonicForce> extra_forces; ///< forces added for this analysis
   Real loss_factor = 0.0;                  ///< global hysteretic loss factor η (adds jηK)
   std::vector<Index> probes;               ///< nodes whose motion is reported
+  /// Threads for the sweep's points (0: all cores); results do not depend on it.
+  int n_threads = 0;
 };
 
 /// Complex amplitudes of the six DOFs of a node, indexed by Dof.

@@ -1,0 +1,75 @@
+// The sweep shares one sparsity pattern and symbolic LU between points and solves
+// them in parallel; each point must still equal a solve of that point alone.
+#include <gtest/gtest.h>
+
+#include <feran/analyses/harmonic/harmonic_response.hpp>
+
+#include "test_models.hpp"
+
+namespace feran {
+namespace {
+
+Model unbalanced(Model m) {
+  Unbalance u;
+  u.node = 4;  // the second disk
+  u.mass = 1e-3;
+  u.radius = 0.1;
+  m.unbalances.push_back(u);
+  return m;
+}
+
+HarmonicOptions sweep(int threads) {
+  HarmonicOptions opt;
+  for (int i = 1; i <= 30; ++i) opt.speeds.push_back(i * 150.0 * 2 * pi / 60);
+  opt.probes = {2, 4};
+  opt.n_threads = threads;
+  return opt;
+}
+
+void expect_point_equals_alone(const Model& model, const HarmonicResult& r, const HarmonicOptions& opt) {
+  ASSERT_TRUE(r.info.converged) << r.info.message;
+  ASSERT_EQ(r.speeds.size(), opt.speeds.size());
+  for (std::size_t k = 0; k < opt.speeds.size(); ++k) {
+    HarmonicOptions one = opt;
+    one.speeds = {opt.speeds[k]};
+    const HarmonicResult alone = run_harmonic_response(model, one);
+    for (std::size_t p = 0; p < opt.probes.size(); ++p)
+      for (std::size_t d = 0; d < dofs_per_node; ++d) {
+        const Complex a = alone.probes[p].q[0][d], b = r.probes[p].q[k][d];
+        // Same matrix, same ordering: equal to round-off.
+        EXPECT_LE(std::abs(a - b), 1e-12 * std::abs(a) + 1e-300) << "point " << k << " probe " << p << " dof " << d;
+      }
+  }
+}
+
+TEST(HarmonicResponse, ResultDoesNotDependOnThreads) {
+  const Model model = unbalanced(test::friswell_5_9_1());
+  const HarmonicResult a = run_harmonic_response(model, sweep(1));
+  const HarmonicResult b = run_harmonic_response(model, sweep(3));
+  ASSERT_EQ(a.speeds.size(), b.speeds.size());
+  for (std::size_t p = 0; p < a.probes.size(); ++p)
+    for (std::size_t k = 0; k < a.speeds.size(); ++k)
+      for (std::size_t d = 0; d < dofs_per_node; ++d) EXPECT_EQ(a.probes[p].q[k][d], b.probes[p].q[k][d]);
+  ASSERT_EQ(a.stations.size(), b.stations.size());
+  for (std::size_t s = 0; s < a.stations.size(); ++s)
+    for (std::size_t k = 0; k < a.speeds.size(); ++k)
+      EXPECT_EQ(a.stations[s].stress[k].von_mises, b.stations[s].stress[k].von_mises);
+  expect_point_equals_alone(model, a, sweep(1));
+}
+
+// A cross-coupled spring between the two disks that switches on part-way through
+// the sweep fills entries outside the pattern the sweep started with.
+TEST(HarmonicResponse, SpeedDependentEntriesWidenThePattern) {
+  Model model = unbalanced(test::friswell_5_9_1());
+  SpringDamperCoefficients c;
+  c.kyz = SpeedCoefficient(SpeedCoefficient::Step{0.0, 2e5, 1500.0 * 2 * pi / 60});
+  c.kzy = SpeedCoefficient(SpeedCoefficient::Step{0.0, -2e5, 1500.0 * 2 * pi / 60});
+  model.elements.emplace_back(SpringDamper(2, Index{4}, c));
+  for (int threads : {1, 2}) {
+    const HarmonicOptions opt = sweep(threads);
+    expect_point_equals_alone(model, run_harmonic_response(model, opt), opt);
+  }
+}
+
+}  // namespace
+}  // namespace feran
