@@ -34,6 +34,7 @@ struct RunupArgs {
   std::string jacobian = "exact";
   int jacobian_interval = IntegratorSettings{}.jacobian_interval;
   std::string blowup;
+  int modes = 0;
   bool static_loads = false;
   OutputOptions out;
 };
@@ -105,6 +106,10 @@ Runner add_runup_command(CLI::App& app) {
   cmd->add_option("--jacobian-interval", args->jacobian_interval, "W-methods: refresh the Jacobian every N steps (default 10)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--blowup", args->blowup, "Stop when a displacement exceeds this length (default 1m)");
+  cmd->add_option("--modes", args->modes,
+                  "Integrate in a basis of the N lowest undamped modes (at 5 speeds of the run) instead of the "
+                  "full model; lets rk3 take long steps")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--static-loads", args->static_loads, "Apply the model's [[static_loads]] as constant forces");
   add_output_options(*cmd, args->out);
 
@@ -152,6 +157,7 @@ Runner add_runup_command(CLI::App& app) {
     s.allow_unstable_step = args->allow_unstable;
     s.exact_jacobian = args->jacobian == "exact";
     s.jacobian_interval = args->jacobian_interval;
+    options.reduced_modes = args->modes;
     options.output_interval = !args->output_interval.empty() ? time_option(args->output_interval, "--output-interval")
                                                              : d.output_interval.value_or(1e-3);
     if (!args->blowup.empty()) {
@@ -213,6 +219,9 @@ Runner add_runup_command(CLI::App& app) {
                          options.integrator, 0.0, result.t_end, rad_to_hz(options.profile.speed(0.0)),
                          rad_to_hz(options.profile.speed(result.t_end)), result.steps, result.rejected,
                          result.factorizations, result.newton_iterations, wall);
+      if (result.basis_size > 0)
+        out += fmt::format("modal reduction: {} modes at {} speeds, a basis of {} vectors\n",
+                           options.reduced_modes, modal_basis_speeds, result.basis_size);
       for (std::size_t p = 0; p < options.probes.size(); ++p) {
         const Envelope& e = result.envelopes[p];
         out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {:.4g} Hz\n",

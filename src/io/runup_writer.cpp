@@ -93,7 +93,8 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
   j["statistics"] = {{"steps", result.steps},
                      {"rejected_steps", result.rejected},
                      {"factorizations", result.factorizations},
-                     {"newton_iterations", result.newton_iterations}};
+                     {"newton_iterations", result.newton_iterations},
+                     {"modal_basis", result.basis_size}};
   json profile = json::array();
   for (const auto& [t, w] : options.profile.points()) profile.push_back({{"time_s", t}, {"speed_hz", rad_to_hz(w)}});
   j["profile"] = profile;

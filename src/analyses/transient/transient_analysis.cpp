@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <fmt/format.h>
 
+#include <feran/analyses/transient/modal_basis.hpp>
+#include <feran/analyses/transient/projected_system.hpp>
 #include <feran/analyses/transient/rotor_system.hpp>
 #include <feran/core/error.hpp>
 #include <feran/elements/spring_damper.hpp>
@@ -27,6 +30,29 @@ void interpolate(const State& a, const State& b, Real t, Vector& x, Vector& v) {
   v = (d00 / h) * a.x + d10 * a.v + (d01 / h) * b.x + d11 * b.v;
 }
 
+// Unit forces and moments (v, w, ry, rz) at every node where a force acts —
+// unbalances, harmonic forces, static loads when applied, friction — in reduced
+// coordinates: the static correction vectors of a reduced run.
+Matrix load_vectors(const Model& model, const DofMap& dofs, const TransientOptions& options) {
+  std::vector<Index> nodes;
+  for (const Unbalance& u : model.unbalances) nodes.push_back(u.node);
+  for (const HarmonicForce& h : model.forces) nodes.push_back(h.node);
+  if (options.static_loads)
+    for (const StaticLoad& l : model.static_loads) nodes.push_back(l.node);
+  for (const CoulombFriction& f : model.friction) {
+    nodes.push_back(f.node_a);
+    if (f.node_b) nodes.push_back(*f.node_b);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const SparseMatrix Tt = dofs.transformation().transpose();
+  Matrix loads(dofs.n_reduced(), 4 * static_cast<Index>(nodes.size()));
+  Index c = 0;
+  for (const Index node : nodes)
+    for (const Dof d : {Dof::v, Dof::w, Dof::ry, Dof::rz}) loads.col(c++) = Vector(Tt.col(global_dof(node, d)));
+  return loads;
+}
+
 }  // namespace
 
 TransientResult run_transient(const Model& model, const TransientOptions& options, const SampleSink& sink,
@@ -39,11 +65,28 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
       throw Error("transient: a recorded element is not a spring-damper");
 
   TransientResult result;
-  RotorSystem sys(model, options.profile, options.static_loads);
+  RotorSystem rotor(model, options.profile, options.static_loads);
   std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
   result.info.method = std::string(integrator->name());
-  const DofMap& dofs = sys.dof_map();
+  const DofMap& dofs = rotor.dof_map();
+  std::unique_ptr<ProjectedSystem> projected;
+  if (options.reduced_modes > 0) {
+    std::vector<Real> speeds;
+    for (int i = 0; i < modal_basis_speeds; ++i)
+      speeds.push_back(options.profile.speed(options.duration * i / (modal_basis_speeds - 1)));
+    projected = std::make_unique<ProjectedSystem>(
+        rotor, undamped_mode_basis(rotor.assembler(), speeds, options.reduced_modes, load_vectors(model, dofs, options)));
+    result.basis_size = projected->size();
+  }
+  SecondOrderSystem& sys = projected ? static_cast<SecondOrderSystem&>(*projected) : rotor;
   const Index n = sys.size();
+  // The integrated state in the model's reduced coordinates (after fixed DOFs and links).
+  Vector x_model, v_model;
+  auto model_coordinates = [&](const Vector& x, Vector& out) -> const Vector& {
+    if (!projected) return x;
+    out.noalias() = projected->basis() * x;
+    return out;
+  };
 
   // Envelope bins over the speeds the profile visits within the run.
   Real w_lo = options.profile.speed(0.0), w_hi = w_lo;
@@ -59,7 +102,7 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     result.envelopes.push_back(e);
   }
   auto update_envelopes = [&](const State& s) {
-    const Vector x = sys.expand(s.x);
+    const Vector x = rotor.expand(model_coordinates(s.x, x_model));
     const Real w = options.profile.speed(s.t);
     const Index b = bins == 1 ? 0 : std::clamp<Index>(static_cast<Index>((w - w_lo) / (w_hi - w_lo) * static_cast<Real>(bins)), 0, bins - 1);
     for (std::size_t p = 0; p < options.probes.size(); ++p) {
@@ -76,8 +119,8 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     TransientSample sample;
     sample.t = t;
     sample.speed = options.profile.speed(t);
-    x_full = sys.expand(x);
-    v_full = sys.expand(v);
+    x_full = rotor.expand(model_coordinates(x, x_model));
+    v_full = rotor.expand(model_coordinates(v, v_model));
     for (Index node : options.probes) {
       std::array<Real, dofs_per_node> q{};
       for (int d = 0; d < dofs_per_node; ++d) q[static_cast<std::size_t>(d)] = x_full(dofs_per_node * node + d);
@@ -101,10 +144,23 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     if (options.keep_samples) result.samples.push_back(std::move(sample));
   };
 
+  const Index n_model = rotor.size();
+  Vector x0 = Vector::Zero(n_model), v0 = Vector::Zero(n_model);
+  for (Index i = 0; i < n_model; ++i) {
+    if (options.initial_displacement.size() == model.n_dofs()) x0(i) = options.initial_displacement(dofs.full_dof(i));
+    if (options.initial_velocity.size() == model.n_dofs()) v0(i) = options.initial_velocity(dofs.full_dof(i));
+  }
   State s{0.0, Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
-  for (Index i = 0; i < n; ++i) {
-    if (options.initial_displacement.size() == model.n_dofs()) s.x(i) = options.initial_displacement(dofs.full_dof(i));
-    if (options.initial_velocity.size() == model.n_dofs()) s.v(i) = options.initial_velocity(dofs.full_dof(i));
+  if (projected) {
+    // The M-orthogonal projection onto the basis (ΦᵀMΦ = I): η = Φᵀ·M·x.
+    Vector mx(n_model);
+    rotor.mass_times(x0, mx);
+    s.x = projected->basis().transpose() * mx;
+    rotor.mass_times(v0, mx);
+    s.v = projected->basis().transpose() * mx;
+  } else {
+    s.x = x0;
+    s.v = v0;
   }
   const StepReport started = integrator->start(sys, s);
   if (!started.ok) {
@@ -143,9 +199,11 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     // Blow-up and non-finite values, located at a node and DOF.
     Index worst = -1;
     Real worst_value = 0;
-    for (Index i = 0; i < n; ++i) {
-      const Real a = std::abs(s.x(i));
-      if (!std::isfinite(s.x(i)) || !std::isfinite(s.v(i))) {
+    const Vector& xm = model_coordinates(s.x, x_model);
+    const Vector& vm = model_coordinates(s.v, v_model);
+    for (Index i = 0; i < n_model; ++i) {
+      const Real a = std::abs(xm(i));
+      if (!std::isfinite(xm(i)) || !std::isfinite(vm(i))) {
         worst = i, worst_value = nan;
         break;
       }

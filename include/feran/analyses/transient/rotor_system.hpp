@@ -38,6 +38,7 @@ class RotorSystem final : public SecondOrderSystem {
   Real highest_frequency() override;
 
   const DofMap& dof_map() const { return assembler_.dof_map(); }
+  const Assembler& assembler() const { return assembler_; }
   const SpeedProfile& profile() const { return profile_; }
   /// Displacements (or velocities) of all unconstrained DOFs.
   Vector expand(const Vector& reduced) const { return assembler_.dof_map().expand(reduced); }

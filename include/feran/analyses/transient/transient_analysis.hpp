@@ -30,7 +30,15 @@ struct TransientOptions {
   /// Initial displacements and velocities of all unconstrained DOFs (global_dof
   /// order); empty: at rest. Values at fixed or follower DOFs are ignored.
   Vector initial_displacement, initial_velocity;
+  /// 0: integrate the full model. N > 0: integrate in the basis of the N lowest
+  /// undamped modes at modal_basis_speeds speeds of the profile (modal_basis.hpp),
+  /// which removes the high finite-element modes that limit explicit steps.
+  Index reduced_modes = 0;
 };
+
+/// Number of speeds, evenly spaced in time over the run, at which the basis of a
+/// reduced run takes its modes.
+inline constexpr int modal_basis_speeds = 5;
 
 /// The recorded state at one output time.
 struct TransientSample {
@@ -60,6 +68,7 @@ struct TransientResult {
   std::string warning;  ///< e.g. rk3 run above its stability limit on request
   Real t_end = 0;       ///< time reached [s]
   Index steps = 0, rejected = 0, factorizations = 0, newton_iterations = 0;
+  Index basis_size = 0;  ///< columns of the modal basis of a reduced run (0: full model)
 };
 
 using SampleSink = std::function<void(const TransientSample&)>;
