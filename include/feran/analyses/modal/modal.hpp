@@ -53,7 +53,7 @@ struct Mode {
 
 /// Which eigen solver to use.
 enum class EigenSolver {
-  automatic,  ///< dense for small models, shift-invert for large ones
+  automatic,  ///< dense for small models and all modes, shift-invert for large ones or few modes
   dense,      ///< all modes: Hessenberg-QR of the state matrix (LAPACK dgeev)
   sparse      ///< lowest modes: shift-invert Arnoldi (Spectra) on a sparse LU
 };
@@ -71,7 +71,9 @@ struct ModalOptions {
   /// Number of modes wanted, the lowest by |p|. 0: all (dense) or 12 (sparse).
   Index n_modes = 0;
   EigenSolver solver = EigenSolver::automatic;
-  /// Reduced DOF count up to which automatic selects the dense solver.
+  /// Reduced DOF count up to which automatic selects the dense solver when all modes
+  /// are asked for (n_modes = 0). With n_modes given, automatic selects shift-invert
+  /// Arnoldi once its Krylov subspace is at most a quarter of the state dimension 2n.
   Index dense_limit = 400;
   /// Real shift σ [rad/s] for shift-invert; NaN: automatic (slightly below zero).
   Real shift = std::numeric_limits<Real>::quiet_NaN();

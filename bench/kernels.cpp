@@ -1,0 +1,135 @@
+// Google Benchmark kernels: the inner pieces of feran's analyses on the Friswell 5.9.1
+// rotor (bench/models, written by make_models.py) meshed with 6 to 501 elements.
+// See bench/README.md.
+#include <dlfcn.h>
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <string>
+
+#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/transient/integrator.hpp>
+#include <feran/analyses/transient/rotor_system.hpp>
+#include <feran/assembly/assembler.hpp>
+#include <feran/io/model_reader.hpp>
+
+namespace feran {
+namespace {
+
+const Real speed_4000rpm = 4000.0 * 2.0 * pi / 60.0;
+
+// The model with @p n_elements shaft elements, read once.
+const Model& model(Index n_elements) {
+  static std::map<Index, ModelFile> files;
+  auto it = files.find(n_elements);
+  if (it == files.end())
+    it = files.emplace(n_elements, read_model_file(std::string(FERAN_BENCH_MODELS) + "/friswell_5_9_1_" +
+                                                   std::to_string(n_elements) + ".toml"))
+             .first;
+  return it->second.model;
+}
+
+void sizes(benchmark::internal::Benchmark* b) {
+  for (Index n : {6, 48, 99, 201, 501}) b->Arg(n);
+}
+
+void dofs_counter(benchmark::State& state, const Assembler& a) {
+  state.counters["dofs"] = static_cast<double>(a.dof_map().n_reduced());
+}
+
+// One shaft element's M, C, G, K (12 × 12).
+void BM_ElementMatrices(benchmark::State& state) {
+  const Element& beam = model(6).elements.front();
+  for (auto _ : state) benchmark::DoNotOptimize(beam.local_matrices(OperatingPoint{speed_4000rpm}));
+}
+BENCHMARK(BM_ElementMatrices);
+
+// Assembly of the global sparse matrices in reduced coordinates.
+void BM_Assembly(benchmark::State& state) {
+  const Model& m = model(state.range(0));
+  for (auto _ : state) {
+    const Assembler a(m);
+    benchmark::DoNotOptimize(a.constant().K.nonZeros());
+    dofs_counter(state, a);
+  }
+}
+BENCHMARK(BM_Assembly)->Apply(sizes)->Unit(benchmark::kMicrosecond);
+
+// One modal solve at 4000 rpm (the solver built once, outside the loop).
+void modal_solve(benchmark::State& state, EigenSolver solver_kind, Index n_modes, bool oscillatory_only) {
+  ModalOptions opt;
+  opt.solver = solver_kind;
+  opt.n_modes = n_modes;
+  opt.oscillatory_only = oscillatory_only;
+  opt.shapes = false;
+  const ModalSolver solver(model(state.range(0)), opt);
+  dofs_counter(state, solver.assembler());
+  for (auto _ : state) benchmark::DoNotOptimize(solver.solve(speed_4000rpm));
+}
+
+// All modes by dense QR of the state matrix (the reference solver).
+void BM_ModalDenseAll(benchmark::State& state) { modal_solve(state, EigenSolver::dense, 0, false); }
+BENCHMARK(BM_ModalDenseAll)->Arg(6)->Arg(48)->Unit(benchmark::kMicrosecond);
+
+// The 16 lowest oscillatory modes by dense QR (what a Campbell diagram of 12 modes asks).
+void BM_ModalDenseSelected(benchmark::State& state) { modal_solve(state, EigenSolver::dense, 16, true); }
+BENCHMARK(BM_ModalDenseSelected)->Arg(6)->Arg(48)->Unit(benchmark::kMicrosecond);
+
+// The 12 lowest modes by shift-invert Arnoldi.
+void BM_ModalSparse(benchmark::State& state) { modal_solve(state, EigenSolver::sparse, 12, false); }
+BENCHMARK(BM_ModalSparse)->Apply(sizes)->Unit(benchmark::kMillisecond);
+
+// Unbalance response: a sweep of 10 speeds on one thread; items are speeds.
+void BM_HarmonicResponse(benchmark::State& state) {
+  const Model& m = model(state.range(0));
+  HarmonicOptions opt;
+  for (int i = 1; i <= 10; ++i) opt.speeds.push_back(0.1 * i * speed_4000rpm);
+  opt.probes = {m.n_nodes() / 2};
+  opt.n_threads = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(run_harmonic_response(m, opt));
+  state.SetItemsProcessed(state.iterations() * 10);
+}
+BENCHMARK(BM_HarmonicResponse)->Apply(sizes)->Unit(benchmark::kMillisecond);
+
+// One time step of an integrator at constant speed (after start()). rk3 is explicit:
+// its step must stay below the stability limit, so it takes a much shorter one.
+void BM_TimeStep(benchmark::State& state, const std::string& name) {
+  const Model& m = model(state.range(0));
+  RotorSystem sys(m, SpeedProfile::constant(speed_4000rpm));
+  IntegratorSettings settings;
+  settings.dt = name == "rk3" ? 0.5 / sys.highest_frequency() : 1e-4;
+  settings.allow_unstable_step = true;
+  const auto integrator = make_integrator(name, settings);
+  State s;
+  s.x = Vector::Zero(sys.size());
+  s.v = Vector::Zero(sys.size());
+  integrator->start(sys, s);
+  Real dt = settings.dt;
+  for (auto _ : state) {
+    const StepReport r = integrator->step(sys, s, dt);
+    if (!r.ok) state.SkipWithError(r.message.c_str());
+    if (integrator->adaptive()) dt = r.dt_next;
+  }
+  state.counters["dofs"] = static_cast<double>(sys.size());
+}
+BENCHMARK_CAPTURE(BM_TimeStep, trapezoidal, std::string("trapezoidal"))->Apply(sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_TimeStep, rk3, std::string("rk3"))->Apply(sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_TimeStep, wolfbrandt, std::string("wolfbrandt"))->Apply(sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_TimeStep, ros34pw2, std::string("ros34pw2"))->Apply(sizes)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace feran
+
+// As the feran program does: a threaded OpenBLAS would spin threads of its own inside
+// the small dense solves (seen as half the time in sched_yield), so use one thread.
+int main(int argc, char** argv) {
+  using SetThreads = void (*)(int);
+  if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

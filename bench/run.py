@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""Whole-program benchmark: runs the feran command on a fixed set of models and
+writes bench/results.json (case, model size, median wall time over repeated runs,
+peak memory) and a scaling table with fitted exponents.
+
+Usage: bench/run.py [--feran PATH] [--repeats N] [--out FILE] [--only SUBSTRING]
+(see bench/README.md). Needs only the Python standard library.
+"""
+import argparse
+import json
+import math
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+SIZES = [6, 48, 99, 201, 501]
+
+
+def model_path(n):
+    return os.path.join(HERE, "models", f"friswell_5_9_1_{n}.toml")
+
+
+def reduced_dofs(n):
+    # 6 DOF per node, u and rx held at the first bearing.
+    return 6 * (n + 1) - 2
+
+
+def cases():
+    """(name, group, size in elements or None, arguments, per-unit divisor, unit)."""
+    out = []
+    for n in SIZES:
+        m = model_path(n)
+        out.append((f"modal_12_{n}", "modal", n, ["modal", m, "--speed", "4000rpm", "--modes", "12"], 1, "run"))
+        out.append((f"campbell_20x12_{n}", "campbell20", n,
+                    ["campbell", m, "--points", "20", "--modes", "12"], 1, "run"))
+        out.append((f"response_100_{n}", "response", n,
+                    ["response", m, "--points", "100", "--probe", "disk 2"], 100, "speed"))
+        out.append((f"runup_trapezoidal_{n}", "runup", n,
+                    ["runup", m, "--speed", "4000rpm", "--duration", "0.1s", "--dt", "1e-4s",
+                     "--integrator", "trapezoidal", "--probe", "disk 2"], 1000, "step"))
+    out.append(("campbell_100x8_6", "campbell100", 6,
+                ["campbell", model_path(6), "--points", "100", "--modes", "8"], 1, "run"))
+    # Speed sweeps on one core, for the parallel speed-up.
+    out.append(("campbell_100x8_6_1thread", "threads", 6,
+                ["campbell", model_path(6), "--points", "100", "--modes", "8", "--threads", "1"], 1, "run"))
+    out.append(("campbell_20x12_501_1thread", "threads", 501,
+                ["campbell", model_path(501), "--points", "20", "--modes", "12", "--threads", "1"], 1, "run"))
+    out.append(("response_100_501_1thread", "threads", 501,
+                ["response", model_path(501), "--points", "100", "--probe", "disk 2", "--threads", "1"],
+                100, "speed"))
+    # The paper's examples, with the analysis tables in their model files.
+    ex = os.path.join(ROOT, "examples")
+    ex1 = os.path.join(ex, "01_internal_damping", "model.toml")
+    out.append(("example01_campbell", "examples", None, ["campbell", ex1], 1, "run"))
+    out.append(("example01_response", "examples", None, ["response", ex1], 1, "run"))
+    # The paper's Fig. 5 run-up with internal damping turns unstable near 77 Hz and
+    # stops there (exit code 3, results kept): the run measured is up to that point.
+    out.append(("example01_runup", "examples", None, ["runup", ex1], 1, "run"))
+    ex2 = os.path.join(ex, "02_centrifuge", "model.toml")
+    out.append(("example02_campbell", "examples", None, ["campbell", ex2], 1, "run"))
+    out.append(("example02_runup_arctan", "examples", None,
+                ["runup", os.path.join(ex, "02_centrifuge", "model_arctan.toml")], 1, "run"))
+    out.append(("example03_runup_20_8N", "examples", None,
+                ["runup", os.path.join(ex, "03_coulomb_friction", "model_20_8N.toml")], 1, "run"))
+    return out
+
+
+def run_once(cmd, allowed_exit=(0,)):
+    """Wall time [s], CPU time (user + system) [s] and peak resident memory [MiB]."""
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    err = proc.stderr.read().decode(errors="replace")
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    proc.stderr.close()
+    code = os.waitstatus_to_exitcode(status)
+    if code not in allowed_exit:
+        sys.exit(f"run.py: {' '.join(cmd)} exited with {code}:\n{err}")
+    return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0  # ru_maxrss: KiB
+
+
+def fit_exponent(xs, ys):
+    """Least-squares slope of log y against log x."""
+    lx = [math.log(x) for x in xs]
+    ly = [math.log(y) for y in ys]
+    mx, my = statistics.fmean(lx), statistics.fmean(ly)
+    sxx = sum((a - mx) ** 2 for a in lx)
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--feran", default=os.path.join(ROOT, "build", "feran"), help="the feran program")
+    ap.add_argument("--repeats", type=int, default=7, help="runs per case (median reported)")
+    ap.add_argument("--out", default=os.path.join(HERE, "results.json"))
+    ap.add_argument("--only", default="", help="run only cases whose name contains this")
+    args = ap.parse_args()
+    if not os.path.exists(model_path(SIZES[-1])):
+        subprocess.run([sys.executable, os.path.join(HERE, "make_models.py")], check=True)
+
+    results = []
+    for name, group, n, argv, per, unit in cases():
+        if args.only and args.only not in name:
+            continue
+        # No output files: the analysis and the program around it are measured, not
+        # the writing of results (a 501-element response's JSON is tens of MB).
+        cmd = [args.feran] + argv + ["--quiet"]
+        allowed = (0, 3) if name == "example01_runup" else (0,)
+        run_once(cmd, allowed)  # warm-up: file cache, shared libraries
+        walls, cpus, mems = [], [], []
+        for _ in range(args.repeats):
+            w, c, m = run_once(cmd, allowed)
+            walls.append(w)
+            cpus.append(c)
+            mems.append(m)
+        med = statistics.median(walls)
+        r = {
+            "case": name,
+            "group": group,
+            "command": "feran " + " ".join(os.path.relpath(a, ROOT) if os.path.isabs(a) else a for a in argv),
+            "elements": n,
+            "dofs": 6 * (n + 1) if n else None,
+            "reduced_dofs": reduced_dofs(n) if n else None,
+            "repeats": args.repeats,
+            "median_s": med,
+            "min_s": min(walls),
+            "max_s": max(walls),
+            "median_cpu_s": statistics.median(cpus),
+            "per_unit": unit,
+            "median_per_unit_ms": 1e3 * med / per,
+            "median_cpu_per_unit_ms": 1e3 * statistics.median(cpus) / per,
+            "peak_memory_mib": max(mems),
+        }
+        results.append(r)
+        print(f"{name:32s} {1e3 * med:10.2f} ms  ({r['median_per_unit_ms']:.3f} ms/{unit}, CPU "
+              f"{1e3 * r['median_cpu_s']:.1f} ms)  {r['peak_memory_mib']:7.1f} MiB", flush=True)
+
+    by_name = {r["case"]: r for r in results}
+    scaling = []
+    for group in ["modal", "campbell20", "response", "runup"]:
+        rows = [r for r in results if r["group"] == group]
+        # Fit over the models large enough that the program's start-up (~10 ms) does
+        # not dominate: 99, 201 and 501 elements.
+        big = [r for r in rows if r["elements"] >= 99]
+        entry = {"group": group, "dofs": [r["dofs"] for r in rows],
+                 "median_per_unit_ms": [r["median_per_unit_ms"] for r in rows],
+                 "median_cpu_per_unit_ms": [r["median_cpu_per_unit_ms"] for r in rows],
+                 "peak_memory_mib": [r["peak_memory_mib"] for r in rows]}
+        if len(big) >= 2:
+            entry["time_exponent"] = fit_exponent([r["dofs"] for r in big], [r["median_per_unit_ms"] for r in big])
+            entry["cpu_time_exponent"] = fit_exponent([r["dofs"] for r in big],
+                                                      [r["median_cpu_per_unit_ms"] for r in big])
+            # Memory above the program's fixed footprint (the 6-element model's).
+            base = min(r["peak_memory_mib"] for r in rows)
+            extra = [(r["dofs"], r["peak_memory_mib"] - base) for r in big if r["peak_memory_mib"] - base > 0.5]
+            if len(extra) >= 2:
+                entry["memory_exponent"] = fit_exponent([d for d, _ in extra], [m for _, m in extra])
+        scaling.append(entry)
+    speedups = {}
+    for single, multi in [("campbell_100x8_6_1thread", "campbell_100x8_6"),
+                          ("campbell_20x12_501_1thread", "campbell_20x12_501"),
+                          ("response_100_501_1thread", "response_100_501")]:
+        if single in by_name and multi in by_name:
+            speedups[multi] = by_name[single]["median_s"] / by_name[multi]["median_s"]
+
+    doc = {
+        "machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "python": platform.python_version()},
+        "feran": args.feran,
+        "date": time.strftime("%Y-%m-%d %H:%M:%S"),
+        "cases": results,
+        "scaling": scaling,
+        "parallel_speedup": speedups,
+    }
+    with open(args.out, "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+    for s in scaling:
+        if "time_exponent" in s:
+            mem = s.get("memory_exponent")
+            print(f"scaling {s['group']:10s} time ~ n^{s['time_exponent']:.2f}"
+                  + (f", memory above base ~ n^{mem:.2f}" if mem is not None else ""))
+    for k, v in speedups.items():
+        print(f"speed-up on {os.cpu_count()} cores, {k}: {v:.2f}x")
+
+
+if __name__ == "__main__":
+    main()
