@@ -108,7 +108,7 @@ Runner add_runup_command(CLI::App& app) {
   cmd->add_option("--blowup", args->blowup, "Stop when a displacement exceeds this length (default 1m)");
   cmd->add_option("--modes", args->modes,
                   "Integrate in a basis of the N lowest undamped modes (at 5 speeds of the run) instead of the "
-                  "full model; lets rk3 take long steps")
+                  "full model; lets rk3 take long steps (default: [runup] modes, else the full model)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--static-loads", args->static_loads, "Apply the model's [[static_loads]] as constant forces");
   add_output_options(*cmd, args->out);
@@ -157,7 +157,7 @@ Runner add_runup_command(CLI::App& app) {
     s.allow_unstable_step = args->allow_unstable;
     s.exact_jacobian = args->jacobian == "exact";
     s.jacobian_interval = args->jacobian_interval;
-    options.reduced_modes = args->modes;
+    options.reduced_modes = args->modes > 0 ? args->modes : d.modes.value_or(0);
     options.output_interval = !args->output_interval.empty() ? time_option(args->output_interval, "--output-interval")
                                                              : d.output_interval.value_or(1e-3);
     if (!args->blowup.empty()) {

@@ -1263,7 +1263,7 @@ void ModelBuilder::read_runup() {
   if (table == nullptr) return;
   const TableReader t(*table, "[runup]", path_);
   t.check_keys({"speed", "from", "to", "ramp_time", "table", "duration", "integrator", "dt",
-                "rel_tol", "abs_tol", "output_interval", "probes", "springs"});
+                "rel_tol", "abs_tol", "output_interval", "probes", "springs", "modes"});
   RunupDefaults& r = out_.runup;
   const std::optional<Real> profile_duration = read_speed_profile(t, r.profile);
 
@@ -1291,6 +1291,7 @@ void ModelBuilder::read_runup() {
   r.rel_tol = t.positive_number("rel_tol");
   r.abs_tol = t.positive_number("abs_tol");
   r.output_interval = positive_time("output_interval");
+  r.modes = t.integer("modes", 1);
   read_probes(t, r.probes);
 
   if (const toml::array* springs = t.array("springs")) {

@@ -72,6 +72,9 @@ struct RunupDefaults {
   std::optional<Real> rel_tol;          ///< relative tolerance of adaptive stepping (> 0)
   std::optional<Real> abs_tol;          ///< absolute tolerance of adaptive stepping (> 0)
   std::optional<Real> output_interval;  ///< time between recorded samples [s] (> 0)
+  /// Integrate in a basis of this many undamped modes (≥ 1; see
+  /// TransientOptions::reduced_modes); not given: the full model.
+  std::optional<Index> modes;
   /// Nodes whose response is recorded, as indices into model.nodes (no duplicates;
   /// empty when not given).
   std::vector<Index> probes;

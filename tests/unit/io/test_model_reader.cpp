@@ -824,13 +824,16 @@ dt = 1e-4
 rel_tol = 1e-6
 abs_tol = 2e-9
 output_interval = "0.5 ms"
+modes = 12
 )");
   EXPECT_EQ(file.runup.dt, 1e-4);
+  EXPECT_EQ(file.runup.modes, 12);
   EXPECT_EQ(file.runup.rel_tol, 1e-6);
   EXPECT_EQ(file.runup.abs_tol, 2e-9);
   ASSERT_TRUE(file.runup.output_interval);
   EXPECT_DOUBLE_EQ(*file.runup.output_interval, 0.5e-3);
   EXPECT_FALSE(file.runup.duration);
+  EXPECT_FALSE(read_with("[runup]\ndt = 1e-4\n").runup.modes);
 }
 
 TEST(ModelReaderRunup, ProbesAndNamedSpringsInTheOrderGiven) {

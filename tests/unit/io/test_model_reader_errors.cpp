@@ -178,6 +178,8 @@ cy = 10
       {"[runup]\nduration = \"-1 s\"\n", 2, "^'duration' must be positive, got -1 s$"},
       {"[runup]\noutput_interval = 0\n", 2, "^'output_interval' must be positive, got 0 s$"},
       {"[runup]\nrel_tol = 0\n", 2, "^'rel_tol' must be positive, got 0$"},
+      {"[runup]\nmodes = 0\n", 2, "^'modes' must be at least 1, got 0$"},
+      {"[runup]\nmodes = 2.5\n", 2, "^'modes' must be an integer, got a floating-point number"},
       {"[runup]\nabs_tol = \"1e-9 m\"\n", 2, "^'abs_tol' must be a number without unit"},
       {"[runup]\nintegrator = \"euler\"\n", 2,
        "^'integrator' must be \"trapezoidal\", \"rk3\", \"wolfbrandt\" or \"ros34pw2\", "
