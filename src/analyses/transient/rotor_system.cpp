@@ -15,6 +15,8 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, bool static_l
       cached_speed_(std::numeric_limits<Real>::quiet_NaN()) {
   const SystemMatrices& c = assembler_.constant();
   M_ = c.M, C_ = c.C, K_ = c.K, G_ = c.G, Ci_ = c.Ci, Ki_ = c.Ki;
+  Cc_ = C_ + Ci_;
+  Cc_.prune(0.0);
   mass_.compute(M_);
   if (mass_.info() != Eigen::Success) throw Error("transient: the mass matrix is not positive definite");
   // The rows of T for a force's DOFs map reduced coordinates to its local ones.
@@ -74,9 +76,17 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
   const Real W = profile_.speed(t);
   update_speed(W);
   external_forces(t, f_full_);
-  r = assembler_.dof_map().transformation().transpose() * f_full_;
-  r -= C_ * v + Ci_ * v + W * (G_ * v) + K_ * x + W * (Ki_ * x);
-  if (assembler_.speed_dependent()) r -= variable_.C * v + variable_.K * x;
+  // Products accumulate in place (noalias): no temporaries in the step loop.
+  r.noalias() = assembler_.dof_map().transformation().transpose() * f_full_;
+  r.noalias() -= K_ * x;
+  r.noalias() -= Cc_ * v;
+  work_.noalias() = G_ * v;
+  work_.noalias() += Ki_ * x;
+  r -= W * work_;
+  if (assembler_.speed_dependent()) {
+    r.noalias() -= variable_.C * v;
+    r.noalias() -= variable_.K * x;
+  }
   const MotionState state{t, W};
   for (std::size_t i = 0; i < forces_.size(); ++i) {
     const NonlinearForceValue f = forces_[i].force(state, selectors_[i] * x, selectors_[i] * v);

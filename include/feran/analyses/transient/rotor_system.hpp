@@ -28,11 +28,11 @@ class RotorSystem final : public SecondOrderSystem {
 
   Index size() const override { return M_.rows(); }
   void rhs(Real t, const Vector& x, const Vector& v, Vector& r) override;
-  void mass_times(const Vector& u, Vector& y) const override { y = M_ * u; }
+  void mass_times(const Vector& u, Vector& y) const override { y.noalias() = M_ * u; }
   void solve_mass(const Vector& r, Vector& a) override { a = mass_.solve(r); }
   void set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) override;
-  void stiffness_times(const Vector& u, Vector& y) const override { y = KT_ * u; }
-  void damping_times(const Vector& u, Vector& y) const override { y = DT_ * u; }
+  void stiffness_times(const Vector& u, Vector& y) const override { y.noalias() = KT_ * u; }
+  void damping_times(const Vector& u, Vector& y) const override { y.noalias() = DT_ * u; }
   bool factor_tangent(Real c_x, Real c_v, Real c_a) override;
   void solve_tangent(const Vector& rhs, Vector& delta) override { delta = lu_.solve(rhs); }
   Real highest_frequency() override;
@@ -52,6 +52,8 @@ class RotorSystem final : public SecondOrderSystem {
   SpeedProfile profile_;
   bool static_loads_;
   SparseMatrix M_, C_, K_, G_, Ci_, Ki_;  // speed-independent parts
+  SparseMatrix Cc_;                       // C_ + Ci_
+  Vector work_;                           // rhs() scratch
   SystemMatrices variable_;               // speed-dependent parts at cached_speed_
   Real cached_speed_;
   Eigen::SimplicialLDLT<SparseMatrix> mass_;
