@@ -170,7 +170,7 @@ def main():
 
     doc = {
         "machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "python": platform.python_version()},
-        "feran": args.feran,
+        "feran": os.path.relpath(args.feran, ROOT) if os.path.abspath(args.feran).startswith(ROOT) else "feran",
         "date": time.strftime("%Y-%m-%d %H:%M:%S"),
         "cases": results,
         "scaling": scaling,
