@@ -17,6 +17,8 @@
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/io/model_reader.hpp>
 
+#include "campbell_lookup.hpp"
+
 namespace feran {
 namespace {
 
@@ -69,17 +71,8 @@ const CampbellResult& step_campbell() {
   return r;
 }
 
-const TrackedMode& mode(const CampbellResult& r, const std::string& label) {
-  for (const TrackedMode& m : r.modes)
-    if (m.label == label) return m;
-  throw std::runtime_error("no mode " + label);
-}
-
-Real critical_hz(const CampbellResult& r, const std::string& label) {
-  for (const CriticalSpeed& c : r.critical_speeds)
-    if (r.modes[static_cast<std::size_t>(c.mode)].label == label && c.order == 1) return rad_to_hz(c.speed);
-  return std::numeric_limits<Real>::quiet_NaN();
-}
+using test::critical_hz;
+using test::mode;
 
 std::size_t speed_index(const CampbellResult& r, Real hz) {
   for (std::size_t i = 0; i < r.speeds.size(); ++i)

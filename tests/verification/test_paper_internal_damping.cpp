@@ -8,6 +8,8 @@
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/io/model_reader.hpp>
 
+#include "campbell_lookup.hpp"
+
 namespace feran {
 namespace {
 
@@ -29,17 +31,8 @@ const Sweep& sweep() {
   return s;
 }
 
-const TrackedMode& mode(const CampbellResult& r, const std::string& label) {
-  for (const TrackedMode& m : r.modes)
-    if (m.label == label) return m;
-  throw std::runtime_error("no mode " + label);
-}
-
-Real critical_hz(const CampbellResult& r, const std::string& label) {
-  for (const CriticalSpeed& c : r.critical_speeds)
-    if (r.modes[static_cast<std::size_t>(c.mode)].label == label && c.order == 1) return rad_to_hz(c.speed);
-  return NAN;
-}
+using test::critical_hz;
+using test::mode;
 
 TEST(PaperInternalDamping, FirstCriticalSpeedNearThePapers33_4Hz) {
   // The paper does not give E; with 210 GPa the undamped-like rotor (external damping

@@ -212,6 +212,17 @@ std::vector<Real> errors_at_halved_steps(MakeIntegrator make, SecondOrderSystem&
   return errors;
 }
 
+// errors_at_halved_steps on gyroscopic_oscillator() over [0, 5] s from initial_state(2),
+// against its exact solution: the linear order test every integrator shares.
+template <class MakeIntegrator>
+std::vector<Real> linear_oscillator_errors(MakeIntegrator make) {
+  DenseSystem sys = gyroscopic_oscillator();
+  const State s0 = initial_state(2);
+  Vector x, v;
+  LinearExact(sys, s0).at(5.0, x, v);
+  return errors_at_halved_steps(make, sys, s0, 5.0, x, v);
+}
+
 // Observed orders log2(e_k/e_{k+1}) of a sequence of errors at halved steps.
 inline std::vector<Real> observed_orders(const std::vector<Real>& errors) {
   std::vector<Real> p;

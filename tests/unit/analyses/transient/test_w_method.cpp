@@ -20,13 +20,9 @@ using test::DenseSystem;
 // 40…1280 fixed steps, exact linear solution. The last two rates must be within 0.1 of
 // the order (MFEM's test_ode2 margin for the pre-asymptotic range).
 std::vector<Real> linear_rates(const WTableau& tableau) {
-  DenseSystem sys = test::gyroscopic_oscillator();
-  const State s0 = test::initial_state(2);
-  Vector x, v;
-  test::LinearExact(sys, s0).at(5.0, x, v);
   const IntegratorSettings settings;
-  const auto errors = test::errors_at_halved_steps(
-      [&] { return std::make_unique<WMethod>(tableau, settings, false); }, sys, s0, 5.0, x, v);
+  const auto errors =
+      test::linear_oscillator_errors([&] { return std::make_unique<WMethod>(tableau, settings, false); });
   return test::observed_orders(errors);
 }
 
