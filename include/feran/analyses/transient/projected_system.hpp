@@ -32,7 +32,8 @@ class ProjectedSystem final : public SecondOrderSystem {
   bool factor_tangent(Real c_x, Real c_v, Real c_a) override;
   void solve_tangent(const Vector& rhs, Vector& delta) override { delta = lu_.solve(rhs); }
   /// From the projected pencil: the Jacobian at rest (t = 0, η = η' = 0) symmetrised,
-  /// its largest generalised eigenvalue against Φᵀ·M·Φ, plus 10 %.
+  /// its largest generalised eigenvalue against Φᵀ·M·Φ, plus 10 %. It sets the
+  /// Jacobian (of this and the full system) to that one at rest.
   Real highest_frequency() override;
 
   /// Φ (n × m).
