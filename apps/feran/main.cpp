@@ -14,10 +14,16 @@
 namespace {
 // feran runs the points of a sweep on all cores itself; a threaded OpenBLAS (when it
 // is the LAPACK in use) would start threads of its own inside each small dense solve,
-// which only competes with them. Looked up at run time: other BLAS builds lack it.
+// which only competes with them. Its worker threads are started when the library
+// loads, before main, and spin (sched_yield) for about 0.1 s before they sleep: a
+// short run lost one of two cores to them. Setting one thread and shutting the
+// server down joins them at once. Looked up at run time: other BLAS builds lack
+// these functions.
 void single_threaded_blas() {
   using SetThreads = void (*)(int);
   if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
+  using Shutdown = int (*)();
+  if (void* f = dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) reinterpret_cast<Shutdown>(f)();
 }
 }  // namespace
 
