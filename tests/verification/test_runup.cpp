@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/transient/rotor_system.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 
 #include "test_models.hpp"
@@ -53,7 +55,36 @@ TEST(Runup, ConstantSpeedSettlesOnTheSteadyState) {
     const TransientResult r = run_transient(model, t);
     ASSERT_TRUE(r.info.converged) << r.info.message;
     EXPECT_NEAR(r.samples.back().magnitude[0], R, 2e-5 * R) << name;
+    // Linear at constant speed: the trapezoidal rule's first Newton correction
+    // solves each step (RotorSystem::tangent_exact_at); one factorisation, and one
+    // more for the shortened last step.
+    if (std::string(name) == "trapezoidal") {
+      EXPECT_EQ(r.newton_iterations, r.steps);
+      EXPECT_LE(r.factorizations, 2);
+    }
   }
+}
+
+// RotorSystem reports its Jacobian exact only where one Newton correction solves a
+// step: a linear model at the speed the Jacobian was set at. During a run-up the
+// speed (and with it the gyroscopic and speed-dependent terms) moves on; friction
+// makes the model nonlinear at any speed.
+TEST(Runup, TangentIsExactOnlyForALinearModelAtItsSpeed) {
+  const Model linear = jeffcott(400.0, 0.0, 1e-3);
+  RotorSystem constant(linear, SpeedProfile::constant(0.5 * wn));
+  const Vector zero = Vector::Zero(constant.size());
+  EXPECT_FALSE(constant.tangent_exact_at(0.0));  // no Jacobian set yet
+  constant.set_jacobian(0.0, zero, zero, true);
+  EXPECT_TRUE(constant.tangent_exact_at(0.0));
+  EXPECT_TRUE(constant.tangent_exact_at(1.0));
+  RotorSystem ramp(linear, SpeedProfile::ramp(0.0, 2 * wn, 1.0));
+  ramp.set_jacobian(0.5, zero, zero, true);
+  EXPECT_TRUE(ramp.tangent_exact_at(0.5));
+  EXPECT_FALSE(ramp.tangent_exact_at(0.5001));
+  const Model dry = jeffcott(400.0, 0.0, 1e-3, 5.0);
+  RotorSystem friction(dry, SpeedProfile::constant(1.5 * wn));
+  friction.set_jacobian(0.0, zero, zero, true);
+  EXPECT_FALSE(friction.tangent_exact_at(0.0));
 }
 
 // Rotating (internal) damping c_i with external c_a: a free whirl decays below the

@@ -12,7 +12,8 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, bool static_l
       assembler_(model),
       profile_(std::move(profile)),
       static_loads_(static_loads),
-      cached_speed_(std::numeric_limits<Real>::quiet_NaN()) {
+      cached_speed_(std::numeric_limits<Real>::quiet_NaN()),
+      jacobian_speed_(std::numeric_limits<Real>::quiet_NaN()) {
   const SystemMatrices& c = assembler_.constant();
   M_ = c.M, C_ = c.C, K_ = c.K, G_ = c.G, Ci_ = c.Ci, Ki_ = c.Ki;
   Cc_ = C_ + Ci_;
@@ -97,6 +98,7 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
 void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) {
   const Real W = profile_.speed(t);
   update_speed(W);
+  jacobian_speed_ = W;
   DT_ = C_ + Ci_ + W * G_;
   KT_ = K_ + W * Ki_;
   if (assembler_.speed_dependent()) {

@@ -36,7 +36,10 @@ struct NewmarkParameters {
 /// correction is not at least 5 times smaller than the one before
 /// (‖δ_k‖ > 0.2·‖δ_{k−1}‖), the Jacobian is re-evaluated and S refactorised at every
 /// further iteration of that step (full Newton). Converged when
-/// ‖δx‖ ≤ newton_tol·(1 + ‖x‖) (Euclidean norms). After start() the integrator
+/// ‖δx‖ ≤ newton_tol·(1 + ‖x‖) (Euclidean norms), or after the first correction when
+/// the system reports its factorised Jacobian exact at t_{n+1} for a linear r
+/// (SecondOrderSystem::tangent_exact_at: a linear rotor at constant speed), since that
+/// correction solves the linear step equations directly. After start() the integrator
 /// assumes that nothing else sets the system's Jacobian or factorises its tangent
 /// between steps; call start() again if something does.
 ///

@@ -35,6 +35,11 @@ class RotorSystem final : public SecondOrderSystem {
   void damping_times(const Vector& u, Vector& y) const override { y.noalias() = DT_ * u; }
   bool factor_tangent(Real c_x, Real c_v, Real c_a) override;
   void solve_tangent(const Vector& rhs, Vector& delta) override { delta = lu_.solve(rhs); }
+  /// Without nonlinear forces the system is linear in (x, v), and the Jacobian is
+  /// exact at every time whose speed equals the speed it was set at.
+  bool tangent_exact_at(Real t) const override {
+    return forces_.empty() && profile_.speed(t) == jacobian_speed_;
+  }
   Real highest_frequency() override;
 
   const DofMap& dof_map() const { return assembler_.dof_map(); }
@@ -60,6 +65,7 @@ class RotorSystem final : public SecondOrderSystem {
   std::vector<NonlinearForce> forces_;
   std::vector<SparseMatrix> selectors_;  // per force: rows of T for its DOFs
   SparseMatrix DT_, KT_;
+  Real jacobian_speed_;  // the speed of DT_, KT_ (NaN before the first)
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
   Index pattern_nonzeros_ = -1;
   Vector f_full_;

@@ -45,6 +45,14 @@ class SecondOrderSystem {
   virtual bool factor_tangent(Real c_x, Real c_v, Real c_a) = 0;
   /// Solves S·δ = rhs with the last factorisation.
   virtual void solve_tangent(const Vector& rhs, Vector& delta) = 0;
+  /// True when r is affine in (x, v) and the Jacobian last set is its exact Jacobian
+  /// at time @p t: then one Newton step with a factorisation of it solves an
+  /// implicit stage at t exactly (up to round-off), and a second step only confirms.
+  /// The default, false, is always safe.
+  virtual bool tangent_exact_at(Real t) const {
+    static_cast<void>(t);
+    return false;
+  }
 
   /// An estimate, from above, of the highest undamped natural frequency [rad/s]
   /// (for the stability limit of explicit methods).

@@ -32,6 +32,9 @@ class DenseSystem : public SecondOrderSystem {
   // The tangent set by set_jacobian is jacobian_scale·(K_T, D_T): 0.5 gives a poor
   // approximation, 0 gives T = 0 (the W-method becomes explicit).
   Real jacobian_scale = 1.0;
+  // Reports its tangent exact (tangent_exact_at) when it is: the linear system with
+  // jacobian_scale 1. Off by default, which makes the integrators confirm every step.
+  bool report_exact_tangent = false;
 
   int n_rhs = 0;
   int n_jacobian = 0;
@@ -75,6 +78,9 @@ class DenseSystem : public SecondOrderSystem {
     return lu_.isInvertible();
   }
   void solve_tangent(const Vector& rhs, Vector& delta) override { delta = lu_.solve(rhs); }
+  bool tangent_exact_at(Real) const override {
+    return report_exact_tangent && cubic == 0.0 && friction == 0.0 && jacobian_scale == 1.0;
+  }
 
   // sqrt of the ∞-norm of M⁻¹K: an upper bound of ω_max, exact for one DOF.
   Real highest_frequency() override {
