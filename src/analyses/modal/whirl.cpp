@@ -8,12 +8,13 @@ namespace feran {
 namespace {
 
 // The pair (V, W) of node @p node: translations, or the tilt vector (rz, −ry).
-std::pair<Complex, Complex> orbit_pair(const ComplexVector& s, Index node, bool tilt) {
+// (A reference to a column of a matrix binds without a copy.)
+std::pair<Complex, Complex> orbit_pair(const Eigen::Ref<const ComplexVector>& s, Index node, bool tilt) {
   if (tilt) return {s(global_dof(node, Dof::rz)), -s(global_dof(node, Dof::ry))};
   return {s(global_dof(node, Dof::v)), s(global_dof(node, Dof::w))};
 }
 
-bool translations_vanish(const ComplexVector& s) {
+bool translations_vanish(const Eigen::Ref<const ComplexVector>& s) {
   Real trans = 0, tilt = 0;
   for (Index node = 0; node < s.size() / dofs_per_node; ++node) {
     trans = std::max({trans, std::abs(s(global_dof(node, Dof::v))), std::abs(s(global_dof(node, Dof::w)))});
