@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
+#include <tuple>
 
 #include <Eigen/Eigenvalues>
 
@@ -159,13 +162,33 @@ ComplexVector times(const SparseMatrix& A, const ComplexVector& x) {
 
 }  // namespace
 
+// Modes of DOF groups whose matrices do not depend on speed, keyed by (first DOF,
+// size, modes asked for, Arnoldi or dense). Filled on first use; concurrent solves
+// may both compute an entry (the same values), the first stored is kept.
+struct ModalSolver::BlockCache {
+  std::mutex mutex;
+  std::map<std::tuple<Index, Index, Index, bool>, detail::StateEigenpairs> parts;
+};
+
 ModalSolver::ModalSolver(const Model& model, ModalOptions options)
-    : options_(options), assembler_(model) {
+    : options_(options), assembler_(model), cache_(std::make_shared<BlockCache>()) {
   const SystemMatrices sys = assembler_.at(0.0);
   lambda_max_ = 0.0;
   for (Index i = 0; i < sys.M.rows(); ++i)
     if (sys.M.coeff(i, i) > 0) lambda_max_ = std::max(lambda_max_, sys.K.coeff(i, i) / sys.M.coeff(i, i));
   if (lambda_max_ <= 0.0) lambda_max_ = 1.0;
+  // DOFs reached by Ω·G, Ω·K_i or a speed-dependent element (the pattern of every
+  // entry such elements can touch, explicit zeros included).
+  speed_touched_.assign(static_cast<std::size_t>(sys.M.rows()), 0);
+  SystemMatrices variable;
+  assembler_.variable_values(0.0, variable);
+  for (const SparseMatrix* A : {&sys.G, &sys.Ki, static_cast<const SparseMatrix*>(&variable.M)})
+    for (Index j = 0; j < A->outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(*A, j); it; ++it) {
+        if (A != &variable.M && it.value() == 0.0) continue;
+        speed_touched_[static_cast<std::size_t>(it.row())] = 1;
+        speed_touched_[static_cast<std::size_t>(j)] = 1;
+      }
 }
 
 EigenSolver ModalSolver::resolved_solver() const {
@@ -215,6 +238,26 @@ ModalResult ModalSolver::solve(Real speed) const {
                        Kb = submatrix(K, dofs, local);
     for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
     const Index wanted_b = std::min(wanted, nb - 1);
+    const bool constant = std::none_of(dofs.begin(), dofs.end(),
+                                       [&](Index d) { return speed_touched_[static_cast<std::size_t>(d)] != 0; });
+    // The block's modes from the cache or computed (and stored when constant).
+    auto block_modes = [&](Index count, bool arnoldi) {
+      const auto key = std::make_tuple(dofs.front(), nb, count, arnoldi);
+      if (constant) {
+        const std::lock_guard<std::mutex> lock(cache_->mutex);
+        const auto it = cache_->parts.find(key);
+        if (it != cache_->parts.end()) return it->second;
+      }
+      detail::StateEigenpairs computed =
+          arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)
+                  : detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb),
+                                              {count, options_.oscillatory_only, zero_tol});
+      if (constant && computed.info.converged) {
+        const std::lock_guard<std::mutex> lock(cache_->mutex);
+        cache_->parts.emplace(key, computed);
+      }
+      return computed;
+    };
     detail::StateEigenpairs part;
     // Arnoldi pays only when its subspace is smaller than the block's state space.
     if (sparse && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb) {
@@ -223,7 +266,7 @@ ModalResult ModalSolver::solve(Real speed) const {
       // modes cluster (e.g. torsion between heavy disks) does not stall the iteration.
       const bool first = &dofs == &blocks.front();
       for (Index k = first ? wanted_b : std::min<Index>(wanted_b, 4);; k = std::min(wanted_b, 2 * k)) {
-        part = detail::sparse_state_eigen(Mb, Db, Kb, k, sigma);
+        part = block_modes(k, true);
         const bool beyond = part.values.size() > 0 && part.values.cwiseAbs().maxCoeff() > cutoff;
         if (!part.info.converged || k == wanted_b || beyond) break;
       }
@@ -235,7 +278,7 @@ ModalResult ModalSolver::solve(Real speed) const {
         if (static_cast<Index>(magnitudes.size()) >= wanted) cutoff = magnitudes[static_cast<std::size_t>(wanted - 1)];
       }
     } else {
-      part = detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb), {wanted, options_.oscillatory_only, zero_tol});
+      part = block_modes(wanted, false);
     }
     if (part.info.method != "dense-qr") pairs.info.method = part.info.method;
     pairs.info.iterations += part.info.iterations;

@@ -96,7 +96,10 @@ struct ModalResult {
 /// solves at any number of speeds. Groups of DOFs that no matrix entry couples (e.g.
 /// axial, torsional and lateral motion of a straight rotor; the two bending planes at
 /// rest) are solved separately, which is cheaper and keeps the repeated eigenvalues of
-/// an isotropic rotor at rest apart. solve() may be called from several threads.
+/// an isotropic rotor at rest apart. A group that no speed-dependent term touches
+/// (no gyroscopic or circulatory entry, no speed-dependent element: typically the
+/// axial and torsional motion) is solved once and its modes reused at every speed.
+/// solve() may be called from several threads.
 class ModalSolver {
  public:
   explicit ModalSolver(const Model& model, ModalOptions options = {});
@@ -113,6 +116,9 @@ class ModalSolver {
   ModalOptions options_;
   Assembler assembler_;
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
+  std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it
+  struct BlockCache;                 // the modes of speed-independent DOF groups
+  std::shared_ptr<BlockCache> cache_;
 };
 
 /// Convenience: modes of @p model at speed @p speed [rad/s].

@@ -90,5 +90,47 @@ TEST(ModalSolver, SparseAtRestOnAnIsotropicRotor) {
   EXPECT_EQ(forward_a, forward_b);
 }
 
+// The axial and torsional motion of a straight rotor does not depend on speed: a
+// solver computes those blocks once and reuses them at every speed. Reused modes
+// equal a fresh solver's at each speed (1e-12 relative: the same computation on the
+// same matrices, so only the order of summation could differ). An axial spring whose
+// stiffness steps up at 20 Hz makes the axial block speed-dependent: its modes must
+// then change between 10 and 30 Hz, as a fresh solve shows, not be reused.
+TEST(ModalSolver, SpeedIndependentBlocksAreReusedOnlyWhenConstant) {
+  Model stepped = test::friswell_5_9_1(48);
+  SpringDamperCoefficients c;
+  c.k[static_cast<std::size_t>(Dof::u)] = SpeedCoefficient(SpeedCoefficient::Step{1e7, 5e8, hz_to_rad(20.0)});
+  stepped.elements.emplace_back(SpringDamper(24, std::nullopt, c));
+  for (const Model& model : {test::friswell_5_9_1(48), stepped}) {
+    ModalOptions o;
+    o.solver = EigenSolver::sparse;
+    o.n_modes = 40;  // reaches the first axial and torsional modes
+    const ModalSolver shared(model, o);
+    int axial = 0, torsional = 0;
+    std::vector<Real> lowest_axial;
+    for (Real hz : {10.0, 30.0, 10.0}) {
+      const ModalResult reused = shared.solve(hz_to_rad(hz));
+      const ModalResult fresh = ModalSolver(model, o).solve(hz_to_rad(hz));
+      ASSERT_TRUE(reused.info.converged && fresh.info.converged);
+      ASSERT_EQ(reused.modes.size(), fresh.modes.size());
+      Real first_axial = 0.0;
+      for (std::size_t i = 0; i < fresh.modes.size(); ++i) {
+        const Complex p = fresh.modes[i].eigenvalue;
+        EXPECT_LE(std::abs(reused.modes[i].eigenvalue - p), 1e-12 * std::abs(p)) << hz << " Hz, mode " << i;
+        axial += fresh.modes[i].type == ModeType::axial;
+        torsional += fresh.modes[i].type == ModeType::torsional;
+        if (fresh.modes[i].type == ModeType::axial && first_axial == 0.0) first_axial = fresh.modes[i].frequency_hz;
+      }
+      lowest_axial.push_back(first_axial);
+    }
+    EXPECT_GT(axial, 0);
+    EXPECT_GT(torsional, 0);
+    if (&model == &stepped) {
+      // The stiffer axial spring above 20 Hz raises the first axial mode.
+      EXPECT_GT(lowest_axial[1], 1.01 * lowest_axial[0]);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace feran
