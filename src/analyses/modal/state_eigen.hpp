@@ -40,7 +40,9 @@ Index arnoldi_subspace_size(Index n, Index n_wanted);
 
 // The @p n_wanted eigenvalues nearest the real shift @p sigma (and their conjugates
 // dropped), by shift-invert Arnoldi: (A − σI)⁻¹ is applied through one sparse LU of
-// K + σD + σ²M.
+// K + σD + σ²M. An unrestarted factorisation grows until the wanted eigenvalues
+// converge (usually well below arnoldi_subspace_size); Spectra's implicitly
+// restarted solver takes over when they have not within that size.
 StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
                                    const SparseMatrix& K, Index n_wanted, Real sigma);
 
