@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 #include <Eigen/Cholesky>
 
@@ -27,6 +28,26 @@ void dormhr_(const char* side, const char* trans, const int* m, const int* n, co
              const int* ldc, double* work, const int* lwork, int* info);
 void dgebak_(const char* job, const char* side, const int* n, const int* ilo, const int* ihi,
              const double* scale, const int* m, double* v, const int* ldv, int* info);
+// The same steps for a complex general matrix.
+void zgeev_(const char* jobvl, const char* jobvr, const int* n, std::complex<double>* a, const int* lda,
+            std::complex<double>* w, std::complex<double>* vl, const int* ldvl, std::complex<double>* vr,
+            const int* ldvr, std::complex<double>* work, const int* lwork, double* rwork, int* info);
+void zgebal_(const char* job, const int* n, std::complex<double>* a, const int* lda, int* ilo, int* ihi,
+             double* scale, int* info);
+void zgehrd_(const int* n, const int* ilo, const int* ihi, std::complex<double>* a, const int* lda,
+             std::complex<double>* tau, std::complex<double>* work, const int* lwork, int* info);
+void zhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi,
+             std::complex<double>* h, const int* ldh, std::complex<double>* w, std::complex<double>* z,
+             const int* ldz, std::complex<double>* work, const int* lwork, int* info);
+void zhsein_(const char* side, const char* eigsrc, const char* initv, const int* select, const int* n,
+             const std::complex<double>* h, const int* ldh, std::complex<double>* w, std::complex<double>* vl,
+             const int* ldvl, std::complex<double>* vr, const int* ldvr, const int* mm, int* m,
+             std::complex<double>* work, double* rwork, int* ifaill, int* ifailr, int* info);
+void zunmhr_(const char* side, const char* trans, const int* m, const int* n, const int* ilo, const int* ihi,
+             const std::complex<double>* a, const int* lda, const std::complex<double>* tau,
+             std::complex<double>* c, const int* ldc, std::complex<double>* work, const int* lwork, int* info);
+void zgebak_(const char* job, const char* side, const int* n, const int* ilo, const int* ihi,
+             const double* scale, const int* m, std::complex<double>* v, const int* ldv, int* info);
 }
 
 namespace feran::detail {
@@ -137,7 +158,148 @@ std::vector<Index> select_pairs(const Vector& wr, const Vector& wi, const DenseS
   return chosen;
 }
 
+// The complex problem's counterparts. A complex eigenvalue w is the mode with
+// eigenvalue q = w or its conjugate, whichever has Im q ≥ 0: selection and
+// repetition are judged on q.
+Complex mode_value(Complex w) { return w.imag() >= 0.0 ? w : std::conj(w); }
+
+ComplexMatrix complex_state_matrix(const ComplexMatrix& M, const ComplexMatrix& D, const ComplexMatrix& K) {
+  const Index n = M.rows();
+  const Eigen::LLT<ComplexMatrix> llt(M);
+  ComplexMatrix A = ComplexMatrix::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  A.bottomLeftCorner(n, n) = -llt.solve(K);
+  A.bottomRightCorner(n, n) = -llt.solve(D);
+  return A;
+}
+
+StateEigenpairs all_complex_pairs(ComplexMatrix A, Index n) {
+  StateEigenpairs out;
+  out.info.method = "dense-qr";
+  const int N = static_cast<int>(A.rows());
+  ComplexVector w(N);
+  ComplexMatrix vr(N, N);
+  Complex vl_dummy = 0.0;
+  const int one = 1;
+  int info = 0, lwork = -1;
+  Complex query = 0.0;
+  Vector rwork(2 * N);
+  zgeev_("N", "V", &N, A.data(), &N, w.data(), &vl_dummy, &one, vr.data(), &N, &query, &lwork, rwork.data(), &info);
+  lwork = static_cast<int>(query.real());
+  ComplexVector work(lwork);
+  zgeev_("N", "V", &N, A.data(), &N, w.data(), &vl_dummy, &one, vr.data(), &N, work.data(), &lwork, rwork.data(),
+         &info);
+  if (info != 0) {
+    fail(out, "zgeev", info);
+    return out;
+  }
+  out.values = w;
+  out.vectors = vr.topRows(n);
+  out.vectors.colwise().normalize();
+  out.info.n_converged = N;
+  return out;
+}
+
+std::vector<Index> select_complex(const ComplexVector& w, const DenseSelection& s, bool& has_repeated) {
+  std::vector<Index> order;
+  for (Index j = 0; j < w.size(); ++j) order.push_back(j);
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return std::abs(w(a)) < std::abs(w(b)); });
+  std::vector<Index> chosen;
+  Index counted = 0;
+  Complex last;
+  for (Index j : order) {
+    const Complex q = mode_value(w(j));
+    if (std::abs(q) < s.zero_tol) {
+      chosen.push_back(j);
+      continue;
+    }
+    const bool counts = !s.oscillatory_only || q.imag() > 0.0;
+    if (counted >= s.count) {
+      if (counts && repeated(q, last)) chosen.push_back(j);
+      if (!repeated(q, last)) break;
+      continue;
+    }
+    if (!counts) continue;
+    chosen.push_back(j);
+    ++counted;
+    last = q;
+  }
+  has_repeated = false;
+  for (std::size_t a = 0; a < chosen.size(); ++a)
+    for (std::size_t b = a + 1; b < chosen.size(); ++b)
+      has_repeated = has_repeated || repeated(mode_value(w(chosen[a])), mode_value(w(chosen[b])));
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
+}
+
 }  // namespace
+
+StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix& D, const ComplexMatrix& K,
+                                    const DenseSelection& selection) {
+  const Index n = M.rows();
+  StateEigenpairs out;
+  out.info.method = "dense-qr";
+  if (n == 0) return out;
+  const ComplexMatrix A0 = complex_state_matrix(M, D, K);
+  if (selection.count <= 0 || selection.count >= n) return all_complex_pairs(A0, n);
+
+  ComplexMatrix A = A0;
+  const int N = static_cast<int>(2 * n);
+  int ilo = 1, ihi = N, info = 0;
+  Vector scale(N);
+  zgebal_("B", &N, A.data(), &N, &ilo, &ihi, scale.data(), &info);
+  ComplexVector tau(std::max(N - 1, 1));
+  int lwork = -1;
+  Complex query = 0.0;
+  zgehrd_(&N, &ilo, &ihi, A.data(), &N, tau.data(), &query, &lwork, &info);
+  ComplexVector work(std::max(static_cast<int>(query.real()), (N + 2) * N));
+  lwork = static_cast<int>(work.size());
+  zgehrd_(&N, &ilo, &ihi, A.data(), &N, tau.data(), work.data(), &lwork, &info);
+  if (info != 0) return all_complex_pairs(A0, n);
+  ComplexMatrix H = A;
+  for (Index j = 0; j < N; ++j)
+    for (Index i = j + 2; i < N; ++i) H(i, j) = 0.0;
+
+  ComplexMatrix T = H;
+  ComplexVector w(N);
+  Complex z_dummy = 0.0;
+  const int one = 1;
+  zhseqr_("E", "N", &N, &ilo, &ihi, T.data(), &N, w.data(), &z_dummy, &one, work.data(), &lwork, &info);
+  if (info != 0) return all_complex_pairs(A0, n);
+
+  bool has_repeated = false;
+  const std::vector<Index> chosen = select_complex(w, selection, has_repeated);
+  if (has_repeated) return all_complex_pairs(A0, n);
+
+  std::vector<int> select(static_cast<std::size_t>(N), 0);
+  for (Index j : chosen) select[static_cast<std::size_t>(j)] = 1;
+  const int mm = std::max(static_cast<int>(chosen.size()), 1);
+  ComplexMatrix V(N, mm);
+  ComplexVector w_work = w;  // zhsein may perturb close eigenvalues
+  std::vector<int> ifaill(static_cast<std::size_t>(mm)), ifailr(ifaill.size());
+  Vector rwork(N);
+  Complex vl_dummy = 0.0;
+  int m = 0;
+  zhsein_("R", "Q", "N", select.data(), &N, H.data(), &N, w_work.data(), &vl_dummy, &one, V.data(), &N, &mm, &m,
+          work.data(), rwork.data(), ifaill.data(), ifailr.data(), &info);
+  if (info != 0) return all_complex_pairs(A0, n);
+  lwork = -1;
+  zunmhr_("L", "N", &N, &m, &ilo, &ihi, A.data(), &N, tau.data(), V.data(), &N, &query, &lwork, &info);
+  if (static_cast<Index>(query.real()) > work.size()) work.resize(static_cast<Index>(query.real()));
+  lwork = static_cast<int>(work.size());
+  zunmhr_("L", "N", &N, &m, &ilo, &ihi, A.data(), &N, tau.data(), V.data(), &N, work.data(), &lwork, &info);
+  zgebak_("B", "R", &N, &ilo, &ihi, scale.data(), &m, V.data(), &N, &info);
+
+  out.values.resize(static_cast<Index>(chosen.size()));
+  out.vectors.resize(n, static_cast<Index>(chosen.size()));
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    const auto c = static_cast<Index>(k);
+    out.values(c) = w(chosen[k]);
+    out.vectors.col(c) = V.col(c).head(n).normalized();
+  }
+  out.info.n_converged = static_cast<Index>(chosen.size());
+  return out;
+}
 
 StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix& K,
                                   const DenseSelection& selection) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <tuple>
 
 #include <Eigen/Eigenvalues>
@@ -160,6 +161,94 @@ ComplexVector times(const SparseMatrix& A, const ComplexVector& x) {
   return y;
 }
 
+// The complex (forward/backward) form of a block whose DOFs pair up (v with w, ry
+// with rz) and whose matrices commute with the quarter turn J about the spin axis
+// (J: v → w → −v, ry → rz → −ry), i.e. an axisymmetric rotor: on the subspace
+// J·x = i·x, spanned by the columns (e_v − i·e_w)/√2 and (e_ry − i·e_rz)/√2 of U,
+// the problem is Uᴴ(p²M + pD + K)U·y = 0, half the size (state_eigen.hpp).
+struct ComplexForm {
+  detail::ComplexSparseMatrix U, M, D, K;
+};
+
+std::optional<ComplexForm> complex_form(const std::vector<Index>& dofs, const std::vector<Index>& local,
+                                        const std::vector<Index>& twin, const SparseMatrix& M,
+                                        const SparseMatrix& D, const SparseMatrix& K) {
+  const auto nb = static_cast<Index>(dofs.size());
+  if (nb < 2 || nb % 2 != 0) return std::nullopt;
+  std::vector<Eigen::Triplet<Real>> jt;
+  std::vector<Eigen::Triplet<Complex>> ut;
+  const Real r = 1.0 / std::sqrt(2.0);
+  Index c = 0;
+  for (Index a = 0; a < nb; ++a) {
+    const Index t = twin[static_cast<std::size_t>(dofs[static_cast<std::size_t>(a)])];
+    if (t == -1) continue;  // the second of a pair
+    if (t < 0) return std::nullopt;
+    const Index b = local[static_cast<std::size_t>(t)];
+    if (b < 0) return std::nullopt;  // its twin is in another block
+    jt.emplace_back(b, a, 1.0);
+    jt.emplace_back(a, b, -1.0);
+    ut.emplace_back(a, c, Complex(r, 0.0));
+    ut.emplace_back(b, c, Complex(0.0, -r));
+    ++c;
+  }
+  if (2 * c != nb) return std::nullopt;
+  SparseMatrix J(nb, nb);
+  J.setFromTriplets(jt.begin(), jt.end());
+  // Commuting to round-off: an exactly axisymmetric model gives zero or a few ulps.
+  auto commutes = [&](const SparseMatrix& A) {
+    const SparseMatrix C = A * J - J * A;
+    const Real a_max = A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0;
+    const Real c_max = C.nonZeros() > 0 ? C.coeffs().cwiseAbs().maxCoeff() : 0.0;
+    return c_max <= 1e-12 * a_max;
+  };
+  if (!commutes(M) || !commutes(D) || !commutes(K)) return std::nullopt;
+  ComplexForm f;
+  f.U.resize(nb, c);
+  f.U.setFromTriplets(ut.begin(), ut.end());
+  const detail::ComplexSparseMatrix Uh = f.U.adjoint();
+  f.M = Uh * (M.cast<Complex>() * f.U);
+  f.D = Uh * (D.cast<Complex>() * f.U);
+  f.K = Uh * (K.cast<Complex>() * f.U);
+  return f;
+}
+
+// The real problem's eigenpairs (Im p ≥ 0) from the complex form's: w with Im w > 0
+// is the mode (w, U·y); Im w < 0 the mode (w̄, conj(U·y)) on the conjugate subspace;
+// a real w (within round-off of the complex arithmetic, 1e-10 relative, or below
+// @p zero_tol) a double real eigenvalue with the real vectors Re(U·y) and Im(U·y).
+detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const detail::ComplexSparseMatrix& U,
+                                   Real zero_tol) {
+  detail::StateEigenpairs out;
+  out.info = c.info;
+  std::vector<Complex> values;
+  std::vector<ComplexVector> vectors;
+  for (Index j = 0; j < c.values.size(); ++j) {
+    const Complex w = c.values(j);
+    const ComplexVector phi = U * c.vectors.col(j);
+    if (std::abs(w) < zero_tol || std::abs(w.imag()) <= 1e-10 * std::abs(w)) {
+      for (const Vector& part : {Vector(phi.real()), Vector(phi.imag())}) {
+        const Real norm = part.norm();
+        if (norm == 0.0) continue;
+        values.emplace_back(w.real(), 0.0);
+        vectors.emplace_back((part / norm).cast<Complex>());
+      }
+    } else if (w.imag() > 0.0) {
+      values.push_back(w);
+      vectors.push_back(phi.normalized());
+    } else {
+      values.push_back(std::conj(w));
+      vectors.push_back(phi.conjugate().normalized());
+    }
+  }
+  out.values.resize(static_cast<Index>(values.size()));
+  out.vectors.resize(U.rows(), static_cast<Index>(values.size()));
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    out.values(static_cast<Index>(k)) = values[k];
+    out.vectors.col(static_cast<Index>(k)) = vectors[k];
+  }
+  return out;
+}
+
 }  // namespace
 
 // Modes of DOF groups whose matrices do not depend on speed, keyed by (first DOF,
@@ -182,6 +271,27 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options)
   speed_touched_.assign(static_cast<std::size_t>(sys.M.rows()), 0);
   SystemMatrices variable;
   assembler_.variable_values(0.0, variable);
+  // Complex pairs: plain DOFs (one full DOF each, weight 1) v–w and ry–rz of a node.
+  const DofMap& map = assembler_.dof_map();
+  const SparseMatrix& T = map.transformation();
+  const Index n = T.cols();
+  std::vector<Index> reduced_of(static_cast<std::size_t>(T.rows()), -1);
+  for (Index i = 0; i < n; ++i) {
+    const bool plain = T.col(i).nonZeros() == 1 && SparseMatrix::InnerIterator(T, i).value() == 1.0;
+    if (plain) reduced_of[static_cast<std::size_t>(map.full_dof(i))] = i;
+  }
+  twin_.assign(static_cast<std::size_t>(n), -2);
+  for (Index i = 0; i < n; ++i) {
+    const Index full = map.full_dof(i);
+    if (reduced_of[static_cast<std::size_t>(full)] != i) continue;
+    const auto d = static_cast<Dof>(full % dofs_per_node);
+    if (d != Dof::v && d != Dof::ry) continue;
+    const Index partner = reduced_of[static_cast<std::size_t>(full + 1)];  // w after v, rz after ry
+    if (partner < 0) continue;
+    twin_[static_cast<std::size_t>(i)] = partner;
+    twin_[static_cast<std::size_t>(partner)] = -1;
+  }
+
   for (const SparseMatrix* A : {&sys.G, &sys.Ki, static_cast<const SparseMatrix*>(&variable.M)})
     for (Index j = 0; j < A->outerSize(); ++j)
       for (SparseMatrix::InnerIterator it(*A, j); it; ++it) {
@@ -231,13 +341,18 @@ ModalResult ModalSolver::solve(Real speed) const {
   std::vector<std::vector<Index>> blocks = decoupled_blocks(sys.M, D, K);
   std::stable_sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
   Real cutoff = std::numeric_limits<Real>::infinity();
+  bool any_complex = false;
   for (const std::vector<Index>& dofs : blocks) {
     const auto nb = static_cast<Index>(dofs.size());
     for (Index i = 0; i < nb; ++i) local[static_cast<std::size_t>(dofs[static_cast<std::size_t>(i)])] = i;
     const SparseMatrix Mb = submatrix(sys.M, dofs, local), Db = submatrix(D, dofs, local),
                        Kb = submatrix(K, dofs, local);
-    for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
     const Index wanted_b = std::min(wanted, nb - 1);
+    const bool arnoldi_block = sparse && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb;
+    const std::optional<ComplexForm> cf =
+        arnoldi_block ? std::nullopt : complex_form(dofs, local, twin_, Mb, Db, Kb);
+    any_complex = any_complex || cf.has_value();
+    for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
     const bool constant = std::none_of(dofs.begin(), dofs.end(),
                                        [&](Index d) { return speed_touched_[static_cast<std::size_t>(d)] != 0; });
     // The block's modes from the cache or computed (and stored when constant).
@@ -248,10 +363,20 @@ ModalResult ModalSolver::solve(Real speed) const {
         const auto it = cache_->parts.find(key);
         if (it != cache_->parts.end()) return it->second;
       }
-      detail::StateEigenpairs computed =
-          arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)
-                  : detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb),
-                                              {count, options_.oscillatory_only, zero_tol});
+      detail::StateEigenpairs computed;
+      bool solved = false;
+      if (cf && !arnoldi) {
+        // Forward/backward complex coordinates: a QR of half the order (the real form
+        // if it fails).
+        computed = detail::dense_complex_eigen(ComplexMatrix(cf->M), ComplexMatrix(cf->D), ComplexMatrix(cf->K),
+                                               {count, options_.oscillatory_only, zero_tol});
+        solved = computed.info.converged;
+        if (solved) computed = real_pairs(computed, cf->U, zero_tol);
+      }
+      if (!solved)
+        computed = arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)
+                           : detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb),
+                                                       {count, options_.oscillatory_only, zero_tol});
       if (constant && computed.info.converged) {
         const std::lock_guard<std::mutex> lock(cache_->mutex);
         cache_->parts.emplace(key, computed);
@@ -260,7 +385,7 @@ ModalResult ModalSolver::solve(Real speed) const {
     };
     detail::StateEigenpairs part;
     // Arnoldi pays only when its subspace is smaller than the block's state space.
-    if (sparse && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb) {
+    if (arnoldi_block) {
       // Past the largest block, a few modes first and more only while all of them lie
       // below the cutoff: fewer wanted modes converge faster, and a block whose higher
       // modes cluster (e.g. torsion between heavy disks) does not stall the iteration.
@@ -295,6 +420,7 @@ ModalResult ModalSolver::solve(Real speed) const {
     for (Index i = 0; i < nb; ++i) pairs.vectors.row(dofs[static_cast<std::size_t>(i)]).tail(m) = part.vectors.row(i);
   }
   result.info = pairs.info;
+  result.complex_form = any_complex;
   split_repeated(pairs.values, pairs.vectors, assembler_.dof_map());
 
   const SparseMatrix Ksym = 0.5 * (sys.K + SparseMatrix(sys.K.transpose()));

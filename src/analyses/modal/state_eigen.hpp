@@ -5,6 +5,8 @@
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/core/types.hpp>
 
+#include <Eigen/SparseCore>
+
 namespace feran::detail {
 
 struct StateEigenpairs {
@@ -45,5 +47,22 @@ Index arnoldi_subspace_size(Index n, Index n_wanted);
 // restarted solver takes over when they have not within that size.
 StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
                                    const SparseMatrix& K, Index n_wanted, Real sigma);
+
+// The complex form of an axisymmetric rotor's lateral motion: with M, D, K commuting
+// with the quarter turn J about the spin axis, the real problem splits into the
+// invariant subspaces J·x = ±i·x, complex conjugates of each other. The half-size
+// complex problem (p²Mc + pDc + Kc)y = 0 on J·x = i·x (Mc Hermitian positive
+// definite) has one eigenvalue per mode — forward whirl on one side of the real axis,
+// backward on the other — where the real problem has a conjugate pair. The solver
+// returns its eigenpairs (all signs of Im p), y of unit norm; ModalSolver maps them
+// back to real coordinates.
+using ComplexSparseMatrix = Eigen::SparseMatrix<Complex>;
+
+// Dense, as dense_state_eigen: all eigenpairs (zgeev), or those @p selection picks
+// (counting |p| of the mode, Im p of either sign) by balancing, Hessenberg QR for
+// the eigenvalues (zhseqr) and inverse iteration for the selected vectors (zhsein);
+// a repeated eigenvalue among the selected falls back to zgeev.
+StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix& D, const ComplexMatrix& K,
+                                    const DenseSelection& selection = {});
 
 }  // namespace feran::detail

@@ -90,6 +90,9 @@ struct ModalResult {
   Real speed = 0;  ///< [rad/s]
   std::vector<Mode> modes;
   SolverInfo info;
+  /// The lateral motion was axisymmetric and solved in complex (forward/backward)
+  /// coordinates: one half-size complex problem instead of the real one.
+  bool complex_form = false;
 };
 
 /// Modal solver for one model: assembles the speed-independent matrices once and
@@ -117,6 +120,10 @@ class ModalSolver {
   Assembler assembler_;
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
   std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it
+  // Per reduced DOF: the reduced DOF it pairs with in complex coordinates (v with w,
+  // ry with rz at the same node) for the first of a pair, −1 for the second, −2 for
+  // a DOF that cannot pair (axial, torsional, or tied by a constraint).
+  std::vector<Index> twin_;
   struct BlockCache;                 // the modes of speed-independent DOF groups
   std::shared_ptr<BlockCache> cache_;
 };
