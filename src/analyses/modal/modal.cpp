@@ -350,7 +350,7 @@ ModalResult ModalSolver::solve(Real speed) const {
     const Index wanted_b = std::min(wanted, nb - 1);
     const bool arnoldi_block = sparse && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb;
     const std::optional<ComplexForm> cf =
-        arnoldi_block ? std::nullopt : complex_form(dofs, local, twin_, Mb, Db, Kb);
+        options_.complex_form ? complex_form(dofs, local, twin_, Mb, Db, Kb) : std::nullopt;
     any_complex = any_complex || cf.has_value();
     for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
     const bool constant = std::none_of(dofs.begin(), dofs.end(),
@@ -365,11 +365,13 @@ ModalResult ModalSolver::solve(Real speed) const {
       }
       detail::StateEigenpairs computed;
       bool solved = false;
-      if (cf && !arnoldi) {
-        // Forward/backward complex coordinates: a QR of half the order (the real form
-        // if it fails).
-        computed = detail::dense_complex_eigen(ComplexMatrix(cf->M), ComplexMatrix(cf->D), ComplexMatrix(cf->K),
-                                               {count, options_.oscillatory_only, zero_tol});
+      if (cf) {
+        // Forward/backward complex coordinates: half the order (the real form if it
+        // fails).
+        computed = arnoldi ? detail::sparse_complex_eigen(cf->M, cf->D, cf->K, count, sigma)
+                           : detail::dense_complex_eigen(ComplexMatrix(cf->M), ComplexMatrix(cf->D),
+                                                         ComplexMatrix(cf->K),
+                                                         {count, options_.oscillatory_only, zero_tol});
         solved = computed.info.converged;
         if (solved) computed = real_pairs(computed, cf->U, zero_tol);
       }

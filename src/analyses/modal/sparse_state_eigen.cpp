@@ -1,7 +1,9 @@
 #include "state_eigen.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include <Eigen/Eigenvalues>
 
@@ -13,15 +15,18 @@ namespace feran::detail {
 
 namespace {
 
-// Spectra operator y = (A − σI)⁻¹x for the state matrix A = [[0, I], [−M⁻¹K, −M⁻¹D]],
-// applied without forming A: with x = (x1, x2) and y = (y1, y2),
+// Operator y = (A − σI)⁻¹x for the state matrix A = [[0, I], [−M⁻¹K, −M⁻¹D]] (real
+// for Spectra, or complex), applied without forming A: with x = (x1, x2) and
+// y = (y1, y2),
 //   (K + σD + σ²M)·y1 = −(M·x2 + (D + σM)·x1),  y2 = x1 + σ·y1.
+template <class S>
 class StateShiftInvert {
  public:
-  using Scalar = Real;
+  using Scalar = S;
+  using Sparse = Eigen::SparseMatrix<S>;
+  using Vec = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 
-  StateShiftInvert(const SparseMatrix& M, const SparseMatrix& D, const SparseMatrix& K)
-      : M_(M), D_(D), K_(K), n_(M.rows()) {}
+  StateShiftInvert(const Sparse& M, const Sparse& D, const Sparse& K) : M_(M), D_(D), K_(K), n_(M.rows()) {}
 
   Index rows() const { return 2 * n_; }
   Index cols() const { return 2 * n_; }
@@ -29,7 +34,14 @@ class StateShiftInvert {
   void set_shift(const Scalar& sigma) {
     sigma_ = sigma;
     DsM_ = D_ + sigma * M_;
-    SparseMatrix Q = K_ + sigma * D_ + sigma * sigma * M_;
+    // The energy inner product's stiffness: the Hermitian part of K plus a little
+    // mass, so that rigid-body motion has a positive norm.
+    Real ratio = 0.0;
+    for (Index i = 0; i < n_; ++i)
+      if (std::abs(M_.coeff(i, i)) > 0.0) ratio = std::max(ratio, std::abs(K_.coeff(i, i)) / std::abs(M_.coeff(i, i)));
+    const Real s = std::max(std::norm(sigma), 1e-10 * ratio);
+    KB_ = Sparse(0.5 * (K_ + Sparse(K_.adjoint()))) + s * M_;
+    Sparse Q = K_ + sigma * D_ + sigma * sigma * M_;
     Q.makeCompressed();
     lu_.analyzePattern(Q);
     lu_.factorize(Q);
@@ -37,24 +49,36 @@ class StateShiftInvert {
   }
   bool ok() const { return ok_; }
 
+  // y = B·x with B = diag(K_B, M): for an undamped rotor (K symmetric, D = ΩG skew)
+  // the state operator is skew-adjoint in this energy inner product, and its shift
+  // inverse nearly normal, so Arnoldi behaves like Lanczos — no spurious Ritz values
+  // in the gaps of the spectrum, which the Euclidean inner product produces.
+  void apply_inner(const Scalar* x_in, Scalar* y_out) const {
+    Eigen::Map<const Vec> x1(x_in, n_), x2(x_in + n_, n_);
+    Eigen::Map<Vec> y1(y_out, n_), y2(y_out + n_, n_);
+    y1.noalias() = KB_ * x1;
+    y2.noalias() = M_ * x2;
+  }
+
   void perform_op(const Scalar* x_in, Scalar* y_out) const {
-    Eigen::Map<const Vector> x1(x_in, n_), x2(x_in + n_, n_);
-    Eigen::Map<Vector> y1(y_out, n_), y2(y_out + n_, n_);
-    rhs_ = -(M_ * x2 + DsM_ * x1);
-    y1 = lu_.solve(rhs_);
+    Eigen::Map<const Vec> x1(x_in, n_), x2(x_in + n_, n_);
+    Eigen::Map<Vec> y1(y_out, n_), y2(y_out + n_, n_);
+    rhs_.noalias() = M_ * x2;
+    rhs_.noalias() += DsM_ * x1;
+    y1 = lu_.solve(-rhs_);
     y2 = x1 + sigma_ * y1;
   }
 
  private:
-  const SparseMatrix& M_;
-  const SparseMatrix& D_;
-  const SparseMatrix& K_;
+  const Sparse& M_;
+  const Sparse& D_;
+  const Sparse& K_;
   Index n_;
-  Real sigma_ = 0.0;
-  SparseMatrix DsM_;
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+  Scalar sigma_ = 0.0;
+  Sparse DsM_, KB_;
+  Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu_;
   bool ok_ = false;
-  mutable Vector rhs_;
+  mutable Vec rhs_;
 };
 
 // Each oscillatory mode is a conjugate pair of state eigenvalues; ask for a few
@@ -77,24 +101,42 @@ struct RitzPairs {
 // Arnoldi without restarts, orthogonalised by classical Gram–Schmidt with one
 // selective reorthogonalisation (DGKS: "twice is enough"). The factorisation
 // starts at about two vectors per wanted eigenvalue and grows by half the wanted
-// count until the @p nev eigenvalues of largest |θ| (with any conjugate at the cut)
-// have converged — residual |β·e_mᵀy| ≤ tol·|θ|, the criterion of Spectra's
+// count until the first @p n_required of the @p nev eigenvalues of largest |θ| (with
+// any conjugate at the cut) have converged; the converged ones among all nev are
+// returned — residual |β·e_mᵀy| ≤ tol·|θ|, the criterion of Spectra's
 // restarted solver — or the subspace reaches @p max_size (not converged: the caller
 // falls back to the restarted solver). Deterministic: a fixed start vector.
-RitzPairs growing_arnoldi(const StateShiftInvert& op, Index nev, Index max_size, Real tol) {
+template <class S>
+RitzPairs growing_arnoldi(const StateShiftInvert<S>& op, Index nev, Index n_required, Index max_size, Real tol,
+                          bool energy_inner_product) {
+  using Mat = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+  using Vec = Eigen::Matrix<S, Eigen::Dynamic, 1>;
   const Index N = op.rows();
   RitzPairs out;
   max_size = std::min(max_size, N);
-  Matrix V(N, max_size + 1);
-  Matrix H = Matrix::Zero(max_size + 1, max_size);
+  Mat V(N, max_size + 1);
+  Mat H = Mat::Zero(max_size + 1, max_size);
   // Fixed pseudo-random start vector (a linear congruential sequence).
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
   for (Index i = 0; i < N; ++i) {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     V(i, 0) = static_cast<Real>(state >> 11) * 0x1.0p-53 - 0.5;
   }
-  V.col(0).normalize();
-  Vector w(N), h(max_size), h2(max_size);
+  Vec w(N), z(N), h(max_size), h2(max_size);
+  // Norms and inner products in the operator's energy inner product ⟨x, y⟩ = xᴴB·y.
+  auto b_norm = [&](const Vec& x, Vec& bx) {
+    if (energy_inner_product)
+      op.apply_inner(x.data(), bx.data());
+    else
+      bx = x;
+    return std::sqrt(std::max(std::real(x.dot(bx)), 0.0));
+  };
+  {
+    const Vec v0 = V.col(0);
+    const Real norm0 = b_norm(v0, z);
+    if (!(norm0 > 0.0)) return out;
+    V.col(0) /= norm0;
+  }
   Index m = 0;
   Index check_at = std::min(max_size, std::max<Index>(2 * nev + 1, 20));
   const Index growth = std::max<Index>(nev / 2, 8);
@@ -102,16 +144,20 @@ RitzPairs growing_arnoldi(const StateShiftInvert& op, Index nev, Index max_size,
     op.perform_op(V.col(m).data(), w.data());
     ++out.operations;
     const Index k = m + 1;
-    h.head(k).noalias() = V.leftCols(k).transpose() * w;
+    if (energy_inner_product)
+      op.apply_inner(w.data(), z.data());
+    else
+      z = w;
+    h.head(k).noalias() = V.leftCols(k).adjoint() * z;
     w.noalias() -= V.leftCols(k) * h.head(k);
-    Real beta = w.norm();
+    Real beta = b_norm(w, z);
     // A second pass where cancellation may have cost orthogonality (the DGKS
     // criterion ‖w‖ < ‖h‖/√2); then the basis is orthogonal to working precision.
     if (beta < 0.717 * h.head(k).norm()) {
-      h2.head(k).noalias() = V.leftCols(k).transpose() * w;
+      h2.head(k).noalias() = V.leftCols(k).adjoint() * z;
       w.noalias() -= V.leftCols(k) * h2.head(k);
       h.head(k) += h2.head(k);
-      beta = w.norm();
+      beta = b_norm(w, z);
     }
     H.col(m).head(k) = h.head(k);
     H(k, m) = beta;
@@ -123,9 +169,20 @@ RitzPairs growing_arnoldi(const StateShiftInvert& op, Index nev, Index max_size,
     if (m < nev) return out;  // invariant before holding the wanted count
     check_at = std::min(max_size, m + growth);
 
-    const Eigen::EigenSolver<Matrix> es(H.topLeftCorner(m, m));
-    if (es.info() != Eigen::Success) return out;
-    const Eigen::VectorXcd theta = es.eigenvalues();
+    Eigen::VectorXcd theta;
+    Eigen::MatrixXcd Y;  // unit columns
+    if constexpr (std::is_same_v<S, Real>) {
+      const Eigen::EigenSolver<Mat> es(H.topLeftCorner(m, m));
+      if (es.info() != Eigen::Success) return out;
+      theta = es.eigenvalues();
+      Y = es.eigenvectors();
+    } else {
+      const Eigen::ComplexEigenSolver<Mat> es(H.topLeftCorner(m, m));
+      if (es.info() != Eigen::Success) return out;
+      theta = es.eigenvalues();
+      Y = es.eigenvectors();
+      Y.colwise().normalize();
+    }
     std::vector<Index> order(static_cast<std::size_t>(m));
     for (Index i = 0; i < m; ++i) order[static_cast<std::size_t>(i)] = i;
     std::stable_sort(order.begin(), order.end(),
@@ -136,21 +193,24 @@ RitzPairs growing_arnoldi(const StateShiftInvert& op, Index nev, Index max_size,
                                 std::abs(theta(order[static_cast<std::size_t>(take - 1)]))) <=
                            1e-12 * std::abs(theta(order[static_cast<std::size_t>(take - 1)])))
       ++take;
-    const Eigen::MatrixXcd Y = es.eigenvectors();  // unit columns
+    std::vector<Index> done;  // converged, among the first `take`
     bool all = true;
-    for (Index c = 0; c < take && all; ++c) {
-      const Index i = order[static_cast<std::size_t>(c)];
-      const Real residual = invariant ? 0.0 : beta * std::abs(Y(m - 1, i));
-      all = residual <= tol * std::max(std::abs(theta(i)), 1e-300);
-    }
-    if (!all && !invariant) continue;
-    out.converged = all || invariant;
-    out.values.resize(take);
-    out.vectors.resize(N / 2, take);
     for (Index c = 0; c < take; ++c) {
       const Index i = order[static_cast<std::size_t>(c)];
+      const Real residual = invariant ? 0.0 : beta * std::abs(Y(m - 1, i));
+      const bool ok = residual <= tol * std::max(std::abs(theta(i)), 1e-300);
+      if (ok) done.push_back(i);
+      if (c < n_required) all = all && ok;
+    }
+    if (!all && !invariant) continue;
+    out.converged = true;
+    const auto kept = static_cast<Index>(done.size());
+    out.values.resize(kept);
+    out.vectors.resize(N / 2, kept);
+    for (Index c = 0; c < kept; ++c) {
+      const Index i = done[static_cast<std::size_t>(c)];
       out.values(c) = theta(i);
-      out.vectors.col(c) = V.topLeftCorner(N / 2, m).cast<Complex>() * Y.col(i);
+      out.vectors.col(c) = V.topLeftCorner(N / 2, m).template cast<Complex>() * Y.col(i);
     }
     return out;
   }
@@ -170,7 +230,7 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
   const Index n = M.rows();
   StateEigenpairs out;
   out.info.method = "shift-invert-arnoldi";
-  StateShiftInvert op(M, D, K);
+  StateShiftInvert<Real> op(M, D, K);
   const Index nev = n_eigenvalues(n, n_wanted);
   const Index ncv = arnoldi_subspace_size(n, n_wanted);
   constexpr Real tol = 1e-10;
@@ -185,7 +245,7 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
   // Spectra's implicitly restarted Arnoldi takes over.
   Eigen::VectorXcd values;
   Eigen::MatrixXcd vectors;
-  RitzPairs ritz = growing_arnoldi(op, nev, ncv, tol);
+  RitzPairs ritz = growing_arnoldi(op, nev, nev, ncv, tol, false);
   if (ritz.converged) {
     out.info.method = "shift-invert-arnoldi";
     out.info.iterations = 1;
@@ -193,7 +253,7 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
     values = ritz.values.unaryExpr([sigma](const Complex& t) { return Complex(sigma) + 1.0 / t; });
     vectors = std::move(ritz.vectors);
   } else {
-    Spectra::GenEigsRealShiftSolver<StateShiftInvert> solver(op, nev, ncv, sigma);
+    Spectra::GenEigsRealShiftSolver<StateShiftInvert<Real>> solver(op, nev, ncv, sigma);
     solver.init();
     const Index n_conv = solver.compute(Spectra::SortRule::LargestMagn, 1000, tol,
                                         Spectra::SortRule::LargestMagn);
@@ -229,6 +289,36 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
     const Real norm = out.vectors.col(c).norm();
     if (norm > 0) out.vectors.col(c) /= norm;
   }
+  return out;
+}
+
+StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const ComplexSparseMatrix& D,
+                                     const ComplexSparseMatrix& K, Index n_wanted, Real sigma) {
+  const Index n = M.rows();
+  StateEigenpairs out;
+  out.info.method = "shift-invert-arnoldi";
+  StateShiftInvert<Complex> op(M, D, K);
+  op.set_shift(sigma);
+  if (!op.ok()) {
+    out.info.converged = false;
+    out.info.message = fmt::format("K + σD + σ²M is singular at the shift σ = {} rad/s", sigma);
+    return out;
+  }
+  // Every eigenvalue of the complex problem is a mode of its own (no conjugates to
+  // skip): the wanted count and two more, so that real (overdamped, rigid)
+  // eigenvalues do not crowd modes out.
+  const Index nev = std::min<Index>(2 * n - 1, n_wanted + 2);
+  RitzPairs ritz = growing_arnoldi(op, nev, std::min(nev, n_wanted + 1), std::min<Index>(2 * n, std::max<Index>(3 * nev + 1, 20)), 1e-10, true);
+  out.info.iterations = 1;
+  out.info.n_converged = ritz.converged ? ritz.values.size() : 0;
+  if (!ritz.converged) {
+    out.info.converged = false;
+    out.info.message = fmt::format("Arnoldi iteration did not converge {} eigenvalues", nev);
+    return out;
+  }
+  out.values = ritz.values.unaryExpr([sigma](const Complex& t) { return Complex(sigma) + 1.0 / t; });
+  out.vectors = std::move(ritz.vectors);
+  out.vectors.colwise().normalize();
   return out;
 }
 

@@ -65,4 +65,10 @@ using ComplexSparseMatrix = Eigen::SparseMatrix<Complex>;
 StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix& D, const ComplexMatrix& K,
                                     const DenseSelection& selection = {});
 
+// The @p n_wanted eigenvalues nearest the real shift @p sigma by shift-invert
+// Arnoldi grown until they converge (complex sparse LU of K + σD + σ²M); not
+// converged within three vectors per eigenvalue → info.converged = false.
+StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const ComplexSparseMatrix& D,
+                                     const ComplexSparseMatrix& K, Index n_wanted, Real sigma);
+
 }  // namespace feran::detail

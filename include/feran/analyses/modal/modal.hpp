@@ -83,6 +83,10 @@ struct ModalOptions {
   /// the cut whole (what a Campbell diagram follows). Rigid-body and overdamped modes
   /// are dropped.
   bool oscillatory_only = false;
+  /// Solve the lateral motion of an axisymmetric rotor in complex forward/backward
+  /// coordinates (half the order; detected per decoupled block, see
+  /// docs/theory/modal_analysis.md). false: always the real form (for comparison).
+  bool complex_form = true;
 };
 
 /// The modes of a model at one speed: the n_modes smallest by |p|, listed by frequency.
