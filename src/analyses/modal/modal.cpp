@@ -214,10 +214,13 @@ std::optional<ComplexForm> complex_form(const std::vector<Index>& dofs, const st
 
 // The real problem's eigenpairs (Im p ≥ 0) from the complex form's: w with Im w > 0
 // is the mode (w, U·y); Im w < 0 the mode (w̄, conj(U·y)) on the conjugate subspace;
-// a real w (within round-off of the complex arithmetic, 1e-10 relative, or below
-// @p zero_tol) a double real eigenvalue with the real vectors Re(U·y) and Im(U·y).
-detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const detail::ComplexSparseMatrix& U,
-                                   Real zero_tol) {
+// a real w (within round-off of the complex arithmetic, 1e-10 relative) or a
+// rigid-body one (|w| < @p zero_tol and strain energy yᴴK_c·y below @p rigid_tol
+// times the kinetic yᴴM_c·y, the criterion of ModalSolver) a double real eigenvalue
+// with the real vectors Re(U·y) and Im(U·y).
+detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const ComplexForm& f, Real zero_tol,
+                                   Real rigid_tol) {
+  const detail::ComplexSparseMatrix& U = f.U;
   detail::StateEigenpairs out;
   out.info = c.info;
   std::vector<Complex> values;
@@ -225,7 +228,12 @@ detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const detai
   for (Index j = 0; j < c.values.size(); ++j) {
     const Complex w = c.values(j);
     const ComplexVector phi = U * c.vectors.col(j);
-    if (std::abs(w) < zero_tol || std::abs(w.imag()) <= 1e-10 * std::abs(w)) {
+    auto rigid = [&] {
+      const ComplexVector y = c.vectors.col(j);
+      const Real kinetic = std::real(y.dot(f.M * y)), strain = std::real(y.dot(f.K * y));
+      return kinetic > 0.0 && strain < rigid_tol * kinetic;
+    };
+    if (std::abs(w.imag()) <= 1e-10 * std::abs(w) || (std::abs(w) < zero_tol && rigid())) {
       for (const Vector& part : {Vector(phi.real()), Vector(phi.imag())}) {
         const Real norm = part.norm();
         if (norm == 0.0) continue;
@@ -271,15 +279,14 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options)
   speed_touched_.assign(static_cast<std::size_t>(sys.M.rows()), 0);
   SystemMatrices variable;
   assembler_.variable_values(0.0, variable);
-  // Complex pairs: plain DOFs (one full DOF each, weight 1) v–w and ry–rz of a node.
+  // Complex pairs: the reduced DOFs whose full DOFs are v–w or ry–rz of one node (a
+  // rigid link's master DOFs included). The pairing only proposes J; whether the
+  // split is exact is decided by J commuting with the block's matrices.
   const DofMap& map = assembler_.dof_map();
   const SparseMatrix& T = map.transformation();
   const Index n = T.cols();
   std::vector<Index> reduced_of(static_cast<std::size_t>(T.rows()), -1);
-  for (Index i = 0; i < n; ++i) {
-    const bool plain = T.col(i).nonZeros() == 1 && SparseMatrix::InnerIterator(T, i).value() == 1.0;
-    if (plain) reduced_of[static_cast<std::size_t>(map.full_dof(i))] = i;
-  }
+  for (Index i = 0; i < n; ++i) reduced_of[static_cast<std::size_t>(map.full_dof(i))] = i;
   twin_.assign(static_cast<std::size_t>(n), -2);
   for (Index i = 0; i < n; ++i) {
     const Index full = map.full_dof(i);
@@ -373,7 +380,7 @@ ModalResult ModalSolver::solve(Real speed) const {
                                                          ComplexMatrix(cf->K),
                                                          {count, options_.oscillatory_only, zero_tol});
         solved = computed.info.converged;
-        if (solved) computed = real_pairs(computed, cf->U, zero_tol);
+        if (solved) computed = real_pairs(computed, *cf, zero_tol, rigid_tol);
       }
       if (!solved)
         computed = arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)

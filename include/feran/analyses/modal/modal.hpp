@@ -126,7 +126,7 @@ class ModalSolver {
   std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it
   // Per reduced DOF: the reduced DOF it pairs with in complex coordinates (v with w,
   // ry with rz at the same node) for the first of a pair, −1 for the second, −2 for
-  // a DOF that cannot pair (axial, torsional, or tied by a constraint).
+  // a DOF that cannot pair (axial, torsional, or its partner not a reduced DOF).
   std::vector<Index> twin_;
   struct BlockCache;                 // the modes of speed-independent DOF groups
   std::shared_ptr<BlockCache> cache_;
