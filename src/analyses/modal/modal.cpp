@@ -152,12 +152,13 @@ SparseMatrix submatrix(const SparseMatrix& A, const std::vector<Index>& dofs, co
   return out;
 }
 
-// y = A·x for a real sparse A and a complex vector x.
+// y = A·x for a real sparse A and a complex vector x: the real and imaginary parts
+// at once, as A times the n × 2 real matrix the complex array is.
 ComplexVector times(const SparseMatrix& A, const ComplexVector& x) {
-  const Vector re = A * x.real(), im = A * x.imag();
-  ComplexVector y(re.size());
-  y.real() = re;
-  y.imag() = im;
+  using Pairs = Eigen::Matrix<Real, Eigen::Dynamic, 2, Eigen::RowMajor>;
+  ComplexVector y(A.rows());
+  Eigen::Map<Pairs>(reinterpret_cast<Real*>(y.data()), A.rows(), 2).noalias() =
+      A * Eigen::Map<const Pairs>(reinterpret_cast<const Real*>(x.data()), x.size(), 2);
   return y;
 }
 
