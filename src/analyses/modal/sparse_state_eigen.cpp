@@ -129,7 +129,9 @@ struct RitzPairs {
 // any conjugate at the cut) have converged; the converged ones among all nev are
 // returned — residual |β·e_mᵀy| ≤ tol·|θ|, the criterion of Spectra's
 // restarted solver — or the subspace reaches @p max_size (not converged: the caller
-// falls back to the restarted solver). Deterministic: a fixed start vector.
+// falls back to the restarted solver or the real form). With @p energy_inner_product
+// the basis is orthonormal in the operator's energy inner product (apply_inner),
+// otherwise in the Euclidean one. Deterministic: a fixed start vector.
 template <class S>
 RitzPairs growing_arnoldi(const StateShiftInvert<S>& op, Index nev, Index n_required, Index max_size, Real tol,
                           bool energy_inner_product) {
