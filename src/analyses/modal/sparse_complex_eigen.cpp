@@ -1,0 +1,41 @@
+#include "state_eigen.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "arnoldi.hpp"
+
+namespace feran::detail {
+
+StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const ComplexSparseMatrix& D,
+                                     const ComplexSparseMatrix& K, Index n_wanted, Real sigma) {
+  const Index n = M.rows();
+  StateEigenpairs out;
+  out.info.method = "shift-invert-arnoldi";
+  StateShiftInvert<Complex> op(M, D, K);
+  op.set_shift(sigma);
+  if (!op.ok()) {
+    out.info.converged = false;
+    out.info.message = fmt::format("K + σD + σ²M is singular at the shift σ = {} rad/s", sigma);
+    return out;
+  }
+  // Every eigenvalue of the complex problem is a mode of its own (no conjugates to
+  // skip): the wanted count and two more, so that real (overdamped, rigid)
+  // eigenvalues do not crowd modes out.
+  const Index nev = std::min<Index>(2 * n - 1, n_wanted + 2);
+  RitzPairs ritz = growing_arnoldi(op, nev, std::min(nev, n_wanted + 1), std::min<Index>(2 * n, std::max<Index>(3 * nev + 1, 20)), 1e-10, true);
+  out.info.iterations = 1;
+  out.info.n_converged = ritz.converged ? ritz.values.size() : 0;
+  if (!ritz.converged) {
+    out.info.converged = false;
+    out.info.message = fmt::format("Arnoldi iteration did not converge {} eigenvalues", nev);
+    return out;
+  }
+  out.values = ritz.values.unaryExpr([sigma](const Complex& t) { return Complex(sigma) + 1.0 / t; });
+  out.vectors = std::move(ritz.vectors);
+  out.vectors.colwise().normalize();
+  return out;
+}
+
+}  // namespace feran::detail
