@@ -14,7 +14,11 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseLU>
 
+#include <fmt/format.h>
+
 #include <feran/core/types.hpp>
+
+#include "state_eigen.hpp"
 
 namespace feran::detail {
 
@@ -37,15 +41,25 @@ class StateShiftInvert {
   void set_shift(const Scalar& sigma) {
     sigma_ = sigma;
     DsM_ = D_ + sigma * M_;
-    // The energy inner product's stiffness: the Hermitian part of K plus a little
-    // mass, so that rigid-body motion has a positive norm.
+    Sparse Q = K_ + sigma * D_ + sigma * sigma * M_;
+    Q.makeCompressed();
+    lu_.analyzePattern(Q);
+    lu_.factorize(Q);
+    ok_ = lu_.info() == Eigen::Success;
+  }
+  bool ok() const { return ok_; }
+
+  // Sets up the energy inner product of apply_inner for the current shift: its
+  // stiffness K_B is the Hermitian part of K plus a little mass, so that rigid-body
+  // motion has a positive norm. Only the Arnoldi factorisations that use it call it.
+  void prepare_inner() {
     Real ratio = 0.0;
     for (Index i = 0; i < n_; ++i)
       if (std::abs(M_.coeff(i, i)) > 0.0) ratio = std::max(ratio, std::abs(K_.coeff(i, i)) / std::abs(M_.coeff(i, i)));
-    const Real s = std::max(std::norm(sigma), 1e-10 * ratio);
+    const Real s = std::max(std::norm(sigma_), 1e-10 * ratio);
     KB_ = Sparse(0.5 * (K_ + Sparse(K_.adjoint()))) + s * M_;
     // An axisymmetric rotor's complex-form K_B and M are real: applied to the real
-    // and imaginary parts at once as a real matrix times n × 2, half the work.
+    // and imaginary parts at once (real_times_complex), half the work.
     real_inner_ = false;
     if constexpr (!std::is_same_v<S, Real>) {
       auto real_part = [](const Sparse& A, SparseMatrix& out) {
@@ -56,13 +70,7 @@ class StateShiftInvert {
       };
       real_inner_ = real_part(KB_, KBr_) && real_part(M_, Mr_);
     }
-    Sparse Q = K_ + sigma * D_ + sigma * sigma * M_;
-    Q.makeCompressed();
-    lu_.analyzePattern(Q);
-    lu_.factorize(Q);
-    ok_ = lu_.info() == Eigen::Success;
   }
-  bool ok() const { return ok_; }
 
   // y = B·x with B = diag(K_B, M): for an undamped rotor (K symmetric, D = ΩG skew)
   // the state operator is skew-adjoint in this energy inner product, and its shift
@@ -71,11 +79,8 @@ class StateShiftInvert {
   void apply_inner(const Scalar* x_in, Scalar* y_out) const {
     if constexpr (!std::is_same_v<S, Real>) {
       if (real_inner_) {
-        using Pairs = Eigen::Matrix<Real, Eigen::Dynamic, 2, Eigen::RowMajor>;
-        const auto* x = reinterpret_cast<const Real*>(x_in);
-        auto* y = reinterpret_cast<Real*>(y_out);
-        Eigen::Map<Pairs>(y, n_, 2).noalias() = KBr_ * Eigen::Map<const Pairs>(x, n_, 2);
-        Eigen::Map<Pairs>(y + 2 * n_, n_, 2).noalias() = Mr_ * Eigen::Map<const Pairs>(x + 2 * n_, n_, 2);
+        real_times_complex(KBr_, x_in, y_out);
+        real_times_complex(Mr_, x_in + n_, y_out + n_);
         return;
       }
     }
@@ -126,8 +131,9 @@ struct RitzPairs {
 // returned — residual |β·e_mᵀy| ≤ tol·|θ|, the criterion of Spectra's
 // restarted solver — or the subspace reaches @p max_size (not converged: the caller
 // falls back to the restarted solver or the real form). With @p energy_inner_product
-// the basis is orthonormal in the operator's energy inner product (apply_inner),
-// otherwise in the Euclidean one. Deterministic: a fixed start vector.
+// the basis is orthonormal in the operator's energy inner product (apply_inner; the
+// caller has called prepare_inner), otherwise in the Euclidean one. Deterministic:
+// a fixed start vector.
 template <class S>
 RitzPairs growing_arnoldi(const StateShiftInvert<S>& op, Index nev, Index n_required, Index max_size, Real tol,
                           bool energy_inner_product) {
@@ -238,5 +244,19 @@ RitzPairs growing_arnoldi(const StateShiftInvert<S>& op, Index nev, Index n_requ
   }
   return out;
 }
+
+// Sets the shift σ of @p op; false, with the reason in @p info, when
+// K + σD + σ²M is singular there.
+template <class S>
+bool set_shift_or_fail(StateShiftInvert<S>& op, Real sigma, SolverInfo& info) {
+  op.set_shift(sigma);
+  if (op.ok()) return true;
+  info.converged = false;
+  info.message = fmt::format("K + σD + σ²M is singular at the shift σ = {} rad/s", sigma);
+  return false;
+}
+
+// Convergence tolerance of the shift-inverted eigenvalues (Spectra's test, relative).
+constexpr Real arnoldi_tolerance = 1e-10;
 
 }  // namespace feran::detail

@@ -152,13 +152,10 @@ SparseMatrix submatrix(const SparseMatrix& A, const std::vector<Index>& dofs, co
   return out;
 }
 
-// y = A·x for a real sparse A and a complex vector x: the real and imaginary parts
-// at once, as A times the n × 2 real matrix the complex array is.
+// y = A·x for a real sparse A and a complex vector x.
 ComplexVector times(const SparseMatrix& A, const ComplexVector& x) {
-  using Pairs = Eigen::Matrix<Real, Eigen::Dynamic, 2, Eigen::RowMajor>;
   ComplexVector y(A.rows());
-  Eigen::Map<Pairs>(reinterpret_cast<Real*>(y.data()), A.rows(), 2).noalias() =
-      A * Eigen::Map<const Pairs>(reinterpret_cast<const Real*>(x.data()), x.size(), 2);
+  detail::real_times_complex(A, x.data(), y.data());
   return y;
 }
 

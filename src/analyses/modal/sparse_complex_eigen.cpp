@@ -14,17 +14,14 @@ StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const Complex
   StateEigenpairs out;
   out.info.method = "shift-invert-arnoldi";
   StateShiftInvert<Complex> op(M, D, K);
-  op.set_shift(sigma);
-  if (!op.ok()) {
-    out.info.converged = false;
-    out.info.message = fmt::format("K + σD + σ²M is singular at the shift σ = {} rad/s", sigma);
-    return out;
-  }
+  if (!set_shift_or_fail(op, sigma, out.info)) return out;
+  op.prepare_inner();
   // Every eigenvalue of the complex problem is a mode of its own (no conjugates to
   // skip): the wanted count and two more, so that real (overdamped, rigid)
   // eigenvalues do not crowd modes out.
   const Index nev = std::min<Index>(2 * n - 1, n_wanted + 2);
-  RitzPairs ritz = growing_arnoldi(op, nev, std::min(nev, n_wanted + 1), std::min<Index>(2 * n, std::max<Index>(3 * nev + 1, 20)), 1e-10, true);
+  const Index max_size = std::min<Index>(2 * n, std::max<Index>(3 * nev + 1, 20));
+  RitzPairs ritz = growing_arnoldi(op, nev, std::min(nev, n_wanted + 1), max_size, arnoldi_tolerance, true);
   out.info.iterations = 1;
   out.info.n_converged = ritz.converged ? ritz.values.size() : 0;
   if (!ritz.converged) {

@@ -34,19 +34,13 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
   StateShiftInvert<Real> op(M, D, K);
   const Index nev = n_eigenvalues(n, n_wanted);
   const Index ncv = arnoldi_subspace_size(n, n_wanted);
-  constexpr Real tol = 1e-10;
-  op.set_shift(sigma);
-  if (!op.ok()) {
-    out.info.converged = false;
-    out.info.message = fmt::format("K + σD + σ²M is singular at the shift σ = {} rad/s", sigma);
-    return out;
-  }
+  if (!set_shift_or_fail(op, sigma, out.info)) return out;
   // First an Arnoldi factorisation grown only as far as the wanted eigenvalues need;
   // when they have not converged within the restarted solver's subspace size,
   // Spectra's implicitly restarted Arnoldi takes over.
   Eigen::VectorXcd values;
   Eigen::MatrixXcd vectors;
-  RitzPairs ritz = growing_arnoldi(op, nev, nev, ncv, tol, false);
+  RitzPairs ritz = growing_arnoldi(op, nev, nev, ncv, arnoldi_tolerance, false);
   if (ritz.converged) {
     out.info.method = "shift-invert-arnoldi";
     out.info.iterations = 1;
@@ -56,7 +50,7 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
   } else {
     Spectra::GenEigsRealShiftSolver<StateShiftInvert<Real>> solver(op, nev, ncv, sigma);
     solver.init();
-    const Index n_conv = solver.compute(Spectra::SortRule::LargestMagn, 1000, tol,
+    const Index n_conv = solver.compute(Spectra::SortRule::LargestMagn, 1000, arnoldi_tolerance,
                                         Spectra::SortRule::LargestMagn);
     out.info.iterations = solver.num_iterations();
     out.info.n_converged = n_conv;

@@ -9,6 +9,15 @@
 
 namespace feran::detail {
 
+// y = A·x for a real sparse A and complex x (both arrays of A.cols()/A.rows()
+// entries): the real and imaginary parts at once, as A times the n × 2 real matrix a
+// complex array is.
+inline void real_times_complex(const SparseMatrix& A, const Complex* x, Complex* y) {
+  using Pairs = Eigen::Matrix<Real, Eigen::Dynamic, 2, Eigen::RowMajor>;
+  Eigen::Map<Pairs>(reinterpret_cast<Real*>(y), A.rows(), 2).noalias() =
+      A * Eigen::Map<const Pairs>(reinterpret_cast<const Real*>(x), A.cols(), 2);
+}
+
 struct StateEigenpairs {
   ComplexVector values;   // eigenvalues p
   ComplexMatrix vectors;  // displacement part φ of each eigenvector (n × count), unit norm
