@@ -370,20 +370,32 @@ ModalResult ModalSolver::solve(Real speed) const {
       }
       detail::StateEigenpairs computed;
       bool solved = false;
-      if (cf) {
+      const detail::DenseSelection selection{count, options_.oscillatory_only, zero_tol};
+      if (!arnoldi && options_.hermitian_form) {
+        // An undamped gyroscopic block: the Hermitian-definite form (either form of
+        // coordinates); the general QR when it does not apply.
+        const std::optional<detail::StateEigenpairs> h =
+            cf ? detail::dense_gyroscopic_eigen(ComplexMatrix(cf->M), ComplexMatrix(cf->D), ComplexMatrix(cf->K),
+                                                selection, true)
+               : detail::dense_gyroscopic_eigen(Matrix(Mb).cast<Complex>(), Matrix(Db).cast<Complex>(),
+                                                Matrix(Kb).cast<Complex>(), selection, false);
+        if (h) {
+          computed = cf ? real_pairs(*h, *cf, zero_tol, rigid_tol) : *h;
+          solved = true;
+        }
+      }
+      if (!solved && cf) {
         // Forward/backward complex coordinates: half the order (the real form if it
         // fails).
         computed = arnoldi ? detail::sparse_complex_eigen(cf->M, cf->D, cf->K, count, sigma)
                            : detail::dense_complex_eigen(ComplexMatrix(cf->M), ComplexMatrix(cf->D),
-                                                         ComplexMatrix(cf->K),
-                                                         {count, options_.oscillatory_only, zero_tol});
+                                                         ComplexMatrix(cf->K), selection);
         solved = computed.info.converged;
         if (solved) computed = real_pairs(computed, *cf, zero_tol, rigid_tol);
       }
       if (!solved)
         computed = arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)
-                           : detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb),
-                                                       {count, options_.oscillatory_only, zero_tol});
+                           : detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb), selection);
       if (constant && computed.info.converged) {
         const std::lock_guard<std::mutex> lock(cache_->mutex);
         cache_->parts.emplace(key, computed);
@@ -412,7 +424,10 @@ ModalResult ModalSolver::solve(Real speed) const {
     } else {
       part = block_modes(wanted, false);
     }
-    if (part.info.method != "dense-qr") pairs.info.method = part.info.method;
+    // The most general method any block needed names the solve.
+    auto rank = [](const std::string& m) { return m == "dense-hermitian" ? 0 : m == "dense-qr" ? 1 : 2; };
+    if (&dofs == &blocks.front() || rank(part.info.method) > rank(pairs.info.method))
+      pairs.info.method = part.info.method;
     pairs.info.iterations += part.info.iterations;
     pairs.info.n_converged += part.info.n_converged;
     if (!part.info.converged && pairs.info.converged) {

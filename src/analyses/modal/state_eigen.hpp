@@ -5,6 +5,8 @@
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/core/types.hpp>
 
+#include <optional>
+
 #include <Eigen/SparseCore>
 
 namespace feran::detail {
@@ -79,5 +81,23 @@ StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix&
 // converged within three vectors per eigenvalue → info.converged = false.
 StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const ComplexSparseMatrix& D,
                                      const ComplexSparseMatrix& K, Index n_wanted, Real sigma);
+
+// A conservative gyroscopic problem — M and K Hermitian positive definite, D
+// skew-Hermitian (gyroscopic terms only: no damping, no circulatory stiffness) — has
+// its eigenvalues on the imaginary axis, p = iω, and with H = iD Hermitian,
+// (−ω²M + ωH + K)x = 0. Linearised with z = (x, ωx) as the Hermitian-definite pencil
+// B·z = (1/ω)·A·z, A = diag(K, M) > 0, B = [[−H, M], [M, 0]], it is solved by a
+// Cholesky factorisation of A and LAPACK's Hermitian eigensolver (zheevd): several
+// times cheaper than the Hessenberg QR of the state matrix, and backward stable for
+// the quadratic problem (real eigenvalues, orthogonal eigenvectors, no spurious
+// damping from round-off). Returns the pairs @p selection picks — counting both
+// signs of ω when @p both_signs (the complex form, where ω < 0 is a backward mode),
+// otherwise only ω > 0 (the real form, where −ω is the conjugate) — with Re p = 0
+// exactly; std::nullopt when the problem is not of this kind: M, D or K not of that
+// symmetry to round-off (1e-12 of the largest entry), K or M not positive definite,
+// or an |ω| below selection.zero_tol (a rigid-body mode: K is singular).
+std::optional<StateEigenpairs> dense_gyroscopic_eigen(const ComplexMatrix& M, const ComplexMatrix& D,
+                                                      const ComplexMatrix& K, const DenseSelection& selection,
+                                                      bool both_signs);
 
 }  // namespace feran::detail

@@ -87,6 +87,11 @@ struct ModalOptions {
   /// coordinates (half the order; detected per decoupled block, see
   /// docs/theory/modal_analysis.md). false: always the real form (for comparison).
   bool complex_form = true;
+  /// Solve a block that is conservative and gyroscopic (no damping, no circulatory
+  /// stiffness, no rigid-body mode; e.g. an undamped rotor at any speed) with dense
+  /// methods as a Hermitian-definite problem (docs/theory/modal_analysis.md): its
+  /// eigenvalues exactly on the imaginary axis. false: always the general QR.
+  bool hermitian_form = true;
 };
 
 /// The modes of a model at one speed: the n_modes smallest by |p|, listed by frequency.
