@@ -16,7 +16,7 @@ namespace feran {
 Real mac(const ComplexVector& a, const ComplexVector& b) {
   const Real na = a.squaredNorm(), nb = b.squaredNorm();
   if (na == 0.0 || nb == 0.0) return 0.0;
-  return std::norm(a.dot(b)) / (na * nb);
+  return abs2(a.dot(b)) / (na * nb);
 }
 
 namespace {
@@ -31,13 +31,13 @@ std::vector<Mode> oscillatory_modes(ModalResult&& r, std::size_t count) {
   for (Mode& m : r.modes)
     if (m.oscillatory) out.push_back(std::move(m));
   std::stable_sort(out.begin(), out.end(), [](const Mode& a, const Mode& b) {
-    return std::abs(a.eigenvalue) < std::abs(b.eigenvalue);
+    return abs2(a.eigenvalue) < abs2(b.eigenvalue);
   });
   if (out.size() > count) {
     // Keep a repeated pair whole (isotropic rotors at rest).
     std::size_t n = count;
     while (n < out.size() &&
-           std::abs(out[n].eigenvalue - out[n - 1].eigenvalue) <= 1e-7 * std::abs(out[n].eigenvalue))
+           magnitude(out[n].eigenvalue - out[n - 1].eigenvalue) <= 1e-7 * magnitude(out[n].eigenvalue))
       ++n;
     out.resize(n);
   }
@@ -63,8 +63,8 @@ Complex predict(const Track& t, Real speed) {
 // eigenvalue from its prediction.
 Real cost(const Track& t, Real speed, const Mode& c) {
   const Complex pred = predict(t, speed);
-  const Real scale = std::max({std::abs(pred), std::abs(c.eigenvalue), 1e-12});
-  return (1.0 - mac(t.shape, c.reduced_shape)) + std::abs(pred - c.eigenvalue) / scale;
+  const Real scale = std::max({magnitude(pred), magnitude(c.eigenvalue), 1e-12});
+  return (1.0 - mac(t.shape, c.reduced_shape)) + magnitude(pred - c.eigenvalue) / scale;
 }
 
 bool lateral_family(ModeType t) { return t == ModeType::lateral || t == ModeType::coupled; }

@@ -56,7 +56,7 @@ namespace {
 
 // Repeated when equal to 1e-7 relative (the criterion of ModalSolver, which
 // re-splits such clusters and keeps them whole).
-bool repeated(Complex a, Complex b) { return std::abs(a - b) <= 1e-7 * std::max(std::abs(a), 1e-300); }
+bool repeated(Complex a, Complex b) { return magnitude(a - b) <= 1e-7 * std::max(magnitude(a), 1e-300); }
 
 Matrix state_matrix(const Matrix& M, const Matrix& D, const Matrix& K) {
   const Index n = M.rows();
@@ -129,13 +129,13 @@ std::vector<Index> select_pairs(const Vector& wr, const Vector& wi, const DenseS
   for (Index j = 0; j < wr.size(); ++j)
     if (wi(j) >= 0.0) order.push_back(j);
   auto p = [&](Index j) { return Complex(wr(j), wi(j)); };
-  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return std::abs(p(a)) < std::abs(p(b)); });
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return magnitude(p(a)) < magnitude(p(b)); });
   std::vector<Index> chosen;
   Index counted = 0;
   Complex last;
   for (Index j : order) {
     const Complex pj = p(j);
-    if (std::abs(pj) < s.zero_tol) {
+    if (magnitude(pj) < s.zero_tol) {
       chosen.push_back(j);
       continue;
     }
@@ -203,13 +203,13 @@ StateEigenpairs all_complex_pairs(ComplexMatrix A, Index n) {
 std::vector<Index> select_complex(const ComplexVector& w, const DenseSelection& s, bool& has_repeated) {
   std::vector<Index> order;
   for (Index j = 0; j < w.size(); ++j) order.push_back(j);
-  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return std::abs(w(a)) < std::abs(w(b)); });
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return magnitude(w(a)) < magnitude(w(b)); });
   std::vector<Index> chosen;
   Index counted = 0;
   Complex last;
   for (Index j : order) {
     const Complex q = mode_value(w(j));
-    if (std::abs(q) < s.zero_tol) {
+    if (magnitude(q) < s.zero_tol) {
       chosen.push_back(j);
       continue;
     }

@@ -64,7 +64,7 @@ void split_repeated(ComplexVector& values, ComplexMatrix& vectors, const DofMap&
     // Repeated when equal to 1e-7 relative: far above round-off of the QR
     // algorithm (~1e-13 here), far below any physical split.
     while (end < order.size() &&
-           std::abs(values(order[end]) - p0) <= 1e-7 * std::max(std::abs(p0), 1e-300))
+           magnitude(values(order[end]) - p0) <= 1e-7 * std::max(magnitude(p0), 1e-300))
       ++end;
     if (end - start >= 2 && p0.imag() > 0.0) {
       ComplexMatrix phi(vectors.rows(), static_cast<Index>(end - start));
@@ -96,11 +96,11 @@ ComplexVector normalise(const ComplexVector& full, ModeType type) {
     const bool wanted = type == ModeType::axial       ? d == Dof::u
                         : type == ModeType::torsional ? d == Dof::rx
                                                       : (d == Dof::v || d == Dof::w);
-    if (wanted && std::abs(full(i)) > best_abs) best = i, best_abs = std::abs(full(i));
+    if (wanted && magnitude(full(i)) > best_abs) best = i, best_abs = magnitude(full(i));
   }
   if (best_abs == 0.0)
     for (Index i = 0; i < full.size(); ++i)
-      if (std::abs(full(i)) > best_abs) best = i, best_abs = std::abs(full(i));
+      if (magnitude(full(i)) > best_abs) best = i, best_abs = magnitude(full(i));
   if (best < 0) return full;
   return full / full(best);
 }
@@ -162,37 +162,67 @@ ComplexVector times(const SparseMatrix& A, const ComplexVector& x) {
 // The complex (forward/backward) form of a block whose DOFs pair up (v with w, ry
 // with rz) and whose matrices commute with the quarter turn J about the spin axis
 // (J: v → w → −v, ry → rz → −ry), i.e. an axisymmetric rotor: on the subspace
-// J·x = i·x, spanned by the columns (e_v − i·e_w)/√2 and (e_ry − i·e_rz)/√2 of U,
-// the problem is Uᴴ(p²M + pD + K)U·y = 0, half the size (state_eigen.hpp).
+// J·x = i·x, spanned by the columns (e_a − i·e_b)/√2 of U for each pair (a, b), the
+// problem is Uᴴ(p²M + pD + K)U·y = 0, half the size (state_eigen.hpp). Sparse
+// matrices for Arnoldi, dense ones for the dense solvers.
 struct ComplexForm {
-  detail::ComplexSparseMatrix U, M, D, K;
+  std::vector<Index> a, b;  // the block's DOFs of each complex coordinate (v or ry, w or rz)
+  detail::ComplexSparseMatrix M, D, K;
+  ComplexMatrix Md, Dd, Kd;
+
+  // x = U·y.
+  ComplexVector expand(const ComplexVector& y) const {
+    const Real r = 1.0 / std::sqrt(2.0);
+    ComplexVector x(static_cast<Index>(2 * a.size()));
+    for (std::size_t c = 0; c < a.size(); ++c) {
+      const Complex yc = y(static_cast<Index>(c));
+      x(a[c]) = r * yc;
+      x(b[c]) = Complex(0.0, -r) * yc;
+    }
+    return x;
+  }
 };
 
+// The pairing of the block's DOFs (empty unless every DOF has its twin in the block).
+std::optional<ComplexForm> complex_pairs(const std::vector<Index>& dofs, const std::vector<Index>& local,
+                                         const std::vector<Index>& twin) {
+  const auto nb = static_cast<Index>(dofs.size());
+  if (nb < 2 || nb % 2 != 0) return std::nullopt;
+  ComplexForm f;
+  for (Index i = 0; i < nb; ++i) {
+    const Index t = twin[static_cast<std::size_t>(dofs[static_cast<std::size_t>(i)])];
+    if (t == -1) continue;  // the second of a pair
+    if (t < 0) return std::nullopt;
+    const Index j = local[static_cast<std::size_t>(t)];
+    if (j < 0) return std::nullopt;  // its twin is in another block
+    f.a.push_back(i);
+    f.b.push_back(j);
+  }
+  if (static_cast<Index>(2 * f.a.size()) != nb) return std::nullopt;
+  return f;
+}
+
+// Commuting with J to round-off (an exactly axisymmetric model gives zero or a few
+// ulps): the entries of AJ − JA, which are A(a,a') − A(b,b') and A(a,b') + A(b,a')
+// over the pairs, at most 1e-12 of A's largest entry.
 std::optional<ComplexForm> complex_form(const std::vector<Index>& dofs, const std::vector<Index>& local,
                                         const std::vector<Index>& twin, const SparseMatrix& M,
                                         const SparseMatrix& D, const SparseMatrix& K) {
-  const auto nb = static_cast<Index>(dofs.size());
-  if (nb < 2 || nb % 2 != 0) return std::nullopt;
+  std::optional<ComplexForm> f = complex_pairs(dofs, local, twin);
+  if (!f) return std::nullopt;
+  const auto nb = static_cast<Index>(dofs.size()), nc = static_cast<Index>(f->a.size());
   std::vector<Eigen::Triplet<Real>> jt;
   std::vector<Eigen::Triplet<Complex>> ut;
   const Real r = 1.0 / std::sqrt(2.0);
-  Index c = 0;
-  for (Index a = 0; a < nb; ++a) {
-    const Index t = twin[static_cast<std::size_t>(dofs[static_cast<std::size_t>(a)])];
-    if (t == -1) continue;  // the second of a pair
-    if (t < 0) return std::nullopt;
-    const Index b = local[static_cast<std::size_t>(t)];
-    if (b < 0) return std::nullopt;  // its twin is in another block
+  for (Index c = 0; c < nc; ++c) {
+    const Index a = f->a[static_cast<std::size_t>(c)], b = f->b[static_cast<std::size_t>(c)];
     jt.emplace_back(b, a, 1.0);
     jt.emplace_back(a, b, -1.0);
     ut.emplace_back(a, c, Complex(r, 0.0));
     ut.emplace_back(b, c, Complex(0.0, -r));
-    ++c;
   }
-  if (2 * c != nb) return std::nullopt;
   SparseMatrix J(nb, nb);
   J.setFromTriplets(jt.begin(), jt.end());
-  // Commuting to round-off: an exactly axisymmetric model gives zero or a few ulps.
   auto commutes = [&](const SparseMatrix& A) {
     const SparseMatrix C = A * J - J * A;
     const Real a_max = A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0;
@@ -200,38 +230,61 @@ std::optional<ComplexForm> complex_form(const std::vector<Index>& dofs, const st
     return c_max <= 1e-12 * a_max;
   };
   if (!commutes(M) || !commutes(D) || !commutes(K)) return std::nullopt;
-  ComplexForm f;
-  f.U.resize(nb, c);
-  f.U.setFromTriplets(ut.begin(), ut.end());
-  const detail::ComplexSparseMatrix Uh = f.U.adjoint();
-  f.M = Uh * (M.cast<Complex>() * f.U);
-  f.D = Uh * (D.cast<Complex>() * f.U);
-  f.K = Uh * (K.cast<Complex>() * f.U);
+  detail::ComplexSparseMatrix U(nb, nc);
+  U.setFromTriplets(ut.begin(), ut.end());
+  const detail::ComplexSparseMatrix Uh = U.adjoint();
+  f->M = Uh * (M.cast<Complex>() * U);
+  f->D = Uh * (D.cast<Complex>() * U);
+  f->K = Uh * (K.cast<Complex>() * U);
+  return f;
+}
+
+// The same from dense matrices, entry by entry: Uᴴ·A·U has entries
+// (A(a,a') + A(b,b'))/2 − i·(A(a,b') − A(b,a'))/2.
+std::optional<ComplexForm> dense_complex_form(const std::vector<Index>& dofs, const std::vector<Index>& local,
+                                              const std::vector<Index>& twin, const Matrix& M, const Matrix& D,
+                                              const Matrix& K) {
+  std::optional<ComplexForm> f = complex_pairs(dofs, local, twin);
+  if (!f) return std::nullopt;
+  const auto nc = static_cast<Index>(f->a.size());
+  auto transform = [&](const Matrix& A, ComplexMatrix& Ac) {
+    const Real tol = 1e-12 * (A.size() > 0 ? A.cwiseAbs().maxCoeff() : 0.0);
+    Ac.resize(nc, nc);
+    for (Index j = 0; j < nc; ++j) {
+      const Index a2 = f->a[static_cast<std::size_t>(j)], b2 = f->b[static_cast<std::size_t>(j)];
+      for (Index i = 0; i < nc; ++i) {
+        const Index a1 = f->a[static_cast<std::size_t>(i)], b1 = f->b[static_cast<std::size_t>(i)];
+        const Real aa = A(a1, a2), bb = A(b1, b2), ab = A(a1, b2), ba = A(b1, a2);
+        if (std::abs(aa - bb) > tol || std::abs(ab + ba) > tol) return false;
+        Ac(i, j) = Complex(0.5 * (aa + bb), -0.5 * (ab - ba));
+      }
+    }
+    return true;
+  };
+  if (!transform(M, f->Md) || !transform(D, f->Dd) || !transform(K, f->Kd)) return std::nullopt;
   return f;
 }
 
 // The real problem's eigenpairs (Im p ≥ 0) from the complex form's: w with Im w > 0
 // is the mode (w, U·y); Im w < 0 the mode (w̄, conj(U·y)) on the conjugate subspace;
 // a real w (within round-off of the complex arithmetic, 1e-10 relative) or a
-// rigid-body one (|w| < @p zero_tol and strain energy yᴴK_c·y below @p rigid_tol
-// times the kinetic yᴴM_c·y, the criterion of ModalSolver) a double real eigenvalue
-// with the real vectors Re(U·y) and Im(U·y).
-detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const ComplexForm& f, Real zero_tol,
-                                   Real rigid_tol) {
-  const detail::ComplexSparseMatrix& U = f.U;
+// rigid-body one (|w| < @p zero_tol and strain energy below @p rigid_tol times the
+// kinetic, of the block's real @p M and @p K, the criterion of ModalSolver) a double
+// real eigenvalue with the real vectors Re(U·y) and Im(U·y).
+detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const ComplexForm& f, const SparseMatrix& M,
+                                   const SparseMatrix& K, Real zero_tol, Real rigid_tol) {
   detail::StateEigenpairs out;
   out.info = c.info;
   std::vector<Complex> values;
   std::vector<ComplexVector> vectors;
   for (Index j = 0; j < c.values.size(); ++j) {
     const Complex w = c.values(j);
-    const ComplexVector phi = U * c.vectors.col(j);
+    const ComplexVector phi = f.expand(c.vectors.col(j));
     auto rigid = [&] {
-      const ComplexVector y = c.vectors.col(j);
-      const Real kinetic = std::real(y.dot(f.M * y)), strain = std::real(y.dot(f.K * y));
+      const Real kinetic = std::real(phi.dot(times(M, phi))), strain = std::real(phi.dot(times(K, phi)));
       return kinetic > 0.0 && strain < rigid_tol * kinetic;
     };
-    if (std::abs(w.imag()) <= 1e-10 * std::abs(w) || (std::abs(w) < zero_tol && rigid())) {
+    if (std::abs(w.imag()) <= 1e-10 * magnitude(w) || (magnitude(w) < zero_tol && rigid())) {
       for (const Vector& part : {Vector(phi.real()), Vector(phi.imag())}) {
         const Real norm = part.norm();
         if (norm == 0.0) continue;
@@ -247,7 +300,7 @@ detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const Compl
     }
   }
   out.values.resize(static_cast<Index>(values.size()));
-  out.vectors.resize(U.rows(), static_cast<Index>(values.size()));
+  out.vectors.resize(static_cast<Index>(2 * f.a.size()), static_cast<Index>(values.size()));
   for (std::size_t k = 0; k < values.size(); ++k) {
     out.values(static_cast<Index>(k)) = values[k];
     out.vectors.col(static_cast<Index>(k)) = vectors[k];
@@ -320,7 +373,9 @@ EigenSolver ModalSolver::resolved_solver() const {
 }
 
 ModalResult ModalSolver::solve(Real speed) const {
-  const SystemMatrices sys = assembler_.at(speed);
+  // The assembled matrices themselves when no element depends on speed (no copy).
+  const SystemMatrices varying = assembler_.speed_dependent() ? assembler_.at(speed) : SystemMatrices{};
+  const SystemMatrices& sys = assembler_.speed_dependent() ? varying : assembler_.constant();
   const SparseMatrix D = sys.damping(speed);
   const SparseMatrix K = sys.stiffness(speed);
   const Index n = sys.M.rows();
@@ -354,8 +409,16 @@ ModalResult ModalSolver::solve(Real speed) const {
                        Kb = submatrix(K, dofs, local);
     const Index wanted_b = std::min(wanted, nb - 1);
     const bool arnoldi_block = sparse && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb;
-    const std::optional<ComplexForm> cf =
-        options_.complex_form ? complex_form(dofs, local, twin_, Mb, Db, Kb) : std::nullopt;
+    // Dense copies for the dense solvers.
+    Matrix Md, Dd, Kd;
+    if (!arnoldi_block) {
+      Md = Mb;
+      Dd = Db;
+      Kd = Kb;
+    }
+    const std::optional<ComplexForm> cf = !options_.complex_form ? std::nullopt
+                                          : arnoldi_block ? complex_form(dofs, local, twin_, Mb, Db, Kb)
+                                                          : dense_complex_form(dofs, local, twin_, Md, Dd, Kd);
     any_complex = any_complex || cf.has_value();
     for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
     const bool constant = std::none_of(dofs.begin(), dofs.end(),
@@ -375,12 +438,11 @@ ModalResult ModalSolver::solve(Real speed) const {
         // An undamped gyroscopic block: the Hermitian-definite form (either form of
         // coordinates); the general QR when it does not apply.
         const std::optional<detail::StateEigenpairs> h =
-            cf ? detail::dense_gyroscopic_eigen(ComplexMatrix(cf->M), ComplexMatrix(cf->D), ComplexMatrix(cf->K),
-                                                selection, true)
-               : detail::dense_gyroscopic_eigen(Matrix(Mb).cast<Complex>(), Matrix(Db).cast<Complex>(),
-                                                Matrix(Kb).cast<Complex>(), selection, false);
+            cf ? detail::dense_gyroscopic_eigen(cf->Md, cf->Dd, cf->Kd, selection, true)
+               : detail::dense_gyroscopic_eigen(Md.cast<Complex>(), Dd.cast<Complex>(), Kd.cast<Complex>(), selection,
+                                                false);
         if (h) {
-          computed = cf ? real_pairs(*h, *cf, zero_tol, rigid_tol) : *h;
+          computed = cf ? real_pairs(*h, *cf, Mb, Kb, zero_tol, rigid_tol) : *h;
           solved = true;
         }
       }
@@ -388,14 +450,13 @@ ModalResult ModalSolver::solve(Real speed) const {
         // Forward/backward complex coordinates: half the order (the real form if it
         // fails).
         computed = arnoldi ? detail::sparse_complex_eigen(cf->M, cf->D, cf->K, count, sigma)
-                           : detail::dense_complex_eigen(ComplexMatrix(cf->M), ComplexMatrix(cf->D),
-                                                         ComplexMatrix(cf->K), selection);
+                           : detail::dense_complex_eigen(cf->Md, cf->Dd, cf->Kd, selection);
         solved = computed.info.converged;
-        if (solved) computed = real_pairs(computed, *cf, zero_tol, rigid_tol);
+        if (solved) computed = real_pairs(computed, *cf, Mb, Kb, zero_tol, rigid_tol);
       }
       if (!solved)
         computed = arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)
-                           : detail::dense_state_eigen(Matrix(Mb), Matrix(Db), Matrix(Kb), selection);
+                           : detail::dense_state_eigen(Md, Dd, Kd, selection);
       if (constant && computed.info.converged) {
         const std::lock_guard<std::mutex> lock(cache_->mutex);
         cache_->parts.emplace(key, computed);
@@ -417,7 +478,7 @@ ModalResult ModalSolver::solve(Real speed) const {
       if (first) {
         std::vector<Real> magnitudes;
         for (const Complex& p : part.values)
-          if (!options_.oscillatory_only || p.imag() > 0.0) magnitudes.push_back(std::abs(p));
+          if (!options_.oscillatory_only || p.imag() > 0.0) magnitudes.push_back(magnitude(p));
         std::sort(magnitudes.begin(), magnitudes.end());
         if (static_cast<Index>(magnitudes.size()) >= wanted) cutoff = magnitudes[static_cast<std::size_t>(wanted - 1)];
       }
@@ -445,7 +506,6 @@ ModalResult ModalSolver::solve(Real speed) const {
   result.complex_form = any_complex;
   split_repeated(pairs.values, pairs.vectors, assembler_.dof_map());
 
-  const SparseMatrix Ksym = 0.5 * (sys.K + SparseMatrix(sys.K.transpose()));
   const SparseMatrix& T = assembler_.dof_map().transformation();
 
   for (Index j = 0; j < pairs.values.size(); ++j) {
@@ -453,15 +513,15 @@ ModalResult ModalSolver::solve(Real speed) const {
     const ComplexVector phi = pairs.vectors.col(j);
     const ComplexVector Mphi = times(sys.M, phi);
     const Real kinetic = phi.dot(Mphi).real();
-    const Real strain = phi.dot(times(Ksym, phi)).real();
+    const Real strain = phi.dot(times(sys.K, phi)).real();  // of K's symmetric part
     mode.rigid_body = kinetic > 0 && strain / kinetic < rigid_tol;
     Complex p = pairs.values(j);
-    if (mode.rigid_body && std::abs(p) < zero_tol) p = 0.0;
+    if (mode.rigid_body && magnitude(p) < zero_tol) p = 0.0;
     mode.eigenvalue = p;
     mode.oscillatory = p.imag() > 0.0;
     mode.frequency_hz = p.imag() / (2.0 * pi);
     // A zero eigenvalue (rigid-body motion) has no damping ratio.
-    mode.damping_ratio = std::abs(p) > 0 ? -p.real() / std::abs(p) : std::numeric_limits<Real>::quiet_NaN();
+    mode.damping_ratio = magnitude(p) > 0 ? -p.real() / magnitude(p) : std::numeric_limits<Real>::quiet_NaN();
     if (mode.oscillatory) mode.log_decrement = 2.0 * pi * (-p.real()) / p.imag();
 
     Real fam[3] = {0, 0, 0};
@@ -492,9 +552,7 @@ ModalResult ModalSolver::solve(Real speed) const {
   // The lowest modes are those nearest the origin of the complex plane: sorting by
   // |p| keeps heavily overdamped modes (p far out on the negative real axis, with a
   // small imaginary part under rotating damping) from displacing the physical ones.
-  auto by_magnitude = [](const Mode& a, const Mode& b) {
-    return std::abs(a.eigenvalue) < std::abs(b.eigenvalue);
-  };
+  auto by_magnitude = [](const Mode& a, const Mode& b) { return abs2(a.eigenvalue) < abs2(b.eigenvalue); };
   std::stable_sort(result.modes.begin(), result.modes.end(), by_magnitude);
   const Index limit = options_.n_modes > 0 ? options_.n_modes
                       : resolved_solver() == EigenSolver::sparse ? 12 : 0;
@@ -502,8 +560,8 @@ ModalResult ModalSolver::solve(Real speed) const {
     auto keep = static_cast<std::size_t>(limit);
     // Keep a repeated pair whole (isotropic rotors at rest), as split_repeated does.
     while (options_.oscillatory_only && keep < result.modes.size() &&
-           std::abs(result.modes[keep].eigenvalue - result.modes[keep - 1].eigenvalue) <=
-               1e-7 * std::abs(result.modes[keep].eigenvalue))
+           magnitude(result.modes[keep].eigenvalue - result.modes[keep - 1].eigenvalue) <=
+               1e-7 * magnitude(result.modes[keep].eigenvalue))
       ++keep;
     result.modes.resize(keep);
   }

@@ -17,8 +17,8 @@ std::pair<Complex, Complex> orbit_pair(const Eigen::Ref<const ComplexVector>& s,
 bool translations_vanish(const Eigen::Ref<const ComplexVector>& s) {
   Real trans = 0, tilt = 0;
   for (Index node = 0; node < s.size() / dofs_per_node; ++node) {
-    trans = std::max({trans, std::abs(s(global_dof(node, Dof::v))), std::abs(s(global_dof(node, Dof::w)))});
-    tilt = std::max({tilt, std::abs(s(global_dof(node, Dof::ry))), std::abs(s(global_dof(node, Dof::rz)))});
+    trans = std::max({trans, magnitude(s(global_dof(node, Dof::v))), magnitude(s(global_dof(node, Dof::w)))});
+    tilt = std::max({tilt, magnitude(s(global_dof(node, Dof::ry))), magnitude(s(global_dof(node, Dof::rz)))});
   }
   return trans <= 1e-9 * tilt;
 }
@@ -32,8 +32,8 @@ WhirlResult classify_whirl(const ComplexVector& shape) {
   Real peak = 0.0;
   for (Index node = 0; node < n_nodes; ++node) {
     const auto [V, W] = orbit_pair(shape, node, tilt);
-    rf[static_cast<std::size_t>(node)] = std::abs(V + Complex(0, 1) * W) / 2.0;
-    rb[static_cast<std::size_t>(node)] = std::abs(V - Complex(0, 1) * W) / 2.0;
+    rf[static_cast<std::size_t>(node)] = magnitude(V + Complex(0, 1) * W) / 2.0;
+    rb[static_cast<std::size_t>(node)] = magnitude(V - Complex(0, 1) * W) / 2.0;
     peak = std::max(peak, rf[static_cast<std::size_t>(node)] + rb[static_cast<std::size_t>(node)]);
   }
   WhirlResult out;
