@@ -4,6 +4,7 @@
 #include <map>
 
 #include <dlfcn.h>
+#include <malloc.h>
 
 #include <CLI/CLI.hpp>
 
@@ -25,10 +26,25 @@ void single_threaded_blas() {
   using Shutdown = int (*)();
   if (void* f = dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) reinterpret_cast<Shutdown>(f)();
 }
+
+// glibc returns freed memory at the top of a heap to the system once more than
+// 128 KiB are free there, and the next growth faults the pages in again; a sweep
+// that allocates and frees its per-speed matrices did this at nearly every speed, in
+// every thread (a fifth of a 100-speed Campbell diagram of a small rotor). Keeping
+// up to 256 MiB for reuse and growing in 32 MiB steps of address space (pages are
+// only resident once touched) avoids it. Fixing the trim threshold also fixes the
+// size above which blocks are mapped apart (and unmapped when freed): 32 MiB, the
+// largest allowed, so that a large model's per-speed sparse matrices stay in the heap.
+void keep_freed_memory() {
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  mallopt(M_TOP_PAD, 32 << 20);
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   single_threaded_blas();
+  keep_freed_memory();
   CLI::App app{
       "feran: finite-element rotor dynamics.\n"
       "Reads a rotor model (TOML, docs/model-format.md) and computes natural frequencies,\n"
