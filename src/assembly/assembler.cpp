@@ -34,17 +34,37 @@ void add_element(const Element& e, const OperatingPoint& op, FullTriplets& t) {
   if (lm.loss_factor != 0.0) scatter(lm.dofs, lm.loss_factor * lm.K, t.Kh);
 }
 
-SparseMatrix reduce(const Triplets& triplets, const SparseMatrix& T) {
-  SparseMatrix full(T.rows(), T.rows());
-  full.setFromTriplets(triplets.begin(), triplets.end());
-  SparseMatrix reduced = SparseMatrix(T.transpose()) * full * T;
-  reduced.prune(0.0);
-  return reduced;
+using Rows = std::vector<std::vector<std::pair<Index, Real>>>;
+
+Rows transformation_rows(const SparseMatrix& T_in) {
+  const Eigen::SparseMatrix<Real, Eigen::RowMajor> T = T_in;
+  Rows rows(static_cast<std::size_t>(T.rows()));
+  for (Index r = 0; r < T.rows(); ++r)
+    for (Eigen::SparseMatrix<Real, Eigen::RowMajor>::InnerIterator it(T, r); it; ++it)
+      rows[static_cast<std::size_t>(r)].emplace_back(it.col(), it.value());
+  return rows;
 }
 
-SystemMatrices reduce(const FullTriplets& t, const SparseMatrix& T) {
-  return {reduce(t.M, T), reduce(t.C, T),  reduce(t.K, T), reduce(t.G, T),
-          reduce(t.Ci, T), reduce(t.Ki, T), reduce(t.Kh, T)};
+// Tᵀ·A·T from A's triplets (full DOFs), entry by entry: (i, j, v) adds T(i,a)·T(j,b)·v
+// to (a, b) for the entries of rows i and j of T. A fixed DOF's row is empty (its
+// entries drop out); a plain DOF's row is one weight 1 (the entry moves, its value
+// unchanged); a rigid link's slave row spreads it over the master's DOFs. Explicit
+// zeros (summed or given) are removed.
+SparseMatrix reduce(const Triplets& triplets, const Rows& rows, Index n) {
+  Triplets reduced;
+  reduced.reserve(triplets.size());
+  for (const Eigen::Triplet<Real>& t : triplets)
+    for (const auto& [a, ta] : rows[static_cast<std::size_t>(t.row())])
+      for (const auto& [b, tb] : rows[static_cast<std::size_t>(t.col())]) reduced.emplace_back(a, b, ta * tb * t.value());
+  SparseMatrix out(n, n);
+  out.setFromTriplets(reduced.begin(), reduced.end());
+  out.prune(0.0);
+  return out;
+}
+
+SystemMatrices reduce(const FullTriplets& t, const Rows& rows, Index n) {
+  return {reduce(t.M, rows, n),  reduce(t.C, rows, n),  reduce(t.K, rows, n), reduce(t.G, rows, n),
+          reduce(t.Ci, rows, n), reduce(t.Ki, rows, n), reduce(t.Kh, rows, n)};
 }
 }  // namespace
 
@@ -52,7 +72,7 @@ SparseMatrix SystemMatrices::damping(Real speed) const { return C + Ci + speed *
 
 SparseMatrix SystemMatrices::stiffness(Real speed) const { return K + speed * Ki; }
 
-Assembler::Assembler(const Model& model) : dofs_(model) {
+Assembler::Assembler(const Model& model) : dofs_(model), rows_(transformation_rows(dofs_.transformation())) {
   FullTriplets t;
   for (const Element& e : model.elements) {
     if (e.speed_dependent())
@@ -60,20 +80,15 @@ Assembler::Assembler(const Model& model) : dofs_(model) {
     else
       add_element(e, OperatingPoint{}, t);
   }
-  constant_ = reduce(t, dofs_.transformation());
+  constant_ = reduce(t, rows_, dofs_.n_reduced());
   build_variable_scatter();
 }
 
 void Assembler::build_variable_scatter() {
   // Each local DOF i maps to the reduced DOFs of row i of T; a local entry (i, j)
   // touches every (a, b) with T(i, a)·T(j, b) ≠ 0.
-  const Eigen::SparseMatrix<Real, Eigen::RowMajor> T = dofs_.transformation();
-  const Index n = T.cols();
-  std::vector<std::vector<std::pair<Index, Real>>> rows(static_cast<std::size_t>(T.rows()));
-  for (Index r = 0; r < T.rows(); ++r)
-    for (Eigen::SparseMatrix<Real, Eigen::RowMajor>::InnerIterator it(T, r); it; ++it)
-      rows[static_cast<std::size_t>(r)].emplace_back(it.col(), it.value());
-  auto row = [&](Index dof) -> const std::vector<std::pair<Index, Real>>& { return rows[static_cast<std::size_t>(dof)]; };
+  const Index n = dofs_.n_reduced();
+  auto row = [&](Index dof) -> const std::vector<std::pair<Index, Real>>& { return rows_[static_cast<std::size_t>(dof)]; };
 
   std::vector<std::vector<Index>> element_dofs;
   Triplets pattern;
@@ -140,7 +155,7 @@ void Assembler::variable_values(Real speed, SystemMatrices& out) const {
 SystemMatrices Assembler::variable_at(Real speed) const {
   FullTriplets t;
   for (const Element& e : speed_dependent_elements_) add_element(e, OperatingPoint{speed}, t);
-  return reduce(t, dofs_.transformation());
+  return reduce(t, rows_, dofs_.n_reduced());
 }
 
 SystemMatrices Assembler::at(Real speed) const {

@@ -93,6 +93,16 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
   // a natural frequency 10⁻⁶ times the highest one, far above round-off (~1e-16·λ_max).
   const Real rigid_tol = 1e-12 * lambda_max;
 
+  // Sylvester's law of inertia: an LDLᵀ factorisation of K − τ·M has as many negative
+  // pivots as (K, M) has eigenvalues below τ. With τ = rigid_tol and every pivot
+  // positive, no motion can pass the Rayleigh-quotient test below (Ritz values bound
+  // the lowest eigenvalues from above): one factorisation instead of the subspace
+  // iteration, for the usual model held by its bearings.
+  {
+    const Eigen::SimplicialLDLT<SparseMatrix> inertia(SparseMatrix(K - rigid_tol * M));
+    if (inertia.info() == Eigen::Success && (inertia.vectorD().array() > 0.0).all()) return Matrix(n, 0);
+  }
+
   Eigen::SimplicialLDLT<SparseMatrix> shifted(K + mu * M);
   if (shifted.info() != Eigen::Success)
     throw ModelStructureError("the stiffness matrix could not be factorised (is it indefinite?)");

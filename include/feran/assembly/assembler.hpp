@@ -50,6 +50,9 @@ class Assembler {
   void build_variable_scatter();
 
   DofMap dofs_;
+  /// Row r of the transformation T (full DOF r in terms of the reduced DOFs): its
+  /// (reduced DOF, weight) entries; empty for a fixed DOF.
+  std::vector<std::vector<std::pair<Index, Real>>> rows_;
   SystemMatrices constant_;
   std::vector<Element> speed_dependent_elements_;
   /// Where a local entry of a speed-dependent element lands in the pattern of

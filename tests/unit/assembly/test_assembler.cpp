@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <optional>
+
 #include <Eigen/Eigenvalues>
 
 #include <feran/assembly/assembler.hpp>
@@ -129,6 +132,45 @@ TEST(Checks, NamesTheFreeMotions) {
   }
   m.options.free_motions = {FreeMotion::axial, FreeMotion::torsion};
   EXPECT_NO_THROW(check_model(m, Assembler(m)));
+}
+
+// The null space of K relative to M holds the motions with λ = xᵀKx/xᵀMx below
+// τ = 1e-12·λ_max (λ_max = max K_ii/M_ii). A rotor on two bearings of stiffness k has a
+// translation and a tilt per bending plane with λ between about 0.02·k and 0.12·k (m ≈
+// 107 kg, transverse inertia ≈ 9.5 kg m² about the middle, bearings 1.5 m apart):
+// bearings of 1e-3·τ N/m make four rigid motions, of 1e3·τ N/m none, as do the real
+// 1 MN/m ones and, without bearings, four again — on a coarse and a fine mesh (λ_max
+// 1.3e9 and 9.1e12). The usual case (none) is decided by the inertia of K − τM, a
+// rigid one by subspace iteration: both must agree with the criterion.
+TEST(Checks, NullSpaceFollowsTheRigidBodyCriterion) {
+  for (int n_el : {6, 501}) {
+    auto on_bearings = [&](std::optional<Real> k) {
+      Model m = test::friswell_5_9_1(n_el);
+      m.elements.erase(std::remove_if(m.elements.begin(), m.elements.end(),
+                                      [](const Element& e) { return e.kind() == "spring_damper"; }),
+                       m.elements.end());
+      if (k) {
+        test::add_isotropic_bearing(m, 0, *k);
+        test::add_isotropic_bearing(m, m.n_nodes() - 1, *k);
+      }
+      return m;
+    };
+    const SystemMatrices free_sys = Assembler(on_bearings(std::nullopt)).at(0.0);
+    Real lambda_max = 0.0;
+    for (Index i = 0; i < free_sys.M.rows(); ++i)
+      lambda_max = std::max(lambda_max, free_sys.K.coeff(i, i) / free_sys.M.coeff(i, i));
+    const Real tau = 1e-12 * lambda_max;
+    for (const auto& [k, expected] : std::vector<std::pair<std::optional<Real>, Index>>{
+             {std::nullopt, 4}, {1e-3 * tau, 4}, {1e3 * tau, 0}, {1e6, 0}}) {
+      const SystemMatrices sys = Assembler(on_bearings(k)).at(0.0);
+      const Matrix N = stiffness_null_space(sys.K, sys.M);
+      EXPECT_EQ(N.cols(), expected) << n_el << " elements, bearings " << (k ? *k : 0.0) << " N/m";
+      for (Index j = 0; j < N.cols(); ++j) {
+        const Vector x = N.col(j);
+        EXPECT_LT(x.dot(sys.K * x) / x.dot(sys.M * x), tau) << n_el << " elements, vector " << j;
+      }
+    }
+  }
 }
 
 // A shaft on a single isotropic bearing can pivot about it: the lateral free motion
