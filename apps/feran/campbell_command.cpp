@@ -71,7 +71,7 @@ Runner add_campbell_command(CLI::App& app) {
     options.modal.solver = parse_solver_name(args->solver);
     options.n_threads = args->threads;
 
-    const CampbellResult result = run_campbell(file.model, options);
+    const CampbellResult result = run_campbell(file.model, options, file.assembler);
     const ResultSource source{file.path, file.title};
     write_if_asked(args->out.json_path, [&] { return campbell_json(result, options, source); });
     write_if_asked(args->out.csv_path, [&] { return campbell_csv(result); });

@@ -56,7 +56,7 @@ Runner add_modal_command(CLI::App& app) {
     options.solver = solver_from(args->solver);
     options.n_modes = args->modes > 0 ? args->modes : file.modal.modes.value_or(0);
     options.shapes = args->shapes;
-    const ModalResult result = run_modal(file.model, speed, options);
+    const ModalResult result = run_modal(file.model, speed, options, file.assembler);
     const ResultSource source{file.path, file.title};
     write_if_asked(args->out.json_path, modal_json(result, file.model, source, args->shapes));
     write_if_asked(args->out.csv_path, modal_csv(result));

@@ -1345,8 +1345,9 @@ Index ModelBuilder::resolve_spring(const toml::node& n, const std::string& name,
 
 void ModelBuilder::check_structure() {
   try {
-    const Assembler assembler(model_);
-    check_model(model_, assembler);
+    auto assembler = std::make_shared<const Assembler>(model_);
+    check_model(model_, *assembler);
+    out_.assembler = std::move(assembler);
   } catch (const ModelStructureError& e) {
     const long node = e.node();
     const SourceLocation at = node >= 0 && node < static_cast<long>(out_.node_locations.size())

@@ -2,6 +2,7 @@
 /// @file
 /// Reads a model file (TOML, format in docs/model-format.md) into a Model.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,6 +16,8 @@
 #include <feran/model/model.hpp>
 
 namespace feran {
+
+class Assembler;  // feran/assembly/assembler.hpp
 
 /// Defaults for a Campbell diagram given in the model file's [campbell] table.
 /// Empty members were not given.
@@ -87,6 +90,9 @@ struct RunupDefaults {
 /// A model file as read: the model and the analysis defaults it states.
 struct ModelFile {
   Model model;
+  /// The model as the reader's check assembled it: analyses of this very model may
+  /// reuse it instead of assembling again (not after changing the model).
+  std::shared_ptr<const Assembler> assembler;
   std::string path;   ///< the path the file was read from (or named for messages)
   std::string title;  ///< the file's title (also model.name); may be empty
   ModalDefaults modal;

@@ -256,7 +256,4 @@ bool set_shift_or_fail(StateShiftInvert<S>& op, Real sigma, SolverInfo& info) {
   return false;
 }
 
-// Convergence tolerance of the shift-inverted eigenvalues (Spectra's test, relative).
-constexpr Real arnoldi_tolerance = 1e-10;
-
 }  // namespace feran::detail

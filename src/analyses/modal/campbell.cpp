@@ -83,7 +83,8 @@ struct Bracket {
 
 }  // namespace
 
-CampbellResult run_campbell(const Model& model, const CampbellOptions& options) {
+CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
+                            std::shared_ptr<const Assembler> assembled) {
   CampbellResult result;
   ModalOptions mo = options.modal;
   mo.shapes = false;
@@ -92,7 +93,7 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options) 
   const std::size_t n_cand = n_track + 4;
   mo.n_modes = static_cast<Index>(n_cand);
   mo.oscillatory_only = true;
-  const ModalSolver solver(model, mo);
+  const ModalSolver solver(model, mo, std::move(assembled));
   std::atomic<Index> n_refinement_solves{0};
   auto solve = [&](Real speed) {
     ++n_refinement_solves;

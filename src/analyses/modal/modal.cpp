@@ -319,8 +319,13 @@ struct ModalSolver::BlockCache {
 };
 
 ModalSolver::ModalSolver(const Model& model, ModalOptions options)
-    : options_(options), assembler_(model), cache_(std::make_shared<BlockCache>()) {
-  const SystemMatrices sys = assembler_.at(0.0);
+    : ModalSolver(model, options, nullptr) {}
+
+ModalSolver::ModalSolver(const Model& model, ModalOptions options, std::shared_ptr<const Assembler> assembled)
+    : options_(options),
+      assembler_(assembled ? std::move(assembled) : std::make_shared<const Assembler>(model)),
+      cache_(std::make_shared<BlockCache>()) {
+  const SystemMatrices sys = assembler_->at(0.0);
   lambda_max_ = 0.0;
   for (Index i = 0; i < sys.M.rows(); ++i)
     if (sys.M.coeff(i, i) > 0) lambda_max_ = std::max(lambda_max_, sys.K.coeff(i, i) / sys.M.coeff(i, i));
@@ -329,11 +334,11 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options)
   // entry such elements can touch, explicit zeros included).
   speed_touched_.assign(static_cast<std::size_t>(sys.M.rows()), 0);
   SystemMatrices variable;
-  assembler_.variable_values(0.0, variable);
+  assembler_->variable_values(0.0, variable);
   // Complex pairs: the reduced DOFs whose full DOFs are v–w or ry–rz of one node (a
   // rigid link's master DOFs included). The pairing only proposes J; whether the
   // split is exact is decided by J commuting with the block's matrices.
-  const DofMap& map = assembler_.dof_map();
+  const DofMap& map = assembler_->dof_map();
   const SparseMatrix& T = map.transformation();
   const Index n = T.cols();
   std::vector<Index> reduced_of(static_cast<std::size_t>(T.rows()), -1);
@@ -361,7 +366,7 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options)
 
 EigenSolver ModalSolver::resolved_solver() const {
   if (options_.solver != EigenSolver::automatic) return options_.solver;
-  const Index n = assembler_.dof_map().n_reduced();
+  const Index n = assembler_->dof_map().n_reduced();
   if (options_.n_modes > 0 && 3 * options_.n_modes >= n) return EigenSolver::dense;
   // A given number of modes: Arnoldi as soon as its Krylov subspace is at most a
   // quarter of the state space (its cost grows with n, the QR's with n³; on the
@@ -374,8 +379,8 @@ EigenSolver ModalSolver::resolved_solver() const {
 
 ModalResult ModalSolver::solve(Real speed) const {
   // The assembled matrices themselves when no element depends on speed (no copy).
-  const SystemMatrices varying = assembler_.speed_dependent() ? assembler_.at(speed) : SystemMatrices{};
-  const SystemMatrices& sys = assembler_.speed_dependent() ? varying : assembler_.constant();
+  const SystemMatrices varying = assembler_->speed_dependent() ? assembler_->at(speed) : SystemMatrices{};
+  const SystemMatrices& sys = assembler_->speed_dependent() ? varying : assembler_->constant();
   const SparseMatrix D = sys.damping(speed);
   const SparseMatrix K = sys.stiffness(speed);
   const Index n = sys.M.rows();
@@ -446,6 +451,14 @@ ModalResult ModalSolver::solve(Real speed) const {
           solved = true;
         }
       }
+      if (arnoldi && !cf && options_.hermitian_form) {
+        // No damping or gyroscopic terms (axial, torsional, bending at rest):
+        // symmetric Lanczos on a problem of half the state order.
+        if (std::optional<detail::StateEigenpairs> u = detail::sparse_undamped_eigen(Mb, Db, Kb, count, sigma)) {
+          computed = std::move(*u);
+          solved = true;
+        }
+      }
       if (!solved && cf) {
         // Forward/backward complex coordinates: half the order (the real form if it
         // fails).
@@ -486,7 +499,9 @@ ModalResult ModalSolver::solve(Real speed) const {
       part = block_modes(wanted, false);
     }
     // The most general method any block needed names the solve.
-    auto rank = [](const std::string& m) { return m == "dense-hermitian" ? 0 : m == "dense-qr" ? 1 : 2; };
+    auto rank = [](const std::string& m) {
+      return m == "dense-hermitian" ? 0 : m == "dense-qr" ? 1 : m == "shift-invert-lanczos" ? 2 : 3;
+    };
     if (&dofs == &blocks.front() || rank(part.info.method) > rank(pairs.info.method))
       pairs.info.method = part.info.method;
     pairs.info.iterations += part.info.iterations;
@@ -504,9 +519,9 @@ ModalResult ModalSolver::solve(Real speed) const {
   }
   result.info = pairs.info;
   result.complex_form = any_complex;
-  split_repeated(pairs.values, pairs.vectors, assembler_.dof_map());
+  split_repeated(pairs.values, pairs.vectors, assembler_->dof_map());
 
-  const SparseMatrix& T = assembler_.dof_map().transformation();
+  const SparseMatrix& T = assembler_->dof_map().transformation();
 
   for (Index j = 0; j < pairs.values.size(); ++j) {
     Mode mode;
@@ -526,7 +541,7 @@ ModalResult ModalSolver::solve(Real speed) const {
 
     Real fam[3] = {0, 0, 0};
     for (Index i = 0; i < n; ++i)
-      fam[family_of(assembler_.dof_map().full_dof(i))] += (std::conj(phi(i)) * Mphi(i)).real();
+      fam[family_of(assembler_->dof_map().full_dof(i))] += (std::conj(phi(i)) * Mphi(i)).real();
     const Real total = fam[0] + fam[1] + fam[2];
     const int dominant = static_cast<int>(std::max_element(fam, fam + 3) - fam);
     // A family holding 80 % of the kinetic energy names the mode.
@@ -571,8 +586,9 @@ ModalResult ModalSolver::solve(Real speed) const {
   return result;
 }
 
-ModalResult run_modal(const Model& model, Real speed, const ModalOptions& options) {
-  return ModalSolver(model, options).solve(speed);
+ModalResult run_modal(const Model& model, Real speed, const ModalOptions& options,
+                      std::shared_ptr<const Assembler> assembled) {
+  return ModalSolver(model, options, std::move(assembled)).solve(speed);
 }
 
 }  // namespace feran

@@ -47,6 +47,10 @@ struct DenseSelection {
 StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix& K,
                                   const DenseSelection& selection = {});
 
+// Convergence tolerance of the shift-inverted eigenvalues in every Krylov solver
+// (Spectra's test, relative).
+constexpr Real arnoldi_tolerance = 1e-10;
+
 // Size of the Krylov subspace sparse_state_eigen builds for @p n_wanted modes of a
 // system with @p n DOF (at most the state dimension 2n).
 Index arnoldi_subspace_size(Index n, Index n_wanted);
@@ -99,5 +103,15 @@ StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const Complex
 std::optional<StateEigenpairs> dense_gyroscopic_eigen(const ComplexMatrix& M, const ComplexMatrix& D,
                                                       const ComplexMatrix& K, const DenseSelection& selection,
                                                       bool both_signs);
+
+// A block without damping and gyroscopic terms (D = 0; M, K symmetric to 1e-12):
+// (K − ω²M)x = 0, a symmetric-definite problem of order n instead of the state
+// problem's 2n. The @p n_wanted lowest ω by Spectra's shift-invert Lanczos on
+// (K + σ²M)⁻¹M (λ = −σ² is the state shift σ), returned as p = iω, x real of unit
+// norm. std::nullopt when the block is not of this kind, when Lanczos does not
+// converge, or when some λ is negative beyond round-off (a static divergence, p real:
+// the general solver's case).
+std::optional<StateEigenpairs> sparse_undamped_eigen(const SparseMatrix& M, const SparseMatrix& D,
+                                                     const SparseMatrix& K, Index n_wanted, Real sigma);
 
 }  // namespace feran::detail

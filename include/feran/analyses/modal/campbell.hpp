@@ -73,7 +73,9 @@ struct CampbellResult {
 /// shapes with a predicted eigenvalue (linear extrapolation) as second criterion, by
 /// optimal assignment; critical speeds and the threshold are bracketed on the grid and
 /// refined by Brent's method with a fresh eigen solve at each trial speed.
-CampbellResult run_campbell(const Model& model, const CampbellOptions& options);
+/// @p assembled: @p model already assembled, or null (see ModalSolver).
+CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
+                            std::shared_ptr<const Assembler> assembled = nullptr);
 
 /// Complex modal assurance criterion |aᴴb|²/(|a|²|b|²).
 Real mac(const ComplexVector& a, const ComplexVector& b);

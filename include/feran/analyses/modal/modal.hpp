@@ -115,18 +115,21 @@ struct ModalResult {
 class ModalSolver {
  public:
   explicit ModalSolver(const Model& model, ModalOptions options = {});
+  /// The same with @p model already assembled (e.g. ModelFile::assembler, by the
+  /// reader's check): the assembly is reused, not repeated. Null: assembled here.
+  ModalSolver(const Model& model, ModalOptions options, std::shared_ptr<const Assembler> assembled);
   /// Modes at speed @p speed [rad/s].
   ModalResult solve(Real speed) const;
   const ModalOptions& options() const { return options_; }
   /// Changes the number of modes wanted (see ModalOptions::n_modes).
   void set_n_modes(Index n_modes) { options_.n_modes = n_modes; }
-  const Assembler& assembler() const { return assembler_; }
+  const Assembler& assembler() const { return *assembler_; }
   /// The solver the automatic choice resolves to for this model.
   EigenSolver resolved_solver() const;
 
  private:
   ModalOptions options_;
-  Assembler assembler_;
+  std::shared_ptr<const Assembler> assembler_;
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
   std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it
   // Per reduced DOF: the reduced DOF it pairs with in complex coordinates (v with w,
@@ -137,7 +140,9 @@ class ModalSolver {
   std::shared_ptr<BlockCache> cache_;
 };
 
-/// Convenience: modes of @p model at speed @p speed [rad/s].
-ModalResult run_modal(const Model& model, Real speed, const ModalOptions& options = {});
+/// Convenience: modes of @p model at speed @p speed [rad/s] (@p assembled as for
+/// ModalSolver).
+ModalResult run_modal(const Model& model, Real speed, const ModalOptions& options = {},
+                      std::shared_ptr<const Assembler> assembled = nullptr);
 
 }  // namespace feran
