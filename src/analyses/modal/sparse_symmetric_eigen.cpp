@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/SparseCholesky>
 #include <Spectra/MatOp/SparseSymMatProd.h>
-#include <Spectra/MatOp/SymShiftInvert.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 
 namespace feran::detail {
@@ -15,6 +15,30 @@ Real max_abs(const SparseMatrix& A) { return A.nonZeros() > 0 ? A.coeffs().cwise
 
 // A = Aᵀ to round-off (1e-12 of the largest entry).
 bool symmetric(const SparseMatrix& A) { return max_abs(SparseMatrix(A - SparseMatrix(A.transpose()))) <= 1e-12 * max_abs(A); }
+
+// y = (K − s·M)⁻¹x for Spectra, by a sparse LDLᵀ: below the lowest eigenvalue the
+// matrix is positive definite (Spectra's own operator uses a general sparse LU).
+class ShiftInvertLdlt {
+ public:
+  using Scalar = Real;
+  ShiftInvertLdlt(const SparseMatrix& K, const SparseMatrix& M) : K_(K), M_(M) {}
+  Index rows() const { return K_.rows(); }
+  Index cols() const { return K_.cols(); }
+  void set_shift(Real s) {
+    ldlt_.compute(SparseMatrix(K_ - s * M_));
+    ok_ = ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0.0).all();
+  }
+  bool ok() const { return ok_; }
+  void perform_op(const Real* x_in, Real* y_out) const {
+    Eigen::Map<Vector>(y_out, K_.rows()) = ldlt_.solve(Eigen::Map<const Vector>(x_in, K_.rows()));
+  }
+
+ private:
+  const SparseMatrix& K_;
+  const SparseMatrix& M_;
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
+  bool ok_ = false;
+};
 
 }  // namespace
 
@@ -28,11 +52,11 @@ std::optional<StateEigenpairs> sparse_undamped_eigen(const SparseMatrix& M, cons
   // p = σ on the negative real axis is λ = −σ²: the same K + σ²M as the state
   // problem's shift-invert, positive definite below the lowest eigenvalue.
   const Real shift = -sigma * sigma;
-  using Op = Spectra::SymShiftInvert<Real, Eigen::Sparse, Eigen::Sparse>;
   using BOp = Spectra::SparseSymMatProd<Real>;
-  Op op(K, M);
+  ShiftInvertLdlt op(K, M);
   BOp bop(M);
-  Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> eigs(op, bop, nev, ncv, shift);
+  Spectra::SymGEigsShiftSolver<ShiftInvertLdlt, BOp, Spectra::GEigsMode::ShiftInvert> eigs(op, bop, nev, ncv, shift);
+  if (!op.ok()) return std::nullopt;
   eigs.init();
   eigs.compute(Spectra::SortRule::LargestMagn, 1000, arnoldi_tolerance);
   if (eigs.info() != Spectra::CompInfo::Successful) return std::nullopt;
