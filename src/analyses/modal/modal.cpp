@@ -204,38 +204,53 @@ std::optional<ComplexForm> complex_pairs(const std::vector<Index>& dofs, const s
 
 // Commuting with J to round-off (an exactly axisymmetric model gives zero or a few
 // ulps): the entries of AJ − JA, which are A(a,a') − A(b,b') and A(a,b') + A(b,a')
-// over the pairs, at most 1e-12 of A's largest entry.
+// over the pairs, at most 1e-12 of A's largest entry. Uᴴ·A·U has the entries
+// (A(a,a') + A(b,b'))/2 − i·(A(a,b') − A(b,a'))/2, built here entry by entry from the
+// nonzeros of A.
 std::optional<ComplexForm> complex_form(const std::vector<Index>& dofs, const std::vector<Index>& local,
                                         const std::vector<Index>& twin, const SparseMatrix& M,
                                         const SparseMatrix& D, const SparseMatrix& K) {
   std::optional<ComplexForm> f = complex_pairs(dofs, local, twin);
   if (!f) return std::nullopt;
   const auto nb = static_cast<Index>(dofs.size()), nc = static_cast<Index>(f->a.size());
-  std::vector<Eigen::Triplet<Real>> jt;
-  std::vector<Eigen::Triplet<Complex>> ut;
-  const Real r = 1.0 / std::sqrt(2.0);
+  // Each DOF's complex coordinate, and whether it is the second of its pair.
+  std::vector<Index> coord(static_cast<std::size_t>(nb));
+  std::vector<char> second(static_cast<std::size_t>(nb), 0);
   for (Index c = 0; c < nc; ++c) {
-    const Index a = f->a[static_cast<std::size_t>(c)], b = f->b[static_cast<std::size_t>(c)];
-    jt.emplace_back(b, a, 1.0);
-    jt.emplace_back(a, b, -1.0);
-    ut.emplace_back(a, c, Complex(r, 0.0));
-    ut.emplace_back(b, c, Complex(0.0, -r));
+    coord[static_cast<std::size_t>(f->a[static_cast<std::size_t>(c)])] = c;
+    coord[static_cast<std::size_t>(f->b[static_cast<std::size_t>(c)])] = c;
+    second[static_cast<std::size_t>(f->b[static_cast<std::size_t>(c)])] = 1;
   }
-  SparseMatrix J(nb, nb);
-  J.setFromTriplets(jt.begin(), jt.end());
-  auto commutes = [&](const SparseMatrix& A) {
-    const SparseMatrix C = A * J - J * A;
-    const Real a_max = A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0;
-    const Real c_max = C.nonZeros() > 0 ? C.coeffs().cwiseAbs().maxCoeff() : 0.0;
-    return c_max <= 1e-12 * a_max;
+  auto transform = [&](const SparseMatrix& A, detail::ComplexSparseMatrix& Ac) {
+    std::vector<Eigen::Triplet<Complex>> t;
+    std::vector<Eigen::Triplet<Real>> p, q;  // A(a,a') − A(b,b') and A(a,b') + A(b,a')
+    t.reserve(static_cast<std::size_t>(A.nonZeros()));
+    Real a_max = 0.0;
+    for (Index j = 0; j < A.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+        const Index i = it.row(), ci = coord[static_cast<std::size_t>(i)], cj = coord[static_cast<std::size_t>(j)];
+        const Real v = it.value();
+        a_max = std::max(a_max, std::abs(v));
+        const bool bi = second[static_cast<std::size_t>(i)] != 0, bj = second[static_cast<std::size_t>(j)] != 0;
+        if (bi == bj) {
+          t.emplace_back(ci, cj, Complex(0.5 * v, 0.0));
+          p.emplace_back(ci, cj, bi ? -v : v);
+        } else {
+          t.emplace_back(ci, cj, Complex(0.0, bj ? -0.5 * v : 0.5 * v));
+          q.emplace_back(ci, cj, v);
+        }
+      }
+    SparseMatrix P(nc, nc), Q(nc, nc);
+    P.setFromTriplets(p.begin(), p.end());
+    Q.setFromTriplets(q.begin(), q.end());
+    const Real c_max = std::max(P.nonZeros() > 0 ? P.coeffs().cwiseAbs().maxCoeff() : 0.0,
+                                Q.nonZeros() > 0 ? Q.coeffs().cwiseAbs().maxCoeff() : 0.0);
+    if (c_max > 1e-12 * a_max) return false;
+    Ac.resize(nc, nc);
+    Ac.setFromTriplets(t.begin(), t.end());
+    return true;
   };
-  if (!commutes(M) || !commutes(D) || !commutes(K)) return std::nullopt;
-  detail::ComplexSparseMatrix U(nb, nc);
-  U.setFromTriplets(ut.begin(), ut.end());
-  const detail::ComplexSparseMatrix Uh = U.adjoint();
-  f->M = Uh * (M.cast<Complex>() * U);
-  f->D = Uh * (D.cast<Complex>() * U);
-  f->K = Uh * (K.cast<Complex>() * U);
+  if (!transform(M, f->M) || !transform(D, f->D) || !transform(K, f->K)) return std::nullopt;
   return f;
 }
 
