@@ -20,12 +20,26 @@ namespace {
 // short run lost one of two cores to them. Setting one thread and shutting the
 // server down joins them at once. Looked up at run time: other BLAS builds lack
 // these functions.
+#ifdef FERAN_OPENBLAS_LINKED
+}  // namespace
+// OpenBLAS linked into the program (apps/feran/CMakeLists.txt): called directly.
+extern "C" {
+void openblas_set_num_threads(int n);
+int blas_thread_shutdown_();
+}
+namespace {
+void single_threaded_blas() {
+  openblas_set_num_threads(1);
+  blas_thread_shutdown_();
+}
+#else
 void single_threaded_blas() {
   using SetThreads = void (*)(int);
   if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
   using Shutdown = int (*)();
   if (void* f = dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) reinterpret_cast<Shutdown>(f)();
 }
+#endif
 
 // glibc returns freed memory at the top of a heap to the system once more than
 // 128 KiB are free there, and the next growth faults the pages in again; a sweep
