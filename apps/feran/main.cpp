@@ -23,14 +23,15 @@ namespace {
 #ifdef FERAN_OPENBLAS_LINKED
 }  // namespace
 // OpenBLAS linked into the program (apps/feran/CMakeLists.txt): called directly.
+// Weak, since a serial OpenBLAS build has no thread server (nor these functions).
 extern "C" {
-void openblas_set_num_threads(int n);
-int blas_thread_shutdown_();
+void openblas_set_num_threads(int n) __attribute__((weak));
+int blas_thread_shutdown_() __attribute__((weak));
 }
 namespace {
 void single_threaded_blas() {
-  openblas_set_num_threads(1);
-  blas_thread_shutdown_();
+  if (openblas_set_num_threads != nullptr) openblas_set_num_threads(1);
+  if (blas_thread_shutdown_ != nullptr) blas_thread_shutdown_();
 }
 #else
 void single_threaded_blas() {
