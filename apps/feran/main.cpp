@@ -12,35 +12,34 @@
 
 #include "commands.hpp"
 
+#ifdef FERAN_OPENBLAS_LINKED
+// OpenBLAS linked into the program (apps/feran/CMakeLists.txt). Weak: a serial
+// OpenBLAS build has no thread server, nor these functions.
+extern "C" {
+void openblas_set_num_threads(int n) __attribute__((weak));
+int blas_thread_shutdown_() __attribute__((weak));
+}
+#endif
+
 namespace {
 // feran runs the points of a sweep on all cores itself; a threaded OpenBLAS (when it
 // is the LAPACK in use) would start threads of its own inside each small dense solve,
 // which only competes with them. Its worker threads are started when the library
 // loads, before main, and spin (sched_yield) for about 0.1 s before they sleep: a
 // short run lost one of two cores to them. Setting one thread and shutting the
-// server down joins them at once. Looked up at run time: other BLAS builds lack
-// these functions.
-#ifdef FERAN_OPENBLAS_LINKED
-}  // namespace
-// OpenBLAS linked into the program (apps/feran/CMakeLists.txt): called directly.
-// Weak, since a serial OpenBLAS build has no thread server (nor these functions).
-extern "C" {
-void openblas_set_num_threads(int n) __attribute__((weak));
-int blas_thread_shutdown_() __attribute__((weak));
-}
-namespace {
+// server down joins them at once. Called directly when OpenBLAS is linked into the
+// program, otherwise looked up at run time (other BLAS builds lack these functions).
 void single_threaded_blas() {
+#ifdef FERAN_OPENBLAS_LINKED
   if (openblas_set_num_threads != nullptr) openblas_set_num_threads(1);
   if (blas_thread_shutdown_ != nullptr) blas_thread_shutdown_();
-}
 #else
-void single_threaded_blas() {
   using SetThreads = void (*)(int);
   if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
   using Shutdown = int (*)();
   if (void* f = dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) reinterpret_cast<Shutdown>(f)();
-}
 #endif
+}
 
 // glibc returns freed memory at the top of a heap to the system once more than
 // 128 KiB are free there, and the next growth faults the pages in again; a sweep

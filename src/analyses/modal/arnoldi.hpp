@@ -121,6 +121,11 @@ struct RitzPairs {
   Eigen::MatrixXcd vectors;  // the displacement part of each Ritz vector
   Index operations = 0;      // operator applications
   bool converged = false;
+
+  // The eigenvalues p = σ + 1/θ of the problem shift-inverted at σ.
+  Eigen::VectorXcd eigenvalues(Real sigma) const {
+    return values.unaryExpr([sigma](const Complex& t) { return Complex(sigma) + 1.0 / t; });
+  }
 };
 
 // Arnoldi without restarts, orthogonalised by classical Gram–Schmidt with one

@@ -29,7 +29,7 @@ StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const Complex
     out.info.message = fmt::format("Arnoldi iteration did not converge {} eigenvalues", nev);
     return out;
   }
-  out.values = ritz.values.unaryExpr([sigma](const Complex& t) { return Complex(sigma) + 1.0 / t; });
+  out.values = ritz.eigenvalues(sigma);
   out.vectors = std::move(ritz.vectors);
   out.vectors.colwise().normalize();
   return out;

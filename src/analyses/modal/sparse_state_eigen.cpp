@@ -42,10 +42,9 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
   Eigen::MatrixXcd vectors;
   RitzPairs ritz = growing_arnoldi(op, nev, nev, ncv, arnoldi_tolerance, false);
   if (ritz.converged) {
-    out.info.method = "shift-invert-arnoldi";
     out.info.iterations = 1;
     out.info.n_converged = ritz.values.size();
-    values = ritz.values.unaryExpr([sigma](const Complex& t) { return Complex(sigma) + 1.0 / t; });
+    values = ritz.eigenvalues(sigma);
     vectors = std::move(ritz.vectors);
   } else {
     Spectra::GenEigsRealShiftSolver<StateShiftInvert<Real>> solver(op, nev, ncv, sigma);

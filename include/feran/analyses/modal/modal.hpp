@@ -87,10 +87,12 @@ struct ModalOptions {
   /// coordinates (half the order; detected per decoupled block, see
   /// docs/theory/modal_analysis.md). false: always the real form (for comparison).
   bool complex_form = true;
-  /// Solve a block that is conservative and gyroscopic (no damping, no circulatory
-  /// stiffness, no rigid-body mode; e.g. an undamped rotor at any speed) with dense
-  /// methods as a Hermitian-definite problem (docs/theory/modal_analysis.md): its
-  /// eigenvalues exactly on the imaginary axis. false: always the general QR.
+  /// Solve undamped blocks in their symmetric forms (docs/theory/modal_analysis.md):
+  /// dense, a conservative gyroscopic block (no damping, no circulatory stiffness, no
+  /// rigid-body mode; e.g. an undamped rotor at any speed) as a Hermitian-definite
+  /// problem, its eigenvalues exactly on the imaginary axis; sparse, a block without
+  /// damping and gyroscopic terms by symmetric Lanczos on K and M. false: always the
+  /// general QR and state-space Arnoldi.
   bool hermitian_form = true;
 };
 
