@@ -2,7 +2,7 @@
 
 #include <feran/core/error.hpp>
 #include <feran/io/result_writer.hpp>
-#include <feran/io/units.hpp>
+#include <feran/core/units.hpp>
 
 #include "commands.hpp"
 

@@ -10,7 +10,7 @@
 #include <feran/io/node_reference.hpp>
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
-#include <feran/io/units.hpp>
+#include <feran/core/units.hpp>
 
 #include "commands.hpp"
 

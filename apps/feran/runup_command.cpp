@@ -12,7 +12,7 @@
 #include <feran/io/model_reader.hpp>
 #include <feran/io/node_reference.hpp>
 #include <feran/io/runup_writer.hpp>
-#include <feran/io/units.hpp>
+#include <feran/core/units.hpp>
 
 #include "commands.hpp"
 

@@ -8,7 +8,7 @@
 #include <feran/io/model_reader.hpp>
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
-#include <feran/io/units.hpp>
+#include <feran/core/units.hpp>
 
 #include "commands.hpp"
 

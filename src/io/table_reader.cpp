@@ -48,20 +48,10 @@ std::string type_name(const toml::node& node) {
   return "nothing";
 }
 
-std::string must_be_quantity(std::string_view name, Quantity kind) {
-  return fmt::format("'{}' must be {} (a number in {}, or a string such as \"{}\")", name,
-                     quantity_name(kind), si_unit(kind), unit_example(kind));
-}
-
-std::string expected_quantity(Quantity kind) {
-  return fmt::format("{}, e.g. {} or \"{}\"", quantity_name(kind), si_example(kind),
-                     unit_example(kind));
-}
-
 TableReader::TableReader(const toml::table& table, std::string context, const std::string& path)
     : table_(table), context_(std::move(context)), path_(path) {}
 
-void TableReader::check_keys(std::initializer_list<std::string_view> allowed) const {
+void TableReader::check_keys(const std::vector<std::string_view>& allowed) const {
   const toml::key* first_unknown = nullptr;
   for (auto&& [key, value] : table_) {
     bool known = false;

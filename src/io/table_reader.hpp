@@ -10,12 +10,13 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <toml++/toml.h>
 
 #include <feran/core/error.hpp>
 #include <feran/core/types.hpp>
-#include <feran/io/units.hpp>
+#include <feran/core/units.hpp>
 
 namespace feran::detail {
 
@@ -47,7 +48,10 @@ class TableReader {
 
   /// Throws for the first key (in file order) that is not in @p allowed, suggesting
   /// the nearest allowed key (edit distance ≤ 3) or listing them all.
-  void check_keys(std::initializer_list<std::string_view> allowed) const;
+  void check_keys(const std::vector<std::string_view>& allowed) const;
+  void check_keys(std::initializer_list<std::string_view> allowed) const {
+    check_keys(std::vector<std::string_view>(allowed));
+  }
 
   /// The value of @p key, or nullptr.
   const toml::node* find(std::string_view key) const;
@@ -97,9 +101,7 @@ class TableReader {
   const std::string& path_;
 };
 
-/// "'length' must be a length (a number in m, or a string such as "68 mm")".
-std::string must_be_quantity(std::string_view name, Quantity kind);
-/// "a length, e.g. 0.068 or "68 mm"" (for missing-key messages).
-std::string expected_quantity(Quantity kind);
+using feran::expected_quantity;
+using feran::must_be_quantity;
 
 }  // namespace feran::detail

@@ -35,6 +35,23 @@ class ModelError : public Error {
   std::string message_;
 };
 
+/// An error in a model specification (ModelSpec), located by a path into it such as
+/// "shafts[1].sections[2].length" (indices from 0; "" for the model as a whole).
+/// what() reads "path: message". The model reader turns it into a ModelError at the
+/// file, line and column where that part of the spec was written.
+class SpecError : public Error {
+ public:
+  SpecError(std::string path, const std::string& message);
+  /// Where in the spec the problem is.
+  const std::string& path() const { return path_; }
+  /// The message without the path.
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string path_;
+  std::string message_;
+};
+
 /// An error in the structure of a model that has no single place in a file
 /// (thrown by the library; the model reader attaches a location and rethrows it
 /// as a ModelError). @p node is the index of a node involved, or -1.

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Reads a model file (TOML, format in docs/model-format.md) into a Model.
+/// Reads a model file (TOML, format in docs/model-format.md) into a ModelSpec, and
+/// through build_model() into a Model.
 
 #include <memory>
 #include <optional>
@@ -14,6 +15,8 @@
 #include <feran/core/error.hpp>
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
+#include <feran/spec/build_model.hpp>
+#include <feran/spec/model_spec.hpp>
 
 namespace feran {
 
@@ -87,9 +90,15 @@ struct RunupDefaults {
   std::vector<Index> springs;
 };
 
-/// A model file as read: the model and the analysis defaults it states.
+/// Gravitational acceleration used when [static] gives a direction but no 'g' [m/s²].
+inline constexpr Real default_gravity = 9.81;
+
+/// A model file as read: its spec, the model built from it and the analysis defaults
+/// it states.
 struct ModelFile {
-  Model model;
+  ModelSpec spec;      ///< what the file says
+  SpecSource source;   ///< where the file says it (for messages about the spec)
+  Model model;         ///< build_model(spec)
   /// The model as the reader's check assembled it: analyses of this very model may
   /// reuse it instead of assembling again (not after changing the model).
   std::shared_ptr<const Assembler> assembler;
@@ -103,6 +112,16 @@ struct ModelFile {
   /// Per node index (model.nodes order): where the node was defined, for messages.
   std::vector<SourceLocation> node_locations;
 };
+
+/// Reads TOML text into a ModelSpec without checking its values (only what TOML can
+/// get wrong: syntax, unknown and missing keys, types and units). @p source, when
+/// given, receives where each part was written; SpecSource::locate() turns a
+/// SpecError of build_model() into a ModelError at that place. Throws ModelError.
+ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages,
+                          SpecSource* source = nullptr);
+
+/// The bytes of the file at @p path; throws feran::Error when it cannot be read.
+std::string read_text_file(const std::string& path);
 
 /// Reads and checks the model file at @p path.
 /// Throws feran::Error when the file cannot be read, and ModelError (file, line,

@@ -63,6 +63,20 @@ std::string normalize_unit(std::string_view unit);
 /// @p kind; std::nullopt when @p unit is not accepted for @p kind.
 std::optional<Real> to_si(Quantity kind, Real value, std::string_view unit);
 
+/// Converts an SI value of @p kind to unit @p unit; std::nullopt when the unit is
+/// not accepted for the kind.
+std::optional<Real> from_si(Quantity kind, Real si, std::string_view unit);
+
+/// "68 mm": @p si written in @p unit when that text reads back as exactly @p si
+/// (shortest round-trip digits), else in the SI unit ("0.068 m"). An empty @p unit
+/// means the SI unit.
+std::string format_quantity(Real si, Quantity kind, std::string_view unit = {});
+
+/// "'length' must be a length (a number in m, or a string such as "68 mm")".
+std::string must_be_quantity(std::string_view name, Quantity kind);
+/// "a length, e.g. 0.068 or "68 mm"" (for missing-key messages).
+std::string expected_quantity(Quantity kind);
+
 /// A quantity as written: its number and its unit text (trimmed, not normalised;
 /// empty for a bare number).
 struct QuantityText {

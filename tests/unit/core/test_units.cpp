@@ -1,4 +1,4 @@
-// Tests of io/units: parsing "value unit" quantities into SI.
+// Tests of core/units: parsing "value unit" quantities into SI.
 //
 // Tolerances: conversions are one multiplication and one division of exactly
 // representable factors (or of 2π), so results are compared with
@@ -6,7 +6,7 @@
 // expected value is a decimal literal (0.068), the reader divides by 1000 so the
 // result is the correctly rounded double of that literal.
 
-#include <feran/io/units.hpp>
+#include <feran/core/units.hpp>
 
 #include <gtest/gtest.h>
 

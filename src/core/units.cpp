@@ -1,4 +1,4 @@
-#include <feran/io/units.hpp>
+#include <feran/core/units.hpp>
 
 #include <cctype>
 #include <charconv>
@@ -164,6 +164,31 @@ std::optional<Real> to_si(Quantity kind, Real value, std::string_view unit) {
   for (const UnitDef& u : kind_def(kind).units)
     if (u.name == normalized) return value * u.multiply / u.divide;
   return std::nullopt;
+}
+
+std::optional<Real> from_si(Quantity kind, Real si, std::string_view unit) {
+  const std::string normalized = normalize_unit(unit);
+  for (const UnitDef& u : kind_def(kind).units)
+    if (u.name == normalized) return si * u.divide / u.multiply;
+  return std::nullopt;
+}
+
+std::string format_quantity(Real si, Quantity kind, std::string_view unit) {
+  if (!unit.empty())
+    if (const auto value = from_si(kind, si, unit))
+      if (std::isfinite(*value) && to_si(kind, *value, unit) == si)
+        return fmt::format("{} {}", *value, unit);
+  return fmt::format("{} {}", si, si_unit(kind));
+}
+
+std::string must_be_quantity(std::string_view name, Quantity kind) {
+  return fmt::format("'{}' must be {} (a number in {}, or a string such as \"{}\")", name,
+                     quantity_name(kind), si_unit(kind), unit_example(kind));
+}
+
+std::string expected_quantity(Quantity kind) {
+  return fmt::format("{}, e.g. {} or \"{}\"", quantity_name(kind), si_example(kind),
+                     unit_example(kind));
 }
 
 std::optional<QuantityText> split_quantity(std::string_view text) {

@@ -1,0 +1,247 @@
+#pragma once
+/// @file
+/// The model specification: a plain value that says what a model file says.
+///
+/// A ModelSpec mirrors the model file (docs/model-format.md) table for table and key
+/// for key, with every quantity already in SI units (m, kg, s, N, rad, rad/s;
+/// frequencies in Hz). Names of choices ("lumped", "rotating_force", "-z") are kept
+/// as the words the file uses. Nothing here is checked: build_model() (build_model.hpp)
+/// does all meshing, numbering and validation, and is the only way to a Model. Specs
+/// copy and compare with ==; read_model_spec() makes one from TOML, write_toml()
+/// writes one back, and parameter paths (parameters.hpp) get and set its numbers.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <feran/core/types.hpp>
+#include <feran/model/speed_coefficient.hpp>
+
+namespace feran {
+
+/// A reference to a node: its number (an integer) or its name (a string). A string
+/// is always a name, even when it is all digits.
+using NodeRef = std::variant<std::int64_t, std::string>;
+
+/// [options]: model-wide options.
+struct OptionsSpec {
+  bool shear_deformation = true;        ///< Timoshenko (true) or Euler–Bernoulli shafts
+  std::string gyroscopic = "consistent";  ///< "consistent" or "lumped"
+  Real shaft_damping = 0.0;             ///< β [s] of rotating shafts: C_i = β K
+  std::vector<std::string> free_motions;  ///< "axial", "torsion", "lateral"
+  bool operator==(const OptionsSpec&) const = default;
+};
+
+/// [[materials]]: an isotropic material. Exactly one of G and nu is given.
+struct MaterialSpec {
+  std::string name;
+  Real E = 0.0;             ///< Young's modulus [Pa]
+  std::optional<Real> G;    ///< shear modulus [Pa]
+  std::optional<Real> nu;   ///< Poisson's ratio
+  Real rho = 0.0;           ///< density [kg/m³]
+  Real loss_factor = 0.0;   ///< hysteretic loss factor η
+  bool operator==(const MaterialSpec&) const = default;
+};
+
+/// [[shafts.sections]]: a length of uniform circular section, meshed into elements.
+struct SectionSpec {
+  Real length = 0.0;          ///< [m]
+  Real outer_diameter = 0.0;  ///< [m]
+  Real inner_diameter = 0.0;  ///< [m], 0 for a solid section
+  std::string material;       ///< empty: the shaft's material
+  int elements = 1;           ///< number of shaft elements
+  std::string end_node;       ///< name of the section's last node (may be empty)
+  bool operator==(const SectionSpec&) const = default;
+};
+
+/// [[shafts]]: a shaft along x made of sections; it creates nodes.
+struct ShaftSpec {
+  std::string name;
+  Real x = 0.0;                   ///< axial position of the first node [m]
+  bool rotating = true;
+  std::string material;           ///< default material of the sections (may be empty)
+  std::string start_node;         ///< name of the first node (may be empty)
+  std::vector<SectionSpec> sections;
+  bool operator==(const ShaftSpec&) const = default;
+};
+
+/// [[nodes]]: a node that no shaft creates (stator, housing, a lumped rotor).
+struct NodeSpec {
+  Real x = 0.0;                  ///< [m]
+  std::string name;
+  std::optional<std::int64_t> number;  ///< not given: the next free number
+  bool rotating = false;
+  bool operator==(const NodeSpec&) const = default;
+};
+
+/// [[rigid_bodies]]: given by mass, Ja and Jp, or as a disk by its dimensions.
+struct RigidBodySpec {
+  std::string name;
+  NodeRef node;
+  std::optional<Real> mass;            ///< [kg]
+  std::optional<Real> Ja;              ///< about a transverse axis through the node [kg m²]
+  std::optional<Real> Jp;              ///< polar [kg m²]
+  std::optional<Real> outer_diameter;  ///< disk form [m]
+  std::optional<Real> inner_diameter;  ///< disk form [m]
+  std::optional<Real> width;           ///< disk form [m]
+  std::string material;                ///< disk form: material whose density is used
+  std::optional<Real> offset;          ///< axial offset of the centre of mass [m]
+  std::optional<bool> rotating;        ///< not given: as the node
+  bool operator==(const RigidBodySpec&) const = default;
+};
+
+/// [[springs]]: a spring–damper from a node to ground or to another node. Absent
+/// coefficients are zero.
+struct SpringSpec {
+  std::string name;
+  NodeRef node;
+  std::optional<NodeRef> to;  ///< not given (or "ground"): to ground
+  std::optional<SpeedCoefficient> kx, ky, kz, krx, kry, krz, kyz, kzy;
+  std::optional<SpeedCoefficient> cx, cy, cz, crx, cry, crz, cyz, czy;
+  Real loss_factor = 0.0;
+  bool operator==(const SpringSpec&) const = default;
+};
+
+/// [[rotating_dampers]]: viscous damping between rotating parts (internal damping).
+struct RotatingDamperSpec {
+  std::string name;
+  NodeRef node;
+  std::optional<NodeRef> to;  ///< not given (or "axis"): to the rotating frame's axis
+  Real ct = 0.0;   ///< lateral [N s/m]
+  Real cr = 0.0;   ///< tilt [N m s/rad]
+  Real cx = 0.0;   ///< axial [N s/m]
+  Real crx = 0.0;  ///< torsional [N m s/rad]
+  bool operator==(const RotatingDamperSpec&) const = default;
+};
+
+/// [[friction]]: Coulomb friction between rotating parts.
+struct FrictionSpec {
+  std::string name;
+  NodeRef node;
+  std::optional<NodeRef> to;  ///< not given (or "axis"): to the rotating frame
+  Real force = 0.0;           ///< F_ct0 [N]
+  Real moment = 0.0;          ///< F_cr0 [N m]
+  Real epsilon_t = 1e-4;      ///< regularisation velocity [m/s]
+  Real epsilon_r = 1e-3;      ///< regularisation angular velocity [rad/s]
+  bool operator==(const FrictionSpec&) const = default;
+};
+
+/// [[rigid_links]]: nodes moving as one rigid body; the first leads.
+struct RigidLinkSpec {
+  std::vector<NodeRef> nodes;
+  bool operator==(const RigidLinkSpec&) const = default;
+};
+
+/// [[fixed]]: DOFs of a node held at zero.
+struct FixedSpec {
+  NodeRef node;
+  /// "u", "v", "w", "rx", "ry", "rz", "all", "lateral", "translations", "rotations";
+  /// empty: all.
+  std::vector<std::string> dofs;
+  bool operator==(const FixedSpec&) const = default;
+};
+
+/// [[unbalances]]: a point unbalance.
+struct UnbalanceSpec {
+  std::string name;
+  NodeRef node;
+  Real mass = 0.0;    ///< [kg]
+  Real radius = 0.0;  ///< [m]
+  Real phase = 0.0;   ///< [rad]
+  Real lever = 0.0;   ///< [m]
+  bool operator==(const UnbalanceSpec&) const = default;
+};
+
+/// [[forces]]: a harmonic force or moment.
+struct ForceSpec {
+  std::string name;
+  NodeRef node;
+  std::string kind = "fixed";  ///< "fixed", "rotating_force" or "rotating_moment"
+  std::string direction;       ///< "x", "y", "z", "rx", "ry", "rz" (kind "fixed")
+  Real amplitude = 0.0;        ///< [N] or [N m]
+  Real phase = 0.0;            ///< [rad]
+  bool operator==(const ForceSpec&) const = default;
+};
+
+/// [[static_loads]]: constant forces [N] and moments [N m].
+struct StaticLoadSpec {
+  std::string name;
+  NodeRef node;
+  Real fx = 0.0, fy = 0.0, fz = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
+  bool operator==(const StaticLoadSpec&) const = default;
+};
+
+/// [modal]: defaults of a modal analysis.
+struct ModalSpec {
+  std::optional<Real> speed;  ///< [rad/s]
+  std::optional<int> modes;
+  bool operator==(const ModalSpec&) const = default;
+};
+
+/// [campbell]: defaults of a Campbell diagram.
+struct CampbellSpec {
+  std::optional<Real> start, stop;  ///< [rad/s]
+  std::optional<int> points, modes;
+  std::vector<int> orders;
+  bool operator==(const CampbellSpec&) const = default;
+};
+
+/// [response]: defaults of a steady-state response.
+struct ResponseSpec {
+  std::optional<Real> start, stop;  ///< [rad/s]
+  std::optional<int> points;
+  std::vector<NodeRef> probes;
+  std::optional<Real> loss_factor;
+  bool operator==(const ResponseSpec&) const = default;
+};
+
+/// [static]: gravity and the speed of a static analysis.
+struct StaticSpec {
+  std::optional<std::string> gravity;  ///< "+x", "-x", "+y", "-y", "+z", "-z" or "none"
+  std::optional<Real> g;               ///< [m/s²]
+  std::optional<Real> speed;           ///< [rad/s]
+  bool operator==(const StaticSpec&) const = default;
+};
+
+/// [runup]: the speed profile (one of three forms) and defaults of a run-up.
+struct RunupSpec {
+  std::optional<Real> speed;                  ///< constant speed [rad/s]
+  std::optional<Real> from, to, ramp_time;    ///< linear ramp [rad/s, rad/s, s]
+  std::vector<std::pair<Real, Real>> table;   ///< (time [s], speed [rad/s]) points
+  std::optional<Real> duration, dt, output_interval;  ///< [s]
+  std::optional<std::string> integrator;
+  std::optional<Real> rel_tol, abs_tol;
+  std::optional<int> modes;
+  std::vector<NodeRef> probes;
+  std::vector<std::string> springs;  ///< names of [[springs]] entries
+  bool operator==(const RunupSpec&) const = default;
+};
+
+/// A whole model file.
+struct ModelSpec {
+  std::string title;
+  OptionsSpec options;
+  std::vector<MaterialSpec> materials;
+  std::vector<ShaftSpec> shafts;
+  std::vector<NodeSpec> nodes;
+  std::vector<RigidBodySpec> rigid_bodies;
+  std::vector<SpringSpec> springs;
+  std::vector<RotatingDamperSpec> rotating_dampers;
+  std::vector<FrictionSpec> friction;
+  std::vector<RigidLinkSpec> rigid_links;
+  std::vector<FixedSpec> fixed;
+  std::vector<UnbalanceSpec> unbalances;
+  std::vector<ForceSpec> forces;
+  std::vector<StaticLoadSpec> static_loads;
+  ModalSpec modal;
+  CampbellSpec campbell;
+  ResponseSpec response;
+  StaticSpec static_;  ///< the [static] table ("static" is a C++ keyword)
+  RunupSpec runup;
+  bool operator==(const ModelSpec&) const = default;
+};
+
+}  // namespace feran

@@ -1,0 +1,1050 @@
+#include <feran/spec/build_model.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include <feran/assembly/assembler.hpp>
+#include <feran/assembly/checks.hpp>
+#include <feran/core/suggestions.hpp>
+#include <feran/core/units.hpp>
+#include <feran/elements/rigid_body.hpp>
+#include <feran/elements/rotating_damper.hpp>
+#include <feran/elements/spring_damper.hpp>
+#include <feran/elements/timoshenko_beam.hpp>
+#include <feran/spec/fields.hpp>
+
+#include <feran/spec/spec_path.hpp>
+
+namespace feran {
+
+// ---------------------------------------------------------------------------------
+// SpecSource
+
+SourceLocation SpecSource::locate(std::string_view path) const {
+  std::string p(path);
+  while (true) {
+    if (const auto it = places.find(p); it != places.end()) return it->second;
+    if (p.empty()) break;
+    p = spec::parent_path(p);
+  }
+  return SourceLocation{file, 1, 1};
+}
+
+ModelError SpecSource::locate(const SpecError& error) const {
+  return ModelError(locate(error.path()), error.message());
+}
+
+namespace {
+
+using spec::child;
+using detail::closest_match;
+using detail::join_list;
+using detail::number_ranges;
+using detail::all_digits;
+using spec::Bound;
+using spec::element;
+
+constexpr std::string_view ground_word = "ground";
+constexpr std::string_view axis_word = "axis";
+
+/// Builds one Model from one spec; every check throws SpecError.
+class Builder {
+ public:
+  Builder(const ModelSpec& spec, const SpecSource* source) : spec_(spec), source_(source) {}
+
+  Model build(BuildInfo* info);
+
+ private:
+  [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+    throw SpecError(path, message);
+  }
+  /// How messages name the place of @p path: "line 4, column 8", or the path itself.
+  std::string place(const std::string& path) const;
+  /// A quantity as written at @p path, else formatted in @p unit.
+  std::string shown(const std::string& path, Real si, Quantity kind,
+                    std::string_view unit = {}) const;
+  /// True when the reader saw @p path (always false for specs built in code).
+  bool given(const std::string& path) const {
+    return source_ != nullptr && source_->places.count(path) != 0;
+  }
+  /// True when @p a was written before @p b (declaration order without a source).
+  bool earlier(const std::string& a, const std::string& b) const;
+  std::string missing_key(std::string_view key, std::string_view table,
+                          std::string_view expected) const {
+    return fmt::format("missing key '{}' in {} (expected {})", key, table, expected);
+  }
+
+  template <class S>
+  void check_bounds(const S& entry, const std::string& path) const;
+  void check_coefficient(const SpeedCoefficient& c, const std::string& path,
+                         std::string_view key, Quantity kind, bool direct) const;
+  void check_choice(const std::string& value, const std::string& path, std::string_view key,
+                    std::span<const std::string_view> choices) const;
+
+  void build_options();
+  const Material& material(const std::string& name, const std::string& path) const;
+  void build_materials();
+  void check_node_name(const std::string& name, const std::string& path) const;
+  Index add_node(Node node, const std::string& defined_at, const std::string& name_at);
+  void build_shafts();
+  void build_nodes();
+  Index node(const NodeRef& ref, const std::string& path, std::string_view key,
+             std::string_view special = {}) const;
+  std::optional<Index> other_node(const std::optional<NodeRef>& to, const std::string& path,
+                                  std::string_view special, Index from) const;
+  void require_rotating(Index index, const std::string& path, std::string_view reason) const;
+  void build_rigid_bodies();
+  void build_springs();
+  void build_rotating_dampers();
+  void build_friction();
+  void build_rigid_links();
+  void build_fixed();
+  void build_unbalances();
+  void build_forces();
+  void build_static_loads();
+  void check_sweep(std::optional<Real> start, std::optional<Real> stop,
+                   const std::string& table) const;
+  /// The nodes of a list of references at @p path (key @p key), none twice.
+  std::vector<Index> distinct_nodes(const std::vector<NodeRef>& refs, const std::string& path,
+                                    std::string_view key) const;
+  void check_analysis_tables() const;
+  void check_static() const;
+  void check_runup() const;
+  void check_structure(BuildInfo* info);
+
+  const ModelSpec& spec_;
+  const SpecSource* source_;
+  Model model_;
+  std::vector<std::string> node_paths_;       ///< per node: the table that defines it
+  std::vector<std::string> node_name_paths_;  ///< per node: where its name (or it) is
+  std::vector<std::string> unnamed_spring_labels_;
+};
+
+std::string Builder::place(const std::string& path) const {
+  if (source_ == nullptr) return path;
+  const SourceLocation at = source_->locate(path);
+  return fmt::format("line {}, column {}", at.line, at.column);
+}
+
+std::string Builder::shown(const std::string& path, Real si, Quantity kind,
+                           std::string_view unit) const {
+  if (source_ != nullptr)
+    if (const auto it = source_->written.find(path); it != source_->written.end())
+      return it->second;
+  return format_quantity(si, kind, unit);
+}
+
+bool Builder::earlier(const std::string& a, const std::string& b) const {
+  if (source_ == nullptr) return true;
+  const SourceLocation p = source_->locate(a), q = source_->locate(b);
+  return p.line < q.line || (p.line == q.line && p.column < q.column);
+}
+
+// ---------------------------------------------------------------------------------
+// Bounds declared in the field tables
+
+template <class S>
+void Builder::check_bounds(const S& entry, const std::string& path) const {
+  using Kind = Bound::Kind;
+  for (const spec::Field<S>& f : spec::fields_of<S>()) {
+    const std::string at = child(path, f.key);
+    const auto check_real = [&](Real v) {
+      const auto text = [&] {
+        return f.kind == spec::FieldKind::quantity ? shown(at, v, f.quantity, f.unit)
+                                                   : fmt::format("{}", v);
+      };
+      if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", f.key, v));
+      if (f.bound.kind == Kind::positive && !(v > 0.0))
+        fail(at, fmt::format("'{}' must be positive, got {}", f.key, text()));
+      if (f.bound.kind == Kind::non_negative && !(v >= 0.0))
+        fail(at, fmt::format("'{}' must not be negative, got {}", f.key, text()));
+    };
+    const auto check_integer = [&](std::int64_t v, const std::string& where, std::string_view name) {
+      if (f.bound.kind != Kind::at_least) return;
+      if (v < f.bound.minimum)
+        fail(where, fmt::format("'{}' must be at least {}, got {}", name, f.bound.minimum, v));
+      if (v > f.bound.maximum)
+        fail(where, fmt::format("'{}' must be at most {}, got {}", name, f.bound.maximum, v));
+    };
+    std::visit(
+        [&](auto member) {
+          using T = std::remove_cvref_t<decltype(entry.*member)>;
+          const T& value = entry.*member;
+          if constexpr (std::is_same_v<T, Real>) {
+            check_real(value);
+          } else if constexpr (std::is_same_v<T, std::optional<Real>>) {
+            if (value) check_real(*value);
+          } else if constexpr (std::is_same_v<T, int>) {
+            check_integer(value, at, f.key);
+          } else if constexpr (std::is_same_v<T, std::optional<int>> ||
+                               std::is_same_v<T, std::optional<std::int64_t>>) {
+            if (value) check_integer(*value, at, f.key);
+          } else if constexpr (std::is_same_v<T, std::vector<int>>) {
+            for (std::size_t i = 0; i < value.size(); ++i)
+              check_integer(value[i], element(at, i), fmt::format("{}[{}]", f.key, i));
+          } else if constexpr (std::is_same_v<T, std::optional<SpeedCoefficient>>) {
+            if (value) check_coefficient(*value, at, f.key, f.quantity, f.direct);
+          }
+        },
+        f.member);
+  }
+}
+
+void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& path,
+                                std::string_view key, Quantity kind, bool direct) const {
+  const std::string note =
+      fmt::format(" ('{}' is a direct coefficient; only the cross terms kyz, kzy, cyz, czy may "
+                  "be negative)",
+                  key);
+  const auto value = [&](Real v, const std::string& at, std::string_view name, bool in_law) {
+    if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", name, v));
+    if (direct && v < 0.0)
+      fail(at, fmt::format("'{}' must not be negative, got {}{}", name, shown(at, v, kind),
+                           in_law ? note : ""));
+  };
+  const auto speed = [&](Real v, const std::string& at, std::string_view name) {
+    if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", name, v));
+  };
+  std::visit(
+      [&](const auto& law) {
+        using L = std::decay_t<decltype(law)>;
+        if constexpr (std::is_same_v<L, SpeedCoefficient::Constant>) {
+          value(law.value, path, key, false);
+        } else if constexpr (std::is_same_v<L, SpeedCoefficient::Table>) {
+          if (law.speeds.empty()) fail(child(path, "speeds"), fmt::format("'{}.speeds' must not be empty", key));
+          if (law.values.size() != law.speeds.size())
+            fail(child(path, "values"),
+                 fmt::format("'{0}.speeds' and '{0}.values' must have the same length, got {1} "
+                             "speeds and {2} values",
+                             key, law.speeds.size(), law.values.size()));
+          for (std::size_t i = 0; i < law.speeds.size(); ++i) {
+            const std::string at = element(child(path, "speeds"), i);
+            speed(law.speeds[i], at, fmt::format("{}.speeds[{}]", key, i));
+            if (i > 0 && !(law.speeds[i] > law.speeds[i - 1]))
+              fail(at, fmt::format("'{}.speeds' must be strictly increasing, but entry {} ({} "
+                                   "rad/s) does not exceed the one before it ({} rad/s)",
+                                   key, i, law.speeds[i], law.speeds[i - 1]));
+            const std::string v_at = element(child(path, "values"), i);
+            value(law.values[i], v_at, fmt::format("{}.values[{}]", key, i), true);
+          }
+        } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
+          value(law.below, child(path, "below"), "below", true);
+          value(law.above, child(path, "above"), "above", true);
+          speed(law.at, child(path, "at"), "at");
+        } else {
+          value(law.value, child(path, "value"), "value", true);
+          for (const auto& [name, v] : {std::pair{"f_as", law.f_as}, std::pair{"c0", law.c0},
+                                        std::pair{"c1", law.c1}, std::pair{"c2", law.c2}})
+            speed(v, child(path, name), name);
+          // s(f) runs between c0 − |c1|/2 and c0 + |c1|/2; a direct coefficient stays ≥ 0.
+          if (direct && law.c0 < 0.5 * std::abs(law.c1))
+            fail(given(child(path, "c0")) || source_ == nullptr ? child(path, "c0")
+                                                                 : child(path, "c1"),
+                 fmt::format("the arctan factor of direct coefficient '{}' would turn negative "
+                             "at high or low speed: need c0 ≥ |c1|/2, got c0 = {}, c1 = {}",
+                             key, law.c0, law.c1));
+        }
+      },
+      c.law());
+}
+
+void Builder::check_choice(const std::string& value, const std::string& path, std::string_view key,
+                           std::span<const std::string_view> choices) const {
+  std::vector<std::string> names(choices.begin(), choices.end());
+  if (std::find(names.begin(), names.end(), value) != names.end()) return;
+  std::string message =
+      fmt::format("'{}' must be {}, got \"{}\"", key, join_list(names, "or", '"'), value);
+  if (const auto m = closest_match(value, names, 2))
+    message += fmt::format("; did you mean \"{}\"?", *m);
+  fail(path, message);
+}
+
+// ---------------------------------------------------------------------------------
+// Options, materials, nodes
+
+void Builder::build_options() {
+  const OptionsSpec& o = spec_.options;
+  check_bounds(o, "options");
+  check_choice(o.gyroscopic, "options.gyroscopic", "gyroscopic",
+               spec::fields_of<OptionsSpec>()[1].choices);
+  model_.options.shear_deformation = o.shear_deformation;
+  model_.options.gyroscopic =
+      o.gyroscopic == "lumped" ? GyroscopicForm::lumped : GyroscopicForm::consistent;
+  model_.options.shaft_damping = o.shaft_damping;
+  const std::vector<std::string> names = {"axial", "torsion", "lateral"};
+  for (std::size_t i = 0; i < o.free_motions.size(); ++i) {
+    const std::string& s = o.free_motions[i];
+    const auto it = std::find(names.begin(), names.end(), s);
+    if (it == names.end()) {
+      std::string message = fmt::format(
+          "entries of 'free_motions' must be \"axial\", \"torsion\" or \"lateral\", got \"{}\"", s);
+      if (const auto m = closest_match(s, names, 2))
+        message += fmt::format("; did you mean \"{}\"?", *m);
+      fail(element("options.free_motions", i), message);
+    }
+    const auto motion = static_cast<FreeMotion>(it - names.begin());
+    auto& motions = model_.options.free_motions;
+    if (std::find(motions.begin(), motions.end(), motion) == motions.end())
+      motions.push_back(motion);
+  }
+}
+
+void Builder::build_materials() {
+  for (std::size_t i = 0; i < spec_.materials.size(); ++i) {
+    const MaterialSpec& s = spec_.materials[i];
+    const std::string path = element("materials", i);
+    const std::string name_at = child(path, "name");
+    if (s.name.empty()) fail(name_at, "material 'name' must not be empty");
+    for (std::size_t j = 0; j < i; ++j)
+      if (spec_.materials[j].name == s.name)
+        fail(name_at, fmt::format("material '{}' is defined twice; the first definition is at {}",
+                                  s.name, place(child(element("materials", j), "name"))));
+    check_bounds(s, path);
+    Material m;
+    m.name = s.name;
+    m.E = s.E;
+    if (s.G && s.nu)
+      fail(child(path, "nu"), "give either the shear modulus 'G' or Poisson's ratio 'nu', not both");
+    if (s.G) {
+      m.G = *s.G;
+    } else if (s.nu) {
+      if (!(*s.nu > -1.0 && *s.nu < 0.5))
+        fail(child(path, "nu"),
+             fmt::format("'nu' (Poisson's ratio) must lie between -1 and 0.5 (both excluded), got {}",
+                         *s.nu));
+      m.G = m.E / (2.0 * (1.0 + *s.nu));
+    } else {
+      fail(path, fmt::format("missing key 'G' or 'nu' in [[materials]] (expected the shear "
+                             "modulus G, {}, or Poisson's ratio nu, a number such as 0.3)",
+                             expected_quantity(Quantity::pressure)));
+    }
+    m.rho = s.rho;
+    m.loss_factor = s.loss_factor;
+    model_.materials.push_back(m);
+  }
+}
+
+const Material& Builder::material(const std::string& name, const std::string& path) const {
+  std::vector<std::string> names;
+  for (const Material& m : model_.materials) {
+    if (m.name == name) return m;
+    names.push_back(m.name);
+  }
+  std::string message = fmt::format("material '{}' is not defined", name);
+  if (const auto match = closest_match(name, names, 2))
+    message += fmt::format("; did you mean '{}'?", *match);
+  else if (names.empty())
+    message += "; define it in a [[materials]] table";
+  else
+    message += fmt::format("; the defined materials are {}", join_list(names, "and", '\''));
+  fail(path, message);
+}
+
+void Builder::check_node_name(const std::string& name, const std::string& path) const {
+  if (name == ground_word || name == axis_word)
+    fail(path, fmt::format("'{}' cannot be a node name: it is reserved for references to {}", name,
+                           name == ground_word ? "the ground" : "the rotating frame's axis"));
+}
+
+Index Builder::add_node(Node node, const std::string& defined_at, const std::string& name_at) {
+  for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
+    const Node& other = model_.nodes[i];
+    if (other.number == node.number)
+      fail(defined_at, fmt::format("node number {} is already used by the node defined at {}",
+                                   node.number, place(node_paths_[i])));
+    if (!node.name.empty() && other.name == node.name)
+      fail(name_at, fmt::format("node name '{}' is already used by node {}, defined at {}",
+                                node.name, other.number, place(node_name_paths_[i])));
+  }
+  node_paths_.push_back(defined_at);
+  node_name_paths_.push_back(name_at);
+  model_.nodes.push_back(std::move(node));
+  return model_.n_nodes() - 1;
+}
+
+void Builder::build_shafts() {
+  int next_number = 1;
+  for (std::size_t i = 0; i < spec_.shafts.size(); ++i) {
+    const ShaftSpec& shaft = spec_.shafts[i];
+    const std::string path = element("shafts", i);
+    check_bounds(shaft, path);
+    const std::string shaft_label = shaft.name.empty() ? fmt::format("{}", i + 1) : shaft.name;
+    const Material* shaft_material =
+        shaft.material.empty() ? nullptr : &material(shaft.material, child(path, "material"));
+    if (shaft.sections.empty())
+      fail(child(path, "sections"), "a shaft needs at least one section ([[shafts.sections]])");
+
+    Node first;
+    first.number = next_number++;
+    first.x = shaft.x;
+    first.rotating = shaft.rotating;
+    first.name = shaft.start_node;
+    if (!first.name.empty()) check_node_name(first.name, child(path, "start_node"));
+    Index node_a =
+        add_node(first, path, first.name.empty() ? path : child(path, "start_node"));
+
+    const BeamOptions beam_options{model_.options.shear_deformation, model_.options.gyroscopic,
+                                   shaft.rotating,
+                                   shaft.rotating ? model_.options.shaft_damping : 0.0};
+    Real x_section = shaft.x;
+    for (std::size_t j = 0; j < shaft.sections.size(); ++j) {
+      const SectionSpec& s = shaft.sections[j];
+      const std::string section_path = element(child(path, "sections"), j);
+      check_bounds(s, section_path);
+      if (!(s.inner_diameter < s.outer_diameter))
+        fail(child(section_path, "inner_diameter"),
+             fmt::format("inner_diameter ({}) must be smaller than outer_diameter ({})",
+                         shown(child(section_path, "inner_diameter"), s.inner_diameter,
+                               Quantity::length, "mm"),
+                         shown(child(section_path, "outer_diameter"), s.outer_diameter,
+                               Quantity::length, "mm")));
+      const Material* m = s.material.empty() ? shaft_material
+                                             : &material(s.material, child(section_path, "material"));
+      if (m == nullptr)
+        fail(section_path,
+             "missing key 'material' in [[shafts.sections]] (expected the name of a material; "
+             "or give the shaft a default with 'material' in [[shafts]])");
+      BeamOptions options = beam_options;
+      options.loss_factor = m->loss_factor;
+      if (!s.end_node.empty()) check_node_name(s.end_node, child(section_path, "end_node"));
+      const CircularSection section{s.outer_diameter, s.inner_diameter};
+      for (int e = 1; e <= s.elements; ++e) {
+        Node node;
+        node.number = next_number++;
+        node.x = x_section + s.length * static_cast<Real>(e) / static_cast<Real>(s.elements);
+        node.rotating = shaft.rotating;
+        const bool last = e == s.elements;
+        if (last) node.name = s.end_node;
+        const Index node_b = add_node(
+            node, section_path,
+            last && !s.end_node.empty() ? child(section_path, "end_node") : section_path);
+        model_.elements.emplace_back(
+            TimoshenkoBeam(node_a, node_b, s.length / static_cast<Real>(s.elements), section, *m,
+                           options),
+            fmt::format("shaft {} section {} element {}", shaft_label, j + 1, e));
+        node_a = node_b;
+      }
+      x_section += s.length;
+    }
+  }
+}
+
+void Builder::build_nodes() {
+  // Explicit numbers first, so that default numbers never take a number that a later
+  // entry asks for.
+  std::set<std::int64_t> claimed;
+  for (const NodeSpec& n : spec_.nodes)
+    if (n.number) claimed.insert(*n.number);
+  for (std::size_t i = 0; i < spec_.nodes.size(); ++i) {
+    const NodeSpec& s = spec_.nodes[i];
+    const std::string path = element("nodes", i);
+    check_bounds(s, path);
+    Node node;
+    node.x = s.x;
+    node.name = s.name;
+    if (!s.name.empty()) check_node_name(s.name, child(path, "name"));
+    node.rotating = s.rotating;
+    if (s.number) {
+      node.number = static_cast<int>(*s.number);
+    } else {
+      int highest = 0;
+      for (const Node& other : model_.nodes) highest = std::max(highest, other.number);
+      node.number = highest + 1;
+      while (claimed.count(node.number) != 0) ++node.number;
+    }
+    add_node(node, s.number ? child(path, "number") : path,
+             s.name.empty() ? path : child(path, "name"));
+    // Messages about the node (e.g. from check_model) point at its table.
+    node_paths_.back() = path;
+  }
+}
+
+Index Builder::node(const NodeRef& ref, const std::string& path, std::string_view key,
+                    std::string_view special) const {
+  if (const auto* number = std::get_if<std::int64_t>(&ref)) {
+    std::vector<int> numbers;
+    for (Index i = 0; i < model_.n_nodes(); ++i) {
+      if (model_.nodes[static_cast<std::size_t>(i)].number == *number) return i;
+      numbers.push_back(model_.nodes[static_cast<std::size_t>(i)].number);
+    }
+    fail(path, fmt::format("node {} does not exist; the node numbers are {}", *number,
+                           number_ranges(numbers)));
+  }
+  const std::string& text = std::get<std::string>(ref);
+  if (text == ground_word || text == axis_word)
+    fail(path, fmt::format("'{}' cannot be \"{}\" here; expected {}a node number or a node name",
+                           key, text,
+                           special.empty() ? std::string{} : fmt::format("\"{}\", ", special)));
+  const Index found = model_.find_node(text);
+  if (found >= 0) return found;
+  std::vector<std::string> names;
+  for (const Node& n : model_.nodes)
+    if (!n.name.empty()) names.push_back(n.name);
+  std::vector<std::string> candidates = names;
+  if (!special.empty()) candidates.emplace_back(special);
+  std::string message = fmt::format("node '{}' does not exist", text);
+  if (const auto match = closest_match(text, candidates, detail::node_name_distance))
+    message += fmt::format("; did you mean '{}'?", *match);
+  else if (all_digits(text))
+    message += fmt::format("; a quoted reference is a node name: to refer to node number {0}, "
+                           "write {1} = {0} without quotes",
+                           text, key);
+  else if (names.empty())
+    message += fmt::format("; no node has a name, so refer to nodes by number (e.g. {} = 1)", key);
+  else if (names.size() <= 10)
+    message += fmt::format("; the node names are {}", join_list(names, "and", '\''));
+  fail(path, message);
+}
+
+std::optional<Index> Builder::other_node(const std::optional<NodeRef>& to, const std::string& path,
+                                         std::string_view special, Index from) const {
+  if (!to) return std::nullopt;
+  const std::string at = child(path, "to");
+  if (const auto* text = std::get_if<std::string>(&*to); text && *text == special)
+    return std::nullopt;
+  const Index index = node(*to, at, "to", special);
+  if (index == from)
+    fail(at, fmt::format("'to' must be a node other than 'node' (both are node {})",
+                         model_.node_label(index)));
+  return index;
+}
+
+void Builder::require_rotating(Index index, const std::string& path, std::string_view reason) const {
+  if (!model_.nodes[static_cast<std::size_t>(index)].rotating)
+    fail(path, fmt::format("{}, but node {} is not rotating (a shaft's nodes rotate unless the "
+                           "shaft says rotating = false; [[nodes]] entries need rotating = true)",
+                           reason, model_.node_label(index)));
+}
+
+// ---------------------------------------------------------------------------------
+// Elements
+
+void Builder::build_rigid_bodies() {
+  for (std::size_t i = 0; i < spec_.rigid_bodies.size(); ++i) {
+    const RigidBodySpec& s = spec_.rigid_bodies[i];
+    const std::string path = element("rigid_bodies", i);
+    const auto at = [&](std::string_view key) { return child(path, key); };
+    const std::string label = s.name.empty() ? fmt::format("rigid body {}", i + 1) : s.name;
+    const Index node_index = node(s.node, at("node"), "node");
+
+    // The first key given of each form, in the order the field table lists them.
+    const std::array<std::pair<std::string_view, bool>, 3> mass_keys = {
+        {{"mass", s.mass.has_value()}, {"Ja", s.Ja.has_value()}, {"Jp", s.Jp.has_value()}}};
+    const std::array<std::pair<std::string_view, bool>, 4> disk_keys = {
+        {{"outer_diameter", s.outer_diameter.has_value()},
+         {"inner_diameter", s.inner_diameter.has_value()},
+         {"width", s.width.has_value()},
+         {"material", !s.material.empty()}}};
+    std::string_view mass_key, disk_key;
+    for (const auto& [k, present] : mass_keys)
+      if (present && mass_key.empty()) mass_key = k;
+    for (const auto& [k, present] : disk_keys)
+      if (present && disk_key.empty()) disk_key = k;
+    if (!mass_key.empty() && !disk_key.empty())
+      fail(earlier(at(mass_key), at(disk_key)) ? at(disk_key) : at(mass_key),
+           fmt::format("a rigid body is given either by mass, Ja and Jp or as a disk by "
+                       "outer_diameter, width, inner_diameter and material; this one mixes the "
+                       "two forms ('{}' and '{}')",
+                       mass_key, disk_key));
+    if (mass_key.empty() && disk_key.empty())
+      fail(path, "a rigid body needs either mass, Ja and Jp, or the disk form outer_diameter, "
+                 "width and material (inner_diameter optional)");
+    check_bounds(s, path);
+
+    RigidBodyProperties props;
+    if (!mass_key.empty()) {
+      for (const auto& [key, value, kind] :
+           {std::tuple{"mass", s.mass, Quantity::mass}, std::tuple{"Ja", s.Ja, Quantity::inertia},
+            std::tuple{"Jp", s.Jp, Quantity::inertia}})
+        if (!value)
+          fail(path, missing_key(key, "[[rigid_bodies]]", expected_quantity(kind)));
+      props.mass = *s.mass;
+      props.transverse_inertia = *s.Ja;
+      props.polar_inertia = *s.Jp;
+    } else {
+      if (!s.outer_diameter)
+        fail(path, missing_key("outer_diameter", "[[rigid_bodies]]",
+                               expected_quantity(Quantity::length)));
+      if (!s.width)
+        fail(path, missing_key("width", "[[rigid_bodies]]", expected_quantity(Quantity::length)));
+      const Real inner = s.inner_diameter.value_or(0.0);
+      if (!(inner < *s.outer_diameter))
+        fail(at("inner_diameter"),
+             fmt::format("inner_diameter ({}) must be smaller than outer_diameter ({})",
+                         shown(at("inner_diameter"), inner, Quantity::length, "mm"),
+                         shown(at("outer_diameter"), *s.outer_diameter, Quantity::length, "mm")));
+      if (s.material.empty())
+        fail(path, missing_key("material", "[[rigid_bodies]]",
+                               "the name of a material, whose density the disk form uses"));
+      const Material& m = material(s.material, at("material"));
+      props = RigidBody::disk(m.rho, *s.outer_diameter, inner, *s.width);
+    }
+
+    if (s.offset) {
+      props.offset = *s.offset;
+      const Real parallel_axis = props.mass * *s.offset * *s.offset;
+      if (!disk_key.empty()) {
+        // The disk's inertia is about its centre; Ja is about the node.
+        props.transverse_inertia += parallel_axis;
+      } else if (props.transverse_inertia < parallel_axis) {
+        fail(at("Ja"),
+             fmt::format("'Ja' ({} kg*m^2) is about a transverse axis through the node, so it "
+                         "must be at least mass·offset² = {} kg*m^2",
+                         props.transverse_inertia, parallel_axis));
+      }
+    }
+    const bool rotating =
+        s.rotating.value_or(model_.nodes[static_cast<std::size_t>(node_index)].rotating);
+    model_.elements.emplace_back(RigidBody(node_index, props, rotating), label);
+  }
+}
+
+void Builder::build_springs() {
+  for (std::size_t i = 0; i < spec_.springs.size(); ++i) {
+    const SpringSpec& s = spec_.springs[i];
+    const std::string path = element("springs", i);
+    const std::string label = s.name.empty() ? fmt::format("spring {}", i + 1) : s.name;
+    const Index a = node(s.node, child(path, "node"), "node");
+    const std::optional<Index> b = other_node(s.to, path, ground_word, a);
+    check_bounds(s, path);
+
+    SpringDamperCoefficients c;
+    bool any = false;
+    const auto take = [&](const std::optional<SpeedCoefficient>& in, SpeedCoefficient& out) {
+      if (in) {
+        out = *in;
+        any = true;
+      }
+    };
+    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> k = {
+        &s.kx, &s.ky, &s.kz, &s.krx, &s.kry, &s.krz};
+    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> d = {
+        &s.cx, &s.cy, &s.cz, &s.crx, &s.cry, &s.crz};
+    for (std::size_t j = 0; j < dofs_per_node; ++j) {
+      take(*k[j], c.k[j]);
+      take(*d[j], c.c[j]);
+    }
+    take(s.kyz, c.kyz);
+    take(s.kzy, c.kzy);
+    take(s.cyz, c.cyz);
+    take(s.czy, c.czy);
+    c.loss_factor = s.loss_factor;
+    if (!any)
+      fail(path, fmt::format("a spring needs at least one coefficient: kx, ky, kz, krx, kry, krz, "
+                             "kyz, kzy, cx, cy, cz, crx, cry, crz, cyz or czy{}",
+                             s.loss_factor != 0.0 || given(child(path, "loss_factor"))
+                                 ? " ('loss_factor' only scales the stiffness coefficients, it "
+                                   "is not one)"
+                                 : ""));
+    if (s.name.empty()) unnamed_spring_labels_.push_back(label);
+    model_.elements.emplace_back(SpringDamper(a, b, c), label);
+  }
+}
+
+void Builder::build_rotating_dampers() {
+  constexpr std::string_view reason = "a rotating damper acts between rotating parts";
+  for (std::size_t i = 0; i < spec_.rotating_dampers.size(); ++i) {
+    const RotatingDamperSpec& s = spec_.rotating_dampers[i];
+    const std::string path = element("rotating_dampers", i);
+    const std::string label = s.name.empty() ? fmt::format("rotating damper {}", i + 1) : s.name;
+    const Index a = node(s.node, child(path, "node"), "node");
+    require_rotating(a, child(path, "node"), reason);
+    const std::optional<Index> b = other_node(s.to, path, axis_word, a);
+    if (b) require_rotating(*b, child(path, "to"), reason);
+    check_bounds(s, path);
+    if (s.ct == 0.0 && s.cr == 0.0 && s.cx == 0.0 && s.crx == 0.0)
+      fail(path, "a rotating damper needs at least one positive coefficient: ct, cr, cx or crx");
+    model_.elements.emplace_back(RotatingDamper(a, b, {s.ct, s.cr, s.cx, s.crx}), label);
+  }
+}
+
+void Builder::build_friction() {
+  constexpr std::string_view reason = "Coulomb friction acts between rotating parts";
+  for (std::size_t i = 0; i < spec_.friction.size(); ++i) {
+    const FrictionSpec& s = spec_.friction[i];
+    const std::string path = element("friction", i);
+    CoulombFriction f;
+    f.label = s.name.empty() ? fmt::format("friction {}", i + 1) : s.name;
+    f.node_a = node(s.node, child(path, "node"), "node");
+    require_rotating(f.node_a, child(path, "node"), reason);
+    f.node_b = other_node(s.to, path, axis_word, f.node_a);
+    if (f.node_b) require_rotating(*f.node_b, child(path, "to"), reason);
+    check_bounds(s, path);
+    if (s.force == 0.0 && s.moment == 0.0)
+      fail(path, "Coulomb friction needs a positive 'force' or 'moment'");
+    f.force = s.force;
+    f.moment = s.moment;
+    f.epsilon_t = s.epsilon_t;
+    f.epsilon_r = s.epsilon_r;
+    model_.friction.push_back(f);
+  }
+}
+
+// ---------------------------------------------------------------------------------
+// Constraints and loads
+
+void Builder::build_rigid_links() {
+  for (std::size_t i = 0; i < spec_.rigid_links.size(); ++i) {
+    const RigidLinkSpec& s = spec_.rigid_links[i];
+    const std::string path = child(element("rigid_links", i), "nodes");
+    if (s.nodes.size() < 2)
+      fail(path, fmt::format("'nodes' of a rigid link needs at least two nodes, got {}",
+                             s.nodes.size()));
+    const std::vector<Index> nodes = distinct_nodes(s.nodes, path, "nodes");
+    RigidLink link;
+    link.leader = nodes.front();
+    link.followers.assign(nodes.begin() + 1, nodes.end());
+    model_.links.push_back(link);
+  }
+}
+
+void Builder::build_fixed() {
+  const std::span<const std::string_view> valid = spec::fields_of<FixedSpec>()[1].choices;
+  const std::vector<std::string> names(valid.begin(), valid.end());
+  std::vector<int> slot_of(model_.nodes.size(), -1);
+  for (std::size_t i = 0; i < spec_.fixed.size(); ++i) {
+    const FixedSpec& s = spec_.fixed[i];
+    const std::string path = element("fixed", i);
+    const Index n = node(s.node, child(path, "node"), "node");
+    std::array<bool, dofs_per_node> dofs{};
+    const auto set = [&](std::initializer_list<Dof> list) {
+      for (const Dof d : list) dofs[static_cast<std::size_t>(d)] = true;
+    };
+    if (s.dofs.empty()) dofs.fill(true);
+    for (std::size_t j = 0; j < s.dofs.size(); ++j) {
+      const std::string& d = s.dofs[j];
+      if (d == "u") set({Dof::u});
+      else if (d == "v") set({Dof::v});
+      else if (d == "w") set({Dof::w});
+      else if (d == "rx") set({Dof::rx});
+      else if (d == "ry") set({Dof::ry});
+      else if (d == "rz") set({Dof::rz});
+      else if (d == "all") set({Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz});
+      else if (d == "lateral") set({Dof::v, Dof::w, Dof::ry, Dof::rz});
+      else if (d == "translations") set({Dof::u, Dof::v, Dof::w});
+      else if (d == "rotations") set({Dof::rx, Dof::ry, Dof::rz});
+      else {
+        std::string message = fmt::format("entries of 'dofs' must be one of {}, got \"{}\"",
+                                          join_list(names, "or", '"'), d);
+        if (const auto m = closest_match(d, names, 2))
+          message += fmt::format("; did you mean \"{}\"?", *m);
+        fail(element(child(path, "dofs"), j), message);
+      }
+    }
+    // Several [[fixed]] entries for one node add up.
+    int& slot = slot_of[static_cast<std::size_t>(n)];
+    if (slot < 0) {
+      slot = static_cast<int>(model_.fixed.size());
+      model_.fixed.push_back(FixedDofs{n, {}});
+    }
+    auto& target = model_.fixed[static_cast<std::size_t>(slot)].dofs;
+    for (std::size_t d = 0; d < target.size(); ++d) target[d] = target[d] || dofs[d];
+  }
+}
+
+void Builder::build_unbalances() {
+  for (std::size_t i = 0; i < spec_.unbalances.size(); ++i) {
+    const UnbalanceSpec& s = spec_.unbalances[i];
+    const std::string path = element("unbalances", i);
+    Unbalance u;
+    u.label = s.name.empty() ? fmt::format("unbalance {}", i + 1) : s.name;
+    u.node = node(s.node, child(path, "node"), "node");
+    check_bounds(s, path);
+    u.mass = s.mass;
+    u.radius = s.radius;
+    u.phase = s.phase;
+    u.lever = s.lever;
+    model_.unbalances.push_back(u);
+  }
+}
+
+void Builder::build_forces() {
+  using Kind = HarmonicForce::Kind;
+  const std::vector<std::string> kinds = {"fixed", "rotating_force", "rotating_moment"};
+  const std::vector<std::string> directions = {"x", "y", "z", "rx", "ry", "rz"};
+  for (std::size_t i = 0; i < spec_.forces.size(); ++i) {
+    const ForceSpec& s = spec_.forces[i];
+    const std::string path = element("forces", i);
+    const auto at = [&](std::string_view key) { return child(path, key); };
+    HarmonicForce f;
+    f.label = s.name.empty() ? fmt::format("force {}", i + 1) : s.name;
+    f.node = node(s.node, at("node"), "node");
+
+    const auto kind = std::find(kinds.begin(), kinds.end(), s.kind);
+    if (kind == kinds.end()) {
+      std::string message =
+          fmt::format("'kind' must be {}, got \"{}\"", join_list(kinds, "or", '"'), s.kind);
+      std::vector<std::string> extending;
+      for (const std::string& n : kinds)
+        if (!s.kind.empty() && n.starts_with(s.kind)) extending.push_back(n);
+      if (const auto m = closest_match(s.kind, kinds, 3))
+        message += fmt::format("; did you mean \"{}\"?", *m);
+      else if (!extending.empty())
+        message += fmt::format("; did you mean {}?", join_list(extending, "or", '"'));
+      fail(at("kind"), message);
+    }
+    f.kind = static_cast<Kind>(kind - kinds.begin());
+
+    if (f.kind == Kind::fixed) {
+      if (s.direction.empty())
+        fail(path, missing_key("direction", "[[forces]]",
+                               fmt::format("{} for a force of kind \"fixed\"",
+                                           join_list(directions, "or", '"'))));
+      const auto it = std::find(directions.begin(), directions.end(), s.direction);
+      if (it == directions.end()) {
+        const std::string& d = s.direction;
+        std::string message = fmt::format("'direction' must be {}, got \"{}\"",
+                                          join_list(directions, "or", '"'), d);
+        const std::string unsigned_direction =
+            !d.empty() && (d.front() == '+' || d.front() == '-') ? d.substr(1) : std::string{};
+        if (d == "u" || d == "v" || d == "w")
+          message += fmt::format("; did you mean \"{}\"? (directions name axes, not DOFs)",
+                                 d == "u" ? "x" : d == "v" ? "y" : "z");
+        else if (std::find(directions.begin(), directions.end(), unsigned_direction) !=
+                 directions.end())
+          message += fmt::format("; did you mean \"{}\"? (a direction has no sign: the force "
+                                 "acts along +{}; phase = \"180 deg\" reverses it)",
+                                 unsigned_direction, unsigned_direction);
+        else if (const auto m = closest_match(d, directions, 0))
+          message += fmt::format("; did you mean \"{}\"?", *m);
+        fail(at("direction"), message);
+      }
+      f.direction = static_cast<Dof>(it - directions.begin());
+    } else {
+      if (!s.direction.empty())
+        fail(at("direction"),
+             fmt::format("'direction' is only for a force of kind \"fixed\"; a {} turns with "
+                         "the shaft in the y-z plane, so leave 'direction' out",
+                         f.kind == Kind::rotating_force ? "rotating force" : "rotating moment"));
+      require_rotating(f.node, at("node"),
+                       fmt::format("a force of kind \"{}\" turns with the shaft", s.kind));
+    }
+    check_bounds(s, path);
+    f.amplitude = s.amplitude;
+    f.phase = s.phase;
+    model_.forces.push_back(f);
+  }
+}
+
+void Builder::build_static_loads() {
+  for (std::size_t i = 0; i < spec_.static_loads.size(); ++i) {
+    const StaticLoadSpec& s = spec_.static_loads[i];
+    const std::string path = element("static_loads", i);
+    StaticLoad load;
+    load.label = s.name.empty() ? fmt::format("static load {}", i + 1) : s.name;
+    load.node = node(s.node, child(path, "node"), "node");
+    check_bounds(s, path);
+    load.load = {s.fx, s.fy, s.fz, s.mx, s.my, s.mz};
+    if (std::all_of(load.load.begin(), load.load.end(), [](Real v) { return v == 0.0; }))
+      fail(path, "a static load needs at least one non-zero component: the forces fx, fy, fz "
+                 "or the moments mx, my, mz");
+    model_.static_loads.push_back(load);
+  }
+}
+
+// ---------------------------------------------------------------------------------
+// Analysis tables
+
+void Builder::check_sweep(std::optional<Real> start, std::optional<Real> stop,
+                          const std::string& table) const {
+  if (start && stop && !(*stop > *start))
+    fail(child(table, "stop"),
+         fmt::format("'stop' ({}) must be greater than 'start' ({})",
+                     shown(child(table, "stop"), *stop, Quantity::speed, "Hz"),
+                     shown(child(table, "start"), *start, Quantity::speed, "Hz")));
+}
+
+std::vector<Index> Builder::distinct_nodes(const std::vector<NodeRef>& refs,
+                                           const std::string& path, std::string_view key) const {
+  std::vector<Index> nodes;
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const std::string at = element(path, i);
+    const Index n = node(refs[i], at, fmt::format("{}[{}]", key, i));
+    if (std::find(nodes.begin(), nodes.end(), n) != nodes.end())
+      fail(at, fmt::format("node {} appears twice in '{}'", model_.node_label(n), key));
+    nodes.push_back(n);
+  }
+  return nodes;
+}
+
+void Builder::check_analysis_tables() const {
+  check_bounds(spec_.modal, "modal");
+  check_bounds(spec_.campbell, "campbell");
+  check_sweep(spec_.campbell.start, spec_.campbell.stop, "campbell");
+  check_bounds(spec_.response, "response");
+  check_sweep(spec_.response.start, spec_.response.stop, "response");
+  distinct_nodes(spec_.response.probes, "response.probes", "probes");
+  check_static();
+  check_runup();
+}
+
+void Builder::check_static() const {
+  const StaticSpec& s = spec_.static_;
+  const std::vector<std::string> choices = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
+  if (s.gravity) {
+    const std::string& gravity = *s.gravity;
+    if (gravity == "none") {
+      if (s.g)
+        fail("static.g", "'g' cannot be given with gravity = \"none\"; give a direction such as "
+                         "gravity = \"-z\", or leave 'g' out");
+    } else if (std::find(choices.begin(), choices.end(), gravity) == choices.end()) {
+      std::string message = fmt::format(
+          "'gravity' must be {} (the direction in which gravity pulls), got \"{}\"",
+          join_list(choices, "or", '"'), gravity);
+      if (gravity == "x" || gravity == "y" || gravity == "z")
+        message += fmt::format("; give its sign: \"-{0}\" or \"+{0}\"", gravity);
+      else if (const auto m = closest_match(gravity, choices, 0))
+        message += fmt::format("; did you mean \"{}\"?", *m);
+      fail("static.gravity", message);
+    }
+  } else if (s.g) {
+    fail("static.g", "'g' needs a direction: give 'gravity' as well, e.g. gravity = \"-z\"");
+  }
+  check_bounds(s, "static");
+}
+
+void Builder::check_runup() const {
+  const RunupSpec& r = spec_.runup;
+  // The speed profile's three forms, each named by its first key given.
+  std::vector<std::string> forms;
+  for (const auto& keys : {std::vector<std::pair<std::string, bool>>{{"speed", r.speed.has_value()}},
+                           std::vector<std::pair<std::string, bool>>{{"from", r.from.has_value()},
+                                                                     {"to", r.to.has_value()},
+                                                                     {"ramp_time", r.ramp_time.has_value()}},
+                           std::vector<std::pair<std::string, bool>>{{"table", !r.table.empty()}}}) {
+    std::string first;
+    for (const auto& [key, present] : keys)
+      if (present && (first.empty() || earlier("runup." + key, "runup." + first))) first = key;
+    if (!first.empty()) forms.push_back(first);
+  }
+  std::sort(forms.begin(), forms.end(), [&](const std::string& a, const std::string& b) {
+    return a != b && earlier("runup." + a, "runup." + b);
+  });
+  if (forms.size() > 1)
+    fail("runup." + forms[1],
+         fmt::format("the speed profile is given either by 'speed' (a constant speed), by "
+                     "'from', 'to' and 'ramp_time' (a linear ramp) or by 'table' (time and speed "
+                     "points); this [runup] mixes '{}' and '{}'",
+                     forms[0], forms[1]));
+  check_bounds(r, "runup");
+  for (std::size_t i = 0; i < r.table.size(); ++i) {
+    const std::string time_at = element(element("runup.table", i), 0);
+    const std::string speed_at = element(element("runup.table", i), 1);
+    const auto [time, speed] = r.table[i];
+    if (!std::isfinite(time) || !std::isfinite(speed))
+      fail(element("runup.table", i), "'table' entries must be finite numbers");
+    if (i == 0 && time != 0.0)
+      fail(time_at, fmt::format("'table' must start at time 0, where the run-up starts, but its "
+                                "first time is {}",
+                                shown(time_at, time, Quantity::time)));
+    if (i > 0 && !(time > r.table[i - 1].first)) {
+      const std::string before_at = element(element("runup.table", i - 1), 0);
+      fail(time_at, fmt::format("the times in 'table' must be strictly increasing, but "
+                                "table[{}] ({}) does not come after table[{}] ({})",
+                                i, shown(time_at, time, Quantity::time), i - 1,
+                                shown(before_at, r.table[i - 1].first, Quantity::time)));
+    }
+    if (!(speed >= 0.0))
+      fail(speed_at, fmt::format("'table[{}][1]' must not be negative, got {}", i,
+                                 shown(speed_at, speed, Quantity::speed, "Hz")));
+  }
+  if (!forms.empty() && (forms[0] == "from" || forms[0] == "to" || forms[0] == "ramp_time")) {
+    if (!r.to)
+      fail("runup", missing_key("to", "[runup]",
+                                fmt::format("the ramp's final speed, {}",
+                                            expected_quantity(Quantity::speed))));
+    if (!r.ramp_time)
+      fail("runup", missing_key("ramp_time", "[runup]",
+                                fmt::format("the ramp's duration, {}",
+                                            expected_quantity(Quantity::time))));
+  }
+  check_choice(r.integrator.value_or("trapezoidal"), "runup.integrator", "integrator",
+               spec::fields_of<RunupSpec>()[6].choices);
+  distinct_nodes(r.probes, "runup.probes", "probes");
+
+  std::vector<std::string> named;
+  for (const SpringSpec& s : spec_.springs)
+    if (!s.name.empty() && std::find(named.begin(), named.end(), s.name) == named.end())
+      named.push_back(s.name);
+  for (std::size_t i = 0; i < r.springs.size(); ++i) {
+    const std::string& name = r.springs[i];
+    const std::string at = element("runup.springs", i);
+    const auto count = std::count_if(spec_.springs.begin(), spec_.springs.end(),
+                                     [&](const SpringSpec& s) { return s.name == name; });
+    if (count > 1)
+      fail(at, fmt::format("spring name '{}' is ambiguous: {} [[springs]] entries have it; give "
+                           "them different names",
+                           name, count));
+    if (count == 0) {
+      std::string message = fmt::format("spring '{}' does not exist", name);
+      if (std::find(unnamed_spring_labels_.begin(), unnamed_spring_labels_.end(), name) !=
+          unnamed_spring_labels_.end())
+        message += fmt::format("; '{}' is the label of a [[springs]] entry without a 'name', and "
+                               "only named springs can be referenced: give that entry a 'name'",
+                               name);
+      else if (const auto match = closest_match(name, named, 2))
+        message += fmt::format("; did you mean '{}'?", *match);
+      else if (named.empty())
+        message += "; no [[springs]] entry has a 'name', and only named springs can be referenced";
+      else if (named.size() == 1)
+        message += fmt::format("; the only named spring is '{}'", named.front());
+      else if (named.size() <= 10)
+        message += fmt::format("; the named springs are {}", join_list(named, "and", '\''));
+      fail(at, message);
+    }
+    if (std::find(r.springs.begin(), r.springs.begin() + static_cast<std::ptrdiff_t>(i), name) !=
+        r.springs.begin() + static_cast<std::ptrdiff_t>(i))
+      fail(at, fmt::format("spring '{}' appears twice in 'springs'", name));
+  }
+}
+
+void Builder::check_structure(BuildInfo* info) {
+  try {
+    auto built = std::make_shared<const Assembler>(model_);
+    check_model(model_, *built);
+    if (info != nullptr) info->assembler = std::move(built);
+  } catch (const ModelStructureError& e) {
+    const long n = e.node();
+    fail(n >= 0 && n < static_cast<long>(node_paths_.size())
+             ? node_paths_[static_cast<std::size_t>(n)]
+             : std::string{},
+         e.what());
+  }
+}
+
+Model Builder::build(BuildInfo* info) {
+  model_.name = spec_.title;
+  build_options();
+  build_materials();
+  build_shafts();
+  build_nodes();
+  if (model_.nodes.empty())
+    fail("", "the model has no nodes; define a shaft with [[shafts]] or a node with [[nodes]]");
+  build_rigid_bodies();
+  build_springs();
+  build_rotating_dampers();
+  build_friction();
+  build_rigid_links();
+  build_fixed();
+  build_unbalances();
+  build_forces();
+  build_static_loads();
+  check_analysis_tables();
+  check_structure(info);
+  if (info != nullptr) info->node_paths = node_paths_;
+  return std::move(model_);
+}
+
+}  // namespace
+
+Model build_model(const ModelSpec& spec, const SpecSource* source, BuildInfo* info) {
+  return Builder(spec, source).build(info);
+}
+
+}  // namespace feran
