@@ -17,7 +17,7 @@ EigenSolver parse_solver_name(const std::string& name);
 
 namespace {
 struct CampbellArgs {
-  std::string model;
+  ModelArgs model;
   std::string start, stop;
   int points = 0;
   int modes = 0;
@@ -37,7 +37,7 @@ Runner add_campbell_command(CLI::App& app) {
       "--points 161 \\\n      --orders 1 --json campbell.json --csv campbell.csv\n\n"
       "Unset options take their values from the model file's [campbell] table, else\n"
       "start 0, 101 points, 8 modes, order 1; --stop is required if the file has none.");
-  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  add_model_argument(*cmd, args->model);
   cmd->add_option("--start", args->start, "First speed with unit: 0Hz, 0rpm, 0rad/s");
   cmd->add_option("--stop", args->stop, "Last speed with unit: 80Hz, 4800rpm, 502.7rad/s");
   cmd->add_option("-p,--points", args->points, "Number of evenly spaced speeds (>= 2)")
@@ -53,7 +53,7 @@ Runner add_campbell_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
-    const ModelFile file = read_model_file(args->model);
+    const ModelFile file = read_model(args->model);
     const Real start = args->start.empty() ? file.campbell.start.value_or(0.0)
                                            : parse_speed_option(args->start, "--start");
     if (args->stop.empty() && !file.campbell.stop)

@@ -4,8 +4,11 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include <feran/io/model_reader.hpp>
 
 namespace feran::app {
 
@@ -23,6 +26,17 @@ Runner add_campbell_command(CLI::App& app);
 Runner add_response_command(CLI::App& app);
 Runner add_static_command(CLI::App& app);
 Runner add_runup_command(CLI::App& app);
+Runner add_params_command(CLI::App& app);
+
+/// The model an analysis reads: its file and the parameters set on the command line.
+struct ModelArgs {
+  std::string path;
+  std::vector<std::string> assignments;  ///< --set PATH=VALUE, in order
+};
+/// Adds the model file argument and --set to a sub-command.
+void add_model_argument(CLI::App& cmd, ModelArgs& model);
+/// Reads the model file and applies the --set assignments.
+ModelFile read_model(const ModelArgs& model);
 
 /// Options every analysis shares.
 struct OutputOptions {

@@ -8,6 +8,17 @@
 
 namespace feran::app {
 
+void add_model_argument(CLI::App& cmd, ModelArgs& model) {
+  cmd.add_option("model", model.path, "Model file (TOML, see docs/model-format.md)")->required();
+  cmd.add_option("--set", model.assignments,
+                 "Set a number of the model by its path, with its unit, e.g.\n"
+                 "--set 'springs[bearing 1].ky=2e7 N/m' (repeatable; 'feran params MODEL' lists them)")
+      ->type_name("PATH=VALUE")
+      ->allow_extra_args(false);
+}
+
+ModelFile read_model(const ModelArgs& model) { return read_model_file(model.path, model.assignments); }
+
 void add_output_options(CLI::App& cmd, OutputOptions& out) {
   cmd.add_option("--json", out.json_path, "Write the results as JSON to this file (docs/output-format.md)");
   cmd.add_option("--csv", out.csv_path, "Write the results as CSV to this file (docs/output-format.md)");

@@ -70,7 +70,9 @@ int main(int argc, char** argv) {
       "  feran modal examples/01_internal_damping/model.toml --speed 30Hz\n"
       "  feran campbell examples/01_internal_damping/model.toml --stop 80Hz --points 161 --json c.json\n"
       "  feran response examples/01_internal_damping/model.toml --stop 80Hz --probe rotor\n"
-      "  feran static examples/01_internal_damping/model.toml --gravity -y\n\n"
+      "  feran static examples/01_internal_damping/model.toml --gravity -y\n"
+      "  feran params examples/02_centrifuge/model.toml\n"
+      "  feran modal examples/02_centrifuge/model.toml --set 'springs[bearing k12].ky=2e7 N/m'\n\n"
       "Run 'feran <command> --help' for a command's options.");
   app.set_version_flag("--version", "feran " FERAN_VERSION);
   app.require_subcommand(1);
@@ -81,6 +83,7 @@ int main(int argc, char** argv) {
   runners["response"] = feran::app::add_response_command(app);
   runners["static"] = feran::app::add_static_command(app);
   runners["runup"] = feran::app::add_runup_command(app);
+  runners["params"] = feran::app::add_params_command(app);
 
   try {
     app.parse(argc, argv);

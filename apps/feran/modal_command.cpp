@@ -15,7 +15,7 @@ namespace feran::app {
 
 namespace {
 struct ModalArgs {
-  std::string model;
+  ModelArgs model;
   std::string speed;
   int modes = 0;
   std::string solver = "auto";
@@ -37,7 +37,7 @@ Runner add_modal_command(CLI::App& app) {
       "Example:\n  feran modal examples/01_internal_damping/model.toml --speed 30Hz --json modes.json\n\n"
       "The speed defaults to [modal] speed in the model file, else 0. Modes are sorted by\n"
       "frequency; rigid-body modes are marked as such.");
-  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  add_model_argument(*cmd, args->model);
   cmd->add_option("-s,--speed", args->speed, "Rotor speed with unit: 30Hz, 1800rpm or 188.5rad/s");
   cmd->add_option("-n,--modes", args->modes, "Number of modes (lowest first); default: all (dense) or 12 (sparse)")
       ->check(CLI::PositiveNumber);
@@ -49,7 +49,7 @@ Runner add_modal_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
-    const ModelFile file = read_model_file(args->model);
+    const ModelFile file = read_model(args->model);
     Real speed = file.modal.speed.value_or(0.0);
     if (!args->speed.empty()) speed = parse_speed_option(args->speed, "--speed");
     ModalOptions options;

@@ -19,7 +19,7 @@ namespace feran::app {
 namespace {
 
 struct ResponseArgs {
-  std::string model;
+  ModelArgs model;
   std::string start, stop;
   int points = 0;
   std::string speed;
@@ -99,7 +99,7 @@ Runner add_response_command(CLI::App& app) {
       "frequency sweep (--freq-start/--freq-stop) holds the rotor at --speed and excites\n"
       "with the forces at each frequency. Unset options come from the model's [response]\n"
       "table; probes default to every node carrying an unbalance.");
-  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  add_model_argument(*cmd, args->model);
   cmd->add_option("--start", args->start, "Speed sweep: first speed with unit (0Hz, 0rpm)");
   cmd->add_option("--stop", args->stop, "Speed sweep: last speed with unit (80Hz, 4800rpm)");
   cmd->add_option("-p,--points", args->points, "Number of evenly spaced points (>= 1)")->check(CLI::Range(1, 10000000));
@@ -120,7 +120,7 @@ Runner add_response_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
-    const ModelFile file = read_model_file(args->model);
+    const ModelFile file = read_model(args->model);
     const Model& model = file.model;
     HarmonicOptions options;
     options.unbalance = !args->no_unbalance;

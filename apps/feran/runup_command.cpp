@@ -21,7 +21,7 @@ namespace feran::app {
 namespace {
 
 struct RunupArgs {
-  std::string model;
+  ModelArgs model;
   std::string speed, from, to, ramp_time, table;
   std::string duration;
   std::string integrator;
@@ -81,7 +81,7 @@ Runner add_runup_command(CLI::App& app) {
       "then held), --table TIME:SPEED,... (piecewise linear). Unset options come from the\n"
       "model's [runup] table. Integrators: trapezoidal (Newton), rk3 (explicit),\n"
       "wolfbrandt (W-method, order 2), ros34pw2 (W-method, order 3, adaptive).");
-  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  add_model_argument(*cmd, args->model);
   cmd->add_option("-s,--speed", args->speed, "Constant speed with unit (40Hz, 2400rpm)");
   cmd->add_option("--from", args->from, "Ramp: start speed (default 0Hz)");
   cmd->add_option("--to", args->to, "Ramp: end speed (80Hz)");
@@ -114,7 +114,7 @@ Runner add_runup_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
-    const ModelFile file = read_model_file(args->model);
+    const ModelFile file = read_model(args->model);
     const Model& model = file.model;
     const RunupDefaults& d = file.runup;
     TransientOptions options;

@@ -16,7 +16,7 @@ namespace feran::app {
 
 namespace {
 struct StaticArgs {
-  std::string model;
+  ModelArgs model;
   std::string gravity;
   std::string g;
   std::string speed;
@@ -33,7 +33,7 @@ Runner add_static_command(CLI::App& app) {
       "Example:\n  feran static examples/02_centrifuge/model.toml --gravity -x --json static.json\n\n"
       "Gravity comes from --gravity, else the model's [static] table, else -y at 9.81 m/s^2.\n"
       "The model's [[static_loads]] act too unless --no-loads is given.");
-  cmd->add_option("model", args->model, "Model file (TOML, see docs/model-format.md)")->required();
+  add_model_argument(*cmd, args->model);
   cmd->add_option("--gravity", args->gravity, "Direction of gravity: +x, -x, +y, -y, +z, -z or none")
       ->check(CLI::IsMember({"+x", "-x", "+y", "-y", "+z", "-z", "x", "y", "z", "none"}));
   cmd->add_option("--g", args->g, "Gravitational acceleration with unit (default 9.81m/s^2)");
@@ -42,7 +42,7 @@ Runner add_static_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
-    const ModelFile file = read_model_file(args->model);
+    const ModelFile file = read_model(args->model);
     StaticOptions options;
     Real g = 9.81;
     if (!args->g.empty()) {

@@ -14,6 +14,7 @@
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/suggestions.hpp>
 #include <feran/spec/fields.hpp>
+#include <feran/spec/parameters.hpp>
 #include <feran/spec/spec_path.hpp>
 
 #include "table_reader.hpp"
@@ -482,11 +483,17 @@ ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_fo
   return spec;
 }
 
-ModelFile read_model_string(std::string_view toml_text, const std::string& path_for_messages) {
-  ModelFile file;
-  file.path = path_for_messages;
-  file.spec = read_model_spec(toml_text, path_for_messages, &file.source);
-  file.title = file.spec.title;
+namespace {
+
+/// True when @p a names @p b or a part of it, or the other way round.
+bool overlaps(std::string_view a, std::string_view b) {
+  if (a.size() > b.size()) std::swap(a, b);
+  return b.starts_with(a) && (a.size() == b.size() || b[a.size()] == '.' || b[a.size()] == '[');
+}
+
+/// Builds file.spec into file.model; @p set are the assignments applied to the spec
+/// and the canonical paths they set.
+void build(ModelFile& file, const std::vector<std::pair<std::string, std::string>>& set) {
   try {
     BuildInfo info;
     file.model = build_model(file.spec, &file.source, &info);
@@ -494,9 +501,21 @@ ModelFile read_model_string(std::string_view toml_text, const std::string& path_
     for (const std::string& path : info.node_paths)
       file.node_locations.push_back(file.source.locate(path));
   } catch (const SpecError& e) {
+    for (const auto& [assignment, path] : set)
+      if (overlaps(path, e.path())) throw Error(fmt::format("--set '{}': {}", assignment, e.message()));
     throw file.source.locate(e);
   }
   fill_defaults(file);
+}
+
+}  // namespace
+
+ModelFile read_model_string(std::string_view toml_text, const std::string& path_for_messages) {
+  ModelFile file;
+  file.path = path_for_messages;
+  file.spec = read_model_spec(toml_text, path_for_messages, &file.source);
+  file.title = file.spec.title;
+  build(file, {});
   return file;
 }
 
@@ -511,6 +530,22 @@ std::string read_text_file(const std::string& path) {
 
 ModelFile read_model_file(const std::string& path) {
   return read_model_string(read_text_file(path), path);
+}
+
+ModelFile read_model_file(const std::string& path, const std::vector<std::string>& assignments) {
+  ModelFile file;
+  file.path = path;
+  file.spec = read_model_spec(read_text_file(path), path, &file.source);
+  std::vector<std::pair<std::string, std::string>> set;
+  for (const std::string& assignment : assignments) {
+    const std::string canonical = apply_assignment(file.spec, assignment);
+    set.emplace_back(assignment, canonical);
+    // The file's text of that value is no longer what the spec holds.
+    std::erase_if(file.source.written, [&](const auto& w) { return overlaps(canonical, w.first); });
+  }
+  file.title = file.spec.title;
+  build(file, set);
+  return file;
 }
 
 }  // namespace feran

@@ -227,4 +227,19 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   return out;
 }
 
+std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source) {
+  std::size_t path_width = 4, value_width = 5;
+  for (const Parameter& p : parameters) {
+    path_width = std::max(path_width, p.path.size());
+    value_width = std::max(value_width, p.text().size());
+  }
+  std::string out = fmt::format("{} settable parameters of {}\n", parameters.size(),
+                                source.model_path);
+  out += "(set one with --set 'PATH=VALUE' on any analysis, the value with its unit)\n\n";
+  out += fmt::format("{:<{}}  {:<{}}  {}\n", "path", path_width, "value", value_width, "meaning");
+  for (const Parameter& p : parameters)
+    out += fmt::format("{:<{}}  {:<{}}  {}\n", p.path, path_width, p.text(), value_width, p.doc);
+  return out;
+}
+
 }  // namespace feran

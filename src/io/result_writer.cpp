@@ -465,4 +465,19 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   }
 }
 
+std::string parameters_json(const std::vector<Parameter>& parameters, const ResultSource& source) {
+  json out = header("params", source);
+  json list = json::array();
+  for (const Parameter& p : parameters)
+    list.push_back({{"path", p.path},
+                    {"value", number(p.value)},
+                    {"si_unit", p.quantity ? std::string(si_unit(*p.quantity)) : std::string()},
+                    {"quantity", p.quantity ? std::string(quantity_name(*p.quantity)) : std::string()},
+                    {"integer", p.integer},
+                    {"text", p.text()},
+                    {"doc", p.doc}});
+  out["parameters"] = std::move(list);
+  return out.dump(2) + "\n";
+}
+
 }  // namespace feran

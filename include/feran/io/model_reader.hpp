@@ -129,6 +129,12 @@ std::string read_text_file(const std::string& path);
 /// check_model() rejects (no mass on some DOF, an unintended free motion).
 ModelFile read_model_file(const std::string& path);
 
+/// Reads the model file at @p path, sets the parameters of @p assignments ("PATH=VALUE",
+/// spec/parameters.hpp) in its spec, and then builds and checks it. A bad assignment
+/// throws ParameterError; a problem that build_model() finds in a value that an
+/// assignment set is reported as "--set 'PATH=VALUE': …" instead of at the file's line.
+ModelFile read_model_file(const std::string& path, const std::vector<std::string>& assignments);
+
 /// Reads and checks a model given as TOML text; @p path_for_messages names it in
 /// errors and in ModelFile::path. Throws ModelError as read_model_file() does.
 ModelFile read_model_string(std::string_view toml_text, const std::string& path_for_messages);

@@ -27,4 +27,7 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
 std::string static_report(const StaticResult& result, const StaticOptions& options, const Model& model,
                           const ResultSource& source);
 
+/// Table of a model's settable parameters: path, value with unit, meaning.
+std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source);
+
 }  // namespace feran

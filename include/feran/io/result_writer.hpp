@@ -3,12 +3,14 @@
 /// Results for programs: JSON and CSV (format in docs/output-format.md).
 
 #include <string>
+#include <vector>
 
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/model/model.hpp>
+#include <feran/spec/parameters.hpp>
 
 namespace feran {
 
@@ -45,6 +47,9 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
 /// CSV text of a static result: one row per shaft station (element end) with the
 /// displacements of its node, the section forces and the stresses.
 std::string static_csv(const StaticResult& result, const Model& model);
+
+/// JSON text of a model's settable parameters (feran params).
+std::string parameters_json(const std::vector<Parameter>& parameters, const ResultSource& source);
 
 /// Writes @p content to @p path through a temporary file in the same directory and
 /// a rename, so that a reader never sees a half-written file. Throws feran::Error.
