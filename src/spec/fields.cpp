@@ -30,8 +30,9 @@ constexpr std::int64_t max_elements_per_section = 100000;
 
 /// The name of an entry, used in messages and to name it in parameter paths.
 template <class S>
-Field<S> name_field(std::string_view doc) {
-  return {.key = "name", .kind = K::text, .member = &S::name, .doc = doc};
+Field<S> name_field(std::string_view doc, std::string_view default_text = {}) {
+  return {.key = "name", .kind = K::text, .member = &S::name, .doc = doc,
+          .default_text = default_text};
 }
 
 /// The node an entry sits at.
@@ -41,8 +42,9 @@ Field<S> node_field(std::string_view doc) {
 }
 
 template <class S>
-Field<S> to_field(std::string_view special, std::string_view doc) {
-  return {.key = "to", .kind = K::node, .member = &S::to, .doc = doc, .special = special};
+Field<S> to_field(std::string_view special, std::string_view doc, std::string_view default_text) {
+  return {.key = "to", .kind = K::node, .member = &S::to, .doc = doc, .special = special,
+          .default_text = default_text};
 }
 
 }  // namespace
@@ -61,15 +63,15 @@ const FieldTable<OptionsSpec>& fields_of<OptionsSpec>() {
   using S = OptionsSpec;
   static const FieldTable<S> table = {
       {.key = "shear_deformation", .kind = K::flag, .member = &S::shear_deformation,
-       .doc = "Timoshenko shaft elements (true) or Euler–Bernoulli (false); default true"},
+       .doc = "Timoshenko shaft elements (`true`) or Euler–Bernoulli (`false`)"},
       {.key = "gyroscopic", .kind = K::choice, .member = &S::gyroscopic,
-       .doc = "gyroscopic matrix of shaft elements: consistent (default) or lumped at the nodes",
+       .doc = "gyroscopic matrix of shaft elements, consistent or lumped at the nodes",
        .choices = gyroscopic_forms},
       {.key = "shaft_damping", .kind = K::quantity, .member = &S::shaft_damping,
-       .doc = "stiffness-proportional material damping β of rotating shafts, C_i = β·K",
+       .doc = "stiffness-proportional material damping β of rotating shafts: C_i = β·K of each rotating shaft element (non-rotating shafts get none)",
        .quantity = Q::time, .bound = non_negative},
       {.key = "free_motions", .kind = K::choice_list, .member = &S::free_motions,
-       .doc = "rigid-body motions that may stay free (singular stiffness) without an error",
+       .doc = "rigid-body motions that may stay free (section 6)",
        .choices = free_motion_names},
   };
   return table;
@@ -80,18 +82,18 @@ const FieldTable<MaterialSpec>& fields_of<MaterialSpec>() {
   using S = MaterialSpec;
   static const FieldTable<S> table = {
       {.key = "name", .kind = K::text, .member = &S::name,
-       .doc = "the material's name, referred to by shafts and disks", .required = true},
+       .doc = "unique among materials", .required = true},
       {.key = "E", .kind = K::quantity, .member = &S::E, .doc = "Young's modulus",
        .quantity = Q::pressure, .bound = positive, .required = true, .unit = "GPa"},
       {.key = "G", .kind = K::quantity, .member = &S::G,
-       .doc = "shear modulus (give G or nu, not both)", .quantity = Q::pressure,
+       .doc = "shear modulus; give `G` or `nu`, not both", .quantity = Q::pressure,
        .bound = positive, .unit = "GPa"},
       {.key = "nu", .kind = K::number, .member = &S::nu,
-       .doc = "Poisson's ratio, -1 < nu < 0.5 (give G or nu, not both)"},
-      {.key = "rho", .kind = K::quantity, .member = &S::rho, .doc = "density",
+       .doc = "−1 < ν < 0.5, Poisson's ratio; then G = E / (2(1 + ν))"},
+      {.key = "rho", .kind = K::quantity, .member = &S::rho, .doc = "density (0 is allowed for a massless-shaft idealisation)",
        .quantity = Q::density, .bound = non_negative, .required = true},
       {.key = "loss_factor", .kind = K::number, .member = &S::loss_factor,
-       .doc = "hysteretic loss factor η of shafts of this material (harmonic analyses)",
+       .doc = "hysteretic (structural) loss factor η of the material",
        .bound = non_negative},
   };
   return table;
@@ -101,13 +103,13 @@ template <>
 const FieldTable<ShaftSpec>& fields_of<ShaftSpec>() {
   using S = ShaftSpec;
   static const FieldTable<S> table = {
-      name_field<S>("the shaft's name, used in element labels"),
+      name_field<S>("used in element labels; without it the shaft's index (1, 2, …) is used"),
       {.key = "x", .kind = K::quantity, .member = &S::x,
-       .doc = "axial position of the shaft's first node; default 0", .unit = "mm"},
+       .doc = "axial position of the shaft's first node", .unit = "mm"},
       {.key = "rotating", .kind = K::flag, .member = &S::rotating,
-       .doc = "whether the shaft rotates; default true"},
+       .doc = "whether the shaft and its nodes rotate"},
       {.key = "material", .kind = K::text, .member = &S::material,
-       .doc = "default material of the sections"},
+       .doc = "name of the default material of its sections"},
       {.key = "start_node", .kind = K::text, .member = &S::start_node,
        .doc = "name of the shaft's first node"},
   };
@@ -123,12 +125,12 @@ const FieldTable<SectionSpec>& fields_of<SectionSpec>() {
       {.key = "outer_diameter", .kind = K::quantity, .member = &S::outer_diameter,
        .doc = "outer diameter", .bound = positive, .required = true, .unit = "mm"},
       {.key = "inner_diameter", .kind = K::quantity, .member = &S::inner_diameter,
-       .doc = "bore diameter, smaller than outer_diameter; default 0 (solid)",
+       .doc = "bore diameter, < `outer_diameter`",
        .bound = non_negative, .unit = "mm"},
       {.key = "material", .kind = K::text, .member = &S::material,
-       .doc = "material of the section; default the shaft's"},
+       .doc = "name of a material; required if the shaft gives none", .default_text = "the shaft's `material`"},
       {.key = "elements", .kind = K::integer, .member = &S::elements,
-       .doc = "number of equal shaft elements; default 1",
+       .doc = "number of equal shaft elements",
        .bound = at_least(1, max_elements_per_section)},
       {.key = "end_node", .kind = K::text, .member = &S::end_node,
        .doc = "name of the section's last node"},
@@ -142,12 +144,12 @@ const FieldTable<NodeSpec>& fields_of<NodeSpec>() {
   static const FieldTable<S> table = {
       {.key = "x", .kind = K::quantity, .member = &S::x, .doc = "axial position",
        .required = true, .unit = "mm"},
-      {.key = "name", .kind = K::text, .member = &S::name, .doc = "the node's name"},
+      {.key = "name", .kind = K::text, .member = &S::name, .doc = "unique node name"},
       {.key = "number", .kind = K::integer, .member = &S::number,
-       .doc = "the node's number; default the next free number",
-       .bound = at_least(1, 2147483646)},
+       .doc = "unique node number",
+       .bound = at_least(1, 2147483646), .default_text = "next free number (section 3)"},
       {.key = "rotating", .kind = K::flag, .member = &S::rotating,
-       .doc = "whether the node rotates; default false"},
+       .doc = "whether the node belongs to a rotating body"},
   };
   return table;
 }
@@ -156,27 +158,27 @@ template <>
 const FieldTable<RigidBodySpec>& fields_of<RigidBodySpec>() {
   using S = RigidBodySpec;
   static const FieldTable<S> table = {
-      name_field<S>("the body's name, in messages and reports"),
-      node_field<S>("node the body sits at"),
-      {.key = "mass", .kind = K::quantity, .member = &S::mass, .doc = "mass",
-       .quantity = Q::mass, .bound = non_negative},
+      name_field<S>("label (i counts the entries from 1)", "`\"rigid body <i>\"`"),
+      node_field<S>("the node the body sits at"),
+      {.key = "mass", .kind = K::quantity, .member = &S::mass, .doc = "mass form: the mass",
+       .quantity = Q::mass, .bound = non_negative, .default_text = "required in the mass form"},
       {.key = "Ja", .kind = K::quantity, .member = &S::Ja,
-       .doc = "moment of inertia about a transverse axis through the node",
-       .quantity = Q::inertia, .bound = non_negative},
-      {.key = "Jp", .kind = K::quantity, .member = &S::Jp, .doc = "polar moment of inertia",
-       .quantity = Q::inertia, .bound = non_negative},
+       .doc = "mass form: about a transverse axis **through the node**",
+       .quantity = Q::inertia, .bound = non_negative, .default_text = "required in the mass form"},
+      {.key = "Jp", .kind = K::quantity, .member = &S::Jp, .doc = "mass form: polar, about the x axis",
+       .quantity = Q::inertia, .bound = non_negative, .default_text = "required in the mass form"},
       {.key = "outer_diameter", .kind = K::quantity, .member = &S::outer_diameter,
-       .doc = "disk form: outer diameter", .bound = positive, .unit = "mm"},
+       .doc = "disk form: outer diameter", .bound = positive, .unit = "mm", .default_text = "required in the disk form"},
       {.key = "inner_diameter", .kind = K::quantity, .member = &S::inner_diameter,
-       .doc = "disk form: bore diameter; default 0", .bound = non_negative, .unit = "mm"},
+       .doc = "disk form: bore diameter, < `outer_diameter`", .bound = non_negative, .unit = "mm", .default_text = "`0` (disk form)"},
       {.key = "width", .kind = K::quantity, .member = &S::width, .doc = "disk form: axial width",
-       .bound = positive, .unit = "mm"},
+       .bound = positive, .unit = "mm", .default_text = "required in the disk form"},
       {.key = "material", .kind = K::text, .member = &S::material,
-       .doc = "disk form: material whose density is used"},
+       .doc = "disk form: name of a material (its `rho` is used)", .default_text = "required in the disk form"},
       {.key = "offset", .kind = K::quantity, .member = &S::offset,
-       .doc = "axial offset of the centre of mass from the node; default 0", .unit = "mm"},
+       .doc = "axial position of the centre of mass relative to the node", .unit = "mm", .default_text = "`0`"},
       {.key = "rotating", .kind = K::flag, .member = &S::rotating,
-       .doc = "whether the body rotates; default as its node"},
+       .doc = "whether the body spins (adds the gyroscopic term of Jp)", .default_text = "the node's flag"},
   };
   return table;
 }
@@ -187,30 +189,31 @@ const FieldTable<SpringSpec>& fields_of<SpringSpec>() {
   const auto coefficient = [](std::string_view key, std::optional<SpeedCoefficient> S::*member,
                               Quantity q, bool direct, std::string_view doc) {
     return Field<S>{.key = key, .kind = K::coefficient, .member = member, .doc = doc,
-                    .quantity = q, .bound = direct ? non_negative : Bound{}, .direct = direct};
+                    .quantity = q, .bound = direct ? non_negative : Bound{}, .direct = direct,
+                    .default_text = "`0`"};
   };
   static const FieldTable<S> table = {
-      name_field<S>("the spring's name, referred to by [runup] springs"),
-      node_field<S>("first node"),
-      to_field<S>("ground", "second node, or \"ground\" (default)"),
-      coefficient("kx", &S::kx, Q::stiffness, true, "axial stiffness"),
-      coefficient("ky", &S::ky, Q::stiffness, true, "stiffness along y"),
-      coefficient("kz", &S::kz, Q::stiffness, true, "stiffness along z"),
-      coefficient("krx", &S::krx, Q::rotational_stiffness, true, "torsional stiffness"),
-      coefficient("kry", &S::kry, Q::rotational_stiffness, true, "tilt stiffness about y"),
-      coefficient("krz", &S::krz, Q::rotational_stiffness, true, "tilt stiffness about z"),
-      coefficient("kyz", &S::kyz, Q::stiffness, false, "cross-coupled stiffness, y force from z"),
-      coefficient("kzy", &S::kzy, Q::stiffness, false, "cross-coupled stiffness, z force from y"),
-      coefficient("cx", &S::cx, Q::damping, true, "axial damping"),
-      coefficient("cy", &S::cy, Q::damping, true, "damping along y"),
-      coefficient("cz", &S::cz, Q::damping, true, "damping along z"),
-      coefficient("crx", &S::crx, Q::rotational_damping, true, "torsional damping"),
-      coefficient("cry", &S::cry, Q::rotational_damping, true, "tilt damping about y"),
-      coefficient("crz", &S::crz, Q::rotational_damping, true, "tilt damping about z"),
-      coefficient("cyz", &S::cyz, Q::damping, false, "cross-coupled damping, y force from z"),
-      coefficient("czy", &S::czy, Q::damping, false, "cross-coupled damping, z force from y"),
+      name_field<S>("label; referred to by `springs` of `[runup]`", "`\"spring <i>\"`"),
+      node_field<S>("the first node"),
+      to_field<S>("ground", "a node other than `node`, or the ground", "`\"ground\"`"),
+      coefficient("kx", &S::kx, Q::stiffness, true, "direct stiffness along x"),
+      coefficient("ky", &S::ky, Q::stiffness, true, "direct stiffness along y"),
+      coefficient("kz", &S::kz, Q::stiffness, true, "direct stiffness along z"),
+      coefficient("krx", &S::krx, Q::rotational_stiffness, true, "direct stiffness about x (torsion)"),
+      coefficient("kry", &S::kry, Q::rotational_stiffness, true, "direct stiffness about y"),
+      coefficient("krz", &S::krz, Q::rotational_stiffness, true, "direct stiffness about z"),
+      coefficient("kyz", &S::kyz, Q::stiffness, false, "cross-coupled stiffness, force along y from w; may be negative"),
+      coefficient("kzy", &S::kzy, Q::stiffness, false, "cross-coupled stiffness, force along z from v; may be negative"),
+      coefficient("cx", &S::cx, Q::damping, true, "direct damping along x"),
+      coefficient("cy", &S::cy, Q::damping, true, "direct damping along y"),
+      coefficient("cz", &S::cz, Q::damping, true, "direct damping along z"),
+      coefficient("crx", &S::crx, Q::rotational_damping, true, "direct damping about x (torsion)"),
+      coefficient("cry", &S::cry, Q::rotational_damping, true, "direct damping about y"),
+      coefficient("crz", &S::crz, Q::rotational_damping, true, "direct damping about z"),
+      coefficient("cyz", &S::cyz, Q::damping, false, "cross-coupled damping, force along y from w'; may be negative"),
+      coefficient("czy", &S::czy, Q::damping, false, "cross-coupled damping, force along z from v'; may be negative"),
       {.key = "loss_factor", .kind = K::number, .member = &S::loss_factor,
-       .doc = "hysteretic loss factor η of the stiffness (harmonic analyses)",
+       .doc = "hysteretic loss factor η of the spring's stiffness",
        .bound = non_negative},
   };
   return table;
@@ -220,16 +223,16 @@ template <>
 const FieldTable<RotatingDamperSpec>& fields_of<RotatingDamperSpec>() {
   using S = RotatingDamperSpec;
   static const FieldTable<S> table = {
-      name_field<S>("the damper's name"),
-      node_field<S>("first node (rotating)"),
-      to_field<S>("axis", "second node (rotating), or \"axis\" (default): the rotating frame"),
-      {.key = "ct", .kind = K::quantity, .member = &S::ct, .doc = "lateral damping",
+      name_field<S>("label", "`\"rotating damper <i>\"`"),
+      node_field<S>("must be a rotating node"),
+      to_field<S>("axis", "the rotating frame's axis, or another rotating node", "`\"axis\"`"),
+      {.key = "ct", .kind = K::quantity, .member = &S::ct, .doc = "lateral (translational) c_it",
        .quantity = Q::damping, .bound = non_negative},
-      {.key = "cr", .kind = K::quantity, .member = &S::cr, .doc = "tilt damping",
+      {.key = "cr", .kind = K::quantity, .member = &S::cr, .doc = "tilt c_ir",
        .quantity = Q::rotational_damping, .bound = non_negative},
-      {.key = "cx", .kind = K::quantity, .member = &S::cx, .doc = "axial damping",
+      {.key = "cx", .kind = K::quantity, .member = &S::cx, .doc = "axial",
        .quantity = Q::damping, .bound = non_negative},
-      {.key = "crx", .kind = K::quantity, .member = &S::crx, .doc = "torsional damping",
+      {.key = "crx", .kind = K::quantity, .member = &S::crx, .doc = "torsional",
        .quantity = Q::rotational_damping, .bound = non_negative},
   };
   return table;
@@ -239,20 +242,20 @@ template <>
 const FieldTable<FrictionSpec>& fields_of<FrictionSpec>() {
   using S = FrictionSpec;
   static const FieldTable<S> table = {
-      name_field<S>("the contact's name"),
-      node_field<S>("first node (rotating)"),
-      to_field<S>("axis", "second node (rotating), or \"axis\" (default): the rotating frame"),
+      name_field<S>("label", "`\"friction <i>\"`"),
+      node_field<S>("must be a rotating node"),
+      to_field<S>("axis", "the rotating frame's axis, or another rotating node", "`\"axis\"`"),
       {.key = "force", .kind = K::quantity, .member = &S::force,
-       .doc = "friction force F_ct0 of the translational part", .quantity = Q::force,
+       .doc = "F_ct0, the friction force", .quantity = Q::force,
        .bound = non_negative},
       {.key = "moment", .kind = K::quantity, .member = &S::moment,
-       .doc = "friction moment F_cr0 of the rotational part", .quantity = Q::moment,
+       .doc = "F_cr0, the friction moment", .quantity = Q::moment,
        .bound = non_negative},
       {.key = "epsilon_t", .kind = K::quantity, .member = &S::epsilon_t,
-       .doc = "regularisation velocity of the translational part; default 0.1 mm/s",
+       .doc = "regularisation of the force",
        .quantity = Q::velocity, .bound = positive},
       {.key = "epsilon_r", .kind = K::quantity, .member = &S::epsilon_r,
-       .doc = "regularisation angular velocity of the rotational part; default 0.001 rad/s",
+       .doc = "regularisation of the moment",
        .quantity = Q::angular_velocity, .bound = positive},
   };
   return table;
@@ -263,7 +266,7 @@ const FieldTable<RigidLinkSpec>& fields_of<RigidLinkSpec>() {
   using S = RigidLinkSpec;
   static const FieldTable<S> table = {
       {.key = "nodes", .kind = K::node_list, .member = &S::nodes,
-       .doc = "at least two nodes; the first leads, the others follow it rigidly",
+       .doc = "at least two distinct nodes; the first is the leader",
        .required = true},
   };
   return table;
@@ -273,11 +276,11 @@ template <>
 const FieldTable<FixedSpec>& fields_of<FixedSpec>() {
   using S = FixedSpec;
   static const FieldTable<S> table = {
-      node_field<S>("node whose DOFs are held"),
+      node_field<S>("the node whose DOFs are held"),
       {.key = "dofs", .kind = K::choice_list, .member = &S::dofs,
-       .doc = "DOFs held at zero; default all",
+       .doc = "DOFs and groups of DOFs held at zero (below)",
        .choices = dof_names,
-       .if_empty = "leave it out to fix all DOFs"},
+       .default_text = "`[\"all\"]`", .if_empty = "leave it out to fix all DOFs"},
   };
   return table;
 }
@@ -286,17 +289,17 @@ template <>
 const FieldTable<UnbalanceSpec>& fields_of<UnbalanceSpec>() {
   using S = UnbalanceSpec;
   static const FieldTable<S> table = {
-      name_field<S>("the unbalance's name"),
-      node_field<S>("node the unbalance acts at"),
+      name_field<S>("label", "`\"unbalance <i>\"`"),
+      node_field<S>("the node the unbalance acts at"),
       {.key = "mass", .kind = K::quantity, .member = &S::mass, .doc = "unbalance mass m_U",
        .quantity = Q::mass, .bound = positive, .required = true},
       {.key = "radius", .kind = K::quantity, .member = &S::radius, .doc = "radius r_U",
        .bound = positive, .required = true, .unit = "mm"},
       {.key = "phase", .kind = K::quantity, .member = &S::phase,
-       .doc = "angle from +y towards +z at t = 0; default 0", .quantity = Q::angle,
+       .doc = "angle at t = 0, measured from +y towards +z", .quantity = Q::angle,
        .unit = "deg"},
       {.key = "lever", .kind = K::quantity, .member = &S::lever,
-       .doc = "axial distance from the node to the unbalance plane; default 0", .unit = "mm"},
+       .doc = "axial distance from the node to the unbalance plane", .unit = "mm"},
   };
   return table;
 }
@@ -316,17 +319,17 @@ template <>
 const FieldTable<ForceSpec>& fields_of<ForceSpec>() {
   using S = ForceSpec;
   static const FieldTable<S> table = {
-      name_field<S>("the force's name"),
-      node_field<S>("node the force acts at"),
+      name_field<S>("label", "`\"force <i>\"`"),
+      node_field<S>("a rotating node for the rotating kinds"),
       {.key = "kind", .kind = K::choice, .member = &S::kind,
-       .doc = "fixed (default), rotating_force or rotating_moment",
+       .doc = "(below)",
        .choices = force_kinds},
       {.key = "direction", .kind = K::choice, .member = &S::direction,
-       .doc = "direction of a fixed force or moment", .choices = force_directions},
+       .doc = "forces along the axes x, y, z (DOF u, v, w) or moments about them rx, ry, rz; not allowed for the rotating kinds", .choices = force_directions, .default_text = "required for `\"fixed\"`"},
       {.key = "amplitude", .kind = K::quantity, .member = &S::amplitude,
-       .doc = "amplitude: a force, or a moment for rotating_moment and directions rx, ry, rz",
+       .doc = "A; a force for `\"x\"`, `\"y\"`, `\"z\"` and `\"rotating_force\"`, a moment for `\"rx\"`, `\"ry\"`, `\"rz\"` and `\"rotating_moment\"`",
        .quantity = Q::force, .bound = positive, .required = true},
-      {.key = "phase", .kind = K::quantity, .member = &S::phase, .doc = "phase; default 0",
+      {.key = "phase", .kind = K::quantity, .member = &S::phase, .doc = "φ",
        .quantity = Q::angle, .unit = "deg"},
   };
   return table;
@@ -336,19 +339,19 @@ template <>
 const FieldTable<StaticLoadSpec>& fields_of<StaticLoadSpec>() {
   using S = StaticLoadSpec;
   static const FieldTable<S> table = {
-      name_field<S>("the load's name"),
-      node_field<S>("node the load acts at"),
-      {.key = "fx", .kind = K::quantity, .member = &S::fx, .doc = "force along x",
+      name_field<S>("label", "`\"static load <i>\"`"),
+      node_field<S>("the node the load acts at"),
+      {.key = "fx", .kind = K::quantity, .member = &S::fx, .doc = "force along x (any sign)",
        .quantity = Q::force},
-      {.key = "fy", .kind = K::quantity, .member = &S::fy, .doc = "force along y",
+      {.key = "fy", .kind = K::quantity, .member = &S::fy, .doc = "force along y (any sign)",
        .quantity = Q::force},
-      {.key = "fz", .kind = K::quantity, .member = &S::fz, .doc = "force along z",
+      {.key = "fz", .kind = K::quantity, .member = &S::fz, .doc = "force along z (any sign)",
        .quantity = Q::force},
-      {.key = "mx", .kind = K::quantity, .member = &S::mx, .doc = "moment about x",
+      {.key = "mx", .kind = K::quantity, .member = &S::mx, .doc = "moment about x (any sign, right-hand rule)",
        .quantity = Q::moment},
-      {.key = "my", .kind = K::quantity, .member = &S::my, .doc = "moment about y",
+      {.key = "my", .kind = K::quantity, .member = &S::my, .doc = "moment about y (any sign, right-hand rule)",
        .quantity = Q::moment},
-      {.key = "mz", .kind = K::quantity, .member = &S::mz, .doc = "moment about z",
+      {.key = "mz", .kind = K::quantity, .member = &S::mz, .doc = "moment about z (any sign, right-hand rule)",
        .quantity = Q::moment},
   };
   return table;
@@ -358,7 +361,7 @@ template <>
 const FieldTable<ModalSpec>& fields_of<ModalSpec>() {
   using S = ModalSpec;
   static const FieldTable<S> table = {
-      {.key = "speed", .kind = K::quantity, .member = &S::speed, .doc = "rotor speed",
+      {.key = "speed", .kind = K::quantity, .member = &S::speed, .doc = "rotor speed of the modal analysis",
        .quantity = Q::speed, .unit = "Hz"},
       {.key = "modes", .kind = K::integer, .member = &S::modes, .doc = "number of modes",
        .bound = at_least(1)},
@@ -373,13 +376,13 @@ const FieldTable<CampbellSpec>& fields_of<CampbellSpec>() {
       {.key = "start", .kind = K::quantity, .member = &S::start, .doc = "first speed",
        .quantity = Q::speed, .unit = "Hz"},
       {.key = "stop", .kind = K::quantity, .member = &S::stop,
-       .doc = "last speed, greater than start", .quantity = Q::speed, .unit = "Hz"},
+       .doc = "last speed; > `start` when both are given", .quantity = Q::speed, .unit = "Hz"},
       {.key = "points", .kind = K::integer, .member = &S::points,
-       .doc = "number of evenly spaced speeds", .bound = at_least(2)},
-      {.key = "modes", .kind = K::integer, .member = &S::modes, .doc = "number of modes tracked",
+       .doc = "number of speeds", .bound = at_least(2)},
+      {.key = "modes", .kind = K::integer, .member = &S::modes, .doc = "number of modes to track",
        .bound = at_least(1)},
       {.key = "orders", .kind = K::integer_list, .member = &S::orders,
-       .doc = "excitation orders k of the lines f = k·speed", .bound = at_least(1)},
+       .doc = "each ≥ 1; excitation orders k of the lines f = k·Ω, kept as given", .bound = at_least(1)},
   };
   return table;
 }
@@ -389,15 +392,15 @@ const FieldTable<ResponseSpec>& fields_of<ResponseSpec>() {
   using S = ResponseSpec;
   static const FieldTable<S> table = {
       {.key = "start", .kind = K::quantity, .member = &S::start,
-       .doc = "first speed (or frequency) of the sweep", .quantity = Q::speed, .unit = "Hz"},
+       .doc = "first point of the sweep (rotor speed, or excitation frequency in a frequency sweep)", .quantity = Q::speed, .unit = "Hz"},
       {.key = "stop", .kind = K::quantity, .member = &S::stop,
-       .doc = "last speed, greater than start", .quantity = Q::speed, .unit = "Hz"},
+       .doc = "last point; > `start` when both are given", .quantity = Q::speed, .unit = "Hz"},
       {.key = "points", .kind = K::integer, .member = &S::points,
-       .doc = "number of sweep points", .bound = at_least(2)},
+       .doc = "number of points", .bound = at_least(2)},
       {.key = "probes", .kind = K::node_list, .member = &S::probes,
-       .doc = "nodes whose response is reported", .if_empty = default_hint},
+       .doc = "non-empty, no node twice: the nodes whose response is reported", .if_empty = default_hint},
       {.key = "loss_factor", .kind = K::number, .member = &S::loss_factor,
-       .doc = "global hysteretic loss factor η", .bound = non_negative},
+       .doc = "global hysteretic loss factor η: adds j·η·K_e for every element, on top of the elements' own loss factors", .bound = non_negative},
   };
   return table;
 }
@@ -407,13 +410,13 @@ const FieldTable<StaticSpec>& fields_of<StaticSpec>() {
   using S = StaticSpec;
   static const FieldTable<S> table = {
       {.key = "gravity", .kind = K::choice, .member = &S::gravity,
-       .doc = "direction in which gravity pulls, or none",
+       .doc = "the direction in which gravity pulls, or `\"none\"` (explicitly no gravity)",
        .choices = gravity_directions},
       {.key = "g", .kind = K::quantity, .member = &S::g,
-       .doc = "gravitational acceleration; default 9.81 m/s^2", .quantity = Q::acceleration,
-       .bound = positive},
+       .doc = "magnitude of the gravitational acceleration; only with a direction (an error with `\"none\"` or without `gravity`)", .quantity = Q::acceleration,
+       .bound = positive, .default_text = "`9.81 m/s^2`"},
       {.key = "speed", .kind = K::quantity, .member = &S::speed,
-       .doc = "speed at which speed-dependent coefficients are evaluated", .quantity = Q::speed,
+       .doc = "rotor speed at which speed-dependent coefficients (section 5) are evaluated; without it the static analysis uses zero speed", .quantity = Q::speed,
        .unit = "Hz"},
   };
   return table;
@@ -424,36 +427,36 @@ const FieldTable<RunupSpec>& fields_of<RunupSpec>() {
   using S = RunupSpec;
   static const FieldTable<S> table = {
       {.key = "speed", .kind = K::quantity, .member = &S::speed,
-       .doc = "constant speed (one form of the speed profile)", .quantity = Q::speed,
+       .doc = "a constant rotor speed", .quantity = Q::speed,
        .bound = non_negative, .unit = "Hz"},
       {.key = "from", .kind = K::quantity, .member = &S::from,
-       .doc = "ramp: initial speed; default 0", .quantity = Q::speed, .bound = non_negative,
-       .unit = "Hz"},
-      {.key = "to", .kind = K::quantity, .member = &S::to, .doc = "ramp: final speed",
-       .quantity = Q::speed, .bound = non_negative, .unit = "Hz"},
+       .doc = "speed at t = 0 of a ramp (only with `to` and `ramp_time`)", .quantity = Q::speed, .bound = non_negative,
+       .unit = "Hz", .default_text = "`0`"},
+      {.key = "to", .kind = K::quantity, .member = &S::to, .doc = "speed at the end of the ramp; below `from` for a run-down",
+       .quantity = Q::speed, .bound = non_negative, .unit = "Hz", .default_text = "required for a ramp"},
       {.key = "ramp_time", .kind = K::quantity, .member = &S::ramp_time,
-       .doc = "ramp: its duration", .quantity = Q::time, .bound = positive},
+       .doc = "time the ramp takes", .quantity = Q::time, .bound = positive, .default_text = "required for a ramp"},
       {.key = "table", .kind = K::speed_table, .member = &S::table,
-       .doc = "[time, speed] points from time 0, piecewise linear, held after the last"},
+       .doc = "at least one pair; the first time is 0 and the times strictly increase; speeds ≥ 0"},
       {.key = "duration", .kind = K::quantity, .member = &S::duration,
-       .doc = "length of the run; default the ramp time or the last table time",
-       .quantity = Q::time, .bound = positive},
+       .doc = "length of the run; longer than the profile, the last speed is held",
+       .quantity = Q::time, .bound = positive, .default_text = "the ramp time, or the last time of `table` (when > 0)"},
       {.key = "integrator", .kind = K::choice, .member = &S::integrator,
-       .doc = "time integrator", .choices = integrator_names},
-      {.key = "dt", .kind = K::quantity, .member = &S::dt, .doc = "time step (initial step)",
+       .doc = "the time integrator of the transient analysis", .choices = integrator_names},
+      {.key = "dt", .kind = K::quantity, .member = &S::dt, .doc = "the fixed step, or the initial step of the adaptive `\"ros34pw2\"`",
        .quantity = Q::time, .bound = positive},
       {.key = "rel_tol", .kind = K::number, .member = &S::rel_tol,
-       .doc = "relative tolerance of adaptive stepping", .bound = positive},
+       .doc = "relative error tolerance of adaptive stepping", .bound = positive, .default_text = "`1e-5`"},
       {.key = "abs_tol", .kind = K::number, .member = &S::abs_tol,
-       .doc = "absolute tolerance of adaptive stepping", .bound = positive},
+       .doc = "absolute error tolerance of adaptive stepping (in the units of the state: m, rad, m/s, rad/s)", .bound = positive, .default_text = "`1e-8`"},
       {.key = "output_interval", .kind = K::quantity, .member = &S::output_interval,
        .doc = "time between recorded samples", .quantity = Q::time, .bound = positive},
       {.key = "probes", .kind = K::node_list, .member = &S::probes,
-       .doc = "nodes whose response is recorded", .if_empty = default_hint},
+       .doc = "non-empty, no node twice: the nodes whose motion is recorded", .if_empty = default_hint},
       {.key = "springs", .kind = K::text_list, .member = &S::springs,
-       .doc = "names of springs whose forces are recorded", .if_empty = default_hint},
+       .doc = "non-empty, no spring twice: the spring–dampers whose forces are recorded, each the `name` of a `[[springs]]` entry", .if_empty = default_hint},
       {.key = "modes", .kind = K::integer, .member = &S::modes,
-       .doc = "integrate in a basis of this many undamped modes", .bound = at_least(1)},
+       .doc = "integrate in a basis of this many undamped modes (at 5 speeds of the run) plus static corrections instead of the full model, as `feran runup --modes` (docs/theory/time_integration.md, \"Modal reduction\")", .bound = at_least(1), .default_text = "— (full model)"},
   };
   return table;
 }

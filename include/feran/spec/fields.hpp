@@ -77,6 +77,9 @@ struct Field {
   std::string_view special = {};
   /// For coefficients: a direct coefficient may not be negative.
   bool direct = false;
+  /// The default as the documentation states it, when it is neither "required" nor
+  /// the value of a default-constructed S ("the node's flag", "`\"spring <i>\"`").
+  std::string_view default_text = {};
   /// For lists: when not empty, an empty list is an error and this says what to do
   /// instead ("leave it out to fix all DOFs").
   std::string_view if_empty = {};
