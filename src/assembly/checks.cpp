@@ -190,7 +190,7 @@ void check_model(const Model& model, const Assembler& assembler) {
   std::vector<std::string> names;
   Index first_node = -1;
   for (const FreeMotionInfo& m : find_free_motions(model, assembler)) {
-    const auto& allowed = model.options.free_motions;
+    const auto& allowed = model.free_motions;
     if (std::find(allowed.begin(), allowed.end(), m.family) != allowed.end()) continue;
     problems.push_back(m.description);
     const char* name = m.family == FreeMotion::axial     ? "axial"

@@ -121,6 +121,8 @@ class Builder {
   const ModelSpec& spec_;
   const SpecSource* source_;
   Model model_;
+  BeamOptions beam_;                          ///< [options] as shaft elements take them
+  std::vector<Material> materials_;
   std::vector<std::string> node_paths_;       ///< per node: the table that defines it
   std::vector<std::string> node_name_paths_;  ///< per node: where its name (or it) is
   std::vector<std::string> unnamed_spring_labels_;
@@ -273,10 +275,9 @@ void Builder::build_options() {
   check_bounds(o, "options");
   check_choice(o.gyroscopic, "options.gyroscopic", "gyroscopic",
                spec::fields_of<OptionsSpec>()[1].choices);
-  model_.options.shear_deformation = o.shear_deformation;
-  model_.options.gyroscopic =
-      o.gyroscopic == "lumped" ? GyroscopicForm::lumped : GyroscopicForm::consistent;
-  model_.options.shaft_damping = o.shaft_damping;
+  beam_.shear_deformation = o.shear_deformation;
+  beam_.gyroscopic = o.gyroscopic == "lumped" ? GyroscopicForm::lumped : GyroscopicForm::consistent;
+  beam_.damping_beta = o.shaft_damping;
   const std::vector<std::string> names = {"axial", "torsion", "lateral"};
   for (std::size_t i = 0; i < o.free_motions.size(); ++i) {
     const std::string& s = o.free_motions[i];
@@ -289,7 +290,7 @@ void Builder::build_options() {
       fail(element("options.free_motions", i), message);
     }
     const auto motion = static_cast<FreeMotion>(it - names.begin());
-    auto& motions = model_.options.free_motions;
+    auto& motions = model_.free_motions;
     if (std::find(motions.begin(), motions.end(), motion) == motions.end())
       motions.push_back(motion);
   }
@@ -326,13 +327,13 @@ void Builder::build_materials() {
     }
     m.rho = s.rho;
     m.loss_factor = s.loss_factor;
-    model_.materials.push_back(m);
+    materials_.push_back(m);
   }
 }
 
 const Material& Builder::material(const std::string& name, const std::string& path) const {
   std::vector<std::string> names;
-  for (const Material& m : model_.materials) {
+  for (const Material& m : materials_) {
     if (m.name == name) return m;
     names.push_back(m.name);
   }
@@ -389,9 +390,9 @@ void Builder::build_shafts() {
     Index node_a =
         add_node(first, path, first.name.empty() ? path : child(path, "start_node"));
 
-    const BeamOptions beam_options{model_.options.shear_deformation, model_.options.gyroscopic,
-                                   shaft.rotating,
-                                   shaft.rotating ? model_.options.shaft_damping : 0.0};
+    BeamOptions beam_options = beam_;
+    beam_options.rotating = shaft.rotating;
+    if (!shaft.rotating) beam_options.damping_beta = 0.0;
     Real x_section = shaft.x;
     for (std::size_t j = 0; j < shaft.sections.size(); ++j) {
       const SectionSpec& s = shaft.sections[j];

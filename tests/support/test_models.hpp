@@ -28,12 +28,12 @@ inline Material steel(Real E = 211e9, Real G = 81.2e9, Real rho = 7810) {
 }
 
 // A uniform shaft from x0 of n_el elements, nodes appended; returns the first node.
+// Its elements get @p opt (shear deformation, gyroscopic form, rotating damping β).
 inline Index add_shaft(Model& m, Real x0, Real length, int n_el, Real d_out, const Material& mat,
-                       Real d_in = 0.0) {
+                       Real d_in = 0.0, const BeamOptions& opt = {}) {
   const Index first = add_node(m, x0);
   Index prev = first;
   const Real le = length / n_el;
-  BeamOptions opt{m.options.shear_deformation, m.options.gyroscopic, true, m.options.shaft_damping};
   for (int e = 0; e < n_el; ++e) {
     const Index next = add_node(m, x0 + le * (e + 1));
     m.elements.emplace_back(TimoshenkoBeam(prev, next, le, CircularSection{d_out, d_in}, mat, opt));
@@ -85,11 +85,10 @@ inline Model jeffcott(Real m, Real k, Real ca, Real ci) {
 // six Timoshenko elements; disks Ø 280 × 70 mm at 0.5 m and Ø 350 × 70 mm at 1.0 m
 // (bore = shaft diameter); isotropic bearings 1 MN/m at both ends. Axial and
 // torsional motion are held at the first bearing (the book's model is lateral only).
-inline Model friswell_5_9_1(int n_el = 6) {
+inline Model friswell_5_9_1(int n_el = 6, const BeamOptions& opt = {}) {
   Model m;
   const Material mat = steel();
-  m.materials.push_back(mat);
-  add_shaft(m, 0.0, 1.5, n_el, 0.05, mat);
+  add_shaft(m, 0.0, 1.5, n_el, 0.05, mat, 0.0, opt);
   auto node_at = [&](Real x) {
     for (Index i = 0; i < m.n_nodes(); ++i)
       if (std::abs(m.nodes[static_cast<std::size_t>(i)].x - x) < 1e-9) return i;

@@ -11,7 +11,7 @@ namespace {
 
 TEST(FreeDisk, NutatesForwardAtPolarOverTransverseRatio) {
   Model model;
-  model.options.free_motions = {FreeMotion::axial, FreeMotion::torsion, FreeMotion::lateral};
+  model.free_motions = {FreeMotion::axial, FreeMotion::torsion, FreeMotion::lateral};
   const Index n = test::add_node(model, 0.0);
   const Real mass = 2.0, Ja = 0.01, Jp = 0.018;
   test::add_body(model, n, mass, Ja, Jp);

@@ -15,8 +15,9 @@ namespace {
 
 TEST(MaterialDamping, ThresholdIsTheFirstForwardCriticalSpeed) {
   Model model;
-  model.options.shaft_damping = 2e-5;  // β [s]
-  test::add_shaft(model, 0.0, 1.0, 8, 0.04, test::steel());
+  BeamOptions damped;
+  damped.damping_beta = 2e-5;  // β [s]
+  test::add_shaft(model, 0.0, 1.0, 8, 0.04, test::steel(), 0.0, damped);
   test::fix(model, 0, {Dof::u, Dof::v, Dof::w, Dof::rx});
   test::fix(model, 8, {Dof::v, Dof::w});
   CampbellOptions opt;

@@ -42,9 +42,10 @@ std::vector<Real> roots(const std::function<Real(Real)>& f, Real w_max) {
 
 TEST(OverhungDisk, WhirlFrequenciesMatchClosedForm) {
   Model model;
-  model.options.shear_deformation = false;
+  BeamOptions euler_bernoulli;
+  euler_bernoulli.shear_deformation = false;
   const Material massless{"massless", E, E / 2.6, 0.0};
-  test::add_shaft(model, 0.0, L, 1, d, massless);
+  test::add_shaft(model, 0.0, L, 1, d, massless, 0.0, euler_bernoulli);
   test::add_body(model, 1, m, Ja, Jp);
   test::fix_all(model, 0);
 

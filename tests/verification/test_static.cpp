@@ -20,10 +20,11 @@ constexpr Real L = 1.2, d = 0.05, g = 9.81;
 // nodal values exact, so the tolerances are round-off (1e-9 relative).
 void simply_supported(bool shear) {
   Model m;
-  m.options.shear_deformation = shear;
+  BeamOptions beam;
+  beam.shear_deformation = shear;
   const Material mat = test::steel();
   const int n_el = 8;
-  test::add_shaft(m, 0.0, L, n_el, d, mat);
+  test::add_shaft(m, 0.0, L, n_el, d, mat, 0.0, beam);
   test::fix(m, 0, {Dof::u, Dof::v, Dof::w, Dof::rx});
   test::fix(m, n_el, {Dof::v, Dof::w});
   StaticOptions opt;
@@ -99,7 +100,7 @@ TEST(StaticAnalysis, CantileverReactionsFromStatics) {
 TEST(StaticAnalysis, FreeMotionsAllowedOnlyWhenTheLoadLeavesThemAlone) {
   Model m = test::friswell_5_9_1();
   m.fixed.clear();
-  m.options.free_motions = {FreeMotion::axial, FreeMotion::torsion};
+  m.free_motions = {FreeMotion::axial, FreeMotion::torsion};
   StaticOptions opt;
   opt.gravity = Eigen::Vector3d(0, -g, 0);
   Model held = test::friswell_5_9_1();

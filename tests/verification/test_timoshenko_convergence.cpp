@@ -36,9 +36,10 @@ Real analytic_hz(int n, bool shear) {
 // Frequencies of the lowest @p count distinct bending modes of an n_el-element model.
 std::vector<Real> feran_hz(int n_el, bool shear, int count) {
   Model model;
-  model.options.shear_deformation = shear;
+  BeamOptions opt;
+  opt.shear_deformation = shear;
   const Material mat{"steel", E, E / (2 * (1 + nu)), rho};
-  test::add_shaft(model, 0.0, L, n_el, d, mat);
+  test::add_shaft(model, 0.0, L, n_el, d, mat, 0.0, opt);
   test::fix(model, 0, {Dof::u, Dof::v, Dof::w, Dof::rx});
   test::fix(model, n_el, {Dof::v, Dof::w});
   std::vector<Real> out;

@@ -28,7 +28,7 @@ std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assemble
 
 /// Throws ModelStructureError when the mass matrix is not positive definite (naming
 /// a node and DOF without mass) or when a rigid-body motion is free that
-/// model.options.free_motions does not allow (naming the motion).
+/// model.free_motions does not allow (naming the motion).
 void check_model(const Model& model, const Assembler& assembler);
 
 }  // namespace feran

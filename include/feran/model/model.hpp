@@ -27,16 +27,6 @@ enum class GyroscopicForm { consistent, lumped };
 /// A rigid-body motion of the whole model that the user allows to stay free.
 enum class FreeMotion { axial, torsion, lateral };
 
-/// Model-wide options.
-struct ModelOptions {
-  bool shear_deformation = true;  ///< Timoshenko (true) or Euler–Bernoulli (false) shafts
-  GyroscopicForm gyroscopic = GyroscopicForm::consistent;
-  /// Stiffness-proportional material damping of rotating shafts, β [s]: C_i = β K.
-  Real shaft_damping = 0.0;
-  /// Rigid-body motions that may remain free (singular stiffness) without an error.
-  std::vector<FreeMotion> free_motions;
-};
-
 /// DOFs of a node held at zero.
 struct FixedDofs {
   Index node = 0;
@@ -100,10 +90,12 @@ struct CoulombFriction {
   std::string label;
 };
 
-/// A complete rotor model. Values only: copy it freely.
+/// A complete rotor model as the analyses use it: nodes, elements, constraints and
+/// loads. Values only: copy it freely. build_model() (spec/build_model.hpp) makes one
+/// from a ModelSpec; the model-wide options of a file (shear deformation, gyroscopic
+/// form, shaft damping) and its materials are already in the elements.
 struct Model {
   std::string name;
-  std::vector<Material> materials;
   std::vector<Node> nodes;
   std::vector<Element> elements;
   std::vector<FixedDofs> fixed;
@@ -112,7 +104,8 @@ struct Model {
   std::vector<HarmonicForce> forces;
   std::vector<StaticLoad> static_loads;
   std::vector<CoulombFriction> friction;
-  ModelOptions options;
+  /// Rigid-body motions that may remain free (singular stiffness) without an error.
+  std::vector<FreeMotion> free_motions;
 
   Index n_nodes() const { return static_cast<Index>(nodes.size()); }
   /// Number of unconstrained DOFs (6 per node).

@@ -19,8 +19,9 @@ namespace {
 // rigid link and fixed DOFs. Tolerances: exact up to the sum of a few
 // floating-point terms, 1e-12 of the largest entry.
 TEST(Assembler, SymmetryAndDefiniteness) {
-  Model m = test::friswell_5_9_1();
-  m.options.shaft_damping = 1e-5;
+  BeamOptions damped;
+  damped.damping_beta = 1e-5;  // rotating shaft damping: C_i and K_i from every shaft element
+  Model m = test::friswell_5_9_1(6, damped);
   m.elements.emplace_back(RotatingDamper(3, std::nullopt, {100.0, 0.1, 0.0, 0.0}));
   const Index stator = test::add_node(m, 1.5, false);
   const Index stator2 = test::add_node(m, 1.6, false);
@@ -130,7 +131,7 @@ TEST(Checks, NamesTheFreeMotions) {
   } catch (const ModelStructureError& e) {
     EXPECT_NE(std::string(e.what()).find("free_motions = [\"axial\", \"torsion\"]"), std::string::npos) << e.what();
   }
-  m.options.free_motions = {FreeMotion::axial, FreeMotion::torsion};
+  m.free_motions = {FreeMotion::axial, FreeMotion::torsion};
   EXPECT_NO_THROW(check_model(m, Assembler(m)));
 }
 

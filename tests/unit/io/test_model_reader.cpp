@@ -96,22 +96,42 @@ TEST_F(EverythingModel, TitleAndPath) {
   EXPECT_EQ(file_->path, path_);
 }
 
+/// The materials of the model's shaft elements, by name (each once, in element order).
+std::vector<Material> shaft_materials(const Model& m) {
+  std::vector<Material> out;
+  for (const Element& e : m.elements)
+    if (const auto* beam = e.target<TimoshenkoBeam>())
+      if (std::none_of(out.begin(), out.end(),
+                       [&](const Material& x) { return x.name == beam->material().name; }))
+        out.push_back(beam->material());
+  return out;
+}
+
+// [options] reach every shaft element (the model keeps only free_motions itself).
 TEST_F(EverythingModel, Options) {
-  EXPECT_FALSE(m().options.shear_deformation);
-  EXPECT_EQ(m().options.gyroscopic, GyroscopicForm::lumped);
-  EXPECT_DOUBLE_EQ(m().options.shaft_damping, 0.1 / 1000.0);  // "0.1 ms"
-  EXPECT_EQ(m().options.free_motions, std::vector<FreeMotion>{FreeMotion::torsion});
+  int beams = 0;
+  for (const Element& e : m().elements)
+    if (const auto* beam = e.target<TimoshenkoBeam>()) {
+      ++beams;
+      EXPECT_FALSE(beam->options().shear_deformation);
+      EXPECT_EQ(beam->options().gyroscopic, GyroscopicForm::lumped);
+      // "0.1 ms" on rotating shafts, none on the others.
+      EXPECT_DOUBLE_EQ(beam->options().damping_beta, beam->options().rotating ? 0.1 / 1000.0 : 0.0);
+    }
+  EXPECT_GT(beams, 0);
+  EXPECT_EQ(m().free_motions, std::vector<FreeMotion>{FreeMotion::torsion});
 }
 
 TEST_F(EverythingModel, Materials) {
-  ASSERT_EQ(m().materials.size(), 2u);
-  const Material& steel = m().materials[0];
+  const std::vector<Material> materials = shaft_materials(m());
+  ASSERT_EQ(materials.size(), 2u);
+  const Material& steel = materials[0];
   EXPECT_EQ(steel.name, "steel");
   EXPECT_DOUBLE_EQ(steel.E, 210e9);
   EXPECT_DOUBLE_EQ(steel.G, 210e9 / (2.0 * 1.3));  // from nu = 0.3
   EXPECT_DOUBLE_EQ(steel.rho, 7850.0);              // "7.85 g/cm^3"
   EXPECT_EQ(steel.loss_factor, 0.002);
-  const Material& aluminium = m().materials[1];
+  const Material& aluminium = materials[1];
   EXPECT_EQ(aluminium.name, "aluminium");
   EXPECT_DOUBLE_EQ(aluminium.E, 7e10);
   EXPECT_DOUBLE_EQ(aluminium.G, 26e9);
@@ -465,7 +485,6 @@ void expect_same_matrices(const Element& expected, const Element& actual, Real s
 
 void expect_same_model(const Model& expected, const Model& actual) {
   EXPECT_EQ(actual.name, expected.name);
-  EXPECT_EQ(actual.materials, expected.materials);
   ASSERT_EQ(actual.nodes.size(), expected.nodes.size());
   for (std::size_t i = 0; i < expected.nodes.size(); ++i) {
     SCOPED_TRACE("node " + std::to_string(i));
@@ -503,18 +522,14 @@ void expect_same_model(const Model& expected, const Model& actual) {
     EXPECT_EQ(a.label, e.label);
   }
   EXPECT_EQ(actual.friction.size(), expected.friction.size());
-  EXPECT_EQ(actual.options.shear_deformation, expected.options.shear_deformation);
-  EXPECT_EQ(actual.options.gyroscopic, expected.options.gyroscopic);
-  EXPECT_EQ(actual.options.shaft_damping, expected.options.shaft_damping);
-  EXPECT_EQ(actual.options.free_motions, expected.options.free_motions);
+  // The options and materials are in the element matrices compared above.
+  EXPECT_EQ(actual.free_motions, expected.free_motions);
 }
 
 TEST(ModelReaderRoundTrip, JeffcottRotor) {
   Model expected;
   expected.name = "Jeffcott rotor";
-  expected.options.shear_deformation = false;
   const Material shaft_material{"massless steel", 210e9, 210e9 / 2.6, 0.0};
-  expected.materials = {shaft_material};
   expected.nodes = {{1, "left", 0.0, true}, {2, "disk", 0.25, true}, {3, "right", 0.5, true}};
   const BeamOptions beam{false, GyroscopicForm::consistent, true, 0.0};
   const CircularSection section{0.012, 0.0};
@@ -542,7 +557,6 @@ TEST(ModelReaderRoundTrip, StatorJoinedByARigidLink) {
   Model expected;
   expected.name = "Rotor in a linked stator";
   const Material steel{"steel", 2.1e11, 2.1e11 / 2.6, 7850.0};
-  expected.materials = {steel};
   expected.nodes = {{1, "journal a", 0.0, true}, {2, "", 0.02, true},    {3, "", 0.04, true},
                     {4, "journal b", 0.06, true}, {5, "", 0.08, true},   {6, "tip", 0.1, true},
                     {7, "stator a", 0.0, false},  {8, "stator b", 0.06, false}};
@@ -652,16 +666,16 @@ radius = 0.01
   const ModelFile file = read_model_string(text, "defaults.toml");
   const Model& m = file.model;
   EXPECT_EQ(file.title, "");
-  EXPECT_TRUE(m.options.shear_deformation);
-  EXPECT_EQ(m.options.gyroscopic, GyroscopicForm::consistent);
-  EXPECT_EQ(m.options.shaft_damping, 0.0);
-  EXPECT_TRUE(m.options.free_motions.empty());
+  EXPECT_TRUE(m.free_motions.empty());
   ASSERT_EQ(m.nodes.size(), 4u);
   EXPECT_EQ(m.nodes[0].x, 0.0);        // shaft x defaults to 0
   EXPECT_TRUE(m.nodes[0].rotating);    // shafts rotate by default
   EXPECT_EQ(m.nodes[3].number, 4);     // next after the shaft's 1-3
   EXPECT_FALSE(m.nodes[3].rotating);   // [[nodes]] do not rotate by default
   const auto& beam = element_as<TimoshenkoBeam>(m, "shaft 1 section 1 element 2");
+  EXPECT_TRUE(beam.options().shear_deformation);  // [options] defaults
+  EXPECT_EQ(beam.options().gyroscopic, GyroscopicForm::consistent);
+  EXPECT_EQ(beam.options().damping_beta, 0.0);
   EXPECT_EQ(beam.section().inner_diameter, 0.0);
   EXPECT_DOUBLE_EQ(beam.length(), 0.05);
   EXPECT_FALSE(element_as<RigidBody>(m, "rigid body 1").rotating());  // from its node
@@ -674,7 +688,7 @@ radius = 0.01
   EXPECT_FALSE(file.modal.modes);
   EXPECT_FALSE(file.campbell.points);
   // No loss factors, loads or response and static defaults unless given.
-  EXPECT_EQ(m.materials[0].loss_factor, 0.0);
+  EXPECT_EQ(beam.material().loss_factor, 0.0);
   EXPECT_EQ(beam.options().loss_factor, 0.0);
   EXPECT_EQ(element_as<SpringDamper>(m, "spring 1").coefficients().loss_factor, 0.0);
   EXPECT_TRUE(m.forces.empty());

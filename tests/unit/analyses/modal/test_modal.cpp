@@ -157,7 +157,7 @@ TEST(ModalSolver, ComplexFormOfAnAxisymmetricRotorMatchesTheRealForm) {
   free.elements.erase(std::remove_if(free.elements.begin(), free.elements.end(),
                                      [](const Element& e) { return e.kind() == "spring_damper"; }),
                       free.elements.end());
-  free.options.free_motions = {FreeMotion::lateral};
+  free.free_motions = {FreeMotion::lateral};
   {
     ModalOptions complex;
     complex.solver = EigenSolver::dense;
@@ -260,7 +260,7 @@ TEST(ModalSolver, UndampedGyroscopicRotorIsSolvedInHermitianForm) {
   free.elements.erase(std::remove_if(free.elements.begin(), free.elements.end(),
                                      [](const Element& e) { return e.kind() == "spring_damper"; }),
                       free.elements.end());
-  free.options.free_motions = {FreeMotion::lateral};
+  free.free_motions = {FreeMotion::lateral};
   const ModalResult r = ModalSolver(free, dense).solve(300.0);
   EXPECT_EQ(r.info.method, "dense-qr");
   EXPECT_GE(std::count_if(r.modes.begin(), r.modes.end(), [](const Mode& m) { return m.rigid_body; }), 4);
