@@ -9,6 +9,8 @@
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
 
+#include <feran/analyses/settings.hpp>
+
 #include "commands.hpp"
 
 namespace feran::app {
@@ -54,22 +56,15 @@ Runner add_campbell_command(CLI::App& app) {
 
   return [args]() {
     const ModelFile file = read_model(args->model);
-    const Real start = args->start.empty() ? file.campbell.start.value_or(0.0)
-                                           : parse_speed_option(args->start, "--start");
-    if (args->stop.empty() && !file.campbell.stop)
-      throw Error("campbell: give the last speed with --stop (e.g. --stop 80Hz) or in the model's [campbell] table");
-    const Real stop = args->stop.empty() ? *file.campbell.stop : parse_speed_option(args->stop, "--stop");
-    if (!(stop > start)) throw Error("campbell: the last speed must be above the first");
-    const int points = args->points > 0 ? args->points : file.campbell.points.value_or(101);
-
-    CampbellOptions options;
-    for (int i = 0; i < points; ++i) options.speeds.push_back(start + (stop - start) * i / (points - 1));
-    options.n_modes = args->modes > 0 ? args->modes : file.campbell.modes.value_or(8);
-    options.orders = !args->orders.empty() ? args->orders
-                     : !file.campbell.orders.empty() ? file.campbell.orders
-                                                     : std::vector<int>{1};
-    options.modal.solver = parse_solver_name(args->solver);
-    options.n_threads = args->threads;
+    CampbellRequest request;
+    if (!args->start.empty()) request.start = parse_speed_option(args->start, "--start");
+    if (!args->stop.empty()) request.stop = parse_speed_option(args->stop, "--stop");
+    if (args->points > 0) request.points = args->points;
+    if (args->modes > 0) request.modes = args->modes;
+    request.orders = args->orders;
+    request.solver = parse_solver_name(args->solver);
+    request.n_threads = args->threads;
+    const CampbellOptions options = campbell_settings(file.spec.campbell, request);
 
     const CampbellResult result = run_campbell(file.model, options, file.assembler);
     const ResultSource source{file.path, file.title};

@@ -3,6 +3,7 @@
 // app and returns the function that runs it.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,8 @@ void add_output_options(CLI::App& cmd, OutputOptions& out);
 /// Parses a speed with its unit ("30Hz", "1800 rpm", "188.5rad/s") into rad/s;
 /// throws feran::Error naming @p option when it is not one.
 double parse_speed_option(const std::string& text, const std::string& option);
+/// The same for an option that may be left out: std::nullopt for empty @p text.
+std::optional<double> optional_speed(const std::string& text, const std::string& option);
 
 /// Writes @p text to @p path (atomically) when the path is not empty.
 void write_if_asked(const std::string& path, const std::string& text);

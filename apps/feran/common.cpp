@@ -36,6 +36,11 @@ double parse_speed_option(const std::string& text, const std::string& option) {
   return *si;
 }
 
+std::optional<double> optional_speed(const std::string& text, const std::string& option) {
+  if (text.empty()) return std::nullopt;
+  return parse_speed_option(text, option);
+}
+
 void write_if_asked(const std::string& path, const std::string& text) {
   if (!path.empty()) write_file_atomically(path, text);
 }

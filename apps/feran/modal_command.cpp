@@ -9,6 +9,8 @@
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
 
+#include <feran/analyses/settings.hpp>
+
 #include "commands.hpp"
 
 namespace feran::app {
@@ -50,13 +52,13 @@ Runner add_modal_command(CLI::App& app) {
 
   return [args]() {
     const ModelFile file = read_model(args->model);
-    Real speed = file.modal.speed.value_or(0.0);
-    if (!args->speed.empty()) speed = parse_speed_option(args->speed, "--speed");
-    ModalOptions options;
-    options.solver = solver_from(args->solver);
-    options.n_modes = args->modes > 0 ? args->modes : file.modal.modes.value_or(0);
-    options.shapes = args->shapes;
-    const ModalResult result = run_modal(file.model, speed, options, file.assembler);
+    ModalRequest request;
+    if (!args->speed.empty()) request.speed = parse_speed_option(args->speed, "--speed");
+    if (args->modes > 0) request.modes = args->modes;
+    request.solver = solver_from(args->solver);
+    request.shapes = args->shapes;
+    const ModalSettings settings = modal_settings(file.spec.modal, request);
+    const ModalResult result = run_modal(file.model, settings.speed, settings.options, file.assembler);
     const ResultSource source{file.path, file.title};
     write_if_asked(args->out.json_path, modal_json(result, file.model, source, args->shapes));
     write_if_asked(args->out.csv_path, modal_csv(result));

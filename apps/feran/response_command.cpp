@@ -12,6 +12,8 @@
 #include <feran/io/result_writer.hpp>
 #include <feran/core/units.hpp>
 
+#include <feran/analyses/settings.hpp>
+
 #include "commands.hpp"
 
 namespace feran::app {
@@ -32,12 +34,6 @@ struct ResponseArgs {
   int threads = 0;
   OutputOptions out;
 };
-
-std::vector<Real> linspace(Real a, Real b, int n) {
-  std::vector<Real> v;
-  for (int i = 0; i < n; ++i) v.push_back(n == 1 ? a : a + (b - a) * i / (n - 1));
-  return v;
-}
 
 // "NODE:DIRECTION:AMPLITUDE[:PHASE]", e.g. "rotor:y:10N", "3:rotating:2N:90deg".
 HarmonicForce parse_force(const Model& model, const std::string& text) {
@@ -103,7 +99,7 @@ Runner add_response_command(CLI::App& app) {
   cmd->add_option("--start", args->start, "Speed sweep: first speed with unit (0Hz, 0rpm)");
   cmd->add_option("--stop", args->stop, "Speed sweep: last speed with unit (80Hz, 4800rpm)");
   cmd->add_option("-p,--points", args->points, "Number of evenly spaced points (>= 1)")->check(CLI::Range(1, 10000000));
-  cmd->add_option("-s,--speed", args->speed, "Frequency sweep: the constant rotor speed (default 0)");
+  cmd->add_option("-s,--speed", args->speed, "Rotor speed of a frequency sweep (default 0); alone, the response at that one speed");
   cmd->add_option("--freq-start", args->freq_start, "Frequency sweep: first excitation frequency (1Hz)");
   cmd->add_option("--freq-stop", args->freq_stop, "Frequency sweep: last excitation frequency (200Hz)");
   cmd->add_option("--freq-points", args->freq_points, "Frequency sweep: number of frequencies (default 201)")
@@ -122,48 +118,21 @@ Runner add_response_command(CLI::App& app) {
   return [args]() {
     const ModelFile file = read_model(args->model);
     const Model& model = file.model;
-    HarmonicOptions options;
-    options.unbalance = !args->no_unbalance;
-    options.n_threads = args->threads;
-    options.loss_factor = args->loss_factor >= 0 ? args->loss_factor : file.response.loss_factor.value_or(0.0);
-    for (const std::string& f : args->forces) options.extra_forces.push_back(parse_force(model, f));
+    ResponseRequest request;
+    request.unbalance = !args->no_unbalance;
+    request.n_threads = args->threads;
+    if (args->loss_factor >= 0) request.loss_factor = args->loss_factor;
+    for (const std::string& f : args->forces) request.extra_forces.push_back(parse_force(model, f));
+    request.start = optional_speed(args->start, "--start");
+    request.stop = optional_speed(args->stop, "--stop");
+    request.speed = optional_speed(args->speed, "--speed");
+    request.freq_start = optional_speed(args->freq_start, "--freq-start");
+    request.freq_stop = optional_speed(args->freq_stop, "--freq-stop");
+    if (args->points > 0) request.points = args->points;
+    if (args->freq_points > 0) request.freq_points = args->freq_points;
+    for (const std::string& p : args->probes) request.probes.push_back(find_node_reference(model, p, "--probe"));
+    const HarmonicOptions options = response_settings(model, file.spec.response, request);
 
-    const bool frequency_sweep = !args->freq_start.empty() || !args->freq_stop.empty();
-    if (frequency_sweep) {
-      if (args->freq_start.empty() || args->freq_stop.empty())
-        throw Error("response: a frequency sweep needs both --freq-start and --freq-stop");
-      const Real a = parse_speed_option(args->freq_start, "--freq-start");
-      const Real b = parse_speed_option(args->freq_stop, "--freq-stop");
-      if (!(b > a)) throw Error("response: --freq-stop must be above --freq-start");
-      options.frequencies = linspace(a, b, args->freq_points > 0 ? args->freq_points : 201);
-      options.speed = args->speed.empty() ? 0.0 : parse_speed_option(args->speed, "--speed");
-      if (model.forces.empty() && options.extra_forces.empty())
-        throw Error("response: a frequency sweep needs a harmonic force: add --force NODE:DIRECTION:AMPLITUDE "
-                    "or [[forces]] in the model");
-    } else {
-      const Real start = !args->start.empty() ? parse_speed_option(args->start, "--start")
-                                              : file.response.start.value_or(0.0);
-      if (args->stop.empty() && !file.response.stop)
-        throw Error("response: give the last speed with --stop (e.g. --stop 80Hz) or in the model's [response] table");
-      const Real stop = !args->stop.empty() ? parse_speed_option(args->stop, "--stop") : *file.response.stop;
-      if (!(stop > start)) throw Error("response: the last speed must be above the first");
-      options.speeds = linspace(start, stop, args->points > 0 ? args->points : file.response.points.value_or(201));
-      if ((model.unbalances.empty() || !options.unbalance) && model.forces.empty() && options.extra_forces.empty())
-        throw Error("response: nothing excites the rotor: the model has no [[unbalances]] or [[forces]] and no "
-                    "--force was given");
-    }
-    if (!args->probes.empty()) {
-      for (const std::string& p : args->probes) options.probes.push_back(find_node_reference(model, p, "--probe"));
-    } else if (!file.response.probes.empty()) {
-      options.probes = file.response.probes;
-    } else {
-      for (const Unbalance& u : model.unbalances)
-        if (std::find(options.probes.begin(), options.probes.end(), u.node) == options.probes.end())
-          options.probes.push_back(u.node);
-      for (const HarmonicForce& f : options.extra_forces)
-        if (std::find(options.probes.begin(), options.probes.end(), f.node) == options.probes.end())
-          options.probes.push_back(f.node);
-    }
 
     const HarmonicResult result = run_harmonic_response(model, options);
     const ResultSource source{file.path, file.title};

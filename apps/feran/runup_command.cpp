@@ -14,6 +14,8 @@
 #include <feran/io/runup_writer.hpp>
 #include <feran/core/units.hpp>
 
+#include <feran/analyses/settings.hpp>
+
 #include "commands.hpp"
 
 namespace feran::app {
@@ -116,75 +118,39 @@ Runner add_runup_command(CLI::App& app) {
   return [args]() {
     const ModelFile file = read_model(args->model);
     const Model& model = file.model;
-    const RunupDefaults& d = file.runup;
-    TransientOptions options;
-
-    const int forms = !args->speed.empty() + (!args->to.empty() || !args->ramp_time.empty() || !args->from.empty()) +
-                      !args->table.empty();
-    if (forms > 1) throw Error("runup: give one speed profile: --speed, --from/--to/--ramp-time, or --table");
-    std::optional<Real> natural_duration;
-    if (!args->speed.empty()) {
-      options.profile = SpeedProfile::constant(parse_speed_option(args->speed, "--speed"));
-    } else if (!args->to.empty() || !args->ramp_time.empty() || !args->from.empty()) {
-      if (args->to.empty() || args->ramp_time.empty()) throw Error("runup: a ramp needs --to and --ramp-time");
-      const Real from = args->from.empty() ? 0.0 : parse_speed_option(args->from, "--from");
-      const Real ramp = time_option(args->ramp_time, "--ramp-time");
-      options.profile = SpeedProfile::ramp(from, parse_speed_option(args->to, "--to"), ramp);
-      natural_duration = ramp;
-    } else if (!args->table.empty()) {
-      options.profile = SpeedProfile(parse_table(args->table));
-      natural_duration = options.profile.points().back().first;
-    } else if (!d.profile.empty()) {
-      options.profile = SpeedProfile(d.profile);
-      if (d.profile.size() > 1) natural_duration = d.profile.back().first;
-    } else {
-      throw Error("runup: give a speed profile (--speed, --from/--to/--ramp-time or --table) or a [runup] table");
-    }
-    if (!args->duration.empty()) options.duration = time_option(args->duration, "--duration");
-    else if (forms == 0 && d.duration) options.duration = *d.duration;
-    else if (natural_duration && *natural_duration > 0) options.duration = *natural_duration;
-    else throw Error("runup: give the simulated time with --duration (e.g. --duration 2s)");
-
-    options.integrator = !args->integrator.empty() ? args->integrator : d.integrator.value_or("trapezoidal");
-    IntegratorSettings& s = options.settings;
-    s.dt = !args->dt.empty() ? time_option(args->dt, "--dt") : d.dt.value_or(1e-4);
-    if (args->rtol > 0) s.rel_tol = args->rtol;
-    else if (d.rel_tol) s.rel_tol = *d.rel_tol;
-    if (args->atol > 0) s.abs_tol = args->atol;
-    else if (d.abs_tol) s.abs_tol = *d.abs_tol;
-    if (args->newton_tol > 0) s.newton_tol = args->newton_tol;
-    if (args->newton_max_iter > 0) s.newton_max_iterations = args->newton_max_iter;
-    s.allow_unstable_step = args->allow_unstable;
-    s.exact_jacobian = args->jacobian == "exact";
-    s.jacobian_interval = args->jacobian_interval;
-    options.reduced_modes = args->modes > 0 ? args->modes : d.modes.value_or(0);
-    options.output_interval = !args->output_interval.empty() ? time_option(args->output_interval, "--output-interval")
-                                                             : d.output_interval.value_or(1e-3);
-    if (!args->blowup.empty()) {
-      options.blowup_limit = parse_quantity(args->blowup, Quantity::length);
-      if (!(options.blowup_limit > 0)) throw Error("--blowup must be positive");
-    }
-    options.static_loads = args->static_loads;
-    if (!args->probes.empty()) {
-      for (const std::string& p : args->probes) options.probes.push_back(find_node_reference(model, p, "--probe"));
-    } else if (!d.probes.empty()) {
-      options.probes = d.probes;
-    } else {
-      for (const Unbalance& u : model.unbalances)
-        if (std::find(options.probes.begin(), options.probes.end(), u.node) == options.probes.end())
-          options.probes.push_back(u.node);
-    }
-    if (!args->springs.empty()) {
-      for (const std::string& name : args->springs) {
-        Index found = -1;
-        for (std::size_t e = 0; e < model.elements.size(); ++e)
-          if (model.elements[e].target<SpringDamper>() && model.elements[e].label() == name) found = static_cast<Index>(e);
-        if (found < 0) throw Error(fmt::format("--spring '{}': no spring-damper has that name", name));
-        options.springs.push_back(found);
+    RunupRequest request;
+    const auto time = [](const std::string& text, const char* option) -> std::optional<Real> {
+      if (text.empty()) return std::nullopt;
+      return time_option(text, option);
+    };
+    request.speed = optional_speed(args->speed, "--speed");
+    request.from = optional_speed(args->from, "--from");
+    request.to = optional_speed(args->to, "--to");
+    request.ramp_time = time(args->ramp_time, "--ramp-time");
+    if (!args->table.empty()) request.table = parse_table(args->table);
+    request.duration = time(args->duration, "--duration");
+    if (!args->integrator.empty()) request.integrator = args->integrator;
+    request.dt = time(args->dt, "--dt");
+    if (args->rtol > 0) request.rel_tol = args->rtol;
+    if (args->atol > 0) request.abs_tol = args->atol;
+    if (args->newton_tol > 0) request.newton_tol = args->newton_tol;
+    if (args->newton_max_iter > 0) request.newton_max_iterations = args->newton_max_iter;
+    request.allow_unstable_step = args->allow_unstable;
+    request.exact_jacobian = args->jacobian == "exact";
+    request.jacobian_interval = args->jacobian_interval;
+    if (args->modes > 0) request.modes = args->modes;
+    request.output_interval = time(args->output_interval, "--output-interval");
+    if (!args->blowup.empty()) request.blowup_limit = parse_quantity(args->blowup, Quantity::length);
+    request.static_loads = args->static_loads;
+    for (const std::string& p : args->probes) request.probes.push_back(find_node_reference(model, p, "--probe"));
+    for (const std::string& name : args->springs) {
+      try {
+        request.springs.push_back(spring_element(model, name));
+      } catch (const Error&) {
+        throw Error(fmt::format("--spring '{}': no spring-damper has that name", name));
       }
-    } else {
-      options.springs = d.springs;
     }
+    const TransientOptions options = runup_settings(model, file.spec.runup, request);
 
     std::optional<RunupCsvWriter> csv;
     if (!args->out.csv_path.empty()) csv.emplace(args->out.csv_path, model, options);

@@ -10,6 +10,8 @@
 #include <feran/io/result_writer.hpp>
 #include <feran/core/units.hpp>
 
+#include <feran/analyses/settings.hpp>
+
 #include "commands.hpp"
 
 namespace feran::app {
@@ -43,26 +45,12 @@ Runner add_static_command(CLI::App& app) {
 
   return [args]() {
     const ModelFile file = read_model(args->model);
-    StaticOptions options;
-    Real g = 9.81;
-    if (!args->g.empty()) {
-      g = parse_quantity(args->g, Quantity::acceleration);
-      if (!(g > 0)) throw Error("--g must be positive");
-    }
-    if (!args->gravity.empty()) {
-      if (args->gravity != "none") {
-        const std::string& d = args->gravity;
-        const int axis = d.back() - 'x';
-        options.gravity(axis) = (d.front() == '-' ? -g : g);
-      }
-    } else if (file.static_.gravity) {
-      options.gravity = *file.static_.gravity;
-      if (!args->g.empty() && options.gravity.norm() > 0) options.gravity *= g / options.gravity.norm();
-    } else {
-      options.gravity(1) = -g;
-    }
-    options.speed = !args->speed.empty() ? parse_speed_option(args->speed, "--speed") : file.static_.speed.value_or(0.0);
-    options.loads = !args->no_loads;
+    StaticRequest request;
+    if (!args->g.empty()) request.g = parse_quantity(args->g, Quantity::acceleration);
+    if (!args->gravity.empty()) request.gravity = args->gravity;
+    if (!args->speed.empty()) request.speed = parse_speed_option(args->speed, "--speed");
+    request.loads = !args->no_loads;
+    const StaticOptions options = static_settings(file.spec.static_, request);
     const StaticResult result = run_static(file.model, options);
     const ResultSource source{file.path, file.title};
     write_if_asked(args->out.json_path, static_json(result, options, file.model, source));

@@ -403,68 +403,6 @@ std::vector<std::pair<Real, Real>> SpecReader::read_speed_table(const TableReade
   return points;
 }
 
-// ---------------------------------------------------------------------------------
-// The analysis defaults of a ModelFile, from the spec and the built model
-
-std::vector<Index> probe_indices(const Model& model, const std::vector<NodeRef>& probes) {
-  std::vector<Index> out;
-  for (const NodeRef& ref : probes) {
-    if (const auto* number = std::get_if<std::int64_t>(&ref)) {
-      out.push_back(model.find_node(static_cast<int>(*number)));
-    } else {
-      out.push_back(model.find_node(std::get<std::string>(ref)));
-    }
-  }
-  return out;
-}
-
-void fill_defaults(ModelFile& file) {
-  const ModelSpec& s = file.spec;
-  const Model& model = file.model;
-  file.modal = {s.modal.speed, s.modal.modes};
-  file.campbell = {s.campbell.start, s.campbell.stop, s.campbell.points, s.campbell.modes,
-                   s.campbell.orders};
-  file.response = {s.response.start, s.response.stop, s.response.points,
-                   probe_indices(model, s.response.probes), s.response.loss_factor};
-  if (s.static_.gravity) {
-    const std::string& g = *s.static_.gravity;
-    Eigen::Vector3d vector = Eigen::Vector3d::Zero();
-    if (g != "none") {
-      const Eigen::Index axis = g[1] - 'x';
-      vector[axis] = (g[0] == '+' ? 1.0 : -1.0) * s.static_.g.value_or(default_gravity);
-    }
-    file.static_.gravity = vector;
-  }
-  file.static_.speed = s.static_.speed;
-
-  const RunupSpec& r = s.runup;
-  RunupDefaults& d = file.runup;
-  std::optional<Real> profile_duration;
-  if (r.speed) {
-    d.profile = {{0.0, *r.speed}};
-  } else if (!r.table.empty()) {
-    d.profile = r.table;
-    if (r.table.back().first > 0.0) profile_duration = r.table.back().first;
-  } else if (r.to) {
-    d.profile = {{0.0, r.from.value_or(0.0)}, {*r.ramp_time, *r.to}};
-    profile_duration = *r.ramp_time;
-  }
-  d.duration = r.duration ? r.duration : profile_duration;
-  d.integrator = r.integrator;
-  d.dt = r.dt;
-  d.rel_tol = r.rel_tol;
-  d.abs_tol = r.abs_tol;
-  d.output_interval = r.output_interval;
-  if (r.modes) d.modes = *r.modes;
-  d.probes = probe_indices(model, r.probes);
-  for (const std::string& name : r.springs)
-    for (std::size_t i = 0; i < model.elements.size(); ++i)
-      if (model.elements[i].label() == name && model.elements[i].kind() == "spring_damper") {
-        d.springs.push_back(static_cast<Index>(i));
-        break;
-      }
-}
-
 }  // namespace
 
 ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages,
@@ -505,7 +443,6 @@ void build(ModelFile& file, const std::vector<std::pair<std::string, std::string
       if (overlaps(path, e.path())) throw Error(fmt::format("--set '{}': {}", assignment, e.message()));
     throw file.source.locate(e);
   }
-  fill_defaults(file);
 }
 
 }  // namespace

@@ -127,6 +127,8 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
   if (result.frequency_sweep)
     out += fmt::format("frequency sweep {:.4g} to {:.4g} Hz ({} points) at rotor speed {}", rad_to_hz(result.frequencies.front()),
                        rad_to_hz(result.frequencies.back()), n, speed_text(options.speed));
+  else if (n == 1)
+    out += fmt::format("at speed {}, synchronous excitation", speed_text(result.speeds.front()));
   else
     out += fmt::format("speed sweep {} to {} ({} points), synchronous excitation", speed_text(result.speeds.front()),
                        speed_text(result.speeds.back()), n);

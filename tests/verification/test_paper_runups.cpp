@@ -17,6 +17,7 @@
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
+#include <feran/analyses/settings.hpp>
 #include <feran/io/model_reader.hpp>
 
 namespace feran {
@@ -33,14 +34,11 @@ struct RunUp {
 // sampled every 1 ms; `duration` > 0 cuts it short.
 RunUp runup(const std::string& path, Real duration = 0) {
   const ModelFile file = read_model_file(example(path));
-  const RunupDefaults& d = file.runup;
-  TransientOptions t;
-  t.profile = SpeedProfile(d.profile);
-  t.duration = duration > 0 ? duration : d.profile.back().first;
-  t.integrator = d.integrator.value_or("trapezoidal");
-  t.settings.dt = d.dt.value_or(1e-4);
-  t.output_interval = 1e-3;
-  t.probes = {file.model.find_node("rotor")};
+  RunupRequest request;
+  if (duration > 0) request.duration = duration;
+  request.output_interval = 1e-3;
+  request.probes = {file.model.find_node("rotor")};
+  const TransientOptions t = runup_settings(file.model, file.spec.runup, request);
   return {file.model, run_transient(file.model, t)};
 }
 

@@ -12,6 +12,7 @@
 #include <feran/elements/rotating_damper.hpp>
 #include <feran/elements/spring_damper.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
+#include <feran/analyses/settings.hpp>
 #include <feran/io/model_reader.hpp>
 
 #include <gtest/gtest.h>
@@ -62,6 +63,14 @@ Index index_of(const Model& m, const std::string& name) {
   if (i < 0) throw std::runtime_error("no node named " + name);
   return i;
 }
+
+// The analysis defaults a file states reach an analysis through the settings
+// functions (analyses/settings.hpp), as for every other caller.
+HarmonicOptions response_of(const ModelFile& f, ResponseRequest request = {}) {
+  return response_settings(f.model, f.spec.response, request);
+}
+TransientOptions runup_of(const ModelFile& f) { return runup_settings(f.model, f.spec.runup, {}); }
+StaticOptions static_of(const ModelFile& f) { return static_settings(f.spec.static_, {}); }
 
 constexpr Real hz = 2.0 * pi;          // rad/s per Hz
 constexpr Real rpm = 2.0 * pi / 60.0;  // rad/s per rpm
@@ -362,15 +371,14 @@ TEST_F(EverythingModel, ConstraintsAndUnbalances) {
 }
 
 TEST_F(EverythingModel, AnalysisDefaults) {
-  ASSERT_TRUE(file_->modal.speed);
-  EXPECT_DOUBLE_EQ(*file_->modal.speed, 30.0 * hz);
-  EXPECT_EQ(file_->modal.modes, 8);
-  const CampbellDefaults& c = file_->campbell;
-  EXPECT_EQ(c.start, 0.0);
-  ASSERT_TRUE(c.stop);
-  EXPECT_DOUBLE_EQ(*c.stop, 200.0 * hz);
-  EXPECT_EQ(c.points, 51);
-  EXPECT_EQ(c.modes, 6);
+  const ModalSettings modal = modal_settings(file_->spec.modal, {});
+  EXPECT_DOUBLE_EQ(modal.speed, 30.0 * hz);
+  EXPECT_EQ(modal.options.n_modes, 8);
+  const CampbellOptions c = campbell_settings(file_->spec.campbell, {});
+  ASSERT_EQ(c.speeds.size(), 51u);
+  EXPECT_EQ(c.speeds.front(), 0.0);
+  EXPECT_DOUBLE_EQ(c.speeds.back(), 200.0 * hz);
+  EXPECT_EQ(c.n_modes, 6);
   EXPECT_EQ(c.orders, (std::vector<int>{1, 2}));
 }
 
@@ -428,40 +436,35 @@ TEST_F(EverythingModel, StaticLoads) {
 }
 
 TEST_F(EverythingModel, ResponseAndStaticDefaults) {
-  const ResponseDefaults& r = file_->response;
-  ASSERT_TRUE(r.start);
-  EXPECT_DOUBLE_EQ(*r.start, 10.0 * hz);
-  ASSERT_TRUE(r.stop);
-  EXPECT_DOUBLE_EQ(*r.stop, 6000.0 * rpm);
-  EXPECT_EQ(r.points, 91);
+  const HarmonicOptions r = response_of(*file_);
+  ASSERT_EQ(r.speeds.size(), 91u);
+  EXPECT_DOUBLE_EQ(r.speeds.front(), 10.0 * hz);
+  EXPECT_DOUBLE_EQ(r.speeds.back(), 6000.0 * rpm);
   EXPECT_EQ(r.probes, (std::vector<Index>{index_of(m(), "tip"), 1, index_of(m(), "stator a")}));
   EXPECT_EQ(r.loss_factor, 0.01);
 
-  const StaticDefaults& s = file_->static_;
-  ASSERT_TRUE(s.gravity);
-  EXPECT_EQ(s.gravity->x(), 0.0);
-  EXPECT_EQ(s.gravity->y(), 0.0);
-  EXPECT_DOUBLE_EQ(s.gravity->z(), -9.81);  // gravity = "-z", g = "9810 mm/s^2"
-  ASSERT_TRUE(s.speed);
-  EXPECT_DOUBLE_EQ(*s.speed, 1000.0 * rpm);
+  const StaticOptions s = static_of(*file_);
+  EXPECT_EQ(s.gravity.x(), 0.0);
+  EXPECT_EQ(s.gravity.y(), 0.0);
+  EXPECT_DOUBLE_EQ(s.gravity.z(), -9.81);  // gravity = "-z", g = "9810 mm/s^2"
+  EXPECT_DOUBLE_EQ(s.speed, 1000.0 * rpm);
 }
 
 TEST_F(EverythingModel, RunupDefaultsWithARamp) {
-  const RunupDefaults& r = file_->runup;
+  const TransientOptions r = runup_of(*file_);
   // from = "10 Hz", to = "4800 rpm", ramp_time = "5 s"
-  ASSERT_EQ(r.profile.size(), 2u);
-  EXPECT_EQ(r.profile[0].first, 0.0);
-  EXPECT_DOUBLE_EQ(r.profile[0].second, 10.0 * hz);
-  EXPECT_EQ(r.profile[1].first, 5.0);
-  EXPECT_DOUBLE_EQ(r.profile[1].second, 4800.0 * rpm);
+  const auto& profile = r.profile.points();
+  ASSERT_EQ(profile.size(), 2u);
+  EXPECT_EQ(profile[0].first, 0.0);
+  EXPECT_DOUBLE_EQ(profile[0].second, 10.0 * hz);
+  EXPECT_EQ(profile[1].first, 5.0);
+  EXPECT_DOUBLE_EQ(profile[1].second, 4800.0 * rpm);
   EXPECT_EQ(r.duration, 5.0);  // the ramp time, by default
   EXPECT_EQ(r.integrator, "ros34pw2");
-  ASSERT_TRUE(r.dt);
-  EXPECT_DOUBLE_EQ(*r.dt, 0.1 / 1000.0);
-  EXPECT_EQ(r.rel_tol, 1e-5);
-  EXPECT_EQ(r.abs_tol, 1e-8);
-  ASSERT_TRUE(r.output_interval);
-  EXPECT_DOUBLE_EQ(*r.output_interval, 2.0 / 1000.0);
+  EXPECT_DOUBLE_EQ(r.settings.dt, 0.1 / 1000.0);
+  EXPECT_EQ(r.settings.rel_tol, 1e-5);
+  EXPECT_EQ(r.settings.abs_tol, 1e-8);
+  EXPECT_DOUBLE_EQ(r.output_interval, 2.0 / 1000.0);
   EXPECT_EQ(r.probes, (std::vector<Index>{index_of(m(), "tip"), 1}));
   EXPECT_EQ(r.springs,
             (std::vector<Index>{element_index(m(), "bearing b"), element_index(m(), "bearing a")}));
@@ -547,10 +550,10 @@ TEST(ModelReaderRoundTrip, JeffcottRotor) {
 
   const ModelFile file = read_model_file(models + "/valid/jeffcott.toml");
   expect_same_model(expected, file.model);
-  EXPECT_EQ(file.modal.speed, 0.0);
-  EXPECT_EQ(file.modal.modes, 4);
-  EXPECT_FALSE(file.campbell.start);
-  EXPECT_TRUE(file.campbell.orders.empty());
+  EXPECT_EQ(file.spec.modal.speed, 0.0);
+  EXPECT_EQ(file.spec.modal.modes, 4);
+  EXPECT_FALSE(file.spec.campbell.start);
+  EXPECT_TRUE(file.spec.campbell.orders.empty());
 }
 
 TEST(ModelReaderRoundTrip, StatorJoinedByARigidLink) {
@@ -610,7 +613,7 @@ TEST(ModelReaderValid, TwoDisksOnBearings) {
   const auto& bearing = element_as<SpringDamper>(m, "bearing 2");
   EXPECT_FALSE(bearing.node_b());  // to = "ground"
   EXPECT_EQ(bearing.coefficients().k[1], SpeedCoefficient(1e7));  // "10 kN/mm"
-  EXPECT_DOUBLE_EQ(*file.campbell.stop, 6000.0 * rpm);
+  EXPECT_DOUBLE_EQ(*file.spec.campbell.stop, 6000.0 * rpm);
 }
 
 // ---------------------------------------------------------------------------------
@@ -684,32 +687,25 @@ radius = 0.01
   EXPECT_TRUE(element_as<SpringDamper>(m, "spring 1").coefficients().c[1].is_zero());
   EXPECT_EQ(m.unbalances[0].phase, 0.0);
   EXPECT_EQ(m.unbalances[0].lever, 0.0);
-  EXPECT_FALSE(file.modal.speed);
-  EXPECT_FALSE(file.modal.modes);
-  EXPECT_FALSE(file.campbell.points);
+  EXPECT_TRUE(file.spec.modal == ModalSpec{});
+  EXPECT_TRUE(file.spec.campbell == CampbellSpec{});
   // No loss factors, loads or response and static defaults unless given.
   EXPECT_EQ(beam.material().loss_factor, 0.0);
   EXPECT_EQ(beam.options().loss_factor, 0.0);
   EXPECT_EQ(element_as<SpringDamper>(m, "spring 1").coefficients().loss_factor, 0.0);
   EXPECT_TRUE(m.forces.empty());
   EXPECT_TRUE(m.static_loads.empty());
-  EXPECT_FALSE(file.response.start);
-  EXPECT_FALSE(file.response.stop);
-  EXPECT_FALSE(file.response.points);
-  EXPECT_TRUE(file.response.probes.empty());
-  EXPECT_FALSE(file.response.loss_factor);
-  EXPECT_FALSE(file.static_.gravity);
-  EXPECT_FALSE(file.static_.speed);
+  EXPECT_TRUE(file.spec.response == ResponseSpec{});
+  EXPECT_TRUE(file.spec.static_ == StaticSpec{});
+  // So the analyses take the built-in defaults: probes at the unbalances, gravity −y.
+  ResponseRequest one_point;
+  one_point.points = 1;
+  EXPECT_EQ(response_of(file, one_point).probes, (std::vector<Index>{2}));
+  EXPECT_EQ(static_of(file).gravity, Eigen::Vector3d(0.0, -9.81, 0.0));
+  EXPECT_EQ(static_of(file).speed, 0.0);
   // No run-up defaults without [runup].
-  EXPECT_TRUE(file.runup.profile.empty());
-  EXPECT_FALSE(file.runup.duration);
-  EXPECT_FALSE(file.runup.integrator);
-  EXPECT_FALSE(file.runup.dt);
-  EXPECT_FALSE(file.runup.rel_tol);
-  EXPECT_FALSE(file.runup.abs_tol);
-  EXPECT_FALSE(file.runup.output_interval);
-  EXPECT_TRUE(file.runup.probes.empty());
-  EXPECT_TRUE(file.runup.springs.empty());
+  EXPECT_TRUE(file.spec.runup == RunupSpec{});
+  EXPECT_THROW((void)runup_of(file), Error);  // a run-up then needs a profile from its caller
 }
 
 // A clamped-clamped shaft (valid structure) followed by @p extra.
@@ -736,12 +732,11 @@ TEST(ModelReaderStatic, GravityDirectionsAndDefaultMagnitude) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.gravity);
     const ModelFile file = read_with(std::string("[static]\ngravity = \"") + c.gravity + "\"\n");
-    ASSERT_TRUE(file.static_.gravity);
-    EXPECT_EQ(*file.static_.gravity, c.expected);  // 9.81 exactly: no conversion
-    EXPECT_FALSE(file.static_.speed);
+    EXPECT_EQ(static_of(file).gravity, c.expected);  // 9.81 exactly: no conversion
+    EXPECT_FALSE(file.spec.static_.speed);
   }
   const ModelFile moon = read_with("[static]\ngravity = \"-y\"\ng = \"1620 mm/s^2\"\n");
-  EXPECT_DOUBLE_EQ(moon.static_.gravity->y(), -1.62);
+  EXPECT_DOUBLE_EQ(static_of(moon).gravity.y(), -1.62);
 }
 
 TEST(ModelReaderResponse, ProbesByNumberAndNameInTheOrderGiven) {
@@ -750,10 +745,13 @@ TEST(ModelReaderResponse, ProbesByNumberAndNameInTheOrderGiven) {
 probes = [3, 1]
 points = 2
 )");
-  EXPECT_EQ(file.response.probes, (std::vector<Index>{2, 0}));
-  EXPECT_EQ(file.response.points, 2);
-  EXPECT_FALSE(file.response.start);
-  EXPECT_FALSE(file.response.loss_factor);
+  ResponseRequest request;
+  request.stop = 10.0;
+  request.extra_forces = {HarmonicForce{1, HarmonicForce::Kind::fixed, Dof::v, 1.0, 0.0, "f"}};
+  const HarmonicOptions r = response_of(file, request);
+  EXPECT_EQ(r.probes, (std::vector<Index>{2, 0}));
+  EXPECT_EQ(r.speeds, (std::vector<Real>{0.0, 10.0}));  // 2 points from 0
+  EXPECT_EQ(r.loss_factor, 0.0);
 }
 
 // ---------------------------------------------------------------------------------
@@ -761,50 +759,53 @@ points = 2
 
 TEST(ModelReaderRunup, ConstantSpeedIsOnePointAndHasNoDefaultDuration) {
   const ModelFile file = read_with("[runup]\nspeed = \"30 Hz\"\n");
-  ASSERT_EQ(file.runup.profile.size(), 1u);
-  EXPECT_EQ(file.runup.profile[0].first, 0.0);
-  EXPECT_DOUBLE_EQ(file.runup.profile[0].second, 30.0 * hz);
-  EXPECT_FALSE(file.runup.duration);
-  EXPECT_FALSE(file.runup.integrator);
-  EXPECT_FALSE(file.runup.dt);
-  EXPECT_TRUE(file.runup.probes.empty());
-  EXPECT_TRUE(file.runup.springs.empty());
+  ASSERT_TRUE(file.spec.runup.speed);
+  EXPECT_DOUBLE_EQ(*file.spec.runup.speed, 30.0 * hz);
+  EXPECT_THROW((void)runup_of(file), Error);  // no duration
+  RunupSpec expected;
+  expected.speed = file.spec.runup.speed;
+  EXPECT_TRUE(file.spec.runup == expected);  // nothing else given
 
   const ModelFile timed = read_with("[runup]\nspeed = 100\nduration = \"250 ms\"\n");
-  EXPECT_EQ(timed.runup.profile, (std::vector<std::pair<Real, Real>>{{0.0, 100.0}}));
-  ASSERT_TRUE(timed.runup.duration);
-  EXPECT_DOUBLE_EQ(*timed.runup.duration, 0.25);
+  const TransientOptions t = runup_of(timed);
+  EXPECT_EQ(t.profile.points(), (std::vector<std::pair<Real, Real>>{{0.0, 100.0}}));
+  EXPECT_DOUBLE_EQ(t.duration, 0.25);
+  EXPECT_EQ(t.integrator, "trapezoidal");   // built-in defaults
+  EXPECT_EQ(t.settings.dt, 1e-4);
+  EXPECT_TRUE(t.probes.empty());            // the model has no unbalance
+  EXPECT_TRUE(t.springs.empty());
 }
 
 TEST(ModelReaderRunup, RampStartsAtRestByDefaultAndMayRunDown) {
   // The paper's Fig. 5 run-up.
-  const ModelFile up = read_with("[runup]\nto = \"80 Hz\"\nramp_time = \"5 s\"\n");
-  ASSERT_EQ(up.runup.profile.size(), 2u);
-  EXPECT_EQ(up.runup.profile[0], (std::pair<Real, Real>{0.0, 0.0}));
-  EXPECT_EQ(up.runup.profile[1].first, 5.0);
-  EXPECT_DOUBLE_EQ(up.runup.profile[1].second, 80.0 * hz);
-  EXPECT_EQ(up.runup.duration, 5.0);
+  const TransientOptions up = runup_of(read_with("[runup]\nto = \"80 Hz\"\nramp_time = \"5 s\"\n"));
+  ASSERT_EQ(up.profile.points().size(), 2u);
+  EXPECT_EQ(up.profile.points()[0], (std::pair<Real, Real>{0.0, 0.0}));
+  EXPECT_EQ(up.profile.points()[1].first, 5.0);
+  EXPECT_DOUBLE_EQ(up.profile.points()[1].second, 80.0 * hz);
+  EXPECT_EQ(up.duration, 5.0);
 
   // A run-down; an explicit duration (longer than the ramp: the speed is then held)
   // replaces the ramp time.
-  const ModelFile down = read_with(R"([runup]
+  const TransientOptions down = runup_of(read_with(R"([runup]
 from = "6000 rpm"
 to = 0
 ramp_time = "1500 ms"
 duration = "2 s"
-)");
-  ASSERT_EQ(down.runup.profile.size(), 2u);
-  EXPECT_DOUBLE_EQ(down.runup.profile[0].second, 6000.0 * rpm);
-  EXPECT_DOUBLE_EQ(down.runup.profile[1].first, 1.5);
-  EXPECT_EQ(down.runup.profile[1].second, 0.0);
-  EXPECT_EQ(down.runup.duration, 2.0);
+)"));
+  ASSERT_EQ(down.profile.points().size(), 2u);
+  EXPECT_DOUBLE_EQ(down.profile.points()[0].second, 6000.0 * rpm);
+  EXPECT_DOUBLE_EQ(down.profile.points()[1].first, 1.5);
+  EXPECT_EQ(down.profile.points()[1].second, 0.0);
+  EXPECT_EQ(down.duration, 2.0);
 }
 
 TEST(ModelReaderRunup, TableGivesThePointsAndItsLastTimeIsTheDefaultDuration) {
   const ModelFile file = read_with(R"([runup]
 table = [["0 s", "0 Hz"], ["2 s", "50 Hz"], [5, "3000 rpm"], ["5500 ms", 10]]
 )");
-  const auto& p = file.runup.profile;
+  const TransientOptions t = runup_of(file);
+  const auto& p = t.profile.points();
   ASSERT_EQ(p.size(), 4u);
   EXPECT_EQ(p[0], (std::pair<Real, Real>{0.0, 0.0}));
   EXPECT_EQ(p[1].first, 2.0);
@@ -813,22 +814,24 @@ table = [["0 s", "0 Hz"], ["2 s", "50 Hz"], [5, "3000 rpm"], ["5500 ms", 10]]
   EXPECT_DOUBLE_EQ(p[2].second, 3000.0 * rpm);
   EXPECT_DOUBLE_EQ(p[3].first, 5.5);
   EXPECT_EQ(p[3].second, 10.0);  // a bare speed is in rad/s
-  ASSERT_TRUE(file.runup.duration);
-  EXPECT_DOUBLE_EQ(*file.runup.duration, 5.5);
+  EXPECT_DOUBLE_EQ(t.duration, 5.5);
 
   // One point at t = 0 is a constant speed: no default duration.
   const ModelFile single = read_with("[runup]\ntable = [[0, \"20 Hz\"]]\n");
-  ASSERT_EQ(single.runup.profile.size(), 1u);
-  EXPECT_DOUBLE_EQ(single.runup.profile[0].second, 20.0 * hz);
-  EXPECT_FALSE(single.runup.duration);
+  ASSERT_EQ(single.spec.runup.table.size(), 1u);
+  EXPECT_DOUBLE_EQ(single.spec.runup.table[0].second, 20.0 * hz);
+  EXPECT_THROW((void)runup_of(single), Error);
 }
 
 TEST(ModelReaderRunup, EveryIntegratorNameIsAccepted) {
   for (const char* name : {"trapezoidal", "rk3", "wolfbrandt", "ros34pw2"}) {
     SCOPED_TRACE(name);
     const ModelFile file = read_with(std::string("[runup]\nintegrator = \"") + name + "\"\n");
-    EXPECT_EQ(file.runup.integrator, name);
-    EXPECT_TRUE(file.runup.profile.empty());  // the profile may be left to the analysis
+    EXPECT_EQ(file.spec.runup.integrator, name);
+    RunupRequest constant;  // the profile may be left to the analysis
+    constant.speed = 10.0;
+    constant.duration = 1.0;
+    EXPECT_EQ(runup_settings(file.model, file.spec.runup, constant).integrator, name);
   }
 }
 
@@ -840,14 +843,17 @@ abs_tol = 2e-9
 output_interval = "0.5 ms"
 modes = 12
 )");
-  EXPECT_EQ(file.runup.dt, 1e-4);
-  EXPECT_EQ(file.runup.modes, 12);
-  EXPECT_EQ(file.runup.rel_tol, 1e-6);
-  EXPECT_EQ(file.runup.abs_tol, 2e-9);
-  ASSERT_TRUE(file.runup.output_interval);
-  EXPECT_DOUBLE_EQ(*file.runup.output_interval, 0.5e-3);
-  EXPECT_FALSE(file.runup.duration);
-  EXPECT_FALSE(read_with("[runup]\ndt = 1e-4\n").runup.modes);
+  RunupRequest constant;
+  constant.speed = 10.0;
+  constant.duration = 1.0;
+  const TransientOptions t = runup_settings(file.model, file.spec.runup, constant);
+  EXPECT_EQ(t.settings.dt, 1e-4);
+  EXPECT_EQ(t.reduced_modes, 12);
+  EXPECT_EQ(t.settings.rel_tol, 1e-6);
+  EXPECT_EQ(t.settings.abs_tol, 2e-9);
+  EXPECT_DOUBLE_EQ(t.output_interval, 0.5e-3);
+  EXPECT_FALSE(file.spec.runup.duration);
+  EXPECT_FALSE(read_with("[runup]\ndt = 1e-4\n").spec.runup.modes);
 }
 
 TEST(ModelReaderRunup, ProbesAndNamedSpringsInTheOrderGiven) {
@@ -873,8 +879,12 @@ probes = [2, 1]
 springs = ["right", "left"]
 )");
   const Model& m = file.model;
-  EXPECT_EQ(file.runup.probes, (std::vector<Index>{1, 0}));
-  EXPECT_EQ(file.runup.springs,
+  RunupRequest constant;
+  constant.speed = 10.0;
+  constant.duration = 1.0;
+  const TransientOptions t = runup_settings(m, file.spec.runup, constant);
+  EXPECT_EQ(t.probes, (std::vector<Index>{1, 0}));
+  EXPECT_EQ(t.springs,
             (std::vector<Index>{element_index(m, "right"), element_index(m, "left")}));
   EXPECT_EQ(element_as<SpringDamper>(m, "left").node_a(), 0);
 }
@@ -1046,9 +1056,10 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
       if (i == 3) {  // the loads example, as its text describes it
         EXPECT_EQ(file.model.forces.size(), 2u);
         EXPECT_EQ(file.model.static_loads.size(), 1u);
-        EXPECT_EQ(file.response.probes, (std::vector<Index>{2, 0}));
-        ASSERT_TRUE(file.static_.gravity);
-        EXPECT_EQ(*file.static_.gravity, Eigen::Vector3d(0.0, 0.0, -9.81));
+        ResponseRequest one_point;
+        one_point.points = 1;
+        EXPECT_EQ(response_of(file, one_point).probes, (std::vector<Index>{2, 0}));
+        EXPECT_EQ(static_of(file).gravity, Eigen::Vector3d(0.0, 0.0, -9.81));
       }
       for (const auto& [name, number] : named[i]) {
         const Index node = file.model.find_node(name);
@@ -1066,18 +1077,19 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
     try {
       const ModelFile file =
           read_model_string(examples[0].text + "\n" + snippet, "docs/model-format.md snippet");
-      EXPECT_FALSE(file.runup.profile.empty());
-      EXPECT_TRUE(file.runup.duration);
+      // A complete run-up: profile and duration (runup_settings throws otherwise).
+      EXPECT_GT(runup_of(file).duration, 0.0);
     } catch (const ModelError& e) {
       ADD_FAILURE() << e.what();
     }
   }
   // The first snippet is the paper's Fig. 5 run-up.
   const ModelFile fig5 = read_model_string(examples[0].text + "\n" + runup_snippets[0], "fig5");
-  ASSERT_EQ(fig5.runup.profile.size(), 2u);
-  EXPECT_EQ(fig5.runup.profile[0], (std::pair<Real, Real>{0.0, 0.0}));
-  EXPECT_EQ(fig5.runup.profile[1].first, 5.0);
-  EXPECT_DOUBLE_EQ(fig5.runup.profile[1].second, 80.0 * hz);
+  const auto profile = runup_of(fig5).profile.points();
+  ASSERT_EQ(profile.size(), 2u);
+  EXPECT_EQ(profile[0], (std::pair<Real, Real>{0.0, 0.0}));
+  EXPECT_EQ(profile[1].first, 5.0);
+  EXPECT_DOUBLE_EQ(profile[1].second, 80.0 * hz);
 }
 
 }  // namespace

@@ -34,8 +34,9 @@ struct HarmonicOptions {
   std::vector<HarmonicForce> extra_forces; ///< forces added for this analysis
   Real loss_factor = 0.0;                  ///< global hysteretic loss factor η (adds jηK)
   std::vector<Index> probes;               ///< nodes whose motion is reported
-  /// Threads for the sweep's points (0: all cores); results do not depend on it.
-  int n_threads = 0;
+  /// Threads for the sweep's points (0: all cores; the library's default is one, the
+  /// command line's all cores); results do not depend on it.
+  int n_threads = 1;
 };
 
 /// Complex amplitudes of the six DOFs of a node, indexed by Dof.

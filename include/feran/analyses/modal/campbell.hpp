@@ -25,8 +25,9 @@ struct CampbellOptions {
   Real damping_tolerance = 1e-9;
   /// Threads for the eigen solves (0: all cores). The speeds, and then the
   /// refinements of critical speeds and thresholds, are independent solves; the
-  /// results do not depend on the number of threads.
-  int n_threads = 0;
+  /// results do not depend on the number of threads. The library's default is one
+  /// thread, the command line's all cores.
+  int n_threads = 1;
 };
 
 /// One mode followed over the sweep. Vectors are indexed like CampbellResult::speeds;

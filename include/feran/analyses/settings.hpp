@@ -1,0 +1,152 @@
+#pragma once
+/// @file
+/// Analysis settings: what a caller asks for, the model file's analysis tables and
+/// the built-in defaults, resolved into each analysis's options in one place.
+///
+/// Every caller — the command line, a C++ program, the Python module, a design study —
+/// fills a request with what it wants to set and leaves the rest empty; the function
+/// of the analysis takes each empty member from the model file's table ([modal],
+/// [campbell], [response], [static], [runup]) and then from the built-in default,
+/// and checks what the combination must satisfy. Requests hold SI values (speeds in
+/// rad/s). Library requests run on one thread unless they say otherwise.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/analyses/transient/transient_analysis.hpp>
+#include <feran/model/model.hpp>
+#include <feran/spec/model_spec.hpp>
+
+namespace feran {
+
+/// Built-in defaults, used when neither the request nor the model file gives a value.
+namespace defaults {
+inline constexpr int campbell_points = 101;
+inline constexpr int campbell_modes = 8;
+inline constexpr int response_points = 201;
+inline constexpr int frequency_points = 201;
+inline constexpr Real gravity = 9.81;          ///< [m/s²], pulling along −y
+inline constexpr Real runup_dt = 1e-4;         ///< [s]
+inline constexpr Real output_interval = 1e-3;  ///< [s]
+}  // namespace defaults
+
+/// The nodes a response or a run-up reports when neither the request nor the file
+/// names any: every node carrying an unbalance, then every node of @p extra forces,
+/// in order, each once.
+std::vector<Index> default_probes(const Model& model, std::span<const HarmonicForce> extra = {});
+
+/// The node a (validated) reference of a spec denotes; throws Error when there is none.
+Index node_index(const Model& model, const NodeRef& ref);
+
+// ---------------------------------------------------------------------------------
+
+struct ModalRequest {
+  std::optional<Real> speed;  ///< [rad/s]; default [modal] speed, else 0
+  std::optional<int> modes;   ///< default [modal] modes, else all (dense) or the solver's
+  EigenSolver solver = EigenSolver::automatic;
+  bool shapes = false;
+};
+
+struct ModalSettings {
+  Real speed = 0.0;  ///< [rad/s]
+  ModalOptions options;
+};
+
+ModalSettings modal_settings(const ModalSpec& file, const ModalRequest& request);
+
+// ---------------------------------------------------------------------------------
+
+struct CampbellRequest {
+  std::optional<Real> start, stop;  ///< [rad/s]; default [campbell], else start 0, stop required
+  std::optional<int> points;        ///< default [campbell], else 101
+  std::optional<int> modes;         ///< default [campbell], else 8
+  std::vector<int> orders;          ///< empty: [campbell] orders, else {1}
+  EigenSolver solver = EigenSolver::automatic;
+  int n_threads = 1;                ///< 0: all cores
+};
+
+/// Throws Error when no last speed is given anywhere or it is not above the first.
+CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellRequest& request);
+
+// ---------------------------------------------------------------------------------
+
+struct ResponseRequest {
+  /// Speed sweep: first and last speed [rad/s] and the number of points; default
+  /// [response], else start 0, stop required unless there is one point, 201 points.
+  std::optional<Real> start, stop;
+  std::optional<int> points;
+  /// Frequency sweep (when either bound is given): excitation frequencies [rad/s], at
+  /// the constant rotor speed @p speed (default 0), 201 points by default. Without a
+  /// frequency sweep, @p speed alone asks for the response at that one speed.
+  std::optional<Real> freq_start, freq_stop;
+  std::optional<int> freq_points;
+  std::optional<Real> speed;
+  std::vector<Index> probes;                ///< empty: [response] probes, else default_probes()
+  std::vector<HarmonicForce> extra_forces;  ///< added to the model's [[forces]]
+  std::optional<Real> loss_factor;          ///< default [response] loss_factor, else 0
+  bool unbalance = true;                    ///< include the model's unbalances
+  int n_threads = 1;                        ///< 0: all cores
+};
+
+/// Throws Error for a sweep without a last point, a last point not above the first,
+/// a frequency sweep without a force, or nothing that excites the rotor.
+HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
+                                  const ResponseRequest& request);
+
+// ---------------------------------------------------------------------------------
+
+struct StaticRequest {
+  /// "+x", "-x", …, "none"; default [static] gravity, else "-y".
+  std::optional<std::string> gravity;
+  std::optional<Real> g;      ///< [m/s²]; default [static] g, else 9.81
+  std::optional<Real> speed;  ///< [rad/s]; default [static] speed, else 0
+  bool loads = true;          ///< include the model's [[static_loads]]
+};
+
+/// Throws Error for a direction that is not one of the seven words or g ≤ 0.
+StaticOptions static_settings(const StaticSpec& file, const StaticRequest& request);
+
+// ---------------------------------------------------------------------------------
+
+struct RunupRequest {
+  /// The speed profile, one form at most: a constant speed, a ramp (from, to,
+  /// ramp_time) or a table of (time [s], speed [rad/s]). None: the file's [runup].
+  std::optional<Real> speed;
+  std::optional<Real> from, to, ramp_time;
+  std::vector<std::pair<Real, Real>> table;
+  /// Default: [runup] duration (with the file's profile), else the profile's length.
+  std::optional<Real> duration;
+  std::optional<std::string> integrator;   ///< default [runup], else "trapezoidal"
+  std::optional<Real> dt;                  ///< default [runup], else 1e-4 s
+  std::optional<Real> rel_tol, abs_tol;    ///< default [runup], else the integrator's
+  std::optional<Real> output_interval;     ///< default [runup], else 1 ms
+  std::optional<int> modes;                ///< default [runup] modes, else the full model
+  std::vector<Index> probes;               ///< empty: [runup] probes, else default_probes()
+  std::vector<Index> springs;              ///< elements; empty: [runup] springs
+  std::optional<Real> newton_tol;
+  std::optional<int> newton_max_iterations;
+  bool allow_unstable_step = false;
+  bool exact_jacobian = true;
+  std::optional<int> jacobian_interval;
+  std::optional<Real> blowup_limit;        ///< [m]; default 1 m
+  bool static_loads = false;
+};
+
+/// Throws Error for two profile forms, an incomplete ramp, no profile anywhere, no
+/// duration, or a non-positive time.
+TransientOptions runup_settings(const Model& model, const RunupSpec& file,
+                                const RunupRequest& request);
+
+/// The spring–damper element labelled @p name; throws Error when there is none.
+Index spring_element(const Model& model, const std::string& name);
+
+}  // namespace feran

@@ -1,0 +1,116 @@
+// Tests of analyses/settings: a request's values come first, then the model file's
+// analysis table, then the built-in default; probes default to the unbalanced nodes;
+// a response at one speed needs no last speed.
+
+#include <feran/analyses/settings.hpp>
+#include <feran/io/model_reader.hpp>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace feran {
+namespace {
+
+const std::string examples = std::string(FERAN_SOURCE_DIR) + "/examples";
+
+TEST(Settings, RequestThenFileThenBuiltIn) {
+  CampbellSpec file;
+  file.stop = 100.0;
+  file.points = 11;
+  CampbellRequest request;
+  CampbellOptions c = campbell_settings(file, request);
+  EXPECT_EQ(c.speeds.size(), 11u);                       // the file's
+  EXPECT_EQ(c.speeds.back(), 100.0);
+  EXPECT_EQ(c.n_modes, defaults::campbell_modes);       // built in
+  EXPECT_EQ(c.orders, std::vector<int>{1});
+  EXPECT_EQ(c.n_threads, 1);                            // the library runs on one thread
+  request.points = 3;
+  request.stop = 50.0;
+  request.orders = {2};
+  c = campbell_settings(file, request);
+  EXPECT_EQ(c.speeds, (std::vector<Real>{0.0, 25.0, 50.0}));  // the request's
+  EXPECT_EQ(c.orders, std::vector<int>{2});
+  EXPECT_THROW((void)campbell_settings(CampbellSpec{}, CampbellRequest{}), Error);  // no stop
+
+  ModalSpec modal;
+  modal.speed = 12.0;
+  EXPECT_EQ(modal_settings(modal, {}).speed, 12.0);
+  ModalRequest at_rest;
+  at_rest.speed = 0.0;
+  EXPECT_EQ(modal_settings(modal, at_rest).speed, 0.0);
+  EXPECT_EQ(modal_settings(ModalSpec{}, {}).speed, 0.0);
+}
+
+TEST(Settings, ProbesDefaultToTheUnbalancedNodes) {
+  const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
+  // Without probes in [response]: the rotor, where the unbalance is.
+  ResponseSpec without_probes = file.spec.response;
+  without_probes.probes.clear();
+  ResponseRequest request;
+  request.stop = 100.0;
+  const HarmonicOptions r = response_settings(file.model, without_probes, request);
+  EXPECT_EQ(r.probes, default_probes(file.model));
+  ASSERT_EQ(r.probes.size(), 1u);
+  EXPECT_EQ(r.probes[0], file.model.find_node("rotor"));
+  // An added force adds its node, once.
+  HarmonicForce f;
+  f.node = 0;
+  const std::vector<HarmonicForce> forces{f, f};
+  EXPECT_EQ(default_probes(file.model, forces), (std::vector<Index>{r.probes[0], 0}));
+}
+
+TEST(Settings, ResponseAtOneSpeed) {
+  const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
+  ResponseRequest one;
+  one.start = 30.0;
+  one.points = 1;
+  EXPECT_EQ(response_settings(file.model, ResponseSpec{}, one).speeds, std::vector<Real>{30.0});
+  ResponseRequest at;
+  at.speed = 40.0;
+  EXPECT_EQ(response_settings(file.model, ResponseSpec{}, at).speeds, std::vector<Real>{40.0});
+  ResponseRequest sweep;
+  sweep.start = 30.0;  // more than one point needs a last speed
+  EXPECT_THROW((void)response_settings(file.model, ResponseSpec{}, sweep), Error);
+}
+
+TEST(Settings, StaticGravity) {
+  StaticSpec file;
+  EXPECT_EQ(static_settings(file, {}).gravity, Eigen::Vector3d(0.0, -defaults::gravity, 0.0));
+  file.gravity = "+x";
+  file.g = 1.62;
+  EXPECT_EQ(static_settings(file, {}).gravity, Eigen::Vector3d(1.62, 0.0, 0.0));
+  StaticRequest request;
+  request.g = 3.0;  // a magnitude asked for applies to the file's direction
+  EXPECT_EQ(static_settings(file, request).gravity, Eigen::Vector3d(3.0, 0.0, 0.0));
+  request = {};
+  request.gravity = "-z";  // a direction asked for takes the built-in magnitude
+  EXPECT_EQ(static_settings(file, request).gravity, Eigen::Vector3d(0.0, 0.0, -defaults::gravity));
+  request.gravity = "none";
+  EXPECT_EQ(static_settings(file, request).gravity, Eigen::Vector3d::Zero());
+  request.gravity = "down";
+  EXPECT_THROW((void)static_settings(file, request), Error);
+}
+
+TEST(Settings, RunupProfileForms) {
+  const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
+  // The file's ramp (0 → 80 Hz in 5 s) with its duration.
+  const TransientOptions from_file = runup_settings(file.model, file.spec.runup, {});
+  EXPECT_EQ(from_file.profile.points().size(), 2u);
+  EXPECT_EQ(from_file.duration, 5.0);
+  // A request's profile replaces the file's, and its own length is the duration.
+  RunupRequest ramp;
+  ramp.to = 100.0;
+  ramp.ramp_time = 2.0;
+  EXPECT_EQ(runup_settings(file.model, file.spec.runup, ramp).duration, 2.0);
+  RunupRequest two = ramp;
+  two.speed = 10.0;
+  EXPECT_THROW((void)runup_settings(file.model, file.spec.runup, two), Error);
+  RunupRequest half;
+  half.to = 10.0;  // a ramp needs its time
+  EXPECT_THROW((void)runup_settings(file.model, file.spec.runup, half), Error);
+  EXPECT_THROW((void)spring_element(file.model, "no such spring"), Error);
+}
+
+}  // namespace
+}  // namespace feran
