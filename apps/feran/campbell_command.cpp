@@ -71,7 +71,7 @@ Runner add_campbell_command(CLI::App& app) {
     write_if_asked(args->out.json_path, [&] { return campbell_json(result, options, source); });
     write_if_asked(args->out.csv_path, [&] { return campbell_csv(result); });
     if (!args->out.quiet) std::fputs(campbell_report(result, options, file.model, source).c_str(), stdout);
-    if (!result.info.converged) {
+    if (!result.info.converged()) {
       std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
       return static_cast<int>(numerical_failure);
     }

@@ -63,7 +63,7 @@ Runner add_modal_command(CLI::App& app) {
     write_if_asked(args->out.json_path, modal_json(result, file.model, source, args->shapes));
     write_if_asked(args->out.csv_path, modal_csv(result));
     if (!args->out.quiet) std::fputs(modal_report(result, file.model, source).c_str(), stdout);
-    if (!result.info.converged) {
+    if (!result.info.converged()) {
       std::fprintf(stderr, "feran: error: %s\n", result.info.message.c_str());
       return static_cast<int>(numerical_failure);
     }

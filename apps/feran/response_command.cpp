@@ -50,15 +50,14 @@ HarmonicForce parse_force(const Model& model, const std::string& text) {
                             text));
   HarmonicForce f;
   f.node = find_node_reference(model, parts[0], "--force");
-  f.label = "--force " + text;
   const std::string& dir = parts[1];
   static const std::pair<const char*, Dof> dirs[] = {{"x", Dof::u},   {"y", Dof::v},   {"z", Dof::w},
                                                      {"rx", Dof::rx}, {"ry", Dof::ry}, {"rz", Dof::rz}};
   bool moment = false;
   if (dir == "rotating") {
-    f.kind = HarmonicForce::Kind::rotating_force;
+    f.type = HarmonicForce::Kind::rotating_force;
   } else if (dir == "rotating_moment") {
-    f.kind = HarmonicForce::Kind::rotating_moment;
+    f.type = HarmonicForce::Kind::rotating_moment;
     moment = true;
   } else {
     const auto* it = std::find_if(std::begin(dirs), std::end(dirs), [&](const auto& p) { return dir == p.first; });
@@ -139,7 +138,7 @@ Runner add_response_command(CLI::App& app) {
     write_if_asked(args->out.json_path, [&] { return response_json(result, options, model, source); });
     write_if_asked(args->out.csv_path, [&] { return response_csv(result, model); });
     if (!args->out.quiet) std::fputs(response_report(result, options, model, source).c_str(), stdout);
-    if (!result.info.converged) {
+    if (!result.info.converged()) {
       std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
       return static_cast<int>(numerical_failure);
     }

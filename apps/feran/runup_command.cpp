@@ -8,7 +8,6 @@
 
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/core/error.hpp>
-#include <feran/elements/spring_damper.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/node_reference.hpp>
 #include <feran/io/runup_writer.hpp>
@@ -173,7 +172,7 @@ Runner add_runup_command(CLI::App& app) {
     if (printed) std::fputs("\n", stderr);
     // Refused before the first step (e.g. rk3 above its stability limit): a bad
     // option, not a failed run; nothing is written.
-    if (!result.info.converged && result.steps == 0) throw Error(result.info.message);
+    if (!result.info.converged() && result.steps == 0) throw Error(result.info.message);
     const Real wall = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->finish();
     const ResultSource source{file.path, file.title};
@@ -196,7 +195,7 @@ Runner add_runup_command(CLI::App& app) {
       if (!result.warning.empty()) out += "warning: " + result.warning + "\n";
       std::fputs(out.c_str(), stdout);
     }
-    if (!result.info.converged) {
+    if (!result.info.converged()) {
       std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
       return static_cast<int>(numerical_failure);
     }

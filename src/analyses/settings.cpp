@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <feran/analyses/transient/integrator.hpp>
 #include <feran/core/error.hpp>
+#include <feran/core/suggestions.hpp>
 
 namespace feran {
 
@@ -36,7 +38,9 @@ Real positive_time(Real t, const char* what) {
 
 std::vector<Index> default_probes(const Model& model, std::span<const HarmonicForce> extra) {
   std::vector<Index> probes;
-  for (const Unbalance& u : model.unbalances) add_once(probes, u.node);
+  for (const Force& f : model.forces)
+    if (f.kind() == "unbalance")
+      for (const Index node : f.nodes()) add_once(probes, node);
   for (const HarmonicForce& f : extra) add_once(probes, f.node);
   return probes;
 }
@@ -50,6 +54,18 @@ Index node_index(const Model& model, const NodeRef& ref) {
                     ? fmt::format("node {} does not exist", std::get<std::int64_t>(ref))
                     : fmt::format("node '{}' does not exist", std::get<std::string>(ref)));
   return found;
+}
+
+void check_analysis_tables(const ModelSpec& spec) {
+  if (!spec.runup.integrator) return;
+  const std::string& name = *spec.runup.integrator;
+  const std::vector<std::string> names = integrator_names();
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  std::string message =
+      fmt::format("'integrator' must be {}, got \"{}\"", detail::join_list(names, "or", '"'), name);
+  if (const auto m = detail::closest_match(name, names, 2))
+    message += fmt::format("; did you mean \"{}\"?", *m);
+  throw SpecError("runup.integrator", message);
 }
 
 Index spring_element(const Model& model, const std::string& name) {
@@ -95,7 +111,11 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
   options.n_threads = request.n_threads;
   options.loss_factor = request.loss_factor.value_or(file.loss_factor.value_or(0.0));
   options.extra_forces = request.extra_forces;
-  const bool any_force = !model.forces.empty() || !options.extra_forces.empty();
+  // Forces that excite at the swept frequency (all harmonic ones but unbalances).
+  const bool any_force =
+      std::any_of(model.forces.begin(), model.forces.end(),
+                  [](const Force& f) { return f.has_harmonic() && f.kind() != "unbalance"; }) ||
+      !options.extra_forces.empty();
 
   if (request.freq_start || request.freq_stop) {
     if (!request.freq_start || !request.freq_stop)
@@ -124,7 +144,8 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
       options.speeds = linspace(start, *stop, points);
     }
   }
-  if (options.frequencies.empty() && (model.unbalances.empty() || !options.unbalance) && !any_force)
+  if (options.frequencies.empty() && (model.n_forces("unbalance") == 0 || !options.unbalance) &&
+      !any_force)
     throw Error("response: nothing excites the rotor: the model has no [[unbalances]] or "
                 "[[forces]] and no --force was given");
 

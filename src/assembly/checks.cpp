@@ -11,6 +11,7 @@
 #include <fmt/ranges.h>
 
 #include <feran/core/error.hpp>
+#include <feran/core/tolerances.hpp>
 
 namespace feran {
 
@@ -91,7 +92,7 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
   const Real mu = 1e-8 * lambda_max;
   // A motion is rigid when its Rayleigh quotient is below this: 1e-12·λ_max, i.e.
   // a natural frequency 10⁻⁶ times the highest one, far above round-off (~1e-16·λ_max).
-  const Real rigid_tol = 1e-12 * lambda_max;
+  const Real rigid_tol = tolerance::rigid_body * lambda_max;
 
   // Sylvester's law of inertia: an LDLᵀ factorisation of K − τ·M has as many negative
   // pivots as (K, M) has eigenvalues below τ. With τ = rigid_tol and every pivot

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <feran/analyses/transient/integrator.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
 #include <feran/spec/fields.hpp>
@@ -84,8 +85,15 @@ std::string default_of(const Field<S>& f) {
       f.member);
 }
 
+/// Words a key takes that an analysis defines rather than the field table (the
+/// registry of integrators), for the documentation.
+std::vector<std::string> analysis_choices(std::string_view table, std::string_view key) {
+  if (table == "runup" && key == "integrator") return integrator_names();
+  return {};
+}
+
 template <class S>
-std::string constraints_of(const Field<S>& f) {
+std::string constraints_of(const Field<S>& f, std::string_view table) {
   std::vector<std::string> parts;
   const bool list = f.kind == FieldKind::integer_list;
   switch (f.bound.kind) {
@@ -100,17 +108,21 @@ std::string constraints_of(const Field<S>& f) {
     case spec::Bound::Kind::none: break;
   }
   if (!f.choices.empty()) parts.push_back(quoted_choices(f.choices));
+  const std::vector<std::string> names = analysis_choices(table, f.key);
+  const std::vector<std::string_view> views(names.begin(), names.end());
+  if (!views.empty()) parts.push_back(quoted_choices(views));
   if (!f.doc.empty()) parts.emplace_back(f.doc);
   return fmt::format("{}", fmt::join(parts, "; "));
 }
 
 template <class S>
-std::string table_of(std::string_view child_key = {}, std::string_view child_doc = {}) {
+std::string table_of(std::string_view table, std::string_view child_key = {},
+                     std::string_view child_doc = {}) {
   std::string out =
       "| key | kind | default | constraints / meaning |\n| --- | --- | --- | --- |\n";
   for (const Field<S>& f : spec::fields_of<S>())
     out += fmt::format("| `{}` | {} | {} | {} |\n", f.key, kind_of(f), default_of(f),
-                       constraints_of(f));
+                       constraints_of(f, table));
   if (!child_key.empty())
     out += fmt::format("| `{}` | array of tables | required | {} |\n", child_key, child_doc);
   return out;
@@ -147,11 +159,11 @@ std::string key_table_markdown(std::string_view table) {
         child_key = child;
         child_doc = doc;
         using C = typename std::remove_cvref_t<decltype(children)>::value_type;
-        if (table == fmt::format("{}.{}", key, child)) out = table_of<C>();
+        if (table == fmt::format("{}.{}", key, child)) out = table_of<C>(table);
       });
-      if (table == key) out = table_of<S>(child_key, child_doc);
+      if (table == key) out = table_of<S>(table, child_key, child_doc);
     } else {
-      if (table == key) out = table_of<M>();
+      if (table == key) out = table_of<M>(table);
     }
   });
   if (out.empty()) throw Error(fmt::format("no table '{}' in a model file", table));

@@ -13,6 +13,7 @@
 
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/suggestions.hpp>
+#include <feran/analyses/settings.hpp>
 #include <feran/spec/fields.hpp>
 #include <feran/spec/parameters.hpp>
 #include <feran/spec/spec_path.hpp>
@@ -433,6 +434,7 @@ bool overlaps(std::string_view a, std::string_view b) {
 /// and the canonical paths they set.
 void build(ModelFile& file, const std::vector<std::pair<std::string, std::string>>& set) {
   try {
+    check_analysis_tables(file.spec);
     BuildInfo info;
     file.model = build_model(file.spec, &file.source, &info);
     file.assembler = std::move(info.assembler);

@@ -31,7 +31,7 @@ std::string cell(Real x, const char* format_spec, int width, int decimals) {
 std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source) {
   std::string out = source_line("modal", source);
   out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed), result.modes.size(),
-                     result.info.method);
+                     to_string(result.info.method));
   (void)model;
   out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {}\n", "mode", "frequency [Hz]",
                      "damping [%]", "log. decr.", "whirl", "directivity", "type", "note");
@@ -42,7 +42,7 @@ std::string modal_report(const ModalResult& result, const Model& model, const Re
                        cell(100.0 * m.damping_ratio, ".3f", 12, 3), cell(m.log_decrement, ".4f", 10, 4),
                        to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type), note);
   }
-  if (!result.info.converged) out += fmt::format("\nwarning: {}\n", result.info.message);
+  if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
 }
 
@@ -54,7 +54,7 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
   if (n == 0) return out + "no speed could be solved\n";
   out += fmt::format("{} speeds from {} to {}, {} modes tracked, solver {}, {} eigen solves\n\n", n,
                      speed_text(result.speeds.front()), speed_text(result.speeds.back()),
-                     result.modes.size(), result.info.method, result.n_solves);
+                     result.modes.size(), to_string(result.info.method), result.n_solves);
 
   // Frequencies at (at most) 11 evenly spread speeds of the grid.
   const std::size_t rows = std::min<std::size_t>(n, 11);
@@ -98,7 +98,7 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
       out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {:.4g} Hz natural frequency\n",
                          speed_text(t.speed), label, t.frequency_hz);
   }
-  if (!result.info.converged) out += fmt::format("\nwarning: {}\n", result.info.message);
+  if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
 }
 
@@ -133,8 +133,8 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
     out += fmt::format("speed sweep {} to {} ({} points), synchronous excitation", speed_text(result.speeds.front()),
                        speed_text(result.speeds.back()), n);
   out += fmt::format(", {} unbalance(s), {} force(s), loss factor {}\n\n",
-                     (!result.frequency_sweep && options.unbalance) ? model.unbalances.size() : std::size_t{0},
-                     (options.model_forces ? model.forces.size() : 0) + options.extra_forces.size(), options.loss_factor);
+                     (!result.frequency_sweep && options.unbalance) ? model.n_forces("unbalance") : std::size_t{0},
+                     model.n_forces("harmonic_force") + options.extra_forces.size(), options.loss_factor);
 
   if (!result.probes.empty()) {
     const std::size_t rows = std::min<std::size_t>(n, 11);
@@ -176,7 +176,7 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
                        1e3 * st.x, element_name(model, st.element), st.end == 0 ? "start" : "end",
                        point_text(result, sum.stress.point));
   }
-  if (!result.info.converged) out += fmt::format("\nwarning: {}\n", result.info.message);
+  if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
 }
 
@@ -185,7 +185,7 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   std::string out = source_line("static", source);
   out += fmt::format("gravity ({:.4g}, {:.4g}, {:.4g}) m/s^2, {} static load(s), coefficients at {}\n\n",
                      options.gravity(0), options.gravity(1), options.gravity(2),
-                     options.loads ? model.static_loads.size() : 0, speed_text(options.speed));
+                     options.loads ? model.n_forces("static_load") : 0, speed_text(options.speed));
   out += "Displacements [mm, mrad]\n";
   out += fmt::format("{:>20} {:>9} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "node", "x [mm]", "u", "v", "w", "rx",
                      "ry", "rz");

@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 
 #include <feran/core/error.hpp>
-#include <feran/elements/spring_damper.hpp>
 
 namespace feran {
 
@@ -27,8 +26,9 @@ json numbers(const std::vector<Real>& xs) {
 }
 
 json solver_json(const SolverInfo& info) {
-  return {{"method", info.method},
-          {"converged", info.converged},
+  return {{"method", to_string(info.method)},
+          {"converged", info.converged()},
+          {"status", to_string(info.status)},
           {"n_converged", info.n_converged},
           {"iterations", info.iterations},
           {"message", info.message}};
@@ -98,7 +98,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
   const std::size_t n = result.speeds.size();
   const std::size_t wanted = result.frequency_sweep ? options.frequencies.size() : options.speeds.size();
   j["sweep"] = result.frequency_sweep ? "frequency" : "speed";
-  j["complete"] = result.info.converged && n == wanted;
+  j["complete"] = result.info.converged() && n == wanted;
   std::vector<Real> speeds, freqs;
   for (std::size_t k = 0; k < n; ++k) {
     speeds.push_back(rad_to_hz(result.speeds[k]));
@@ -107,7 +107,9 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
   j["speeds_hz"] = numbers(speeds);
   j["frequencies_hz"] = numbers(freqs);
   j["loss_factor"] = options.loss_factor;
-  j["unbalance"] = options.unbalance && !result.frequency_sweep && !model.unbalances.empty();
+  j["unbalance"] = options.unbalance && !result.frequency_sweep &&
+                   std::any_of(model.forces.begin(), model.forces.end(),
+                               [](const Force& f) { return f.kind() == "unbalance"; });
   j["solver"] = solver_json(result.info);
 
   json probes = json::array();
@@ -134,12 +136,12 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
 
   json springs = json::array();
   for (const SpringForceResponse& s : result.springs) {
-    const auto* sd = model.elements[static_cast<std::size_t>(s.element)].target<SpringDamper>();
+    const Transmission link = *model.elements[static_cast<std::size_t>(s.element)].transmission(0.0);
     json js = {{"label", element_label(model, s.element)},
-               {"node", model.nodes[static_cast<std::size_t>(sd->node_a())].number},
+               {"node", model.nodes[static_cast<std::size_t>(link.node_a)].number},
                {"peak_lateral_force_n", numbers(s.peak_lateral)},
                {"force", dof_series(s.force, all_dofs, direction_names)}};
-    js["to"] = sd->node_b() ? json(model.nodes[static_cast<std::size_t>(*sd->node_b())].number) : json("ground");
+    js["to"] = link.node_b ? json(model.nodes[static_cast<std::size_t>(*link.node_b)].number) : json("ground");
     springs.push_back(js);
   }
   j["springs"] = springs;
@@ -271,11 +273,11 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
   };
   json springs = json::array();
   for (const auto& [e, f] : result.springs) {
-    const auto* sd = model.elements[static_cast<std::size_t>(e)].target<SpringDamper>();
+    const Transmission link = *model.elements[static_cast<std::size_t>(e)].transmission(0.0);
     json js = {{"label", element_label(model, e)},
-               {"node", model.nodes[static_cast<std::size_t>(sd->node_a())].number},
+               {"node", model.nodes[static_cast<std::size_t>(link.node_a)].number},
                {"force", components(f, all_dofs)}};
-    js["to"] = sd->node_b() ? json(model.nodes[static_cast<std::size_t>(*sd->node_b())].number) : json("ground");
+    js["to"] = link.node_b ? json(model.nodes[static_cast<std::size_t>(*link.node_b)].number) : json("ground");
     springs.push_back(js);
   }
   j["springs"] = springs;
@@ -388,7 +390,7 @@ std::string campbell_json(const CampbellResult& result, const CampbellOptions& o
   json j = header("campbell", source);
   std::vector<Real> hz;
   for (Real s : result.speeds) hz.push_back(rad_to_hz(s));
-  j["complete"] = result.info.converged && result.speeds.size() == options.speeds.size();
+  j["complete"] = result.info.converged() && result.speeds.size() == options.speeds.size();
   j["speeds_hz"] = numbers(hz);
   j["orders"] = options.orders;
   j["solver"] = solver_json(result.info);

@@ -85,7 +85,7 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
             {"analysis", "runup"},
             {"model", {{"path", source.model_path}, {"title", source.title}}}};
   j["integrator"] = options.integrator;
-  j["complete"] = result.info.converged;
+  j["complete"] = result.info.converged();
   j["message"] = result.info.message;
   j["warning"] = result.warning;
   j["duration_s"] = options.duration;

@@ -4,6 +4,12 @@
 
 namespace feran {
 
+std::size_t Model::n_forces(std::string_view kind) const {
+  std::size_t n = 0;
+  for (const Force& f : forces) n += f.kind() == kind ? 1 : 0;
+  return n;
+}
+
 Index Model::find_node(int number) const {
   for (Index i = 0; i < n_nodes(); ++i)
     if (nodes[static_cast<std::size_t>(i)].number == number) return i;

@@ -17,6 +17,10 @@
 #include <feran/elements/rotating_damper.hpp>
 #include <feran/elements/spring_damper.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
+#include <feran/forces/coulomb_friction.hpp>
+#include <feran/forces/harmonic_force.hpp>
+#include <feran/forces/static_load.hpp>
+#include <feran/forces/unbalance.hpp>
 #include <feran/spec/fields.hpp>
 
 #include <feran/spec/spec_path.hpp>
@@ -671,7 +675,7 @@ void Builder::build_friction() {
     const FrictionSpec& s = spec_.friction[i];
     const std::string path = element("friction", i);
     CoulombFriction f;
-    f.label = s.name.empty() ? fmt::format("friction {}", i + 1) : s.name;
+    const std::string label = s.name.empty() ? fmt::format("friction {}", i + 1) : s.name;
     f.node_a = node(s.node, child(path, "node"), "node");
     require_rotating(f.node_a, child(path, "node"), reason);
     f.node_b = other_node(s.to, path, axis_word, f.node_a);
@@ -679,11 +683,11 @@ void Builder::build_friction() {
     check_bounds(s, path);
     if (s.force == 0.0 && s.moment == 0.0)
       fail(path, "Coulomb friction needs a positive 'force' or 'moment'");
-    f.force = s.force;
-    f.moment = s.moment;
+    f.force_amplitude = s.force;
+    f.moment_amplitude = s.moment;
     f.epsilon_t = s.epsilon_t;
     f.epsilon_r = s.epsilon_r;
-    model_.friction.push_back(f);
+    model_.forces.emplace_back(f, label);
   }
 }
 
@@ -754,14 +758,14 @@ void Builder::build_unbalances() {
     const UnbalanceSpec& s = spec_.unbalances[i];
     const std::string path = element("unbalances", i);
     Unbalance u;
-    u.label = s.name.empty() ? fmt::format("unbalance {}", i + 1) : s.name;
+    const std::string label = s.name.empty() ? fmt::format("unbalance {}", i + 1) : s.name;
     u.node = node(s.node, child(path, "node"), "node");
     check_bounds(s, path);
     u.mass = s.mass;
     u.radius = s.radius;
     u.phase = s.phase;
     u.lever = s.lever;
-    model_.unbalances.push_back(u);
+    model_.forces.emplace_back(u, label);
   }
 }
 
@@ -774,7 +778,7 @@ void Builder::build_forces() {
     const std::string path = element("forces", i);
     const auto at = [&](std::string_view key) { return child(path, key); };
     HarmonicForce f;
-    f.label = s.name.empty() ? fmt::format("force {}", i + 1) : s.name;
+    const std::string label = s.name.empty() ? fmt::format("force {}", i + 1) : s.name;
     f.node = node(s.node, at("node"), "node");
 
     const auto kind = std::find(kinds.begin(), kinds.end(), s.kind);
@@ -790,9 +794,9 @@ void Builder::build_forces() {
         message += fmt::format("; did you mean {}?", join_list(extending, "or", '"'));
       fail(at("kind"), message);
     }
-    f.kind = static_cast<Kind>(kind - kinds.begin());
+    f.type = static_cast<Kind>(kind - kinds.begin());
 
-    if (f.kind == Kind::fixed) {
+    if (f.type == Kind::fixed) {
       if (s.direction.empty())
         fail(path, missing_key("direction", "[[forces]]",
                                fmt::format("{} for a force of kind \"fixed\"",
@@ -822,14 +826,14 @@ void Builder::build_forces() {
         fail(at("direction"),
              fmt::format("'direction' is only for a force of kind \"fixed\"; a {} turns with "
                          "the shaft in the y-z plane, so leave 'direction' out",
-                         f.kind == Kind::rotating_force ? "rotating force" : "rotating moment"));
+                         f.type == Kind::rotating_force ? "rotating force" : "rotating moment"));
       require_rotating(f.node, at("node"),
                        fmt::format("a force of kind \"{}\" turns with the shaft", s.kind));
     }
     check_bounds(s, path);
     f.amplitude = s.amplitude;
     f.phase = s.phase;
-    model_.forces.push_back(f);
+    model_.forces.emplace_back(f, label);
   }
 }
 
@@ -838,14 +842,14 @@ void Builder::build_static_loads() {
     const StaticLoadSpec& s = spec_.static_loads[i];
     const std::string path = element("static_loads", i);
     StaticLoad load;
-    load.label = s.name.empty() ? fmt::format("static load {}", i + 1) : s.name;
+    const std::string label = s.name.empty() ? fmt::format("static load {}", i + 1) : s.name;
     load.node = node(s.node, child(path, "node"), "node");
     check_bounds(s, path);
     load.load = {s.fx, s.fy, s.fz, s.mx, s.my, s.mz};
     if (std::all_of(load.load.begin(), load.load.end(), [](Real v) { return v == 0.0; }))
       fail(path, "a static load needs at least one non-zero component: the forces fx, fy, fz "
                  "or the moments mx, my, mz");
-    model_.static_loads.push_back(load);
+    model_.forces.emplace_back(load, label);
   }
 }
 
@@ -965,8 +969,6 @@ void Builder::check_runup() const {
                                 fmt::format("the ramp's duration, {}",
                                             expected_quantity(Quantity::time))));
   }
-  check_choice(r.integrator.value_or("trapezoidal"), "runup.integrator", "integrator",
-               spec::fields_of<RunupSpec>()[6].choices);
   distinct_nodes(r.probes, "runup.probes", "probes");
 
   std::vector<std::string> named;

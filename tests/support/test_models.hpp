@@ -9,6 +9,10 @@
 #include <feran/elements/rotating_damper.hpp>
 #include <feran/elements/spring_damper.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
+#include <feran/forces/coulomb_friction.hpp>
+#include <feran/forces/harmonic_force.hpp>
+#include <feran/forces/static_load.hpp>
+#include <feran/forces/unbalance.hpp>
 #include <feran/model/model.hpp>
 
 namespace feran::test {

@@ -72,7 +72,7 @@ TEST(Friswell591, SparseSolverAgreesWithDense) {
   sparse.solver = EigenSolver::sparse;
   sparse.n_modes = 10;
   const ModalResult a = run_modal(model, speed, dense), b = run_modal(model, speed, sparse);
-  ASSERT_TRUE(b.info.converged) << b.info.message;
+  ASSERT_TRUE(b.info.converged()) << b.info.message;
   ASSERT_EQ(b.modes.size(), 10u);
   for (std::size_t i = 0; i < b.modes.size(); ++i) {
     // Arnoldi tolerance 1e-10 on the shift-inverted values: eigenvalues to ~1e-9 relative.

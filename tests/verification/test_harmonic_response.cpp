@@ -20,7 +20,7 @@ const Complex I(0, 1);
 TEST(HarmonicResponse, QuasiStaticLimitIsTheStaticDeflection) {
   Model m = test::friswell_5_9_1();
   const Real mu = 1e-3, e = 0.1, lever = 0.03;
-  m.unbalances.push_back({4, mu, e, 0.0, lever, "u"});
+  m.forces.emplace_back(Unbalance{4, mu, e, 0.0, lever}, "u");
   const Real speed = 1e-3 * hz_to_rad(13.79);
   HarmonicOptions opt;
   opt.speeds = {speed};
@@ -28,13 +28,13 @@ TEST(HarmonicResponse, QuasiStaticLimitIsTheStaticDeflection) {
   const HarmonicResult dyn = run_harmonic_response(m, opt);
 
   Model s = m;
-  s.unbalances.clear();
+  std::erase_if(s.forces, [](const Force& f) { return f.kind() == "unbalance"; });
   StaticLoad load;
   load.node = 4;
   const Real F = mu * e * speed * speed;
   load.load[static_cast<std::size_t>(Dof::v)] = F;
   load.load[static_cast<std::size_t>(Dof::rz)] = lever * F;  // moment of F_y about z
-  s.static_loads.push_back(load);
+  s.forces.emplace_back(load);
   const StaticResult st = run_static(s, {});
   for (std::size_t p = 0; p < opt.probes.size(); ++p) {
     const Index node = opt.probes[p];
@@ -66,7 +66,7 @@ TEST(HarmonicResponse, CrossCoupledBearingGivesTheIndependentEllipse) {
   c.c[static_cast<std::size_t>(Dof::w)] = czz;
   m.elements.emplace_back(SpringDamper(n, std::nullopt, c));
   test::fix(m, n, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
-  m.unbalances.push_back({n, mu, e, phase, 0.0, "u"});
+  m.forces.emplace_back(Unbalance{n, mu, e, phase, 0.0}, "u");
   for (Real speed : {300.0, 700.0, 900.0, 1500.0}) {
     HarmonicOptions opt;
     opt.speeds = {speed};
@@ -107,7 +107,7 @@ TEST(HarmonicResponse, SpeedDependentBearingUsesTheCoefficientAtEachSpeed) {
     c.c[static_cast<std::size_t>(Dof::w)] = 100.0;
     m.elements.emplace_back(SpringDamper(0, std::nullopt, c));
     m.elements.emplace_back(SpringDamper(6, std::nullopt, c));
-    m.unbalances.push_back({2, 1e-3, 0.1, 0.0, 0.0, "u"});
+    m.forces.emplace_back(Unbalance{2, 1e-3, 0.1, 0.0, 0.0}, "u");
     return m;
   };
   const Model stepped = model(SpeedCoefficient(SpeedCoefficient::Step{1e6, 3e6, hz_to_rad(50)}));
@@ -166,7 +166,7 @@ TEST(HarmonicResponse, ClampForceBalancesTheRotorInertia) {
   const Real c = 50.0;
   test::add_isotropic_bearing(m, 6, 0.0, c);
   const Real mu = 1e-3, e = 0.05;
-  m.unbalances.push_back({6, mu, e, 0.0, 0.0, "u"});
+  m.forces.emplace_back(Unbalance{6, mu, e, 0.0, 0.0}, "u");
   HarmonicOptions opt;
   opt.speeds = {120.0, 400.0};
   for (Index node = 0; node < m.n_nodes(); ++node) opt.probes.push_back(node);

@@ -101,7 +101,7 @@ std::vector<Real> rotor_deflection(const Model& model, const std::vector<Real>& 
   options.speeds = speeds;
   options.probes = {model.find_node("rotor")};
   const HarmonicResult r = run_harmonic_response(model, options);
-  EXPECT_TRUE(r.info.converged);
+  EXPECT_TRUE(r.info.converged());
   std::vector<Real> out;
   for (const Orbit& o : r.probes.at(0).orbit) out.push_back(o.major);
   return out;

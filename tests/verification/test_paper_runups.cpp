@@ -99,7 +99,7 @@ Mode forward_1(const Model& model, Real hz) {
 // quasi-static, so the peak is close to the steady-state peak and comes a little later.
 TEST(PaperRunups, Fig5WithoutInternalDampingFollowsTheSteadyState) {
   const RunUp run = runup("01_internal_damping/model_without_internal_damping.toml");
-  ASSERT_TRUE(run.result.info.converged) << run.result.info.message;
+  ASSERT_TRUE(run.result.info.converged()) << run.result.info.message;
   const Steady steady = steady_state(run.model, 0.0, 80.0);
   const auto top = std::max_element(steady.radius.begin(), steady.radius.end());
   const Real steady_peak = *top;
@@ -139,7 +139,7 @@ TEST(PaperRunups, Fig5WithInternalDampingGrowsAtTheEigenvalueRateUntilItBlowsUp)
   const RunUp run = runup("01_internal_damping/model.toml");
   const TransientResult& r = run.result;
   // The run is stopped at the blow-up limit (1 m / 1 rad): results kept, not converged.
-  ASSERT_FALSE(r.info.converged);
+  ASSERT_FALSE(r.info.converged());
   EXPECT_NE(r.info.message.find("blew up"), std::string::npos) << r.info.message;
   const Real stop_hz = rad_to_hz(r.samples.back().speed);
   // Regression values of this model and step (see docs/validation.md on why the
@@ -197,7 +197,7 @@ TEST(PaperRunups, Fig6CoulombFrictionWhirlSetsInAfterTheCriticalSpeedAndDoesNotG
   constexpr Real c_at = 250.0;
   for (const Case& c : cases) {
     const RunUp run = runup("03_coulomb_friction/" + c.file);
-    ASSERT_TRUE(run.result.info.converged) << c.file << ": " << run.result.info.message;
+    ASSERT_TRUE(run.result.info.converged()) << c.file << ": " << run.result.info.message;
     const Steady steady = steady_state(run.model, 40.0, 80.0);
     const auto whirl = [&](Real from, Real to) {
       const Band b = band(run.result, from, to);
@@ -263,7 +263,7 @@ std::vector<Real> backward_whirl_hz(const TransientResult& r) {
 // run is cut at 6.6 s (66 Hz) to keep the test short.
 TEST(PaperRunups, Fig7StepExcitesTheFirstBackwardWhirlFalling0_98To0_68Hz) {
   const RunUp run = runup("02_centrifuge/model_step.toml", 6.6);
-  ASSERT_TRUE(run.result.info.converged) << run.result.info.message;
+  ASSERT_TRUE(run.result.info.converged()) << run.result.info.message;
   const Model soft = read_model_file(example("02_centrifuge/model_soft_mounting.toml")).model;
   const std::vector<Real> hz = backward_whirl_hz(run.result);
   const auto at = [&](Real speed_hz) {  // samples every 1 ms at 10 Hz/s: 0.01 Hz apart
@@ -320,8 +320,8 @@ TEST(PaperRunups, Fig7StepExcitesTheFirstBackwardWhirlFalling0_98To0_68Hz) {
 TEST(PaperRunups, Fig10ArctanLawLowersTheRunUpPeakByAbout30Percent) {
   const RunUp constant = runup("02_centrifuge/model.toml");
   const RunUp arctan = runup("02_centrifuge/model_arctan.toml");
-  ASSERT_TRUE(constant.result.info.converged) << constant.result.info.message;
-  ASSERT_TRUE(arctan.result.info.converged) << arctan.result.info.message;
+  ASSERT_TRUE(constant.result.info.converged()) << constant.result.info.message;
+  ASSERT_TRUE(arctan.result.info.converged()) << arctan.result.info.message;
   const Envelope& c = constant.result.envelopes.at(0);
   const Envelope& a = arctan.result.envelopes.at(0);
   EXPECT_NEAR(1.0 - a.peak / c.peak, 0.30, 0.05);

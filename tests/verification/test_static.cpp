@@ -75,7 +75,7 @@ TEST(StaticAnalysis, CantileverReactionsFromStatics) {
   load.node = 2;
   load.load[static_cast<std::size_t>(Dof::w)] = 100.0;
   load.load[static_cast<std::size_t>(Dof::rx)] = 7.0;
-  m.static_loads.push_back(load);
+  m.forces.emplace_back(load);
   StaticOptions opt;
   opt.gravity = Eigen::Vector3d(0, -g, 0);
   const StaticResult r = run_static(m, opt);
@@ -111,7 +111,7 @@ TEST(StaticAnalysis, FreeMotionsAllowedOnlyWhenTheLoadLeavesThemAlone) {
   StaticLoad torque;
   torque.node = 2;
   torque.load[static_cast<std::size_t>(Dof::rx)] = 10.0;
-  m.static_loads.push_back(torque);
+  m.forces.emplace_back(torque);
   try {
     run_static(m, opt);
     FAIL() << "expected an error";

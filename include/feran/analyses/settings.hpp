@@ -146,6 +146,12 @@ struct RunupRequest {
 TransientOptions runup_settings(const Model& model, const RunupSpec& file,
                                 const RunupRequest& request);
 
+/// Checks what only the analyses know about a spec's analysis tables — today that
+/// [runup] integrator names an integrator of the registry (make_integrator()) —
+/// and throws SpecError at the path ("runup.integrator") with a suggestion.
+/// build_model() has checked everything else; readers call both.
+void check_analysis_tables(const ModelSpec& spec);
+
 /// The spring–damper element labelled @p name; throws Error when there is none.
 Index spring_element(const Model& model, const std::string& name);
 

@@ -39,6 +39,10 @@ class SpringDamper {
   const SpringDamperCoefficients& coefficients() const { return coeffs_; }
   /// 6×6 stiffness and damping of the relative motion at speed @p speed [rad/s].
   Matrix stiffness_6x6(Real speed) const;
+  /// The force it transmits (ability of connecting elements, model/element.hpp).
+  Transmission transmission(Real speed) const {
+    return {node_a_, node_b_, stiffness_6x6(speed), damping_6x6(speed), coeffs_.loss_factor};
+  }
   Matrix damping_6x6(Real speed) const;
 
  private:

@@ -14,18 +14,6 @@
 
 namespace feran {
 
-/// Solid or hollow circular section.
-struct CircularSection {
-  Real outer_diameter = 0.0;  ///< [m]
-  Real inner_diameter = 0.0;  ///< [m], 0 for a solid section
-
-  Real area() const;              ///< A [m²]
-  Real second_moment() const;     ///< I about a diameter [m⁴]
-  Real polar_moment() const;      ///< I_p = J = 2I [m⁴]
-  /// Cowper's (1966) shear coefficient κ for a hollow circle with Poisson ratio @p nu.
-  Real cowper_shear_coefficient(Real nu) const;
-};
-
 /// Options of a shaft element.
 struct BeamOptions {
   bool shear_deformation = true;
@@ -51,6 +39,8 @@ class TimoshenkoBeam {
   const CircularSection& section() const { return section_; }
   const Material& material() const { return material_; }
   const BeamOptions& options() const { return options_; }
+  /// Where its section forces and stresses are reported (ability, model/element.hpp).
+  ShaftSegment shaft_segment() const { return {node_a_, node_b_, section_}; }
   /// Shear parameter Φ = 12EI/(κGAL²), or 0 without shear deformation.
   Real shear_parameter() const;
 

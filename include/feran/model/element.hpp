@@ -1,14 +1,24 @@
 #pragma once
 /// @file
-/// The element interface: a concept and a type-erased, copyable Element value.
+/// The element interface: a concept with optional abilities and a type-erased,
+/// copyable Element value.
 ///
 /// An element is a small value type that returns its matrices at an operating
-/// point. To add one: write a header and a source in elements/, register its
-/// parse function in io/model_reader.cpp, test it, and document its matrices in
-/// docs/theory/. Nothing else changes.
+/// point. Besides, it may have abilities that analyses and writers ask for instead of
+/// asking for its type (detected at compile time, as pagmo detects has_gradient):
+///
+///   transmission(Real speed) -> Transmission   it connects two nodes (or a node and
+///                                              the ground) and transmits a force to
+///                                              report: spring–dampers, bearings
+///   shaft_segment() -> ShaftSegment            it is a piece of shaft whose section
+///                                              forces and stresses are reported
+///
+/// To add an element: a header and a source in elements/, its spec type and field
+/// table (spec/), its build step, a test, and its matrices in docs/theory/.
 
 #include <concepts>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -18,6 +28,7 @@
 
 #include <feran/core/operating_point.hpp>
 #include <feran/core/types.hpp>
+#include <feran/model/section.hpp>
 
 namespace feran {
 
@@ -36,12 +47,41 @@ struct LocalMatrices {
   Real loss_factor = 0.0;
 };
 
+/// What a connecting element transmits at a speed: with Δq = q_a − q_b (q_b = 0 for
+/// the ground) its force on node a is −(K·Δq + C·Δq'), and K·Δq + C·Δq' is reported
+/// as the force it transmits to node b or the ground. K and C are 6×6 in the DOF order
+/// u, v, w, rx, ry, rz.
+struct Transmission {
+  Index node_a = 0;
+  std::optional<Index> node_b;  ///< empty: the ground
+  Matrix K;                     ///< [N/m, N m/rad]
+  Matrix C;                     ///< [N s/m, N m s/rad]
+  Real loss_factor = 0.0;       ///< hysteretic loss factor η of K (harmonic analyses)
+};
+
+/// A two-node piece of shaft with a circular cross-section: where section forces
+/// and stresses are reported.
+struct ShaftSegment {
+  Index node_a = 0;  ///< at the smaller x
+  Index node_b = 0;
+  CircularSection section;
+};
+
 /// What an element type must provide.
 template <class E>
 concept ElementType = std::copyable<E> && requires(const E& e, const OperatingPoint& op) {
   { e.local_matrices(op) } -> std::same_as<LocalMatrices>;
   { e.kind() } -> std::convertible_to<std::string_view>;
   { e.speed_dependent() } -> std::convertible_to<bool>;
+};
+
+template <class E>
+concept HasTransmission = requires(const E& e, Real speed) {
+  { e.transmission(speed) } -> std::same_as<Transmission>;
+};
+template <class E>
+concept HasShaftSegment = requires(const E& e) {
+  { e.shaft_segment() } -> std::same_as<ShaftSegment>;
 };
 
 /// A type-erased element with value semantics (copies are deep).
@@ -73,8 +113,13 @@ class Element {
   bool speed_dependent() const { return self_->speed_dependent(); }
   /// The user's name for the element (may be empty).
   const std::string& label() const { return label_; }
+  /// What it transmits at @p speed [rad/s], if it is a connecting element.
+  std::optional<Transmission> transmission(Real speed) const { return self_->transmission(speed); }
+  /// Its shaft segment, if it is a piece of shaft.
+  std::optional<ShaftSegment> shaft_segment() const { return self_->shaft_segment(); }
 
-  /// The wrapped element if it is an E, else nullptr.
+  /// The wrapped element if it is an E, else nullptr (for inspection: analyses and
+  /// writers ask for abilities instead).
   template <class E>
   const E* target() const {
     if (self_->type() != typeid(E)) return nullptr;
@@ -88,6 +133,8 @@ class Element {
     virtual LocalMatrices local_matrices(const OperatingPoint& op) const = 0;
     virtual std::string_view kind() const = 0;
     virtual bool speed_dependent() const = 0;
+    virtual std::optional<Transmission> transmission(Real speed) const = 0;
+    virtual std::optional<ShaftSegment> shaft_segment() const = 0;
     virtual const std::type_info& type() const = 0;
     virtual const void* data() const = 0;
   };
@@ -100,6 +147,14 @@ class Element {
     }
     std::string_view kind() const override { return value.kind(); }
     bool speed_dependent() const override { return value.speed_dependent(); }
+    std::optional<Transmission> transmission(Real speed) const override {
+      if constexpr (HasTransmission<E>) return value.transmission(speed);
+      else return std::nullopt;
+    }
+    std::optional<ShaftSegment> shaft_segment() const override {
+      if constexpr (HasShaftSegment<E>) return value.shaft_segment();
+      else return std::nullopt;
+    }
     const std::type_info& type() const override { return typeid(E); }
     const void* data() const override { return &value; }
     E value;

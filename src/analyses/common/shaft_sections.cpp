@@ -9,19 +9,19 @@ namespace feran {
 std::vector<ShaftStation> shaft_stations(const Model& model) {
   std::vector<ShaftStation> out;
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const auto* beam = model.elements[e].target<TimoshenkoBeam>();
-    if (!beam) continue;
+    const std::optional<ShaftSegment> segment = model.elements[e].shaft_segment();
+    if (!segment) continue;
     const auto ei = static_cast<Index>(e);
-    out.push_back({ei, 0, beam->node_a(), model.nodes[static_cast<std::size_t>(beam->node_a())].x});
-    out.push_back({ei, 1, beam->node_b(), model.nodes[static_cast<std::size_t>(beam->node_b())].x});
+    out.push_back({ei, 0, segment->node_a, model.nodes[static_cast<std::size_t>(segment->node_a)].x});
+    out.push_back({ei, 1, segment->node_b, model.nodes[static_cast<std::size_t>(segment->node_b)].x});
   }
   return out;
 }
 
-ComplexVector element_values(const TimoshenkoBeam& beam, const ComplexVector& q_full) {
+ComplexVector element_values(const ShaftSegment& segment, const ComplexVector& q_full) {
   ComplexVector q(2 * dofs_per_node);
-  q.head<dofs_per_node>() = q_full.segment<dofs_per_node>(dofs_per_node * beam.node_a());
-  q.tail<dofs_per_node>() = q_full.segment<dofs_per_node>(dofs_per_node * beam.node_b());
+  q.head<dofs_per_node>() = q_full.segment<dofs_per_node>(dofs_per_node * segment.node_a);
+  q.tail<dofs_per_node>() = q_full.segment<dofs_per_node>(dofs_per_node * segment.node_b);
   return q;
 }
 

@@ -11,7 +11,6 @@
 
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/parallel.hpp>
-#include <feran/elements/spring_damper.hpp>
 
 namespace feran {
 
@@ -30,9 +29,9 @@ Real peak_lateral(const NodeAmplitudes& f) {
   return orbit(f[static_cast<std::size_t>(Dof::v)], f[static_cast<std::size_t>(Dof::w)]).major;
 }
 
-struct BeamData {
+struct SegmentData {
   Index element;
-  const TimoshenkoBeam* beam;
+  ShaftSegment segment;
   LocalMatrices matrices;  // speed-independent for shaft elements
 };
 
@@ -161,53 +160,22 @@ struct Workspace {
 
 }  // namespace
 
-ComplexVector unbalance_forces(const Model& model, Real speed) {
-  ComplexVector f = ComplexVector::Zero(model.n_dofs());
-  for (const Unbalance& u : model.unbalances) {
-    // F_y + i·F_z = m r Ω² e^{i(Ωt + φ)}: F_y = m r Ω² e^{iφ}, F_z = −i·m r Ω² e^{iφ}
-    // as amplitudes of Re(·e^{iΩt}); the lever l adds M_y = −l·F_z, M_z = l·F_y.
-    const Complex fy = u.mass * u.radius * speed * speed * std::polar(1.0, u.phase);
-    const Complex fz = -I * fy;
-    f(global_dof(u.node, Dof::v)) += fy;
-    f(global_dof(u.node, Dof::w)) += fz;
-    f(global_dof(u.node, Dof::ry)) += -u.lever * fz;
-    f(global_dof(u.node, Dof::rz)) += u.lever * fy;
-  }
-  return f;
-}
-
-void add_harmonic_forces(const std::vector<HarmonicForce>& forces, ComplexVector& f) {
-  for (const HarmonicForce& h : forces) {
-    const Complex a = h.amplitude * std::polar(1.0, h.phase);
-    switch (h.kind) {
-      case HarmonicForce::Kind::fixed: f(global_dof(h.node, h.direction)) += a; break;
-      case HarmonicForce::Kind::rotating_force:
-        f(global_dof(h.node, Dof::v)) += a;
-        f(global_dof(h.node, Dof::w)) += -I * a;
-        break;
-      case HarmonicForce::Kind::rotating_moment:
-        f(global_dof(h.node, Dof::ry)) += a;
-        f(global_dof(h.node, Dof::rz)) += -I * a;
-        break;
-    }
-  }
-}
-
 HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& options) {
   HarmonicResult result;
   result.frequency_sweep = !options.frequencies.empty();
-  result.info.method = "sparse-lu";
+  result.info.method = SolverMethod::sparse_lu;
   const Assembler assembler(model);
   const DofMap& dofs = assembler.dof_map();
   const ComplexSparse T = dofs.transformation().cast<Complex>();
   const ComplexSparse Tt = T.transpose();
 
-  std::vector<BeamData> beams;
-  std::vector<std::pair<Index, const SpringDamper*>> springs;
+  std::vector<SegmentData> beams;
+  std::vector<Index> springs;  // the connecting elements, whose transmitted force is reported
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const Element& el = model.elements[e];
-    if (const auto* b = el.target<TimoshenkoBeam>()) beams.push_back({static_cast<Index>(e), b, el.local_matrices({})});
-    if (const auto* s = el.target<SpringDamper>()) springs.emplace_back(static_cast<Index>(e), s);
+    if (const auto segment = el.shaft_segment())
+      beams.push_back({static_cast<Index>(e), *segment, el.local_matrices({})});
+    if (el.transmission(0.0)) springs.push_back(static_cast<Index>(e));
   }
   // Elements touching a fixed DOF: their end forces give the support reactions.
   std::vector<bool> fixed_dof(static_cast<std::size_t>(model.n_dofs()), false);
@@ -231,7 +199,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   }
 
   for (Index node : options.probes) result.probes.push_back({node, {}, {}});
-  for (const auto& [e, s] : springs) result.springs.push_back({e, {}, {}});
+  for (const Index e : springs) result.springs.push_back({e, {}, {}});
   for (const ShaftStation& st : shaft_stations(model)) result.stations.push_back({st, {}, {}});
 
   const std::size_t n_points = result.frequency_sweep ? options.frequencies.size() : options.speeds.size();
@@ -268,9 +236,9 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     }
 
     ComplexVector f_full = ComplexVector::Zero(model.n_dofs());
-    if (!result.frequency_sweep && options.unbalance) f_full += unbalance_forces(model, speed);
-    if (options.model_forces) add_harmonic_forces(model.forces, f_full);
-    add_harmonic_forces(options.extra_forces, f_full);
+    const HarmonicExcitation excitation{speed, omega, !result.frequency_sweep, options.unbalance};
+    for (const Force& force : model.forces) force.add_harmonic(excitation, f_full);
+    for (const HarmonicForce& force : options.extra_forces) force.add_harmonic(excitation, f_full);
 
     ws.lu.factorize(ws.A);
     PointResult& out = points[k];
@@ -279,17 +247,17 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     out.solved = true;
 
     for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));
-    for (std::size_t s = 0; s < springs.size(); ++s) {
-      const SpringDamper& sd = *springs[s].second;
-      NodeAmplitudes dq = node_values(q_full, sd.node_a());
-      if (sd.node_b()) {
-        const NodeAmplitudes qb = node_values(q_full, *sd.node_b());
+    for (const Index e : springs) {
+      const Transmission link = *model.elements[static_cast<std::size_t>(e)].transmission(speed);
+      NodeAmplitudes dq = node_values(q_full, link.node_a);
+      if (link.node_b) {
+        const NodeAmplitudes qb = node_values(q_full, *link.node_b);
         for (std::size_t d = 0; d < dq.size(); ++d) dq[d] -= qb[d];
       }
       const Eigen::Map<const Eigen::Matrix<Complex, dofs_per_node, 1>> delta(dq.data());
       const Eigen::Matrix<Complex, dofs_per_node, 1> force =
-          (Complex(1.0, sd.coefficients().loss_factor + options.loss_factor) * sd.stiffness_6x6(speed).cast<Complex>() +
-           I * omega * sd.damping_6x6(speed).cast<Complex>()) * delta;
+          (Complex(1.0, link.loss_factor + options.loss_factor) * link.K.cast<Complex>() +
+           I * omega * link.C.cast<Complex>()) * delta;
       NodeAmplitudes f;
       for (int d = 0; d < dofs_per_node; ++d) f[static_cast<std::size_t>(d)] = force(d);
       out.springs.push_back(f);
@@ -321,10 +289,10 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       if (beams[b].element != st.station.element || end_forces.size() == 0) {
         while (beams[b].element != st.station.element) ++b;
         end_forces = element_forces(beams[b].matrices, speed, omega, options.loss_factor,
-                                    element_values(*beams[b].beam, q_full));
+                                    element_values(beams[b].segment, q_full));
       }
       out.forces.push_back(section_forces(end_forces, st.station.end));
-      out.stress.push_back(section_stress(beams[b].beam->section(), out.forces.back()));
+      out.stress.push_back(section_stress(beams[b].segment.section, out.forces.back()));
     }
   };
   parallel_for(static_cast<Index>(n_points), options.n_threads, [&](Index k, int worker) {
@@ -337,7 +305,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
     const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
     if (!pt.solved) {
-      result.info.converged = false;
+      result.info.status = SolverStatus::numerical_failure;
       result.info.message = fmt::format(
           "the dynamic stiffness is singular at {:.6g} Hz (an undamped resonance on the grid); "
           "add damping or move the grid",

@@ -10,6 +10,7 @@
 #include <feran/core/assignment.hpp>
 #include <feran/core/parallel.hpp>
 #include <feran/core/root_finding.hpp>
+#include <feran/core/tolerances.hpp>
 
 namespace feran {
 
@@ -37,7 +38,7 @@ std::vector<Mode> oscillatory_modes(ModalResult&& r, std::size_t count) {
     // Keep a repeated pair whole (isotropic rotors at rest).
     std::size_t n = count;
     while (n < out.size() &&
-           magnitude(out[n].eigenvalue - out[n - 1].eigenvalue) <= 1e-7 * magnitude(out[n].eigenvalue))
+           magnitude(out[n].eigenvalue - out[n - 1].eigenvalue) <= tolerance::repeated_eigenvalue * magnitude(out[n].eigenvalue))
       ++n;
     out.resize(n);
   }
@@ -118,7 +119,7 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
   // @p j, whose states at a and b are @p ta and @p tb.
   auto match_between = [&](const Track& ta, const Track& tb, Real speed) -> std::optional<Mode> {
     ModalResult r = solve(speed);
-    if (!r.info.converged) return std::nullopt;
+    if (!r.info.converged()) return std::nullopt;
     std::vector<Mode> cands = oscillatory_modes(std::move(r), n_cand);
     Track interp = ta;
     interp.p_prev = ta.p_last;
@@ -143,8 +144,8 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     const Real speed = options.speeds[i];
     ModalResult r = std::move(grid[i]);
     ++result.n_solves;
-    if (result.info.method.empty()) result.info = r.info;
-    if (!r.info.converged) {
+    if (result.info.method == SolverMethod::none) result.info = r.info;
+    if (!r.info.converged()) {
       result.info = r.info;
       result.info.message = "eigen solve failed at " + std::to_string(rad_to_hz(speed)) +
                             " Hz: " + r.info.message;

@@ -56,7 +56,9 @@ namespace {
 
 // Repeated when equal to 1e-7 relative (the criterion of ModalSolver, which
 // re-splits such clusters and keeps them whole).
-bool repeated(Complex a, Complex b) { return magnitude(a - b) <= 1e-7 * std::max(magnitude(a), 1e-300); }
+bool repeated(Complex a, Complex b) {
+  return magnitude(a - b) <= tolerance::repeated_eigenvalue * std::max(magnitude(a), 1e-300);
+}
 
 Matrix state_matrix(const Matrix& M, const Matrix& D, const Matrix& K) {
   const Index n = M.rows();
@@ -82,7 +84,7 @@ void append(StateEigenpairs& out, Index k, Complex p, const Matrix& v, Index j, 
 }
 
 void fail(StateEigenpairs& out, const char* routine, int info) {
-  out.info.converged = false;
+  out.info.status = info > 0 ? SolverStatus::not_converged : SolverStatus::numerical_failure;
   out.info.message = info > 0 ? std::string("the QR algorithm did not converge (LAPACK ") + routine + " info > 0)"
                               : std::string("invalid argument to LAPACK ") + routine;
 }
@@ -90,7 +92,7 @@ void fail(StateEigenpairs& out, const char* routine, int info) {
 // All eigenpairs with Im p ≥ 0 by dgeev.
 StateEigenpairs all_pairs(Matrix A, Index n) {
   StateEigenpairs out;
-  out.info.method = "dense-qr";
+  out.info.method = SolverMethod::dense_qr;
   const int N = static_cast<int>(A.rows());
   Vector wr(N), wi(N);
   Matrix vr(N, N);
@@ -175,7 +177,7 @@ ComplexMatrix complex_state_matrix(const ComplexMatrix& M, const ComplexMatrix& 
 
 StateEigenpairs all_complex_pairs(ComplexMatrix A, Index n) {
   StateEigenpairs out;
-  out.info.method = "dense-qr";
+  out.info.method = SolverMethod::dense_qr;
   const int N = static_cast<int>(A.rows());
   ComplexVector w(N);
   ComplexMatrix vr(N, N);
@@ -238,7 +240,7 @@ StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix&
                                     const DenseSelection& selection) {
   const Index n = M.rows();
   StateEigenpairs out;
-  out.info.method = "dense-qr";
+  out.info.method = SolverMethod::dense_qr;
   if (n == 0) return out;
   const ComplexMatrix A0 = complex_state_matrix(M, D, K);
   if (selection.count <= 0 || selection.count >= n) return all_complex_pairs(A0, n);
@@ -305,7 +307,7 @@ StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix
                                   const DenseSelection& selection) {
   const Index n = M.rows();
   StateEigenpairs out;
-  out.info.method = "dense-qr";
+  out.info.method = SolverMethod::dense_qr;
   if (n == 0) return out;
   const Matrix A0 = state_matrix(M, D, K);
   if (selection.count <= 0 || selection.count >= n) return all_pairs(A0, n);

@@ -29,7 +29,7 @@ bool hermitian(const ComplexMatrix& A, Real sign) {
       a2 = std::max({a2, abs2(A(i, j)), abs2(A(j, i))});
       d2 = std::max(d2, abs2(A(i, j) - sign * std::conj(A(j, i))));
     }
-  return d2 <= 1e-24 * a2;
+  return d2 <= tolerance::symmetry * tolerance::symmetry * a2;
 }
 
 }  // namespace
@@ -74,12 +74,12 @@ std::optional<StateEigenpairs> dense_gyroscopic_eigen(const ComplexMatrix& M, co
     // The partners of a repeated |ω| at the cut stay (1e-7 relative, as ModalSolver).
     keep = static_cast<std::size_t>(selection.count);
     while (keep < order.size() &&
-           std::abs(std::abs(mu(order[keep])) - std::abs(mu(order[keep - 1]))) <= 1e-7 * std::abs(mu(order[keep])))
+           std::abs(std::abs(mu(order[keep])) - std::abs(mu(order[keep - 1]))) <= tolerance::repeated_eigenvalue * std::abs(mu(order[keep])))
       ++keep;
   }
 
   StateEigenpairs out;
-  out.info.method = "dense-hermitian";
+  out.info.method = SolverMethod::dense_hermitian;
   out.values.resize(static_cast<Index>(keep));
   out.vectors.resize(n, static_cast<Index>(keep));
   for (std::size_t k = 0; k < keep; ++k) {

@@ -64,7 +64,7 @@ void split_repeated(ComplexVector& values, ComplexMatrix& vectors, const DofMap&
     // Repeated when equal to 1e-7 relative: far above round-off of the QR
     // algorithm (~1e-13 here), far below any physical split.
     while (end < order.size() &&
-           magnitude(values(order[end]) - p0) <= 1e-7 * std::max(magnitude(p0), 1e-300))
+           magnitude(values(order[end]) - p0) <= tolerance::repeated_eigenvalue * std::max(magnitude(p0), 1e-300))
       ++end;
     if (end - start >= 2 && p0.imag() > 0.0) {
       ComplexMatrix phi(vectors.rows(), static_cast<Index>(end - start));
@@ -245,7 +245,7 @@ std::optional<ComplexForm> complex_form(const std::vector<Index>& dofs, const st
     Q.setFromTriplets(q.begin(), q.end());
     const Real c_max = std::max(P.nonZeros() > 0 ? P.coeffs().cwiseAbs().maxCoeff() : 0.0,
                                 Q.nonZeros() > 0 ? Q.coeffs().cwiseAbs().maxCoeff() : 0.0);
-    if (c_max > 1e-12 * a_max) return false;
+    if (c_max > tolerance::symmetry * a_max) return false;
     Ac.resize(nc, nc);
     Ac.setFromTriplets(t.begin(), t.end());
     return true;
@@ -263,7 +263,7 @@ std::optional<ComplexForm> dense_complex_form(const std::vector<Index>& dofs, co
   if (!f) return std::nullopt;
   const auto nc = static_cast<Index>(f->a.size());
   auto transform = [&](const Matrix& A, ComplexMatrix& Ac) {
-    const Real tol = 1e-12 * (A.size() > 0 ? A.cwiseAbs().maxCoeff() : 0.0);
+    const Real tol = tolerance::symmetry * (A.size() > 0 ? A.cwiseAbs().maxCoeff() : 0.0);
     Ac.resize(nc, nc);
     for (Index j = 0; j < nc; ++j) {
       const Index a2 = f->a[static_cast<std::size_t>(j)], b2 = f->b[static_cast<std::size_t>(j)];
@@ -299,7 +299,7 @@ detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const Compl
       const Real kinetic = std::real(phi.dot(times(M, phi))), strain = std::real(phi.dot(times(K, phi)));
       return kinetic > 0.0 && strain < rigid_tol * kinetic;
     };
-    if (std::abs(w.imag()) <= 1e-10 * magnitude(w) || (magnitude(w) < zero_tol && rigid())) {
+    if (std::abs(w.imag()) <= tolerance::real_eigenvalue * magnitude(w) || (magnitude(w) < zero_tol && rigid())) {
       for (const Vector& part : {Vector(phi.real()), Vector(phi.imag())}) {
         const Real norm = part.norm();
         if (norm == 0.0) continue;
@@ -324,8 +324,13 @@ detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const Compl
 }
 
 // The most general method any decoupled block needed names the solve.
-int method_rank(const std::string& method) {
-  return method == "dense-hermitian" ? 0 : method == "dense-qr" ? 1 : method == "shift-invert-lanczos" ? 2 : 3;
+int method_rank(SolverMethod method) {
+  switch (method) {
+    case SolverMethod::dense_hermitian: return 0;
+    case SolverMethod::dense_qr: return 1;
+    case SolverMethod::shift_invert_lanczos: return 2;
+    default: return 3;
+  }
 }
 
 }  // namespace
@@ -405,7 +410,7 @@ ModalResult ModalSolver::solve(Real speed) const {
   const SparseMatrix K = sys.stiffness(speed);
   const Index n = sys.M.rows();
   // Strain energy of rigid-body motion is round-off: below 1e-12·λ_max (see checks.cpp).
-  const Real rigid_tol = 1e-12 * lambda_max_;
+  const Real rigid_tol = tolerance::rigid_body * lambda_max_;
   const Real zero_tol = 1e-6 * std::sqrt(lambda_max_);
 
   ModalResult result;
@@ -420,7 +425,7 @@ ModalResult ModalSolver::solve(Real speed) const {
   // lowest `wanted` of each block. The largest block goes first: its `wanted`-th
   // lowest |p| is the cutoff the other blocks' modes must beat to count.
   detail::StateEigenpairs pairs;
-  pairs.info.method = "dense-qr";
+  pairs.info.method = SolverMethod::dense_qr;
   pairs.vectors = ComplexMatrix::Zero(n, 0);
   std::vector<Index> local(static_cast<std::size_t>(n), -1);
   std::vector<std::vector<Index>> blocks = decoupled_blocks(sys.M, D, K);
@@ -484,13 +489,13 @@ ModalResult ModalSolver::solve(Real speed) const {
         // fails).
         computed = arnoldi ? detail::sparse_complex_eigen(cf->M, cf->D, cf->K, count, sigma)
                            : detail::dense_complex_eigen(cf->Md, cf->Dd, cf->Kd, selection);
-        solved = computed.info.converged;
+        solved = computed.info.converged();
         if (solved) computed = real_pairs(computed, *cf, Mb, Kb, zero_tol, rigid_tol);
       }
       if (!solved)
         computed = arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)
                            : detail::dense_state_eigen(Md, Dd, Kd, selection);
-      if (constant && computed.info.converged) {
+      if (constant && computed.info.converged()) {
         const std::lock_guard<std::mutex> lock(cache_->mutex);
         cache_->parts.emplace(key, computed);
       }
@@ -506,7 +511,7 @@ ModalResult ModalSolver::solve(Real speed) const {
       for (Index k = first ? wanted_b : std::min<Index>(wanted_b, 4);; k = std::min(wanted_b, 2 * k)) {
         part = block_modes(k, true);
         const bool beyond = part.values.size() > 0 && part.values.cwiseAbs().maxCoeff() > cutoff;
-        if (!part.info.converged || k == wanted_b || beyond) break;
+        if (!part.info.converged() || k == wanted_b || beyond) break;
       }
       if (first) {
         std::vector<Real> magnitudes;
@@ -522,9 +527,8 @@ ModalResult ModalSolver::solve(Real speed) const {
       pairs.info.method = part.info.method;
     pairs.info.iterations += part.info.iterations;
     pairs.info.n_converged += part.info.n_converged;
-    if (!part.info.converged && pairs.info.converged) {
-      pairs.info.converged = false;
-      pairs.info.message = part.info.message;
+    if (!part.info.converged() && pairs.info.converged()) {
+      pairs.info.fail(part.info.status, part.info.message);
     }
     const Index m0 = pairs.values.size(), m = part.values.size();
     pairs.values.conservativeResize(m0 + m);
@@ -592,7 +596,7 @@ ModalResult ModalSolver::solve(Real speed) const {
     // Keep a repeated pair whole (isotropic rotors at rest), as split_repeated does.
     while (options_.oscillatory_only && keep < result.modes.size() &&
            magnitude(result.modes[keep].eigenvalue - result.modes[keep - 1].eigenvalue) <=
-               1e-7 * magnitude(result.modes[keep].eigenvalue))
+               tolerance::repeated_eigenvalue * magnitude(result.modes[keep].eigenvalue))
       ++keep;
     result.modes.resize(keep);
   }

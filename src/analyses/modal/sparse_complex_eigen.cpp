@@ -12,7 +12,7 @@ StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const Complex
                                      const ComplexSparseMatrix& K, Index n_wanted, Real sigma) {
   const Index n = M.rows();
   StateEigenpairs out;
-  out.info.method = "shift-invert-arnoldi";
+  out.info.method = SolverMethod::shift_invert_arnoldi;
   StateShiftInvert<Complex> op(M, D, K);
   if (!set_shift_or_fail(op, sigma, out.info)) return out;
   op.prepare_inner();
@@ -25,8 +25,8 @@ StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const Complex
   out.info.iterations = 1;
   out.info.n_converged = ritz.converged ? ritz.values.size() : 0;
   if (!ritz.converged) {
-    out.info.converged = false;
-    out.info.message = fmt::format("Arnoldi iteration did not converge {} eigenvalues", nev);
+    out.info.fail(SolverStatus::not_converged,
+                  fmt::format("Arnoldi iteration did not converge {} eigenvalues", nev));
     return out;
   }
   out.values = ritz.eigenvalues(sigma);

@@ -30,7 +30,7 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
                                    const SparseMatrix& K, Index n_wanted, Real sigma) {
   const Index n = M.rows();
   StateEigenpairs out;
-  out.info.method = "shift-invert-arnoldi";
+  out.info.method = SolverMethod::shift_invert_arnoldi;
   StateShiftInvert<Real> op(M, D, K);
   const Index nev = n_eigenvalues(n, n_wanted);
   const Index ncv = arnoldi_subspace_size(n, n_wanted);
@@ -54,8 +54,8 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
     out.info.iterations = solver.num_iterations();
     out.info.n_converged = n_conv;
     if (solver.info() != Spectra::CompInfo::Successful) {
-      out.info.converged = false;
-      out.info.message = fmt::format("Arnoldi iteration converged {} of {} eigenvalues", n_conv, nev);
+      out.info.fail(SolverStatus::not_converged,
+                    fmt::format("Arnoldi iteration converged {} of {} eigenvalues", n_conv, nev));
     }
     values = solver.eigenvalues();
     vectors = solver.eigenvectors().topRows(n);

@@ -14,7 +14,9 @@ namespace {
 Real max_abs(const SparseMatrix& A) { return A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0; }
 
 // A = Aᵀ to round-off (1e-12 of the largest entry).
-bool symmetric(const SparseMatrix& A) { return max_abs(SparseMatrix(A - SparseMatrix(A.transpose()))) <= 1e-12 * max_abs(A); }
+bool symmetric(const SparseMatrix& A) {
+  return max_abs(SparseMatrix(A - SparseMatrix(A.transpose()))) <= tolerance::symmetry * max_abs(A);
+}
 
 // y = (K − s·M)⁻¹x for Spectra, by a sparse LDLᵀ: below the lowest eigenvalue the
 // matrix is positive definite (Spectra's own operator uses a general sparse LU).
@@ -69,7 +71,7 @@ std::optional<StateEigenpairs> sparse_undamped_eigen(const SparseMatrix& M, cons
   if (lambda.minCoeff() < -1e-10 * scale) return std::nullopt;
 
   StateEigenpairs out;
-  out.info.method = "shift-invert-lanczos";
+  out.info.method = SolverMethod::shift_invert_lanczos;
   out.info.iterations = eigs.num_iterations();
   out.values.resize(lambda.size());
   out.vectors.resize(n, lambda.size());

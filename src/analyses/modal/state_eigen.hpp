@@ -4,6 +4,7 @@
 
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/core/types.hpp>
+#include <feran/core/tolerances.hpp>
 
 #include <optional>
 
@@ -82,7 +83,7 @@ StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix&
 
 // The @p n_wanted eigenvalues nearest the real shift @p sigma by shift-invert
 // Arnoldi grown until they converge (complex sparse LU of K + σD + σ²M); not
-// converged within three vectors per eigenvalue → info.converged = false.
+// converged within three vectors per eigenvalue → info.status = not_converged.
 StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const ComplexSparseMatrix& D,
                                      const ComplexSparseMatrix& K, Index n_wanted, Real sigma);
 

@@ -9,7 +9,6 @@
 #include <feran/assembly/assembler.hpp>
 #include <feran/assembly/checks.hpp>
 #include <feran/core/error.hpp>
-#include <feran/elements/spring_damper.hpp>
 
 namespace feran {
 
@@ -35,8 +34,7 @@ Vector load_vector(const Model& model, const StaticOptions& options) {
     }
   }
   if (options.loads)
-    for (const StaticLoad& l : model.static_loads)
-      for (int d = 0; d < dofs_per_node; ++d) f(dofs_per_node * l.node + d) += l.load[static_cast<std::size_t>(d)];
+    for (const Force& force : model.forces) force.add_static(f);
   return f;
 }
 
@@ -44,7 +42,7 @@ Vector load_vector(const Model& model, const StaticOptions& options) {
 
 StaticResult run_static(const Model& model, const StaticOptions& options) {
   StaticResult result;
-  result.info.method = "sparse-lu";
+  result.info.method = SolverMethod::sparse_lu;
   const Assembler assembler(model);
   const SparseMatrix& T = assembler.dof_map().transformation();
   const SystemMatrices sys = assembler.at(options.speed);
@@ -88,11 +86,11 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
   result.q = T * q;
 
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const auto* sd = model.elements[e].target<SpringDamper>();
-    if (!sd) continue;
-    Eigen::Matrix<Real, dofs_per_node, 1> dq = result.q.segment<dofs_per_node>(dofs_per_node * sd->node_a());
-    if (sd->node_b()) dq -= result.q.segment<dofs_per_node>(dofs_per_node * *sd->node_b());
-    const Eigen::Matrix<Real, dofs_per_node, 1> force = sd->stiffness_6x6(options.speed) * dq;
+    const std::optional<Transmission> link = model.elements[e].transmission(options.speed);
+    if (!link) continue;
+    Eigen::Matrix<Real, dofs_per_node, 1> dq = result.q.segment<dofs_per_node>(dofs_per_node * link->node_a);
+    if (link->node_b) dq -= result.q.segment<dofs_per_node>(dofs_per_node * *link->node_b);
+    const Eigen::Matrix<Real, dofs_per_node, 1> force = link->K * dq;
     NodeValues out;
     for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = force(d);
     result.springs.emplace_back(static_cast<Index>(e), out);
@@ -137,18 +135,18 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
   Index last = -1;
   for (const ShaftStation& st : result.stations) {
     const Element& el = model.elements[static_cast<std::size_t>(st.element)];
-    const auto* beam = el.target<TimoshenkoBeam>();
+    const ShaftSegment segment = *el.shaft_segment();
     if (st.element != last) {
       const LocalMatrices lm = el.local_matrices({});
       Vector g = Vector::Zero(2 * dofs_per_node);
       for (int k = 0; k < 2; ++k)
         for (int d = 0; d < 3; ++d) g(dofs_per_node * k + d) = options.gravity(d);
-      end_forces = (lm.K * element_values(*beam, qc).real() - lm.M * g).cast<Complex>();
+      end_forces = (lm.K * element_values(segment, qc).real() - lm.M * g).cast<Complex>();
       last = st.element;
     }
     const SectionForces sf = section_forces(end_forces, st.end);
     result.section_forces.push_back(sf);
-    result.stresses.push_back(section_stress(beam->section(), sf));
+    result.stresses.push_back(section_stress(segment.section, sf));
   }
 
   for (Index node = 0; node < model.n_nodes(); ++node) {

@@ -22,7 +22,8 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, bool static_l
   if (mass_.info() != Eigen::Success) throw Error("transient: the mass matrix is not positive definite");
   // The rows of T for a force's DOFs map reduced coordinates to its local ones.
   const Eigen::SparseMatrix<Real, Eigen::RowMajor> Tr = assembler_.dof_map().transformation();
-  for (NonlinearForce& f : nonlinear_forces(model)) {
+  for (const Force& f : model.forces) {
+    if (!f.is_nonlinear()) continue;
     const std::vector<Index> dofs = f.dofs();
     SparseMatrix sel(static_cast<Index>(dofs.size()), Tr.cols());
     std::vector<Eigen::Triplet<Real>> trip;
@@ -31,7 +32,7 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, bool static_l
         trip.emplace_back(static_cast<Index>(i), it.col(), it.value());
     sel.setFromTriplets(trip.begin(), trip.end());
     selectors_.push_back(sel);
-    forces_.push_back(std::move(f));
+    forces_.push_back(f);
   }
   f_full_.resize(model.n_dofs());
   update_speed(profile_.speed(0.0));
@@ -45,32 +46,11 @@ void RotorSystem::update_speed(Real speed) {
 
 void RotorSystem::external_forces(Real t, Vector& f) const {
   f.setZero();
-  const Real W = profile_.speed(t), dW = profile_.acceleration(t), phi = profile_.angle(t);
-  for (const Unbalance& u : model_.unbalances) {
-    // F_y + j·F_z = m r (Ω² − jΩ') e^{j(φ + phase)}
-    const Complex F = u.mass * u.radius * Complex(W * W, -dW) * std::polar(1.0, phi + u.phase);
-    f(global_dof(u.node, Dof::v)) += F.real();
-    f(global_dof(u.node, Dof::w)) += F.imag();
-    f(global_dof(u.node, Dof::ry)) += -u.lever * F.imag();
-    f(global_dof(u.node, Dof::rz)) += u.lever * F.real();
+  const MotionState state{t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)};
+  for (const Force& force : model_.forces) {
+    force.add_transient(state, f);
+    if (static_loads_) force.add_static(f);
   }
-  for (const HarmonicForce& h : model_.forces) {
-    const Complex a = h.amplitude * std::polar(1.0, phi + h.phase);
-    switch (h.kind) {
-      case HarmonicForce::Kind::fixed: f(global_dof(h.node, h.direction)) += a.real(); break;
-      case HarmonicForce::Kind::rotating_force:
-        f(global_dof(h.node, Dof::v)) += a.real();
-        f(global_dof(h.node, Dof::w)) += a.imag();
-        break;
-      case HarmonicForce::Kind::rotating_moment:
-        f(global_dof(h.node, Dof::ry)) += a.real();
-        f(global_dof(h.node, Dof::rz)) += a.imag();
-        break;
-    }
-  }
-  if (static_loads_)
-    for (const StaticLoad& l : model_.static_loads)
-      for (int d = 0; d < dofs_per_node; ++d) f(dofs_per_node * l.node + d) += l.load[static_cast<std::size_t>(d)];
 }
 
 void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {

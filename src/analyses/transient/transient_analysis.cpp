@@ -11,7 +11,6 @@
 #include <feran/analyses/transient/projected_system.hpp>
 #include <feran/analyses/transient/rotor_system.hpp>
 #include <feran/core/error.hpp>
-#include <feran/elements/spring_damper.hpp>
 
 namespace feran {
 
@@ -30,19 +29,14 @@ void interpolate(const State& a, const State& b, Real t, Vector& x, Vector& v) {
   v = (d00 / h) * a.x + d10 * a.v + (d01 / h) * b.x + d11 * b.v;
 }
 
-// Unit forces and moments (v, w, ry, rz) at every node where a force acts —
-// unbalances, harmonic forces, static loads when applied, friction — in reduced
-// coordinates: the static correction vectors of a reduced run.
+// Unit forces and moments (v, w, ry, rz) at every node where a force of the run
+// acts — its external and nonlinear forces, and its static loads when applied — in
+// reduced coordinates: the static correction vectors of a reduced run.
 Matrix load_vectors(const Model& model, const DofMap& dofs, const TransientOptions& options) {
   std::vector<Index> nodes;
-  for (const Unbalance& u : model.unbalances) nodes.push_back(u.node);
-  for (const HarmonicForce& h : model.forces) nodes.push_back(h.node);
-  if (options.static_loads)
-    for (const StaticLoad& l : model.static_loads) nodes.push_back(l.node);
-  for (const CoulombFriction& f : model.friction) {
-    nodes.push_back(f.node_a);
-    if (f.node_b) nodes.push_back(*f.node_b);
-  }
+  for (const Force& f : model.forces)
+    if (f.has_transient() || f.is_nonlinear() || (options.static_loads && f.has_static()))
+      for (const Index node : f.nodes()) nodes.push_back(node);
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   const SparseMatrix Tt = dofs.transformation().transpose();
@@ -61,13 +55,13 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   if (!(options.output_interval > 0)) throw Error("transient: the output interval must be positive");
   if (!(options.settings.dt > 0)) throw Error("transient: the time step must be positive");
   for (Index e : options.springs)
-    if (!model.elements.at(static_cast<std::size_t>(e)).target<SpringDamper>())
-      throw Error("transient: a recorded element is not a spring-damper");
+    if (!model.elements.at(static_cast<std::size_t>(e)).transmission(0.0))
+      throw Error("transient: a recorded element transmits no force (it is not a spring-damper)");
 
   TransientResult result;
   RotorSystem rotor(model, options.profile, options.static_loads);
   std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
-  result.info.method = std::string(integrator->name());
+  result.info.method = SolverMethod::time_integration;
   const DofMap& dofs = rotor.dof_map();
   std::unique_ptr<ProjectedSystem> projected;
   if (options.reduced_modes > 0) {
@@ -128,14 +122,14 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
       sample.magnitude.push_back(std::hypot(q[static_cast<std::size_t>(Dof::v)], q[static_cast<std::size_t>(Dof::w)]));
     }
     for (Index e : options.springs) {
-      const SpringDamper& sd = *model.elements[static_cast<std::size_t>(e)].target<SpringDamper>();
-      Eigen::Matrix<Real, dofs_per_node, 1> dx = x_full.segment<dofs_per_node>(dofs_per_node * sd.node_a());
-      Eigen::Matrix<Real, dofs_per_node, 1> dv = v_full.segment<dofs_per_node>(dofs_per_node * sd.node_a());
-      if (sd.node_b()) {
-        dx -= x_full.segment<dofs_per_node>(dofs_per_node * *sd.node_b());
-        dv -= v_full.segment<dofs_per_node>(dofs_per_node * *sd.node_b());
+      const Transmission link = *model.elements[static_cast<std::size_t>(e)].transmission(sample.speed);
+      Eigen::Matrix<Real, dofs_per_node, 1> dx = x_full.segment<dofs_per_node>(dofs_per_node * link.node_a);
+      Eigen::Matrix<Real, dofs_per_node, 1> dv = v_full.segment<dofs_per_node>(dofs_per_node * link.node_a);
+      if (link.node_b) {
+        dx -= x_full.segment<dofs_per_node>(dofs_per_node * *link.node_b);
+        dv -= v_full.segment<dofs_per_node>(dofs_per_node * *link.node_b);
       }
-      const Eigen::Matrix<Real, dofs_per_node, 1> f = sd.stiffness_6x6(sample.speed) * dx + sd.damping_6x6(sample.speed) * dv;
+      const Eigen::Matrix<Real, dofs_per_node, 1> f = link.K * dx + link.C * dv;
       std::array<Real, dofs_per_node> out{};
       for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = f(d);
       sample.springs.push_back(out);
@@ -164,8 +158,7 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   }
   const StepReport started = integrator->start(sys, s);
   if (!started.ok) {
-    result.info.converged = false;
-    result.info.message = started.message;
+    result.info.fail(SolverStatus::numerical_failure, started.message);
     return result;
   }
   result.warning = started.message;
@@ -178,9 +171,9 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   State previous = s;
   Vector xi, vi;
   auto fail = [&](const std::string& why) {
-    result.info.converged = false;
-    result.info.message = fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
-                                      rad_to_hz(options.profile.speed(s.t)), why);
+    result.info.fail(SolverStatus::numerical_failure,
+                     fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
+                                 rad_to_hz(options.profile.speed(s.t)), why));
   };
   while (s.t < t_end * (1 - 1e-12)) {
     const Real h = std::min(dt, t_end - s.t);

@@ -12,6 +12,10 @@
 #include <feran/elements/rotating_damper.hpp>
 #include <feran/elements/spring_damper.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
+#include <feran/forces/coulomb_friction.hpp>
+#include <feran/forces/harmonic_force.hpp>
+#include <feran/forces/static_load.hpp>
+#include <feran/forces/unbalance.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/io/model_reader.hpp>
 
@@ -56,6 +60,15 @@ Index element_index(const Model& m, const std::string& label) {
   for (std::size_t i = 0; i < m.elements.size(); ++i)
     if (m.elements[i].label() == label) return static_cast<Index>(i);
   throw std::runtime_error("no element labelled " + label);
+}
+
+/// The forces of type F of @p m, in model order, with their labels.
+template <class F>
+std::vector<std::pair<F, std::string>> forces_of(const Model& m) {
+  std::vector<std::pair<F, std::string>> out;
+  for (const Force& f : m.forces)
+    if (const F* x = f.target<F>()) out.emplace_back(*x, f.label());
+  return out;
 }
 
 Index index_of(const Model& m, const std::string& name) {
@@ -326,19 +339,20 @@ TEST_F(EverythingModel, RotatingDampersAndFriction) {
   EXPECT_EQ(second.coefficients().axial, 10.0);
   EXPECT_EQ(second.coefficients().torsional, 0.1);
 
-  ASSERT_EQ(m().friction.size(), 2u);
-  const CoulombFriction& rub = m().friction[0];
-  EXPECT_EQ(rub.label, "rub");
+  const auto friction = forces_of<CoulombFriction>(m());
+  ASSERT_EQ(friction.size(), 2u);
+  const CoulombFriction& rub = friction[0].first;
+  EXPECT_EQ(friction[0].second, "rub");
   EXPECT_EQ(rub.node_a, 5);
   EXPECT_FALSE(rub.node_b);
-  EXPECT_EQ(rub.force, 5.2);
-  EXPECT_EQ(rub.moment, 0.1);
+  EXPECT_EQ(rub.force_amplitude, 5.2);
+  EXPECT_EQ(rub.moment_amplitude, 0.1);
   EXPECT_DOUBLE_EQ(rub.epsilon_t, 2e-4);  // "0.2 mm/s"
   EXPECT_EQ(rub.epsilon_r, 0.002);
-  const CoulombFriction& second_friction = m().friction[1];
-  EXPECT_EQ(second_friction.label, "friction 2");
+  const CoulombFriction& second_friction = friction[1].first;
+  EXPECT_EQ(friction[1].second, "friction 2");
   EXPECT_EQ(second_friction.node_b, 4);
-  EXPECT_DOUBLE_EQ(second_friction.force, 1.0);  // "0.001 kN"
+  EXPECT_DOUBLE_EQ(second_friction.force_amplitude, 1.0);  // "0.001 kN"
   EXPECT_EQ(second_friction.epsilon_t, 1e-4);    // defaults
   EXPECT_EQ(second_friction.epsilon_r, 1e-3);
 }
@@ -355,16 +369,17 @@ TEST_F(EverythingModel, ConstraintsAndUnbalances) {
   for (const FixedDofs& f : m().fixed)
     for (const bool held : f.dofs) EXPECT_TRUE(held);
 
-  ASSERT_EQ(m().unbalances.size(), 2u);
-  const Unbalance& u = m().unbalances[0];
-  EXPECT_EQ(u.label, "rotor unbalance");
+  const auto unbalances = forces_of<Unbalance>(m());
+  ASSERT_EQ(unbalances.size(), 2u);
+  const Unbalance& u = unbalances[0].first;
+  EXPECT_EQ(unbalances[0].second, "rotor unbalance");
   EXPECT_EQ(u.node, index_of(m(), "tip"));
   EXPECT_DOUBLE_EQ(u.mass, 0.003);
   EXPECT_DOUBLE_EQ(u.radius, 0.080);
   EXPECT_DOUBLE_EQ(u.phase, pi / 2.0);
   EXPECT_DOUBLE_EQ(u.lever, 0.005);
-  const Unbalance& v = m().unbalances[1];
-  EXPECT_EQ(v.label, "unbalance 2");
+  const Unbalance& v = unbalances[1].first;
+  EXPECT_EQ(unbalances[1].second, "unbalance 2");
   EXPECT_EQ(v.node, 1);
   EXPECT_EQ(v.phase, 0.0);
   EXPECT_EQ(v.lever, 0.0);
@@ -384,48 +399,50 @@ TEST_F(EverythingModel, AnalysisDefaults) {
 
 TEST_F(EverythingModel, HarmonicForces) {
   using Kind = HarmonicForce::Kind;
-  ASSERT_EQ(m().forces.size(), 5u);
-  const HarmonicForce& shaker = m().forces[0];
-  EXPECT_EQ(shaker.label, "shaker");
+  const auto forces = forces_of<HarmonicForce>(m());
+  ASSERT_EQ(forces.size(), 5u);
+  const HarmonicForce& shaker = forces[0].first;
+  EXPECT_EQ(forces[0].second, "shaker");
   EXPECT_EQ(shaker.node, index_of(m(), "stator a"));
-  EXPECT_EQ(shaker.kind, Kind::fixed);  // default
+  EXPECT_EQ(shaker.type, Kind::fixed);  // default
   EXPECT_EQ(shaker.direction, Dof::v);  // "y"
   EXPECT_EQ(shaker.amplitude, 10.0);
   EXPECT_DOUBLE_EQ(shaker.phase, pi / 6.0);  // "30 deg"
 
-  const HarmonicForce& rotating = m().forces[1];
-  EXPECT_EQ(rotating.label, "force 2");  // default label
+  const HarmonicForce& rotating = forces[1].first;
+  EXPECT_EQ(forces[1].second, "force 2");  // default label
   EXPECT_EQ(rotating.node, index_of(m(), "tip"));
-  EXPECT_EQ(rotating.kind, Kind::rotating_force);
+  EXPECT_EQ(rotating.type, Kind::rotating_force);
   EXPECT_EQ(rotating.amplitude, 2.5);
   EXPECT_EQ(rotating.phase, 0.0);  // default
 
-  const HarmonicForce& moment = m().forces[2];
+  const HarmonicForce& moment = forces[2].first;
   EXPECT_EQ(moment.node, 3);  // node = 4
-  EXPECT_EQ(moment.kind, Kind::rotating_moment);
+  EXPECT_EQ(moment.type, Kind::rotating_moment);
   EXPECT_EQ(moment.amplitude, 0.5);  // "0.5 N*m"
   EXPECT_EQ(moment.phase, 1.0);
 
-  const HarmonicForce& tilt = m().forces[3];
+  const HarmonicForce& tilt = forces[3].first;
   EXPECT_EQ(tilt.node, index_of(m(), "stator b"));
   EXPECT_EQ(tilt.direction, Dof::rz);
   EXPECT_EQ(tilt.amplitude, 3.0);  // "3 Nm": a moment for a rotational direction
 
-  const HarmonicForce& axial = m().forces[4];
-  EXPECT_EQ(axial.kind, Kind::fixed);
+  const HarmonicForce& axial = forces[4].first;
+  EXPECT_EQ(axial.type, Kind::fixed);
   EXPECT_EQ(axial.direction, Dof::u);  // "x"
   EXPECT_DOUBLE_EQ(axial.amplitude, 10.0);  // "0.01 kN"
 }
 
 TEST_F(EverythingModel, StaticLoads) {
-  ASSERT_EQ(m().static_loads.size(), 2u);
-  const StaticLoad& coupling = m().static_loads[0];
-  EXPECT_EQ(coupling.label, "coupling");
+  const auto loads = forces_of<StaticLoad>(m());
+  ASSERT_EQ(loads.size(), 2u);
+  const StaticLoad& coupling = loads[0].first;
+  EXPECT_EQ(loads[0].second, "coupling");
   EXPECT_EQ(coupling.node, index_of(m(), "drive"));
   // Indexed by Dof: fx, fy, fz, mx, my, mz.
   EXPECT_EQ(coupling.load, (std::array<Real, dofs_per_node>{0.0, 0.0, -20.0, 0.0, 0.5, 0.0}));
-  const StaticLoad& second = m().static_loads[1];
-  EXPECT_EQ(second.label, "static load 2");
+  const StaticLoad& second = loads[1].first;
+  EXPECT_EQ(loads[1].second, "static load 2");
   EXPECT_EQ(second.node, 4);  // node = 5
   EXPECT_EQ(second.load[0], 1.0);
   EXPECT_DOUBLE_EQ(second.load[1], -2.0);  // "-0.002 kN"
@@ -514,17 +531,18 @@ void expect_same_model(const Model& expected, const Model& actual) {
     EXPECT_EQ(actual.links[i].leader, expected.links[i].leader);
     EXPECT_EQ(actual.links[i].followers, expected.links[i].followers);
   }
-  ASSERT_EQ(actual.unbalances.size(), expected.unbalances.size());
-  for (std::size_t i = 0; i < expected.unbalances.size(); ++i) {
-    const Unbalance &a = actual.unbalances[i], &e = expected.unbalances[i];
+  const auto a_unbalances = forces_of<Unbalance>(actual), e_unbalances = forces_of<Unbalance>(expected);
+  ASSERT_EQ(a_unbalances.size(), e_unbalances.size());
+  for (std::size_t i = 0; i < e_unbalances.size(); ++i) {
+    const Unbalance &a = a_unbalances[i].first, &e = e_unbalances[i].first;
     EXPECT_EQ(a.node, e.node);
     EXPECT_DOUBLE_EQ(a.mass, e.mass);
     EXPECT_DOUBLE_EQ(a.radius, e.radius);
     EXPECT_DOUBLE_EQ(a.phase, e.phase);
     EXPECT_DOUBLE_EQ(a.lever, e.lever);
-    EXPECT_EQ(a.label, e.label);
+    EXPECT_EQ(a_unbalances[i].second, e_unbalances[i].second);
   }
-  EXPECT_EQ(actual.friction.size(), expected.friction.size());
+  EXPECT_EQ(actual.forces.size(), expected.forces.size());
   // The options and materials are in the element matrices compared above.
   EXPECT_EQ(actual.free_motions, expected.free_motions);
 }
@@ -546,7 +564,7 @@ TEST(ModelReaderRoundTrip, JeffcottRotor) {
   all.dofs.fill(true);
   expected.fixed = {all, all};
   expected.fixed[1].node = 2;
-  expected.unbalances = {Unbalance{1, 0.001, 0.05, 0.0, 0.0, "unbalance 1"}};
+  expected.forces = {Force(Unbalance{1, 0.001, 0.05, 0.0, 0.0}, "unbalance 1")};
 
   const ModelFile file = read_model_file(models + "/valid/jeffcott.toml");
   expect_same_model(expected, file.model);
@@ -589,7 +607,7 @@ TEST(ModelReaderRoundTrip, StatorJoinedByARigidLink) {
   foot.c = {0.0, 75.0, 75.0, 0.0, 0.06, 0.06};
   expected.elements.emplace_back(SpringDamper(6, std::nullopt, foot), "foot");
   expected.links = {RigidLink{6, {7}}};
-  expected.unbalances = {Unbalance{5, 0.003, 0.08, 0.0, 0.0, "unbalance 1"}};
+  expected.forces = {Force(Unbalance{5, 0.003, 0.08, 0.0, 0.0}, "unbalance 1")};
 
   const ModelFile file = read_model_file(models + "/valid/stator_link.toml");
   expect_same_model(expected, file.model);
@@ -685,16 +703,16 @@ radius = 0.01
   EXPECT_EQ(element_as<RigidBody>(m, "rigid body 1").properties().offset, 0.0);
   EXPECT_FALSE(element_as<SpringDamper>(m, "spring 1").node_b());     // to ground
   EXPECT_TRUE(element_as<SpringDamper>(m, "spring 1").coefficients().c[1].is_zero());
-  EXPECT_EQ(m.unbalances[0].phase, 0.0);
-  EXPECT_EQ(m.unbalances[0].lever, 0.0);
+  ASSERT_EQ(forces_of<Unbalance>(m).size(), 1u);
+  EXPECT_EQ(forces_of<Unbalance>(m)[0].first.phase, 0.0);
+  EXPECT_EQ(forces_of<Unbalance>(m)[0].first.lever, 0.0);
   EXPECT_TRUE(file.spec.modal == ModalSpec{});
   EXPECT_TRUE(file.spec.campbell == CampbellSpec{});
   // No loss factors, loads or response and static defaults unless given.
   EXPECT_EQ(beam.material().loss_factor, 0.0);
   EXPECT_EQ(beam.options().loss_factor, 0.0);
   EXPECT_EQ(element_as<SpringDamper>(m, "spring 1").coefficients().loss_factor, 0.0);
-  EXPECT_TRUE(m.forces.empty());
-  EXPECT_TRUE(m.static_loads.empty());
+  EXPECT_EQ(m.forces.size(), 1u);  // the unbalance: no harmonic forces, no static loads
   EXPECT_TRUE(file.spec.response == ResponseSpec{});
   EXPECT_TRUE(file.spec.static_ == StaticSpec{});
   // So the analyses take the built-in defaults: probes at the unbalances, gravity −y.
@@ -747,7 +765,7 @@ points = 2
 )");
   ResponseRequest request;
   request.stop = 10.0;
-  request.extra_forces = {HarmonicForce{1, HarmonicForce::Kind::fixed, Dof::v, 1.0, 0.0, "f"}};
+  request.extra_forces = {HarmonicForce{1, HarmonicForce::Kind::fixed, Dof::v, 1.0, 0.0}};
   const HarmonicOptions r = response_of(file, request);
   EXPECT_EQ(r.probes, (std::vector<Index>{2, 0}));
   EXPECT_EQ(r.speeds, (std::vector<Real>{0.0, 10.0}));  // 2 points from 0
@@ -897,9 +915,10 @@ direction = "z"
 amplitude = "0.2 kN"
 phase = "-90 deg"
 )");
-  ASSERT_EQ(file.model.forces.size(), 1u);
-  const HarmonicForce& f = file.model.forces[0];
-  EXPECT_EQ(f.label, "force 1");
+  const auto forces = forces_of<HarmonicForce>(file.model);
+  ASSERT_EQ(forces.size(), 1u);
+  const HarmonicForce& f = forces[0].first;
+  EXPECT_EQ(forces[0].second, "force 1");
   EXPECT_EQ(f.node, 1);
   EXPECT_EQ(f.direction, Dof::w);
   EXPECT_DOUBLE_EQ(f.amplitude, 200.0);
@@ -1054,8 +1073,8 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
       const ModelFile file = read_model_string(examples[i].text, "docs/model-format.md example");
       EXPECT_EQ(file.model.nodes.size(), n_nodes[i]);
       if (i == 3) {  // the loads example, as its text describes it
-        EXPECT_EQ(file.model.forces.size(), 2u);
-        EXPECT_EQ(file.model.static_loads.size(), 1u);
+        EXPECT_EQ(file.model.n_forces("harmonic_force"), 2u);
+        EXPECT_EQ(file.model.n_forces("static_load"), 1u);
         ResponseRequest one_point;
         one_point.points = 1;
         EXPECT_EQ(response_of(file, one_point).probes, (std::vector<Index>{2, 0}));

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include <feran/core/types.hpp>
-#include <feran/elements/timoshenko_beam.hpp>
 #include <feran/model/model.hpp>
 
 namespace feran {
@@ -38,11 +37,11 @@ struct SectionStress {
   Real von_mises = 0;
 };
 
-/// Both ends of every shaft element of @p model, in element order.
+/// Both ends of every element of @p model that is a shaft segment, in element order.
 std::vector<ShaftStation> shaft_stations(const Model& model);
 
-/// The 12 DOF values of @p beam (node a then node b) taken from all unconstrained DOFs.
-ComplexVector element_values(const TimoshenkoBeam& beam, const ComplexVector& q_full);
+/// The 12 DOF values of @p segment (node a then node b) taken from all unconstrained DOFs.
+ComplexVector element_values(const ShaftSegment& segment, const ComplexVector& q_full);
 
 /// Section forces at @p end of a shaft element from its end forces @p f (12 values:
 /// the forces the two nodes exert on the element, node a then node b). For

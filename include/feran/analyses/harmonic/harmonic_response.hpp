@@ -16,6 +16,7 @@
 #include <feran/analyses/common/shaft_sections.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/core/types.hpp>
+#include <feran/forces/harmonic_force.hpp>
 #include <feran/model/model.hpp>
 
 namespace feran {
@@ -28,9 +29,9 @@ struct HarmonicOptions {
   std::vector<Real> frequencies;
   Real speed = 0.0;  ///< rotor speed of a frequency sweep [rad/s]
   /// Include the model's unbalances (speed sweeps only: in a frequency sweep they
-  /// act at the rotor speed, not at the swept frequency).
+  /// act at the rotor speed, not at the swept frequency). Every other force of the
+  /// model with a harmonic load (Force::add_harmonic) takes part.
   bool unbalance = true;
-  bool model_forces = true;                ///< include Model::forces
   std::vector<HarmonicForce> extra_forces; ///< forces added for this analysis
   Real loss_factor = 0.0;                  ///< global hysteretic loss factor η (adds jηK)
   std::vector<Index> probes;               ///< nodes whose motion is reported
@@ -78,7 +79,7 @@ struct HarmonicResult {
   std::vector<SpringForceResponse> springs;
   std::vector<ReactionResponse> reactions;
   std::vector<StationResponse> stations;
-  /// converged = false when the dynamic stiffness was singular at some point (an
+  /// converged() is false when the dynamic stiffness was singular at some point (an
   /// undamped resonance hit exactly); the vectors then stop before that point.
   SolverInfo info;
 };
@@ -98,12 +99,5 @@ struct ResponseSummary {
 
 HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& options);
 ResponseSummary summarize(const HarmonicResult& result);
-
-/// Complex force amplitudes of all unconstrained DOFs for the unbalances of @p model
-/// at speed @p speed (paper eq. 5: m·r·Ω² rotating at angle Ωt + phase, with the
-/// moments −l·F_z about y and l·F_y about z of an axial lever l).
-ComplexVector unbalance_forces(const Model& model, Real speed);
-/// Complex amplitudes of harmonic forces (see HarmonicForce), added into @p f.
-void add_harmonic_forces(const std::vector<HarmonicForce>& forces, ComplexVector& f);
 
 }  // namespace feran

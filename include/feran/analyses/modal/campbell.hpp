@@ -66,7 +66,7 @@ struct CampbellResult {
   std::vector<TrackedMode> modes;
   std::vector<CriticalSpeed> critical_speeds;  ///< sorted by speed
   std::optional<StabilityThreshold> stability_threshold;
-  SolverInfo info;  ///< method used; converged = false if a solve failed (results so far kept)
+  SolverInfo info;  ///< method used; converged() is false if a solve failed (results so far kept)
   Index n_solves = 0;  ///< eigen solves, grid and refinement
 };
 

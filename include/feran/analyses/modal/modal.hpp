@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <feran/assembly/assembler.hpp>
+#include <feran/analyses/common/solver_info.hpp>
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
 
@@ -58,14 +59,6 @@ enum class EigenSolver {
   sparse      ///< lowest modes: shift-invert Arnoldi (Spectra) on a sparse LU
 };
 
-/// Convergence record of a solve (never an exception: callers decide).
-struct SolverInfo {
-  std::string method;    ///< "dense-qr" or "shift-invert-arnoldi"
-  bool converged = true;
-  Index n_converged = 0; ///< eigenvalues converged (sparse) or computed (dense)
-  Index iterations = 0;  ///< restarts of the Arnoldi iteration (sparse)
-  std::string message;   ///< why it did not converge, when it did not
-};
 
 struct ModalOptions {
   /// Number of modes wanted, the lowest by |p|. 0: all (dense) or 12 (sparse).

@@ -8,7 +8,6 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
-#include <feran/analyses/nonlinear/nonlinear_force.hpp>
 #include <feran/analyses/transient/second_order_system.hpp>
 #include <feran/analyses/transient/speed_profile.hpp>
 #include <feran/assembly/assembler.hpp>
@@ -62,7 +61,7 @@ class RotorSystem final : public SecondOrderSystem {
   SystemMatrices variable_;               // speed-dependent parts at cached_speed_
   Real cached_speed_;
   Eigen::SimplicialLDLT<SparseMatrix> mass_;
-  std::vector<NonlinearForce> forces_;
+  std::vector<Force> forces_;  ///< the model's nonlinear forces
   std::vector<SparseMatrix> selectors_;  // per force: rows of T for its DOFs
   SparseMatrix DT_, KT_;
   Real jacobian_speed_;  // the speed of DT_, KT_ (NaN before the first)

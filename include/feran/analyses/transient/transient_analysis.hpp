@@ -62,7 +62,7 @@ struct Envelope {
 struct TransientResult {
   std::vector<TransientSample> samples;  ///< when keep_samples
   std::vector<Envelope> envelopes;       ///< per probe
-  /// converged = false when the run stopped early (integrator failure, blow-up,
+  /// converged() is false when the run stopped early (integrator failure, blow-up,
   /// non-finite values); message says when and where. Results up to then are kept.
   SolverInfo info;
   std::string warning;  ///< e.g. rk3 run above its stability limit on request

@@ -14,7 +14,7 @@ Model unbalanced(Model m) {
   u.node = 4;  // the second disk
   u.mass = 1e-3;
   u.radius = 0.1;
-  m.unbalances.push_back(u);
+  m.forces.emplace_back(u);
   return m;
 }
 
@@ -27,7 +27,7 @@ HarmonicOptions sweep(int threads) {
 }
 
 void expect_point_equals_alone(const Model& model, const HarmonicResult& r, const HarmonicOptions& opt) {
-  ASSERT_TRUE(r.info.converged) << r.info.message;
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
   ASSERT_EQ(r.speeds.size(), opt.speeds.size());
   for (std::size_t k = 0; k < opt.speeds.size(); ++k) {
     HarmonicOptions one = opt;

@@ -1,4 +1,4 @@
-#include <feran/analyses/nonlinear/coulomb_friction.hpp>
+#include <feran/forces/coulomb_friction.hpp>
 
 #include <cmath>
 
@@ -50,23 +50,26 @@ void add_pair(const Mat2& B, Real F0, Real eps, Real speed, const Vector& x, con
 
 }  // namespace
 
-CoulombFrictionForce::CoulombFrictionForce(const CoulombFriction& data) : data_(data) {}
+std::vector<Index> CoulombFriction::nodes() const {
+  if (node_b) return {node_a, *node_b};
+  return {node_a};
+}
 
-std::vector<Index> CoulombFrictionForce::dofs() const {
+std::vector<Index> CoulombFriction::dofs() const {
   std::vector<Index> d;
-  for (Dof dof : {Dof::v, Dof::w, Dof::ry, Dof::rz}) d.push_back(global_dof(data_.node_a, dof));
-  if (data_.node_b)
-    for (Dof dof : {Dof::v, Dof::w, Dof::ry, Dof::rz}) d.push_back(global_dof(*data_.node_b, dof));
+  for (Dof dof : {Dof::v, Dof::w, Dof::ry, Dof::rz}) d.push_back(global_dof(node_a, dof));
+  if (node_b)
+    for (Dof dof : {Dof::v, Dof::w, Dof::ry, Dof::rz}) d.push_back(global_dof(*node_b, dof));
   return d;
 }
 
-NonlinearForceValue CoulombFrictionForce::force(const MotionState& s, const Vector& x, const Vector& v) const {
-  const Index n = data_.node_b ? 8 : 4;
+NonlinearForceValue CoulombFriction::force(const MotionState& s, const Vector& x, const Vector& v) const {
+  const Index n = node_b ? 8 : 4;
   NonlinearForceValue out{Vector::Zero(n), Matrix::Zero(n, n), Matrix::Zero(n, n)};
   Mat2 tilt;
   tilt << 0, 1, -1, 0;  // (ry, rz) → (rz, −ry)
-  add_pair(Mat2::Identity(), data_.force, data_.epsilon_t, s.speed, x, v, 0, data_.node_b.has_value(), out);
-  add_pair(tilt, data_.moment, data_.epsilon_r, s.speed, x, v, 2, data_.node_b.has_value(), out);
+  add_pair(Mat2::Identity(), force_amplitude, epsilon_t, s.speed, x, v, 0, node_b.has_value(), out);
+  add_pair(tilt, moment_amplitude, epsilon_r, s.speed, x, v, 2, node_b.has_value(), out);
   return out;
 }
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include <feran/analyses/nonlinear/coulomb_friction.hpp>
+#include <feran/forces/coulomb_friction.hpp>
 
 namespace feran {
 namespace {
@@ -12,8 +12,8 @@ CoulombFriction data(bool two_nodes) {
   CoulombFriction d;
   d.node_a = 0;
   if (two_nodes) d.node_b = 1;
-  d.force = 5.2;
-  d.moment = 0.3;
+  d.force_amplitude = 5.2;
+  d.moment_amplitude = 0.3;
   d.epsilon_t = 1e-3;
   d.epsilon_r = 1e-2;
   return d;
@@ -25,7 +25,7 @@ TEST(CoulombFriction, JacobianMatchesFiniteDifferences) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<Real> u(-1e-3, 1e-3);
   for (bool two : {false, true}) {
-    const CoulombFrictionForce f(data(two));
+    const CoulombFriction f = data(two);
     const Index n = static_cast<Index>(f.dofs().size());
     const MotionState s{0.0, 150.0};
     for (int trial = 0; trial < 10; ++trial) {
@@ -52,7 +52,7 @@ TEST(CoulombFriction, JacobianMatchesFiniteDifferences) {
 // s = (0, −Ωa), so F points along +z with magnitude F_c0 (to 1e-8: ε/|s| ≈ 1e-4,
 // the regularisation reduces the magnitude by ½(ε/|s|)²).
 TEST(CoulombFriction, OpposesTheRotatingFrameVelocity) {
-  const CoulombFrictionForce f(data(false));
+  const CoulombFriction f = data(false);
   Vector x = Vector::Zero(4), v = Vector::Zero(4);
   x(0) = 0.1;  // v = 0.1 m
   const NonlinearForceValue r = f.force({0.0, 100.0}, x, v);
@@ -63,7 +63,7 @@ TEST(CoulombFriction, OpposesTheRotatingFrameVelocity) {
 // A whirl synchronous with the shaft (the shaft frame sees no motion) meets no
 // friction: r = R e^{jΩt} gives ṙ = jΩr, s = 0.
 TEST(CoulombFriction, NoForceOnASynchronousWhirl) {
-  const CoulombFrictionForce f(data(false));
+  const CoulombFriction f = data(false);
   const Real W = 80.0, R = 2e-3;
   Vector x = Vector::Zero(4), v = Vector::Zero(4);
   x(0) = R;          // v
@@ -75,7 +75,7 @@ TEST(CoulombFriction, NoForceOnASynchronousWhirl) {
 }
 
 TEST(CoulombFriction, ActsOnTheRelativeMotionOfTwoNodes) {
-  const CoulombFrictionForce f(data(true));
+  const CoulombFriction f = data(true);
   Vector x = Vector::Zero(8), v = Vector::Zero(8);
   v(0) = v(4) = 0.3;  // both nodes move together: no relative motion
   EXPECT_LT(f.force({0.0, 10.0}, x, v).f.norm(), 1e-12);

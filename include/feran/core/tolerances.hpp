@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// Tolerances several parts of feran share, named once with their reasons.
+
+#include <feran/core/types.hpp>
+
+namespace feran::tolerance {
+
+/// Two eigenvalues closer than this, relative to their magnitude, are one repeated
+/// eigenvalue (kept together, split by whirl): far above the round-off of the QR and
+/// Arnoldi solvers (~1e-13 relative), far below any physical split of a rotor's modes.
+inline constexpr Real repeated_eigenvalue = 1e-7;
+
+/// A matrix counts as symmetric, Hermitian or skew when A ∓ Aᵀ (or Aᴴ) is at most this
+/// times its largest entry: the round-off of assembling a sum of element matrices.
+inline constexpr Real symmetry = 1e-12;
+
+/// A motion is rigid (no strain energy) when its Rayleigh quotient xᵀKx/xᵀMx is below
+/// this times the largest K_ii/M_ii: a natural frequency 10⁻⁶ times the highest one,
+/// far above round-off (~1e-16 times the largest).
+inline constexpr Real rigid_body = 1e-12;
+
+/// A computed eigenvalue is real when |Im p| is at most this times |p|: the round-off
+/// of the complex arithmetic of the solvers.
+inline constexpr Real real_eigenvalue = 1e-10;
+
+}  // namespace feran::tolerance

@@ -1,0 +1,33 @@
+#pragma once
+/// @file
+/// A harmonic force or moment at a node.
+
+#include <string_view>
+#include <vector>
+
+#include <feran/core/types.hpp>
+#include <feran/model/force.hpp>
+
+namespace feran {
+
+/// In a speed sweep it acts at the rotor speed (synchronous); in a frequency sweep at
+/// the swept frequency; in a run-up at the rotation angle φ (as a synchronous force).
+struct HarmonicForce {
+  enum class Kind {
+    fixed,            ///< along a fixed DOF direction: F(t) = A·cos(ωt + phase)
+    rotating_force,   ///< lateral force rotating with the shaft: F_y + i·F_z = A·e^{i(Ωt + phase)}
+    rotating_moment   ///< lateral moment rotating with the shaft: M_y + i·M_z = A·e^{i(Ωt + phase)}
+  };
+  Index node = 0;
+  Kind type = Kind::fixed;
+  Dof direction = Dof::v;  ///< for Kind::fixed
+  Real amplitude = 0.0;    ///< [N] or [N m]
+  Real phase = 0.0;        ///< [rad]
+
+  std::string_view kind() const { return "harmonic_force"; }
+  std::vector<Index> nodes() const { return {node}; }
+  void add_harmonic(const HarmonicExcitation& e, ComplexVector& f) const;
+  void add_transient(const MotionState& s, Vector& f) const;
+};
+
+}  // namespace feran

@@ -1,0 +1,191 @@
+#pragma once
+/// @file
+/// The force interface: a concept with optional abilities and a type-erased,
+/// copyable Force value, the counterpart of Element for what acts on a model
+/// (unbalances, harmonic forces, static loads, friction, nonlinear bearings).
+///
+/// A force type must say what it is (kind()) and where it acts (nodes(): the load
+/// locations a reduced run keeps static corrections for). Everything else is an
+/// ability the type has when it has the member, detected at compile time as pagmo
+/// detects has_gradient; an analysis asks the Force whether it has one:
+///
+///   add_harmonic(const HarmonicExcitation&, ComplexVector& f)  steady-state response
+///   add_transient(const MotionState&, Vector& f)               run-ups (external forces)
+///   add_static(Vector& f)                                      static analysis
+///   dofs() and force(const MotionState&, x, v)                 a nonlinear force f(x, v)
+///                                                              with its Jacobian
+///
+/// Vectors are over all unconstrained DOFs (global_dof order); add_* add into them.
+/// To add a force: a type in forces/ with kind(), nodes() and its abilities, its
+/// spec type and field table (spec/), and its build step. No analysis changes.
+
+#include <concepts>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <typeinfo>
+#include <utility>
+#include <vector>
+
+#include <feran/core/types.hpp>
+
+namespace feran {
+
+/// One point of a steady-state analysis: the motion is x(t) = Re(X·e^{iωt}).
+struct HarmonicExcitation {
+  Real speed = 0.0;          ///< rotor speed Ω [rad/s]
+  Real frequency = 0.0;      ///< excitation frequency ω [rad/s]; ω = Ω in a speed sweep
+  bool synchronous = true;   ///< a speed sweep (ω = Ω); false: a frequency sweep
+  bool unbalance = true;     ///< unbalances take part (they act only at ω = Ω)
+};
+
+/// Where and how fast the rotor is when a time-dependent force is evaluated.
+struct MotionState {
+  Real t = 0.0;             ///< [s]
+  Real speed = 0.0;         ///< Ω [rad/s]
+  Real acceleration = 0.0;  ///< Ω' [rad/s²]
+  Real angle = 0.0;         ///< rotation angle φ = ∫Ω dt [rad]
+};
+
+/// A nonlinear force on a few DOFs and its Jacobian blocks ∂f/∂x and ∂f/∂v (local,
+/// on dofs()).
+struct NonlinearForceValue {
+  Vector f;
+  Matrix dfdx;
+  Matrix dfdv;
+};
+
+/// What every force type provides.
+template <class F>
+concept ForceType = std::copyable<F> && requires(const F& f) {
+  { f.kind() } -> std::convertible_to<std::string_view>;
+  { f.nodes() } -> std::convertible_to<std::vector<Index>>;
+};
+
+/// The optional abilities.
+template <class F>
+concept HasHarmonicLoad = requires(const F& f, const HarmonicExcitation& e, ComplexVector& v) {
+  f.add_harmonic(e, v);
+};
+template <class F>
+concept HasTransientLoad = requires(const F& f, const MotionState& s, Vector& v) {
+  f.add_transient(s, v);
+};
+template <class F>
+concept HasStaticLoad = requires(const F& f, Vector& v) { f.add_static(v); };
+template <class F>
+concept HasNonlinearForce = requires(const F& f, const MotionState& s, const Vector& x) {
+  { f.dofs() } -> std::convertible_to<std::vector<Index>>;
+  { f.force(s, x, x) } -> std::same_as<NonlinearForceValue>;
+};
+
+/// A type-erased force with value semantics (copies are deep).
+class Force {
+ public:
+  /// Wraps @p f; @p label is the user's name for it (may be empty).
+  template <class F>
+    requires(!std::same_as<std::remove_cvref_t<F>, Force> && ForceType<F>)
+  Force(F f, std::string label = {})  // NOLINT(google-explicit-constructor)
+      : self_(std::make_unique<Holder<F>>(std::move(f))), label_(std::move(label)) {}
+
+  Force(const Force& other) : self_(other.self_->clone()), label_(other.label_) {}
+  Force& operator=(const Force& other) {
+    if (this != &other) {
+      self_ = other.self_->clone();
+      label_ = other.label_;
+    }
+    return *this;
+  }
+  Force(Force&&) noexcept = default;
+  Force& operator=(Force&&) noexcept = default;
+  ~Force() = default;
+
+  /// "unbalance", "harmonic_force", "static_load", "coulomb_friction", …
+  std::string_view kind() const { return self_->kind(); }
+  /// The user's name for the force (may be empty).
+  const std::string& label() const { return label_; }
+  /// The nodes the force acts at.
+  std::vector<Index> nodes() const { return self_->nodes(); }
+
+  bool has_harmonic() const { return self_->has_harmonic(); }
+  /// Adds the complex amplitudes at @p e into @p f (nothing without the ability).
+  void add_harmonic(const HarmonicExcitation& e, ComplexVector& f) const { self_->add_harmonic(e, f); }
+  bool has_transient() const { return self_->has_transient(); }
+  /// Adds the force at @p s into @p f (nothing without the ability).
+  void add_transient(const MotionState& s, Vector& f) const { self_->add_transient(s, f); }
+  bool has_static() const { return self_->has_static(); }
+  /// Adds the constant load into @p f (nothing without the ability).
+  void add_static(Vector& f) const { self_->add_static(f); }
+  bool is_nonlinear() const { return self_->is_nonlinear(); }
+  /// The global DOFs of a nonlinear force (empty for others).
+  std::vector<Index> dofs() const { return self_->dofs(); }
+  /// Force and Jacobian of a nonlinear force at local displacements @p x and
+  /// velocities @p v (on dofs()); empty for others.
+  NonlinearForceValue force(const MotionState& s, const Vector& x, const Vector& v) const {
+    return self_->force(s, x, v);
+  }
+
+  /// The wrapped force if it is an F, else nullptr (for inspection: analyses ask for
+  /// abilities instead).
+  template <class F>
+  const F* target() const {
+    if (self_->type() != typeid(F)) return nullptr;
+    return static_cast<const F*>(self_->data());
+  }
+
+ private:
+  struct Concept {
+    virtual ~Concept() = default;
+    virtual std::unique_ptr<Concept> clone() const = 0;
+    virtual std::string_view kind() const = 0;
+    virtual std::vector<Index> nodes() const = 0;
+    virtual bool has_harmonic() const = 0;
+    virtual void add_harmonic(const HarmonicExcitation& e, ComplexVector& f) const = 0;
+    virtual bool has_transient() const = 0;
+    virtual void add_transient(const MotionState& s, Vector& f) const = 0;
+    virtual bool has_static() const = 0;
+    virtual void add_static(Vector& f) const = 0;
+    virtual bool is_nonlinear() const = 0;
+    virtual std::vector<Index> dofs() const = 0;
+    virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
+    virtual const std::type_info& type() const = 0;
+    virtual const void* data() const = 0;
+  };
+  template <class F>
+  struct Holder final : Concept {
+    explicit Holder(F f) : value(std::move(f)) {}
+    std::unique_ptr<Concept> clone() const override { return std::make_unique<Holder>(value); }
+    std::string_view kind() const override { return value.kind(); }
+    std::vector<Index> nodes() const override { return value.nodes(); }
+    bool has_harmonic() const override { return HasHarmonicLoad<F>; }
+    void add_harmonic(const HarmonicExcitation& e, ComplexVector& f) const override {
+      if constexpr (HasHarmonicLoad<F>) value.add_harmonic(e, f);
+    }
+    bool has_transient() const override { return HasTransientLoad<F>; }
+    void add_transient(const MotionState& s, Vector& f) const override {
+      if constexpr (HasTransientLoad<F>) value.add_transient(s, f);
+    }
+    bool has_static() const override { return HasStaticLoad<F>; }
+    void add_static(Vector& f) const override {
+      if constexpr (HasStaticLoad<F>) value.add_static(f);
+    }
+    bool is_nonlinear() const override { return HasNonlinearForce<F>; }
+    std::vector<Index> dofs() const override {
+      if constexpr (HasNonlinearForce<F>) return value.dofs();
+      else return {};
+    }
+    NonlinearForceValue force(const MotionState& s, const Vector& x, const Vector& v) const override {
+      if constexpr (HasNonlinearForce<F>) return value.force(s, x, v);
+      else return {};
+    }
+    const std::type_info& type() const override { return typeid(F); }
+    const void* data() const override { return &value; }
+    F value;
+  };
+
+  std::unique_ptr<Concept> self_;
+  std::string label_;
+};
+
+}  // namespace feran
