@@ -57,6 +57,7 @@ const std::vector<KindDef>& kinds() {
        {{"m/s"}, {"mm/s", 1.0, 1e3}}},
       {Quantity::angular_velocity, "an angular velocity", "angular velocity", "0.001",
        "0.001 rad/s", {{"rad/s"}}},
+      {Quantity::inverse_time, "a rate", "rate", "0.5", "0.5 1/s", {{"1/s"}}},
       {Quantity::acceleration, "an acceleration", "acceleration", "9.81", "9.81 m/s^2",
        {{"m/s^2"}, {"mm/s^2", 1.0, 1e3}}},
   };

@@ -17,7 +17,10 @@ TimoshenkoBeam::TimoshenkoBeam(Index node_a, Index node_b, Real length, Circular
 
 Real TimoshenkoBeam::shear_parameter() const {
   if (!options_.shear_deformation) return 0.0;
-  const Real kappa = section_.cowper_shear_coefficient(material_.poisson());
+  const Real nu = material_.poisson();
+  const Real kappa = options_.shear == ShearCoefficient::given        ? options_.kappa
+                     : options_.shear == ShearCoefficient::hutchinson ? section_.hutchinson_shear_coefficient(nu)
+                                                                      : section_.cowper_shear_coefficient(nu);
   return 12.0 * material_.E * section_.second_moment() /
          (kappa * material_.G * section_.area() * length_ * length_);
 }
@@ -97,7 +100,10 @@ LocalMatrices TimoshenkoBeam::local_matrices(const OperatingPoint& /*op*/) const
   const Matrix kb = bending_stiffness();
   const Matrix mr = bending_rotary_mass();
   detail::add_to_both_planes(kb, out.K);
-  detail::add_to_both_planes(bending_translational_mass() + mr, out.M);
+  detail::add_to_both_planes(
+      options_.rotary_inertia ? Matrix(bending_translational_mass() + mr) : bending_translational_mass(), out.M);
+  if (options_.rayleigh_alpha != 0.0 || options_.rayleigh_beta != 0.0)
+    out.C = options_.rayleigh_alpha * out.M + options_.rayleigh_beta * out.K;
 
   if (options_.rotating) {
     out.G = Matrix::Zero(n, n);

@@ -21,4 +21,13 @@ Real CircularSection::cowper_shear_coefficient(Real nu) const {
   return 6.0 * (1.0 + nu) * a / ((7.0 + 6.0 * nu) * a + (20.0 + 12.0 * nu) * m2);
 }
 
+Real CircularSection::hutchinson_shear_coefficient(Real nu) const {
+  const Real a2 = outer_diameter * outer_diameter / 4.0, b2 = inner_diameter * inner_diameter / 4.0;
+  const Real a4 = a2 * a2, b4 = b2 * b2, ab = a2 * b2;
+  const Real s = a2 + b2;
+  return 6.0 * s * s * (1.0 + nu) * (1.0 + nu) /
+         (7.0 * a4 + 34.0 * ab + 7.0 * b4 + nu * (12.0 * a4 + 48.0 * ab + 12.0 * b4) +
+          nu * nu * (4.0 * a4 + 16.0 * ab + 4.0 * b4));
+}
+
 }  // namespace feran

@@ -278,10 +278,19 @@ void Builder::build_options() {
   const OptionsSpec& o = spec_.options;
   check_bounds(o, "options");
   check_choice(o.gyroscopic, "options.gyroscopic", "gyroscopic",
-               spec::fields_of<OptionsSpec>()[1].choices);
+               spec::choices_of<OptionsSpec>("gyroscopic"));
   beam_.shear_deformation = o.shear_deformation;
   beam_.gyroscopic = o.gyroscopic == "lumped" ? GyroscopicForm::lumped : GyroscopicForm::consistent;
   beam_.damping_beta = o.shaft_damping;
+  check_choice(o.shear_coefficient, "options.shear_coefficient", "shear_coefficient",
+               spec::choices_of<OptionsSpec>("shear_coefficient"));
+  beam_.rotary_inertia = o.rotary_inertia;
+  beam_.shear = o.kappa                            ? ShearCoefficient::given
+                : o.shear_coefficient == "hutchinson" ? ShearCoefficient::hutchinson
+                                                      : ShearCoefficient::cowper;
+  beam_.kappa = o.kappa.value_or(0.0);
+  beam_.rayleigh_alpha = o.rayleigh_alpha;
+  beam_.rayleigh_beta = o.rayleigh_beta;
   const std::vector<std::string> names = {"axial", "torsion", "lateral"};
   for (std::size_t i = 0; i < o.free_motions.size(); ++i) {
     const std::string& s = o.free_motions[i];
@@ -397,6 +406,8 @@ void Builder::build_shafts() {
     BeamOptions beam_options = beam_;
     beam_options.rotating = shaft.rotating;
     if (!shaft.rotating) beam_options.damping_beta = 0.0;
+    beam_options.rayleigh_alpha = shaft.rayleigh_alpha.value_or(beam_.rayleigh_alpha);
+    beam_options.rayleigh_beta = shaft.rayleigh_beta.value_or(beam_.rayleigh_beta);
     Real x_section = shaft.x;
     for (std::size_t j = 0; j < shaft.sections.size(); ++j) {
       const SectionSpec& s = shaft.sections[j];
@@ -710,7 +721,7 @@ void Builder::build_rigid_links() {
 }
 
 void Builder::build_fixed() {
-  const std::span<const std::string_view> valid = spec::fields_of<FixedSpec>()[1].choices;
+  const std::span<const std::string_view> valid = spec::choices_of<FixedSpec>("dofs");
   const std::vector<std::string> names(valid.begin(), valid.end());
   std::vector<int> slot_of(model_.nodes.size(), -1);
   for (std::size_t i = 0; i < spec_.fixed.size(); ++i) {

@@ -16,6 +16,7 @@ constexpr Bound at_least(std::int64_t minimum, std::int64_t maximum = 1'000'000'
 // The words of the choice fields.
 constexpr std::string_view gyroscopic_forms[] = {"consistent", "lumped"};
 constexpr std::string_view free_motion_names[] = {"axial", "torsion", "lateral"};
+constexpr std::string_view shear_formulas[] = {"cowper", "hutchinson"};
 constexpr std::string_view dof_names[] = {"u", "v", "w", "rx", "ry", "rz", "all", "lateral", "translations",
                    "rotations"};
 constexpr std::string_view force_kinds[] = {"fixed", "rotating_force", "rotating_moment"};
@@ -72,6 +73,19 @@ const FieldTable<OptionsSpec>& fields_of<OptionsSpec>() {
       {.key = "free_motions", .kind = K::choice_list, .member = &S::free_motions,
        .doc = "rigid-body motions that may stay free (section 6)",
        .choices = free_motion_names},
+      {.key = "rotary_inertia", .kind = K::flag, .member = &S::rotary_inertia,
+       .doc = "rotary inertia ρI of the shaft sections in the mass matrix (`false`: translational inertia only; the gyroscopic matrix stays)"},
+      {.key = "shear_coefficient", .kind = K::choice, .member = &S::shear_coefficient,
+       .doc = "the formula of the shear coefficient κ of shaft elements: Cowper (1966) or Hutchinson (2001), for a hollow circle",
+       .choices = shear_formulas},
+      {.key = "kappa", .kind = K::number, .member = &S::kappa,
+       .doc = "a fixed shear coefficient κ for every shaft element, instead of the formula", .bound = positive},
+      {.key = "rayleigh_alpha", .kind = K::quantity, .member = &S::rayleigh_alpha,
+       .doc = "non-rotating proportional damping of shafts, C = α·M + β·K (external: no circulatory terms, unlike `shaft_damping`); α",
+       .quantity = Q::inverse_time, .bound = non_negative},
+      {.key = "rayleigh_beta", .kind = K::quantity, .member = &S::rayleigh_beta,
+       .doc = "β of the non-rotating proportional damping of shafts", .quantity = Q::time,
+       .bound = non_negative},
   };
   return table;
 }
@@ -111,6 +125,12 @@ const FieldTable<ShaftSpec>& fields_of<ShaftSpec>() {
        .doc = "name of the default material of its sections"},
       {.key = "start_node", .kind = K::text, .member = &S::start_node,
        .doc = "name of the shaft's first node"},
+      {.key = "rayleigh_alpha", .kind = K::quantity, .member = &S::rayleigh_alpha,
+       .doc = "this shaft's α of non-rotating proportional damping", .quantity = Q::inverse_time,
+       .bound = non_negative, .default_text = "`[options]` `rayleigh_alpha`"},
+      {.key = "rayleigh_beta", .kind = K::quantity, .member = &S::rayleigh_beta,
+       .doc = "this shaft's β of non-rotating proportional damping", .quantity = Q::time,
+       .bound = non_negative, .default_text = "`[options]` `rayleigh_beta`"},
   };
   return table;
 }

@@ -41,6 +41,7 @@ enum class Quantity {
   velocity,              ///< m/s; also mm/s
   angular_velocity,      ///< rad/s
   acceleration,          ///< m/s^2; also mm/s^2 (appended: keep the order of the others)
+  inverse_time,          ///< 1/s (a rate: the mass-proportional damping α)
 };
 
 /// Name of the kind with its article, for messages: "a length", "an angle".

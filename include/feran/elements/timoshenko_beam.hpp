@@ -14,6 +14,13 @@
 
 namespace feran {
 
+/// How the shear coefficient κ of a Timoshenko element is found.
+enum class ShearCoefficient {
+  cowper,      ///< Cowper (1966), J. Appl. Mech. 33:335–340
+  hutchinson,  ///< Hutchinson (2001), J. Appl. Mech. 68:87–92
+  given        ///< BeamOptions::kappa
+};
+
 /// Options of a shaft element.
 struct BeamOptions {
   bool shear_deformation = true;
@@ -21,6 +28,16 @@ struct BeamOptions {
   bool rotating = true;     ///< a non-rotating beam has no G and no rotating damping
   Real damping_beta = 0.0;  ///< stiffness-proportional rotating damping β [s]
   Real loss_factor = 0.0;   ///< hysteretic loss factor η (harmonic analyses only)
+  /// Rotary inertia ρI of the cross-sections in the mass matrix (a Rayleigh or
+  /// Timoshenko beam); without it only the translational inertia ρA remains. The
+  /// gyroscopic matrix (polar inertia ρI_p) is kept either way.
+  bool rotary_inertia = true;
+  ShearCoefficient shear = ShearCoefficient::cowper;
+  Real kappa = 0.0;  ///< the shear coefficient when shear is ShearCoefficient::given
+  /// Non-rotating (external) proportional damping C = α·M + β·K of the element,
+  /// α [1/s] and β [s]; distinct from the rotating damping damping_beta.
+  Real rayleigh_alpha = 0.0;
+  Real rayleigh_beta = 0.0;
 };
 
 /// Timoshenko shaft element between nodes @p node_a (at x) and @p node_b (at x + L).

@@ -16,6 +16,10 @@ struct CircularSection {
   Real polar_moment() const;      ///< I_p = J = 2I [m⁴]
   /// Cowper's (1966) shear coefficient κ for a hollow circle with Poisson ratio @p nu.
   Real cowper_shear_coefficient(Real nu) const;
+  /// Hutchinson's (2001) shear coefficient κ for a hollow circle with Poisson ratio
+  /// @p nu: 6(a² + b²)²(1 + ν)² / [7a⁴ + 34a²b² + 7b⁴ + ν(12a⁴ + 48a²b² + 12b⁴)
+  /// + ν²(4a⁴ + 16a²b² + 4b⁴)], a and b the outer and inner radii.
+  Real hutchinson_shear_coefficient(Real nu) const;
 };
 
 }  // namespace feran

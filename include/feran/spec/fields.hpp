@@ -95,6 +95,14 @@ using FieldTable = std::vector<Field<S>>;
 template <class S>
 const FieldTable<S>& fields_of();
 
+/// The words field @p key of spec type S takes (empty for a key without choices).
+template <class S>
+std::span<const std::string_view> choices_of(std::string_view key) {
+  for (const Field<S>& f : fields_of<S>())
+    if (f.key == key) return f.choices;
+  return {};
+}
+
 /// How a table appears in a file.
 enum class TableForm {
   table,           ///< [key]: one table

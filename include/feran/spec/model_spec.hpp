@@ -32,6 +32,11 @@ struct OptionsSpec {
   std::string gyroscopic = "consistent";  ///< "consistent" or "lumped"
   Real shaft_damping = 0.0;             ///< β [s] of rotating shafts: C_i = β K
   std::vector<std::string> free_motions;  ///< "axial", "torsion", "lateral"
+  bool rotary_inertia = true;             ///< rotary inertia ρI of shaft sections
+  std::string shear_coefficient = "cowper";  ///< "cowper" or "hutchinson"
+  std::optional<Real> kappa;              ///< a fixed shear coefficient (overrides the formula)
+  Real rayleigh_alpha = 0.0;              ///< non-rotating damping α·M of shafts [1/s]
+  Real rayleigh_beta = 0.0;               ///< non-rotating damping β·K of shafts [s]
   bool operator==(const OptionsSpec&) const = default;
 };
 
@@ -64,6 +69,8 @@ struct ShaftSpec {
   bool rotating = true;
   std::string material;           ///< default material of the sections (may be empty)
   std::string start_node;         ///< name of the first node (may be empty)
+  std::optional<Real> rayleigh_alpha;  ///< this shaft's α [1/s]; default [options]
+  std::optional<Real> rayleigh_beta;   ///< this shaft's β [s]; default [options]
   std::vector<SectionSpec> sections;
   bool operator==(const ShaftSpec&) const = default;
 };

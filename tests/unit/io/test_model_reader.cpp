@@ -1111,5 +1111,33 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
   EXPECT_DOUBLE_EQ(profile[1].second, 80.0 * hz);
 }
 
+// [options] rotary_inertia, shear_coefficient, kappa and the Rayleigh damping reach
+// the shaft elements; a shaft's own rayleigh_* replace the global ones.
+TEST(ModelReaderOptions, BeamOptionsReachTheShaftElements) {
+  const ModelFile file = read_model_file(models + "/valid/beam_options.toml");
+  int main = 0, quill = 0;
+  for (const Element& e : file.model.elements) {
+    const auto* beam = e.target<TimoshenkoBeam>();
+    if (beam == nullptr) continue;
+    EXPECT_FALSE(beam->options().rotary_inertia);
+    EXPECT_EQ(beam->options().shear, ShearCoefficient::hutchinson);
+    EXPECT_EQ(beam->options().rayleigh_alpha, 0.5);
+    if (e.label().starts_with("shaft main")) {
+      ++main;
+      EXPECT_DOUBLE_EQ(beam->options().rayleigh_beta, 2e-3);  // "2 ms"
+    } else {
+      ++quill;
+      EXPECT_EQ(beam->options().rayleigh_beta, 0.0);
+    }
+  }
+  EXPECT_EQ(main, 2);
+  EXPECT_EQ(quill, 1);
+  ModelSpec spec = file.spec;
+  spec.options.kappa = 0.8;  // a given κ replaces the formula
+  const Model given = build_model(spec);
+  EXPECT_EQ(given.elements.front().target<TimoshenkoBeam>()->options().shear, ShearCoefficient::given);
+  EXPECT_EQ(given.elements.front().target<TimoshenkoBeam>()->options().kappa, 0.8);
+}
+
 }  // namespace
 }  // namespace feran
