@@ -24,7 +24,11 @@ if(_feran_march)
   string(MAKE_C_IDENTIFIER "FERAN_HAS_MARCH_${_feran_march}" _feran_check)
   check_cxx_compiler_flag("-march=${_feran_march}" ${_feran_check})
   if(${_feran_check})
-    add_compile_options(-march=${_feran_march})
+    # On the library as a PUBLIC option (src/CMakeLists.txt), so that every program
+    # built against it — in this tree or through find_package(feran) — uses the same
+    # instruction set, and with it the same Eigen alignment (a program built without
+    # it would pass misaligned Eigen objects to the library).
+    set(FERAN_MARCH_FLAG "-march=${_feran_march}")
     message(STATUS "feran: -march=${_feran_march}")
   endif()
 endif()
