@@ -14,7 +14,7 @@
 namespace feran {
 namespace {
 
-// Structure of the assembled matrices (SPEC: M, K symmetric, G and K_i
+// Structure of the assembled matrices (M, K symmetric, G and K_i
 // skew-symmetric, M positive definite), on a model with every element kind, a
 // rigid link and fixed DOFs. Tolerances: exact up to the sum of a few
 // floating-point terms, 1e-12 of the largest entry.
