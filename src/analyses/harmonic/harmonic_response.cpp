@@ -240,10 +240,18 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     for (const Force& force : model.forces) force.add_harmonic(excitation, f_full);
     for (const HarmonicForce& force : options.extra_forces) force.add_harmonic(excitation, f_full);
 
-    ws.lu.factorize(ws.A);
     PointResult& out = points[k];
-    if (ws.lu.info() != Eigen::Success) return;
-    const ComplexVector q_full = T * ComplexVector(ws.lu.solve(Tt * f_full));
+    const ComplexVector f_reduced = Tt * f_full;
+    ComplexVector q_full;
+    if (f_reduced.isZero(0.0)) {
+      // Nothing acts (an unbalance at rest): the response is zero, even where the
+      // dynamic stiffness is singular (free axial or torsional motion at ω = 0).
+      q_full = ComplexVector::Zero(model.n_dofs());
+    } else {
+      ws.lu.factorize(ws.A);
+      if (ws.lu.info() != Eigen::Success) return;
+      q_full = T * ComplexVector(ws.lu.solve(f_reduced));
+    }
     out.solved = true;
 
     for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));

@@ -71,5 +71,22 @@ TEST(HarmonicResponse, SpeedDependentEntriesWidenThePattern) {
   }
 }
 
+// Issue 12: a sweep from rest on a rotor whose axial and torsional motions are free
+// (singular K at Ω = 0) solved nothing and reported "singular at 0 Hz". The unbalance
+// force m·e·Ω² is zero there, so the response is zero; the next points are as alone.
+TEST(HarmonicResponse, ASweepFromRestWithFreeMotions) {
+  Model m = unbalanced(test::friswell_5_9_1());
+  m.fixed.clear();  // neither axial nor torsional motion held
+  m.free_motions = {FreeMotion::axial, FreeMotion::torsion};
+  HarmonicOptions opt;
+  opt.speeds = {0.0, 100.0, 200.0};
+  opt.probes = {4};
+  const HarmonicResult r = run_harmonic_response(m, opt);
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  ASSERT_EQ(r.probes[0].q.size(), 3u);
+  for (const Complex q : r.probes[0].q[0]) EXPECT_EQ(q, Complex(0.0));
+  EXPECT_GT(r.probes[0].orbit[1].major, 0.0);
+}
+
 }  // namespace
 }  // namespace feran
