@@ -67,7 +67,8 @@ Runner add_campbell_command(CLI::App& app) {
     const CampbellOptions options = campbell_settings(file.spec.campbell, request);
 
     const CampbellResult result = run_campbell(file.model, options, file.assembler);
-    const ResultSource source{file.path, file.title};
+    const ResultSource source{file.path, file.title,
+                              speed_range_warnings(file.model, options.speeds.front(), options.speeds.back())};
     write_if_asked(args->out.json_path, [&] { return campbell_json(result, options, source); });
     write_if_asked(args->out.csv_path, [&] { return campbell_csv(result); });
     if (!args->out.quiet) std::fputs(campbell_report(result, options, file.model, source).c_str(), stdout);

@@ -39,6 +39,10 @@ void add_model_argument(CLI::App& cmd, ModelArgs& model);
 /// Reads the model file and applies the --set assignments.
 ModelFile read_model(const ModelArgs& model);
 
+/// The warnings of an analysis over speeds [low, high] (rad/s) of @p model
+/// (range_warnings()), each printed once to standard error; for ResultSource.
+std::vector<std::string> speed_range_warnings(const Model& model, double low, double high);
+
 /// Options every analysis shares.
 struct OutputOptions {
   std::string json_path;

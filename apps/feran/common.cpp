@@ -1,5 +1,8 @@
 #include <fmt/format.h>
 
+#include <cstdio>
+
+#include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/core/units.hpp>
@@ -18,6 +21,12 @@ void add_model_argument(CLI::App& cmd, ModelArgs& model) {
 }
 
 ModelFile read_model(const ModelArgs& model) { return read_model_file(model.path, model.assignments); }
+
+std::vector<std::string> speed_range_warnings(const Model& model, double low, double high) {
+  std::vector<std::string> warnings = range_warnings(model, low, high);
+  for (const std::string& w : warnings) std::fprintf(stderr, "feran: warning: %s\n", w.c_str());
+  return warnings;
+}
 
 void add_output_options(CLI::App& cmd, OutputOptions& out) {
   cmd.add_option("--json", out.json_path, "Write the results as JSON to this file (docs/output-format.md)");

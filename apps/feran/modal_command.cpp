@@ -59,7 +59,8 @@ Runner add_modal_command(CLI::App& app) {
     request.shapes = args->shapes;
     const ModalSettings settings = modal_settings(file.spec.modal, request);
     const ModalResult result = run_modal(file.model, settings.speed, settings.options, file.assembler);
-    const ResultSource source{file.path, file.title};
+    const ResultSource source{file.path, file.title,
+                              speed_range_warnings(file.model, settings.speed, settings.speed)};
     write_if_asked(args->out.json_path, modal_json(result, file.model, source, args->shapes));
     write_if_asked(args->out.csv_path, modal_csv(result));
     if (!args->out.quiet) std::fputs(modal_report(result, file.model, source).c_str(), stdout);

@@ -134,7 +134,9 @@ Runner add_response_command(CLI::App& app) {
 
 
     const HarmonicResult result = run_harmonic_response(model, options);
-    const ResultSource source{file.path, file.title};
+    const Real low = options.frequencies.empty() ? options.speeds.front() : options.speed;
+    const Real high = options.frequencies.empty() ? options.speeds.back() : options.speed;
+    const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high)};
     write_if_asked(args->out.json_path, [&] { return response_json(result, options, model, source); });
     write_if_asked(args->out.csv_path, [&] { return response_csv(result, model); });
     if (!args->out.quiet) std::fputs(response_report(result, options, model, source).c_str(), stdout);

@@ -150,6 +150,8 @@ Runner add_runup_command(CLI::App& app) {
       }
     }
     const TransientOptions options = runup_settings(model, file.spec.runup, request);
+    const auto [low, high] = speed_span(options);
+    const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high)};
 
     std::optional<RunupCsvWriter> csv;
     if (!args->out.csv_path.empty()) csv.emplace(args->out.csv_path, model, options);
@@ -175,7 +177,6 @@ Runner add_runup_command(CLI::App& app) {
     if (!result.info.converged() && result.steps == 0) throw Error(result.info.message);
     const Real wall = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->finish();
-    const ResultSource source{file.path, file.title};
     write_if_asked(args->out.json_path, runup_json(result, options, model, source));
     if (!args->out.quiet) {
       std::string out = fmt::format("feran runup: {} ({})\n", file.title.empty() ? file.path : file.title, file.path);

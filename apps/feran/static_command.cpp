@@ -52,7 +52,8 @@ Runner add_static_command(CLI::App& app) {
     request.loads = !args->no_loads;
     const StaticOptions options = static_settings(file.spec.static_, request);
     const StaticResult result = run_static(file.model, options);
-    const ResultSource source{file.path, file.title};
+    const ResultSource source{file.path, file.title,
+                              speed_range_warnings(file.model, options.speed, options.speed)};
     write_if_asked(args->out.json_path, static_json(result, options, file.model, source));
     write_if_asked(args->out.csv_path, static_csv(result, file.model));
     if (!args->out.quiet) std::fputs(static_report(result, options, file.model, source).c_str(), stdout);

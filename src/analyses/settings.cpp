@@ -68,6 +68,35 @@ void check_analysis_tables(const ModelSpec& spec) {
   throw SpecError("runup.integrator", message);
 }
 
+std::vector<std::string> range_warnings(const Model& model, Real low, Real high) {
+  std::vector<std::string> out;
+  // Round-off of the sweep's own arithmetic is not "beyond" (1e-9 relative).
+  const auto beyond = [](Real x, Real edge, bool above) {
+    const Real margin = 1e-9 * std::max(std::abs(x), std::abs(edge));
+    return above ? x > edge + margin : x < edge - margin;
+  };
+  for (const Element& e : model.elements)
+    for (const SpeedRange& r : e.speed_ranges()) {
+      const bool over = beyond(high, r.high, true), under = beyond(low, r.low, false);
+      if (!over && !under) continue;
+      out.push_back(fmt::format(
+          "'{}': {} is tabulated from {:.6g} to {:.6g} Hz; the analysis reaches {:.6g} Hz, where "
+          "its {} value is held",
+          e.label(), r.what, rad_to_hz(r.low), rad_to_hz(r.high), rad_to_hz(over ? high : low),
+          over ? "last" : "first"));
+    }
+  return out;
+}
+
+std::pair<Real, Real> speed_span(const TransientOptions& options) {
+  Real low = options.profile.speed(0.0), high = low;
+  for (const auto& [t, w] : options.profile.points())
+    if (t <= options.duration) low = std::min(low, w), high = std::max(high, w);
+  low = std::min(low, options.profile.speed(options.duration));
+  high = std::max(high, options.profile.speed(options.duration));
+  return {low, high};
+}
+
 Index spring_element(const Model& model, const std::string& name) {
   for (std::size_t e = 0; e < model.elements.size(); ++e)
     if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name)

@@ -1,5 +1,9 @@
 #include <feran/elements/spring_damper.hpp>
 
+#include <array>
+
+#include <fmt/format.h>
+
 #include <algorithm>
 
 namespace feran {
@@ -32,6 +36,25 @@ bool SpringDamper::speed_dependent() const {
   return std::any_of(coeffs_.k.begin(), coeffs_.k.end(), varies) ||
          std::any_of(coeffs_.c.begin(), coeffs_.c.end(), varies) || varies(coeffs_.kyz) ||
          varies(coeffs_.kzy) || varies(coeffs_.cyz) || varies(coeffs_.czy);
+}
+
+std::vector<SpeedRange> SpringDamper::speed_ranges() const {
+  std::vector<SpeedRange> out;
+  const auto add = [&](const SpeedCoefficient& c, const char* name) {
+    if (const auto* t = std::get_if<SpeedCoefficient::Table>(&c.law()); t && !t->speeds.empty())
+      out.push_back({fmt::format("coefficient '{}'", name), t->speeds.front(), t->speeds.back()});
+  };
+  constexpr std::array<const char*, dofs_per_node> k_names = {"kx", "ky", "kz", "krx", "kry", "krz"};
+  constexpr std::array<const char*, dofs_per_node> c_names = {"cx", "cy", "cz", "crx", "cry", "crz"};
+  for (std::size_t d = 0; d < dofs_per_node; ++d) {
+    add(coeffs_.k[d], k_names[d]);
+    add(coeffs_.c[d], c_names[d]);
+  }
+  add(coeffs_.kyz, "kyz");
+  add(coeffs_.kzy, "kzy");
+  add(coeffs_.cyz, "cyz");
+  add(coeffs_.czy, "czy");
+  return out;
 }
 
 Matrix SpringDamper::stiffness_6x6(Real speed) const {

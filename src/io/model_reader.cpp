@@ -280,7 +280,15 @@ std::vector<std::string> SpecReader::read_words(const TableReader& t, FieldKind 
 Real SpecReader::read_speed(const TableReader& t, const toml::node& n, const std::string& name,
                             const std::string& speed_unit, const std::string& at) {
   QuantityValue q = t.quantity_at(n, name, Quantity::speed);
-  if (!speed_unit.empty() && (n.is_integer() || n.is_floating_point())) {
+  const bool bare = n.is_integer() || n.is_floating_point();
+  // A bare number would be rad/s, which a table of speeds rarely means: ask for the
+  // unit (0 is 0 in every unit).
+  if (bare && speed_unit.empty() && q.si != 0.0)
+    t.fail(n, fmt::format("'{}' is a bare number ({}): a speed of a coefficient law needs its unit, "
+                          "e.g. \"50 Hz\", \"3000 rpm\" or \"314 rad/s\", or the law's speed_unit "
+                          "(speed_unit = \"Hz\")",
+                          name, *n.value<double>()));
+  if (!speed_unit.empty() && bare) {
     q.si = *to_si(Quantity::speed, q.si, speed_unit);
     q.written = fmt::format("{} {}", *n.value<double>(), speed_unit);
   }

@@ -38,7 +38,8 @@ json header(const std::string& analysis, const ResultSource& source) {
   return {{"program", "feran"},
           {"format_version", 1},
           {"analysis", analysis},
-          {"model", {{"path", source.model_path}, {"title", source.title}}}};
+          {"model", {{"path", source.model_path}, {"title", source.title}}},
+          {"warnings", source.warnings}};
 }
 
 // CSV field: numbers in full precision, empty for NaN.

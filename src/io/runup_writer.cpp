@@ -83,7 +83,8 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
   json j = {{"program", "feran"},
             {"format_version", 1},
             {"analysis", "runup"},
-            {"model", {{"path", source.model_path}, {"title", source.title}}}};
+            {"model", {{"path", source.model_path}, {"title", source.title}}},
+            {"warnings", source.warnings}};
   j["integrator"] = options.integrator;
   j["complete"] = result.info.converged();
   j["message"] = result.info.message;

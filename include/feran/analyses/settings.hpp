@@ -152,6 +152,15 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
 /// build_model() has checked everything else; readers call both.
 void check_analysis_tables(const ModelSpec& spec);
 
+/// Warnings for the tabulated data of @p model that an analysis over the speeds
+/// [@p low, @p high] (rad/s) evaluates beyond its range, one per table: "spring
+/// 'bearing': coefficient 'ky' is tabulated from 0 to 100 Hz; the analysis reaches
+/// 150 Hz, where its last value is held".
+std::vector<std::string> range_warnings(const Model& model, Real low, Real high);
+
+/// The speeds a run-up visits: the lowest and highest of its profile up to its end.
+std::pair<Real, Real> speed_span(const TransientOptions& options);
+
 /// The spring–damper element labelled @p name; throws Error when there is none.
 Index spring_element(const Model& model, const std::string& name);
 

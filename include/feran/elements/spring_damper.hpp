@@ -44,6 +44,8 @@ class SpringDamper {
     return {node_a_, node_b_, stiffness_6x6(speed), damping_6x6(speed), coeffs_.loss_factor};
   }
   Matrix damping_6x6(Real speed) const;
+  /// The speed ranges of its tabulated coefficients (ability, model/element.hpp).
+  std::vector<SpeedRange> speed_ranges() const;
 
  private:
   Index node_a_;

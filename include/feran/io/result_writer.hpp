@@ -18,6 +18,9 @@ namespace feran {
 struct ResultSource {
   std::string model_path;
   std::string title;
+  /// What the analysis should be read with (e.g. a table evaluated beyond its range);
+  /// written as the header's "warnings".
+  std::vector<std::string> warnings = {};
 };
 
 /// JSON text of a modal result. With @p shapes each mode carries its shape.

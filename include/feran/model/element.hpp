@@ -12,6 +12,8 @@
 ///                                              report: spring–dampers, bearings
 ///   shaft_segment() -> ShaftSegment            it is a piece of shaft whose section
 ///                                              forces and stresses are reported
+///   speed_ranges() -> std::vector<SpeedRange>  it has tabulated data over speed
+///                                              ranges (analyses warn beyond them)
 ///
 /// To add an element: a header and a source in elements/, its spec type and field
 /// table (spec/), its build step, a test, and its matrices in docs/theory/.
@@ -67,6 +69,14 @@ struct ShaftSegment {
   CircularSection section;
 };
 
+/// A speed range over which an element has data (a tabulated coefficient): outside
+/// it the data's last value is held.
+struct SpeedRange {
+  std::string what;  ///< e.g. "coefficient 'ky'"
+  Real low = 0.0;    ///< [rad/s]
+  Real high = 0.0;   ///< [rad/s]
+};
+
 /// What an element type must provide.
 template <class E>
 concept ElementType = std::copyable<E> && requires(const E& e, const OperatingPoint& op) {
@@ -78,6 +88,10 @@ concept ElementType = std::copyable<E> && requires(const E& e, const OperatingPo
 template <class E>
 concept HasTransmission = requires(const E& e, Real speed) {
   { e.transmission(speed) } -> std::same_as<Transmission>;
+};
+template <class E>
+concept HasSpeedRanges = requires(const E& e) {
+  { e.speed_ranges() } -> std::same_as<std::vector<SpeedRange>>;
 };
 template <class E>
 concept HasShaftSegment = requires(const E& e) {
@@ -115,6 +129,8 @@ class Element {
   const std::string& label() const { return label_; }
   /// What it transmits at @p speed [rad/s], if it is a connecting element.
   std::optional<Transmission> transmission(Real speed) const { return self_->transmission(speed); }
+  /// The speed ranges of its tabulated data (empty for elements without tables).
+  std::vector<SpeedRange> speed_ranges() const { return self_->speed_ranges(); }
   /// Its shaft segment, if it is a piece of shaft.
   std::optional<ShaftSegment> shaft_segment() const { return self_->shaft_segment(); }
 
@@ -135,6 +151,7 @@ class Element {
     virtual bool speed_dependent() const = 0;
     virtual std::optional<Transmission> transmission(Real speed) const = 0;
     virtual std::optional<ShaftSegment> shaft_segment() const = 0;
+    virtual std::vector<SpeedRange> speed_ranges() const = 0;
     virtual const std::type_info& type() const = 0;
     virtual const void* data() const = 0;
   };
@@ -150,6 +167,10 @@ class Element {
     std::optional<Transmission> transmission(Real speed) const override {
       if constexpr (HasTransmission<E>) return value.transmission(speed);
       else return std::nullopt;
+    }
+    std::vector<SpeedRange> speed_ranges() const override {
+      if constexpr (HasSpeedRanges<E>) return value.speed_ranges();
+      else return {};
     }
     std::optional<ShaftSegment> shaft_segment() const override {
       if constexpr (HasShaftSegment<E>) return value.shaft_segment();

@@ -112,5 +112,18 @@ TEST(Settings, RunupProfileForms) {
   EXPECT_THROW((void)spring_element(file.model, "no such spring"), Error);
 }
 
+// A tabulated coefficient evaluated beyond its speeds is held at its last value; the
+// analyses say so once per table (issue 12).
+TEST(Settings, WarningsForTablesEvaluatedBeyondTheirRange) {
+  const ModelFile file = read_model_file(std::string(FERAN_TEST_MODELS) + "/valid/speed_table.toml");
+  const Real table_end = 2 * pi * 50.0;
+  EXPECT_TRUE(range_warnings(file.model, 0.0, table_end).empty());  // up to its end: none
+  EXPECT_TRUE(range_warnings(file.model, 10.0, 0.5 * table_end).empty());
+  const std::vector<std::string> beyond = range_warnings(file.model, 0.0, 2 * table_end);
+  ASSERT_EQ(beyond.size(), 1u);
+  EXPECT_NE(beyond[0].find("'left': coefficient 'ky' is tabulated from 0 to 50 Hz"), std::string::npos);
+  EXPECT_NE(beyond[0].find("reaches 100 Hz"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace feran
