@@ -1,6 +1,7 @@
 #include <feran/analyses/transient/newmark.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -13,6 +14,10 @@ namespace {
 // Modified Newton keeps the old matrix while each correction is at least this much
 // smaller than the one before; a slower contraction switches to full Newton.
 constexpr Real max_contraction = 0.2;
+
+// The floor of the convergence test, in units of the state's round-off ε·‖x‖: a
+// correction that small is noise of the solve itself (see tolerance()).
+constexpr Real round_off_ulps = 16.0;
 
 }  // namespace
 
@@ -38,6 +43,15 @@ StepReport Newmark::start(SecondOrderSystem& sys, State& s) {
   if (!report.ok) return report;
   factored_ = false;
   return report;
+}
+
+Real Newmark::tolerance(const Vector& x_old) const {
+  // Relative to what the step changes, with a floor at the state's round-off for a
+  // step that changes (almost) nothing: an absolute test (as once, 1e-10·(1 + ‖x‖), in
+  // metres) accepted corrections comparable to a slowly moving state's whole increment.
+  return settings_.newton_tol * (x1_ - x_old).norm() +
+         round_off_ulps * std::numeric_limits<Real>::epsilon() * x1_.norm() +
+         std::numeric_limits<Real>::min();
 }
 
 StepReport Newmark::step(SecondOrderSystem& sys, State& s, Real dt) {
@@ -86,7 +100,7 @@ StepReport Newmark::step(SecondOrderSystem& sys, State& s, Real dt) {
     // solves the step's equations exactly, and a second iteration (a residual and
     // a solve, half the step's cost) would only confirm it.
     const bool solved = k == 1 && sys.tangent_exact_at(t1);
-    if (solved || norm <= settings_.newton_tol * (1.0 + x1_.norm())) {
+    if (solved || norm <= tolerance(s.x)) {
       a1_ = c_a * (x1_ - s.x - dt * s.v) - a_old * s.a;
       v1_ = s.v + dt * ((1.0 - gamma) * s.a + gamma * a1_);
       s.t = t1;
@@ -102,7 +116,7 @@ StepReport Newmark::step(SecondOrderSystem& sys, State& s, Real dt) {
   report.message = fmt::format(
       "{}: Newton did not converge in {} iteration(s) at t = {:.9g} (dt = {:.6g}): last correction "
       "norm {:.3e}, tolerance {:.3e}",
-      name(), report.iterations, t1, dt, norm, settings_.newton_tol * (1.0 + x1_.norm()));
+      name(), report.iterations, t1, dt, norm, tolerance(s.x));
   return report;
 }
 

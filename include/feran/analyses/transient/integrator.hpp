@@ -24,7 +24,8 @@ struct IntegratorSettings {
   Real dt_min = 1e-12;
   Real dt_max = std::numeric_limits<Real>::infinity();
   // Newton iterations (trapezoidal): converged when the correction's norm is below
-  // newton_tol·(1 + ‖x‖), at most newton_max_iterations.
+  // newton_tol·‖x_{n+1} − x_n‖ + 16·ε·‖x_{n+1}‖: relative to the step's own change,
+  // floored at the state's round-off; at most newton_max_iterations.
   Real newton_tol = 1e-10;
   int newton_max_iterations = 25;
   /// rk3: warn instead of refusing a step above the stability limit.

@@ -63,6 +63,10 @@ class Newmark final : public Integrator {
   const NewmarkParameters& parameters() const { return parameters_; }
 
  private:
+  /// Newton's convergence threshold for the correction of the step from @p x_old:
+  /// newton_tol·‖x_{n+1} − x_n‖ + 16·ε·‖x_{n+1}‖ (ε the machine epsilon).
+  Real tolerance(const Vector& x_old) const;
+
   IntegratorSettings settings_;
   NewmarkParameters parameters_;
   bool factored_ = false;    // the system holds a factorisation of S for dt_factored_
