@@ -543,6 +543,18 @@ ModalResult ModalSolver::solve(Real speed) const {
 
   const SparseMatrix& T = assembler_->dof_map().transformation();
 
+  // A free rigid-body motion is a double zero eigenvalue of the state matrix (a Jordan
+  // block): a solver of the state problem may return it twice as a real zero with the
+  // same shape. It is one mode; these are the M-weighted shapes of the real rigid-body
+  // zeros listed so far.
+  std::vector<std::pair<ComplexVector, Real>> rigid_shapes;  // (M·φ, φᴴMφ)
+  const auto listed_rigid = [&](const ComplexVector& phi, const ComplexVector& Mphi, Real kinetic) {
+    for (const auto& [Mq, kq] : rigid_shapes)
+      if (abs2(phi.dot(Mq)) > (1.0 - tolerance::repeated_eigenvalue) * kinetic * kq) return true;
+    rigid_shapes.emplace_back(Mphi, kinetic);
+    return false;
+  };
+
   for (Index j = 0; j < pairs.values.size(); ++j) {
     Mode mode;
     const ComplexVector phi = pairs.vectors.col(j);
@@ -551,7 +563,11 @@ ModalResult ModalSolver::solve(Real speed) const {
     const Real strain = phi.dot(times(sys.K, phi)).real();  // of K's symmetric part
     mode.rigid_body = kinetic > 0 && strain / kinetic < rigid_tol;
     Complex p = pairs.values(j);
-    if (mode.rigid_body && magnitude(p) < zero_tol) p = 0.0;
+    if (mode.rigid_body && magnitude(p) < zero_tol) {
+      // Only real zeros: a tiny conjugate pair stands for two real motions at once.
+      if (p.imag() == 0.0 && listed_rigid(phi, Mphi, kinetic)) continue;
+      p = 0.0;
+    }
     mode.eigenvalue = p;
     mode.oscillatory = p.imag() > 0.0;
     mode.frequency_hz = p.imag() / (2.0 * pi);
