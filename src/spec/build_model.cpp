@@ -77,7 +77,7 @@ class Builder {
   bool given(const std::string& path) const {
     return source_ != nullptr && source_->places.count(path) != 0;
   }
-  /// True when @p a was written before @p b (declaration order without a source).
+  /// True when @p a was written before @p b (always false without a source).
   bool earlier(const std::string& a, const std::string& b) const;
   std::string missing_key(std::string_view key, std::string_view table,
                           std::string_view expected) const {
@@ -147,7 +147,9 @@ std::string Builder::shown(const std::string& path, Real si, Quantity kind,
 }
 
 bool Builder::earlier(const std::string& a, const std::string& b) const {
-  if (source_ == nullptr) return true;
+  // Without a source there is no file order: nothing is earlier, so callers keep
+  // declaration order (and a sort by this stays a strict weak ordering).
+  if (source_ == nullptr) return false;
   const SourceLocation p = source_->locate(a), q = source_->locate(b);
   return p.line < q.line || (p.line == q.line && p.column < q.column);
 }

@@ -125,5 +125,17 @@ TEST(BuildModel, NonFiniteValuesAreRejected) {
   EXPECT_NE(error_of(s).second.find("finite"), std::string::npos);
 }
 
+// A spec built in code has no file order: two profile forms of [runup] are reported
+// in declaration order (constant speed, then ramp).
+TEST(BuildModel, MixedRunupFormsWithoutASource) {
+  ModelSpec s = jeffcott();
+  s.runup.to = 100.0;
+  s.runup.ramp_time = 1.0;
+  s.runup.speed = 50.0;
+  const auto [path, message] = error_of(s);
+  EXPECT_EQ(path, "runup.to");
+  EXPECT_NE(message.find("this [runup] mixes 'speed' and 'to'"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace feran
