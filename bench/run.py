@@ -67,6 +67,20 @@ def cases():
                 ["runup", os.path.join(ex, "02_centrifuge", "model_arctan.toml")], 1, "run"))
     out.append(("example03_runup_20_8N", "examples", None,
                 ["runup", os.path.join(ex, "03_coulomb_friction", "model_20_8N.toml")], 1, "run"))
+    # The automatic eigen-solver choice against both solvers (docs/performance.md):
+    # auto should never be much slower than the faster of the two.
+    pump = os.path.join(HERE, "models", "pump_130.toml")
+    ex2s = os.path.join(ex, "02_centrifuge", "model_soft_mounting.toml")
+    for base, argv in [("pump130_campbell", ["campbell", pump]),
+                       ("pump130_modal12", ["modal", pump, "--speed", "3000rpm", "--modes", "12"]),
+                       ("friswell48_campbell100x8", ["campbell", model_path(48), "--points", "100", "--modes", "8"]),
+                       ("friswell6_campbell100x8", ["campbell", model_path(6), "--points", "100", "--modes", "8"]),
+                       ("example01_campbell", ["campbell", ex1]),
+                       ("example02_campbell", ["campbell", ex2]),
+                       ("example02_soft_campbell", ["campbell", ex2s]),
+                       ("example02_modal8", ["modal", ex2, "--speed", "100Hz", "--modes", "8"])]:
+        for solver in ["auto", "dense", "sparse"]:
+            out.append((f"choice_{base}_{solver}", "solver_choice", None, argv + ["--solver", solver], 1, "run"))
     return out
 
 
@@ -140,6 +154,12 @@ def main():
         print(f"{name:32s} {1e3 * med:10.2f} ms  ({r['median_per_unit_ms']:.3f} ms/{unit}, CPU "
               f"{1e3 * r['median_cpu_s']:.1f} ms)  {r['peak_memory_mib']:7.1f} MiB", flush=True)
 
+    if args.only and os.path.exists(args.out):
+        # A partial run updates its cases in the existing results and keeps the rest.
+        with open(args.out) as f:
+            old = json.load(f)["cases"]
+        fresh = {r["case"] for r in results}
+        results = [r for r in old if r["case"] not in fresh] + results
     by_name = {r["case"]: r for r in results}
     scaling = []
     for group in ["modal", "campbell20", "response", "runup"]:
@@ -168,6 +188,16 @@ def main():
         if single in by_name and multi in by_name:
             speedups[multi] = by_name[single]["median_s"] / by_name[multi]["median_s"]
 
+    choice = {}
+    for r in results:
+        if r["group"] == "solver_choice" and r["case"].endswith("_auto"):
+            base = r["case"][:-len("_auto")]
+            d, sp = by_name.get(base + "_dense"), by_name.get(base + "_sparse")
+            if d and sp:
+                best = min(d["median_s"], sp["median_s"])
+                choice[base] = {"auto_s": r["median_s"], "dense_s": d["median_s"], "sparse_s": sp["median_s"],
+                                "auto_over_best": r["median_s"] / best}
+
     doc = {
         "machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "python": platform.python_version()},
         "feran": os.path.relpath(args.feran, ROOT) if os.path.abspath(args.feran).startswith(ROOT) else "feran",
@@ -175,6 +205,7 @@ def main():
         "cases": results,
         "scaling": scaling,
         "parallel_speedup": speedups,
+        "solver_choice": choice,
     }
     with open(args.out, "w") as f:
         json.dump(doc, f, indent=1)
@@ -186,6 +217,9 @@ def main():
                   + (f", memory above base ~ n^{mem:.2f}" if mem is not None else ""))
     for k, v in speedups.items():
         print(f"speed-up on {os.cpu_count()} cores, {k}: {v:.2f}x")
+    for k, v in choice.items():
+        print(f"solver choice {k:28s} dense {1e3 * v['dense_s']:9.1f} ms  sparse {1e3 * v['sparse_s']:8.1f} ms"
+              f"  auto {1e3 * v['auto_s']:8.1f} ms  auto/best {v['auto_over_best']:.2f}")
 
 
 if __name__ == "__main__":

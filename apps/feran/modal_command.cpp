@@ -44,8 +44,9 @@ Runner add_modal_command(CLI::App& app) {
   cmd->add_option("-n,--modes", args->modes, "Number of modes (lowest first); default: all (dense) or 12 (sparse)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--solver", args->solver,
-                  "Eigen solver: auto (dense for all modes up to 400 DOF, shift-invert when --modes asks for "
-                  "few of many), dense (all modes, LAPACK QR) or sparse (lowest modes, shift-invert Arnoldi)")
+                  "Eigen solver: auto (dense for all modes up to 400 DOF; with --modes, for each decoupled block "
+                  "the one a cost model expects to be faster), dense (LAPACK QR) or sparse (lowest modes, "
+                  "shift-invert Arnoldi)")
       ->check(CLI::IsMember({"auto", "dense", "sparse"}));
   cmd->add_flag("--shapes", args->shapes, "Include the mode shapes in the JSON output");
   add_output_options(*cmd, args->out);

@@ -12,6 +12,7 @@
 
 #include <feran/analyses/modal/whirl.hpp>
 
+#include "solver_choice.hpp"
 #include "state_eigen.hpp"
 
 namespace feran {
@@ -389,17 +390,26 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options, std::shared_p
       }
 }
 
-EigenSolver ModalSolver::resolved_solver() const {
-  if (options_.solver != EigenSolver::automatic) return options_.solver;
-  const Index n = assembler_->dof_map().n_reduced();
-  if (options_.n_modes > 0 && 3 * options_.n_modes >= n) return EigenSolver::dense;
-  // A given number of modes: Arnoldi as soon as its Krylov subspace is at most a
-  // quarter of the state space (its cost grows with n, the QR's with n³; on the
-  // 292-DOF benchmark rotor 16 modes take 40 ms by QR, 8 ms by Arnoldi).
-  if (options_.n_modes > 0 && 4 * detail::arnoldi_subspace_size(n, options_.n_modes) <= 2 * n)
-    return EigenSolver::sparse;
-  if (n <= options_.dense_limit) return EigenSolver::dense;
-  return EigenSolver::sparse;
+namespace {
+
+// A real sparse matrix equal to s times its transpose, to round-off
+// (tolerance::symmetry of its largest entry).
+bool symmetric(const SparseMatrix& A, Real s) {
+  const Real scale = A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0;
+  const SparseMatrix At = A.transpose();
+  const SparseMatrix diff = A - s * At;
+  return diff.nonZeros() == 0 || diff.coeffs().cwiseAbs().maxCoeff() <= tolerance::symmetry * scale;
+}
+
+}  // namespace
+
+ModalSolver::Choice ModalSolver::choice() const {
+  if (options_.solver == EigenSolver::dense) return Choice::dense;
+  if (options_.solver == EigenSolver::sparse) return Choice::sparse;
+  // All modes of a model up to dense_limit: the dense solver is the one that gives
+  // them all; otherwise each block by the cost model (12 modes when none are asked).
+  if (options_.n_modes == 0 && assembler_->dof_map().n_reduced() <= options_.dense_limit) return Choice::dense;
+  return Choice::by_cost;
 }
 
 ModalResult ModalSolver::solve(Real speed) const {
@@ -415,8 +425,8 @@ ModalResult ModalSolver::solve(Real speed) const {
 
   ModalResult result;
   result.speed = speed;
-  const bool sparse = resolved_solver() == EigenSolver::sparse;
-  const Index wanted = options_.n_modes > 0 ? options_.n_modes : sparse ? 12 : 0;
+  const Choice choice = this->choice();
+  const Index wanted = options_.n_modes > 0 ? options_.n_modes : choice != Choice::dense ? 12 : 0;
   // Automatic shift: just below zero, so that rigid-body modes (p = 0) do not make
   // K + σD + σ²M singular, yet close enough to find the lowest modes first.
   const Real sigma = std::isnan(options_.shift) ? -std::max(1.0, 1e-6 * std::sqrt(lambda_max_)) : options_.shift;
@@ -438,17 +448,32 @@ ModalResult ModalSolver::solve(Real speed) const {
     const SparseMatrix Mb = submatrix(sys.M, dofs, local), Db = submatrix(D, dofs, local),
                        Kb = submatrix(K, dofs, local);
     const Index wanted_b = std::min(wanted, nb - 1);
-    const bool arnoldi_block = sparse && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb;
+    // Arnoldi pays only when its subspace is smaller than the block's state space;
+    // the automatic choice takes it where the cost model expects it to be cheaper.
+    bool arnoldi_block =
+        choice != Choice::dense && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb;
+    std::optional<ComplexForm> cf;
+    const bool sparse_form = arnoldi_block && options_.complex_form;  // tried on the sparse matrices
+    if (sparse_form) cf = complex_form(dofs, local, twin_, Mb, Db, Kb);
+    if (arnoldi_block && choice == Choice::by_cost) {
+      const detail::BlockForm form{cf.has_value(),
+                                   options_.hermitian_form && symmetric(Db, -1.0) && symmetric(Kb, 1.0)};
+      arnoldi_block = detail::arnoldi_cheaper(nb, wanted_b, form);
+    }
     // Dense copies for the dense solvers.
     Matrix Md, Dd, Kd;
     if (!arnoldi_block) {
       Md = Mb;
       Dd = Db;
       Kd = Kb;
+      if (cf) {
+        cf->Md = ComplexMatrix(cf->M);
+        cf->Dd = ComplexMatrix(cf->D);
+        cf->Kd = ComplexMatrix(cf->K);
+      } else if (options_.complex_form && !sparse_form) {
+        cf = dense_complex_form(dofs, local, twin_, Md, Dd, Kd);
+      }
     }
-    const std::optional<ComplexForm> cf = !options_.complex_form ? std::nullopt
-                                          : arnoldi_block ? complex_form(dofs, local, twin_, Mb, Db, Kb)
-                                                          : dense_complex_form(dofs, local, twin_, Md, Dd, Kd);
     any_complex = any_complex || cf.has_value();
     for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
     const bool constant = std::none_of(dofs.begin(), dofs.end(),
@@ -502,7 +527,6 @@ ModalResult ModalSolver::solve(Real speed) const {
       return computed;
     };
     detail::StateEigenpairs part;
-    // Arnoldi pays only when its subspace is smaller than the block's state space.
     if (arnoldi_block) {
       // Past the largest block, a few modes first and more only while all of them lie
       // below the cutoff: fewer wanted modes converge faster, and a block whose higher
@@ -605,8 +629,7 @@ ModalResult ModalSolver::solve(Real speed) const {
   // small imaginary part under rotating damping) from displacing the physical ones.
   auto by_magnitude = [](const Mode& a, const Mode& b) { return abs2(a.eigenvalue) < abs2(b.eigenvalue); };
   std::stable_sort(result.modes.begin(), result.modes.end(), by_magnitude);
-  const Index limit = options_.n_modes > 0 ? options_.n_modes
-                      : resolved_solver() == EigenSolver::sparse ? 12 : 0;
+  const Index limit = options_.n_modes > 0 ? options_.n_modes : choice != Choice::dense ? 12 : 0;
   if (limit > 0 && static_cast<Index>(result.modes.size()) > limit) {
     auto keep = static_cast<std::size_t>(limit);
     // Keep a repeated pair whole (isotropic rotors at rest), as split_repeated does.

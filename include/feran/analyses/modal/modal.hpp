@@ -54,7 +54,7 @@ struct Mode {
 
 /// Which eigen solver to use.
 enum class EigenSolver {
-  automatic,  ///< dense for small models and all modes, shift-invert for large ones or few modes
+  automatic,  ///< all modes: dense up to ModalOptions::dense_limit; otherwise each block by a cost model
   dense,      ///< all modes: Hessenberg-QR of the state matrix (LAPACK dgeev)
   sparse      ///< lowest modes: shift-invert Arnoldi (Spectra) on a sparse LU
 };
@@ -65,8 +65,9 @@ struct ModalOptions {
   Index n_modes = 0;
   EigenSolver solver = EigenSolver::automatic;
   /// Reduced DOF count up to which automatic selects the dense solver when all modes
-  /// are asked for (n_modes = 0). With n_modes given, automatic selects shift-invert
-  /// Arnoldi once its Krylov subspace is at most a quarter of the state dimension 2n.
+  /// are asked for (n_modes = 0). With n_modes given (or above this size, 12 modes),
+  /// automatic chooses for each decoupled block the solver a cost model expects to be
+  /// faster (docs/theory/modal_analysis.md, "Choosing the solver").
   Index dense_limit = 400;
   /// Real shift σ [rad/s] for shift-invert; NaN: automatic (slightly below zero).
   Real shift = std::numeric_limits<Real>::quiet_NaN();
@@ -119,10 +120,13 @@ class ModalSolver {
   /// Changes the number of modes wanted (see ModalOptions::n_modes).
   void set_n_modes(Index n_modes) { options_.n_modes = n_modes; }
   const Assembler& assembler() const { return *assembler_; }
-  /// The solver the automatic choice resolves to for this model.
-  EigenSolver resolved_solver() const;
 
  private:
+  // dense or sparse for every block, or each decoupled block by the cost model
+  // (src/analyses/modal/solver_choice.hpp).
+  enum class Choice { dense, sparse, by_cost };
+  Choice choice() const;
+
   ModalOptions options_;
   std::shared_ptr<const Assembler> assembler_;
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
