@@ -31,6 +31,7 @@ struct ResponseArgs {
   std::vector<std::string> forces;
   double loss_factor = -1.0;
   bool no_unbalance = false;
+  std::string stations;
   int threads = 0;
   OutputOptions out;
 };
@@ -111,6 +112,10 @@ Runner add_response_command(CLI::App& app) {
   cmd->add_option("--loss-factor", args->loss_factor, "Global hysteretic loss factor eta: adds j*eta*K")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-unbalance", args->no_unbalance, "Leave the model's unbalances out");
+  cmd->add_option("--stations", args->stations,
+                  "Section forces and stresses at the shaft stations: all (every station at every point), "
+                  "summary (per point the largest values and their place; default) or none")
+      ->check(CLI::IsMember({"all", "summary", "none"}));
   add_threads_option(*cmd, args->threads);
   add_output_options(*cmd, args->out);
 
@@ -130,8 +135,8 @@ Runner add_response_command(CLI::App& app) {
     if (args->points > 0) request.points = args->points;
     if (args->freq_points > 0) request.freq_points = args->freq_points;
     for (const std::string& p : args->probes) request.probes.push_back(find_node_reference(model, p, "--probe"));
+    if (!args->stations.empty()) request.stations = station_output(args->stations);
     const HarmonicOptions options = response_settings(model, file.spec.response, request);
-
 
     const HarmonicResult result = run_harmonic_response(model, options);
     const Real low = options.frequencies.empty() ? options.speeds.front() : options.speed;

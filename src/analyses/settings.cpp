@@ -133,12 +133,21 @@ CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellReques
   return options;
 }
 
+StationOutput station_output(std::string_view name) {
+  for (StationOutput o : {StationOutput::all, StationOutput::summary, StationOutput::none})
+    if (name == to_string(o)) return o;
+  throw Error(fmt::format("stations must be all, summary or none, got '{}'", name));
+}
+
 HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
                                   const ResponseRequest& request) {
   HarmonicOptions options;
   options.unbalance = request.unbalance;
   options.n_threads = request.n_threads;
   options.loss_factor = request.loss_factor.value_or(file.loss_factor.value_or(0.0));
+  options.stations = request.stations ? *request.stations
+                     : file.stations  ? station_output(*file.stations)
+                                      : StationOutput::summary;
   options.extra_forces = request.extra_forces;
   // Forces that excite at the swept frequency (all harmonic ones but unbalances).
   const bool any_force =

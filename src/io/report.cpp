@@ -171,7 +171,7 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
                        node_name(model, result.reactions[static_cast<std::size_t>(sum.reaction_force.item)].node),
                        sum.reaction_force.value, point_text(result, sum.reaction_force.point));
   if (sum.stress.point >= 0) {
-    const ShaftStation& st = result.stations[static_cast<std::size_t>(sum.stress.item)].station;
+    const ShaftStation& st = result.shaft_stations[static_cast<std::size_t>(sum.stress.item)];
     out += fmt::format("  largest equivalent stress: {:.5g} MPa at x = {:.4g} mm ({} {}), at {}\n", 1e-6 * sum.stress.value,
                        1e3 * st.x, element_name(model, st.element), st.end == 0 ? "start" : "end",
                        point_text(result, sum.stress.point));

@@ -180,6 +180,29 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
     stations.push_back(js);
   }
   j["stations"] = stations;
+  j["stations_output"] = to_string(options.stations);
+  if (result.shaft_stations.empty()) {
+    j["station_peaks"] = nullptr;
+  } else {
+    // Per point, the largest value over the stations and where it is.
+    auto peaks = [&](const char* unit, auto member) {
+      std::vector<Real> value, x;
+      json element = json::array(), end = json::array(), node = json::array();
+      for (const StationPeaks& p : result.station_peaks) {
+        const StationPeak& peak = p.*member;
+        const ShaftStation& st = result.shaft_stations[static_cast<std::size_t>(peak.station)];
+        value.push_back(peak.value);
+        x.push_back(st.x);
+        element.push_back(element_label(model, st.element));
+        end.push_back(st.end == 0 ? "start" : "end");
+        node.push_back(model.nodes[static_cast<std::size_t>(st.node)].number);
+      }
+      return json{{unit, numbers(value)}, {"x_m", numbers(x)}, {"element", element}, {"end", end}, {"node", node}};
+    };
+    j["station_peaks"] = {{"von_mises", peaks("value_pa", &StationPeaks::von_mises)},
+                          {"bending_moment", peaks("value_nm", &StationPeaks::bending_moment)},
+                          {"shear_force", peaks("value_n", &StationPeaks::shear_force)}};
+  }
 
   const ResponseSummary sum = summarize(result);
   auto at = [&](Index k) {
@@ -212,7 +235,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
   }
   summary["largest_stress"] = nullptr;
   if (sum.stress.point >= 0) {
-    json js = station_json(model, result.stations[static_cast<std::size_t>(sum.stress.item)].station);
+    json js = station_json(model, result.shaft_stations[static_cast<std::size_t>(sum.stress.item)]);
     js["von_mises_pa"] = sum.stress.value;
     js.update(at(sum.stress.point));
     summary["largest_stress"] = js;
@@ -236,7 +259,8 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
   for (const SpringForceResponse& s : result.springs)
     out << ',' << csv_name(element_label(model, s.element)) << "_peak_lateral_force_n";
   for (const ReactionResponse& r : result.reactions) out << ',' << node_tag(r.node) << "_support_peak_lateral_force_n";
-  out << ",max_von_mises_pa\n";
+  const bool peaks = !result.shaft_stations.empty();
+  out << (peaks ? ",max_von_mises_pa,max_von_mises_x_m\n" : "\n");
   for (std::size_t k = 0; k < result.speeds.size(); ++k) {
     out << csv_number(rad_to_hz(result.speeds[k])) << ',' << csv_number(rad_to_hz(result.frequencies[k]));
     for (const ProbeResponse& p : result.probes) {
@@ -246,9 +270,12 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
     }
     for (const SpringForceResponse& s : result.springs) out << ',' << csv_number(s.peak_lateral[k]);
     for (const ReactionResponse& r : result.reactions) out << ',' << csv_number(r.peak_lateral[k]);
-    Real vm = 0;
-    for (const StationResponse& st : result.stations) vm = std::max(vm, st.stress[k].von_mises);
-    out << ',' << csv_number(vm) << '\n';
+    if (peaks) {
+      const StationPeak& vm = result.station_peaks[k].von_mises;
+      out << ',' << csv_number(vm.value) << ','
+          << csv_number(result.shaft_stations[static_cast<std::size_t>(vm.station)].x);
+    }
+    out << '\n';
   }
   return out.str();
 }

@@ -22,6 +22,7 @@ constexpr std::string_view dof_names[] = {"u", "v", "w", "rx", "ry", "rz", "all"
 constexpr std::string_view force_kinds[] = {"fixed", "rotating_force", "rotating_moment"};
 constexpr std::string_view force_directions[] = {"x", "y", "z", "rx", "ry", "rz"};
 constexpr std::string_view gravity_directions[] = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
+constexpr std::string_view station_outputs[] = {"all", "summary", "none"};
 
 constexpr std::string_view default_hint = "leave it out for the analysis's default";
 
@@ -420,6 +421,9 @@ const FieldTable<ResponseSpec>& fields_of<ResponseSpec>() {
        .doc = "non-empty, no node twice: the nodes whose response is reported", .if_empty = default_hint},
       {.key = "loss_factor", .kind = K::number, .member = &S::loss_factor,
        .doc = "global hysteretic loss factor η: adds j·η·K_e for every element, on top of the elements' own loss factors", .bound = non_negative},
+      {.key = "stations", .kind = K::choice, .member = &S::stations,
+       .doc = "what is kept of the section forces and stresses at both ends of every shaft element: `\"all\"` (every station at every point), `\"summary\"` (per point the largest values and their place) or `\"none\"`",
+       .choices = station_outputs, .default_text = "`\"summary\"`"},
   };
   return table;
 }

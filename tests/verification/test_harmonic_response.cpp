@@ -169,6 +169,7 @@ TEST(HarmonicResponse, ClampForceBalancesTheRotorInertia) {
   m.forces.emplace_back(Unbalance{6, mu, e, 0.0, 0.0}, "u");
   HarmonicOptions opt;
   opt.speeds = {120.0, 400.0};
+  opt.stations = StationOutput::all;
   for (Index node = 0; node < m.n_nodes(); ++node) opt.probes.push_back(node);
   const HarmonicResult r = run_harmonic_response(m, opt);
   ASSERT_EQ(r.reactions.size(), 1u);

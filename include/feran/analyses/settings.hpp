@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -93,12 +94,16 @@ struct ResponseRequest {
   std::vector<Index> probes;                ///< empty: [response] probes, else default_probes()
   std::vector<HarmonicForce> extra_forces;  ///< added to the model's [[forces]]
   std::optional<Real> loss_factor;          ///< default [response] loss_factor, else 0
+  std::optional<StationOutput> stations;    ///< default [response] stations, else summary
   bool unbalance = true;                    ///< include the model's unbalances
   int n_threads = 1;                        ///< 0: all cores
 };
 
 /// Throws Error for a sweep without a last point, a last point not above the first,
 /// a frequency sweep without a force, or nothing that excites the rotor.
+/// The StationOutput named @p name ("all", "summary", "none"); throws Error otherwise.
+StationOutput station_output(std::string_view name);
+
 HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
                                   const ResponseRequest& request);
 

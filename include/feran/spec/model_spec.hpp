@@ -202,6 +202,7 @@ struct ResponseSpec {
   std::optional<int> points;
   std::vector<NodeRef> probes;
   std::optional<Real> loss_factor;
+  std::optional<std::string> stations;  ///< "all", "summary" or "none"
   bool operator==(const ResponseSpec&) const = default;
 };
 

@@ -147,9 +147,15 @@ class DynamicStiffness {
 struct PointResult {
   bool solved = false;
   std::vector<NodeAmplitudes> probes, springs, reactions;
-  std::vector<SectionForces> forces;
+  std::vector<SectionForces> forces;  // every station (StationOutput::all)
   std::vector<SectionStress> stress;
+  StationPeaks peaks;
 };
+
+// Keeps the larger of a peak and a station's value.
+void consider(StationPeak& peak, Real value, Index station) {
+  if (peak.station < 0 || value > peak.value) peak = {value, station};
+}
 
 // Per thread: the matrix and its LU (analysed for the pattern it was last given).
 struct Workspace {
@@ -200,7 +206,9 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
 
   for (Index node : options.probes) result.probes.push_back({node, {}, {}});
   for (const Index e : springs) result.springs.push_back({e, {}, {}});
-  for (const ShaftStation& st : shaft_stations(model)) result.stations.push_back({st, {}, {}});
+  if (options.stations != StationOutput::none) result.shaft_stations = shaft_stations(model);
+  if (options.stations == StationOutput::all)
+    for (const ShaftStation& st : result.shaft_stations) result.stations.push_back({st, {}, {}});
 
   const std::size_t n_points = result.frequency_sweep ? options.frequencies.size() : options.speeds.size();
   DynamicStiffness stiffness(assembler.constant());
@@ -293,14 +301,24 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     // the section forces are in equilibrium with the element's motion.
     std::size_t b = 0;
     ComplexVector end_forces;
-    for (const StationResponse& st : result.stations) {
-      if (beams[b].element != st.station.element || end_forces.size() == 0) {
-        while (beams[b].element != st.station.element) ++b;
+    const bool keep_all = options.stations == StationOutput::all;
+    for (std::size_t i = 0; i < result.shaft_stations.size(); ++i) {
+      const ShaftStation& st = result.shaft_stations[i];
+      if (beams[b].element != st.element || end_forces.size() == 0) {
+        while (beams[b].element != st.element) ++b;
         end_forces = element_forces(beams[b].matrices, speed, omega, options.loss_factor,
                                     element_values(beams[b].segment, q_full));
       }
-      out.forces.push_back(section_forces(end_forces, st.station.end));
-      out.stress.push_back(section_stress(beams[b].segment.section, out.forces.back()));
+      const SectionForces forces = section_forces(end_forces, st.end);
+      const SectionStress stress = section_stress(beams[b].segment.section, forces);
+      const auto station = static_cast<Index>(i);
+      consider(out.peaks.von_mises, stress.von_mises, station);
+      consider(out.peaks.bending_moment, orbit(forces.My, forces.Mz).major, station);
+      consider(out.peaks.shear_force, orbit(forces.Vy, forces.Vz).major, station);
+      if (keep_all) {
+        out.forces.push_back(forces);
+        out.stress.push_back(stress);
+      }
     }
   };
   parallel_for(static_cast<Index>(n_points), options.n_threads, [&](Index k, int worker) {
@@ -336,6 +354,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       result.reactions[r].force.push_back(pt.reactions[r]);
       result.reactions[r].peak_lateral.push_back(peak_lateral(pt.reactions[r]));
     }
+    if (!result.shaft_stations.empty()) result.station_peaks.push_back(pt.peaks);
     for (std::size_t s = 0; s < result.stations.size(); ++s) {
       result.stations[s].forces.push_back(pt.forces[s]);
       result.stations[s].stress.push_back(pt.stress[s]);
@@ -362,10 +381,20 @@ ResponseSummary summarize(const HarmonicResult& r) {
   for (std::size_t i = 0; i < r.reactions.size(); ++i)
     for (std::size_t k = 0; k < r.reactions[i].peak_lateral.size(); ++k)
       consider(s.reaction_force, r.reactions[i].peak_lateral[k], static_cast<Index>(k), static_cast<Index>(i));
-  for (std::size_t i = 0; i < r.stations.size(); ++i)
-    for (std::size_t k = 0; k < r.stations[i].stress.size(); ++k)
-      consider(s.stress, r.stations[i].stress[k].von_mises, static_cast<Index>(k), static_cast<Index>(i));
+  for (std::size_t k = 0; k < r.station_peaks.size(); ++k) {
+    const StationPeak& p = r.station_peaks[k].von_mises;
+    if (p.station >= 0) consider(s.stress, p.value, static_cast<Index>(k), p.station);
+  }
   return s;
+}
+
+const char* to_string(StationOutput output) {
+  switch (output) {
+    case StationOutput::all: return "all";
+    case StationOutput::summary: return "summary";
+    case StationOutput::none: return "none";
+  }
+  return "?";
 }
 
 }  // namespace feran

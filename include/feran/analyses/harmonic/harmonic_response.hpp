@@ -21,6 +21,14 @@
 
 namespace feran {
 
+/// What a response keeps of the shaft's section forces and stresses, computed at both
+/// ends of every shaft element.
+enum class StationOutput {
+  all,      ///< every station at every point (memory and output grow with stations × points)
+  summary,  ///< per point the largest values over the stations, with their place
+  none,     ///< no section forces or stresses
+};
+
 struct HarmonicOptions {
   /// Speed sweep: rotor speeds [rad/s]; the excitation is synchronous. Used when
   /// @p frequencies is empty.
@@ -35,6 +43,7 @@ struct HarmonicOptions {
   std::vector<HarmonicForce> extra_forces; ///< forces added for this analysis
   Real loss_factor = 0.0;                  ///< global hysteretic loss factor η (adds jηK)
   std::vector<Index> probes;               ///< nodes whose motion is reported
+  StationOutput stations = StationOutput::summary;
   /// Threads for the sweep's points (0: all cores; the library's default is one, the
   /// command line's all cores); results do not depend on it.
   int n_threads = 1;
@@ -71,6 +80,21 @@ struct StationResponse {
   std::vector<SectionStress> stress;
 };
 
+/// The largest value of one quantity over the shaft stations at one point, and where.
+struct StationPeak {
+  Real value = 0;
+  Index station = -1;  ///< index into HarmonicResult::shaft_stations (-1: no station)
+};
+
+/// Per point, the largest section values over all stations (StationOutput::all and
+/// summary): equivalent stress, bending moment and shear force (their largest
+/// magnitude over a period, as in StationResponse).
+struct StationPeaks {
+  StationPeak von_mises;       ///< [Pa]
+  StationPeak bending_moment;  ///< largest |(M_y, M_z)| [N m]
+  StationPeak shear_force;     ///< largest |(V_y, V_z)| [N]
+};
+
 struct HarmonicResult {
   bool frequency_sweep = false;
   std::vector<Real> speeds;       ///< rotor speed per point [rad/s]
@@ -78,6 +102,12 @@ struct HarmonicResult {
   std::vector<ProbeResponse> probes;
   std::vector<SpringForceResponse> springs;
   std::vector<ReactionResponse> reactions;
+  /// Both ends of every shaft element (empty with StationOutput::none).
+  std::vector<ShaftStation> shaft_stations;
+  /// Per point (StationOutput::all and summary).
+  std::vector<StationPeaks> station_peaks;
+  /// Every station's values at every point (StationOutput::all only), in the order
+  /// of shaft_stations.
   std::vector<StationResponse> stations;
   /// converged() is false when the dynamic stiffness was singular at some point (an
   /// undamped resonance hit exactly); the vectors then stop before that point.
@@ -94,10 +124,13 @@ struct ResponseSummary {
   std::vector<Peak> probe_peaks;  ///< per probe: largest major semi-axis of the (v, w) orbit
   Peak spring_force;              ///< largest peak lateral spring force
   Peak reaction_force;            ///< largest peak lateral support reaction
-  Peak stress;                    ///< largest equivalent stress
+  Peak stress;                    ///< largest equivalent stress (item: index into shaft_stations)
 };
 
 HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& options);
+/// The names of StationOutput in model files, on the command line and in the JSON
+/// output: "all", "summary", "none".
+const char* to_string(StationOutput output);
 ResponseSummary summarize(const HarmonicResult& result);
 
 }  // namespace feran

@@ -23,6 +23,7 @@ HarmonicOptions sweep(int threads) {
   for (int i = 1; i <= 30; ++i) opt.speeds.push_back(i * 150.0 * 2 * pi / 60);
   opt.probes = {2, 4};
   opt.n_threads = threads;
+  opt.stations = StationOutput::all;
   return opt;
 }
 
@@ -55,6 +56,43 @@ TEST(HarmonicResponse, ResultDoesNotDependOnThreads) {
     for (std::size_t k = 0; k < a.speeds.size(); ++k)
       EXPECT_EQ(a.stations[s].stress[k].von_mises, b.stations[s].stress[k].von_mises);
   expect_point_equals_alone(model, a, sweep(1));
+}
+
+// The station output choice: `summary` keeps per point the largest von Mises stress,
+// bending moment and shear force over the stations, with the station, which must be
+// the maxima of the `all` output (the same values, bit for bit) and nothing per
+// station; `none` computes no station at all. The motion does not depend on it.
+TEST(HarmonicResponse, StationOutputChoice) {
+  const Model model = unbalanced(test::friswell_5_9_1(12));
+  HarmonicOptions all = sweep(2);
+  HarmonicOptions summary = all, none = all;
+  summary.stations = StationOutput::summary;
+  none.stations = StationOutput::none;
+  const HarmonicResult a = run_harmonic_response(model, all);
+  const HarmonicResult s = run_harmonic_response(model, summary);
+  const HarmonicResult n = run_harmonic_response(model, none);
+  ASSERT_EQ(a.stations.size(), 24u);  // both ends of 12 elements
+  EXPECT_TRUE(s.stations.empty());
+  EXPECT_EQ(s.shaft_stations.size(), 24u);
+  ASSERT_EQ(s.station_peaks.size(), all.speeds.size());
+  EXPECT_TRUE(n.stations.empty() && n.shaft_stations.empty() && n.station_peaks.empty());
+  EXPECT_LT(summarize(n).stress.point, 0);
+  for (std::size_t k = 0; k < all.speeds.size(); ++k) {
+    Real vm = 0, moment = 0, shear = 0;
+    for (const StationResponse& st : a.stations) {
+      vm = std::max(vm, st.stress[k].von_mises);
+      moment = std::max(moment, orbit(st.forces[k].My, st.forces[k].Mz).major);
+      shear = std::max(shear, orbit(st.forces[k].Vy, st.forces[k].Vz).major);
+    }
+    const StationPeaks& p = s.station_peaks[k];
+    EXPECT_EQ(p.von_mises.value, vm) << k;
+    EXPECT_EQ(p.bending_moment.value, moment) << k;
+    EXPECT_EQ(p.shear_force.value, shear) << k;
+    EXPECT_EQ(a.stations[static_cast<std::size_t>(p.von_mises.station)].stress[k].von_mises, vm);
+    for (std::size_t d = 0; d < dofs_per_node; ++d) EXPECT_EQ(n.probes[0].q[k][d], a.probes[0].q[k][d]);
+  }
+  EXPECT_EQ(summarize(s).stress.value, summarize(a).stress.value);
+  EXPECT_GT(summarize(s).stress.value, 0.0);
 }
 
 // A cross-coupled spring between the two disks that switches on part-way through
