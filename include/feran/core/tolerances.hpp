@@ -24,4 +24,11 @@ inline constexpr Real rigid_body = 1e-12;
 /// of the complex arithmetic of the solvers.
 inline constexpr Real real_eigenvalue = 1e-10;
 
+/// A mode whose directivity (forward minus backward kinetic share, in [−1, 1]) is at
+/// most this in magnitude does not whirl either way (a straight-line orbit, e.g. an
+/// anisotropic rotor at rest): round-off of the mode shape is ~1e-13, while the
+/// weakest gyroscopic coupling of a spinning rotor on anisotropic bearings gives
+/// 1e-3 and more.
+inline constexpr Real planar_directivity = 1e-6;
+
 }  // namespace feran::tolerance

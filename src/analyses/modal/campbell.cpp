@@ -70,6 +70,14 @@ Real cost(const Track& t, Real speed, const Mode& c) {
 
 bool lateral_family(ModeType t) { return t == ModeType::lateral || t == ModeType::coupled; }
 
+// The sense in which a mode whirls: its orbit classification, except that a nearly
+// straight-line orbit (planar by the 5 % threshold of classify_whirl) still whirls
+// forward or backward by the sign of its directivity unless that vanishes.
+Whirl whirl_sense(Whirl classified, Real directivity) {
+  if (classified != Whirl::planar || !(std::abs(directivity) > tolerance::planar_directivity)) return classified;
+  return directivity > 0 ? Whirl::forward : Whirl::backward;
+}
+
 // A sign change on the grid interval (speed_a, speed_b) of track @p mode, refined
 // after the sweep: of f − order·Ω/2π (a critical speed) or, with order 0, of the
 // damping ratio (the stability threshold).
@@ -207,7 +215,8 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
           const Real g0 = tm.frequency_hz[i - 1] - k * rad_to_hz(s0);
           const Real g1 = tm.frequency_hz[i] - k * rad_to_hz(speed);
           if (!((g0 > 0 && g1 <= 0) || (g0 < 0 && g1 >= 0))) continue;
-          brackets.push_back({static_cast<Index>(j), k, before, t, g0, g1, tm.whirl_at[i], tm.frequency_hz[i]});
+          brackets.push_back({static_cast<Index>(j), k, before, t, g0, g1,
+                              whirl_sense(tm.whirl_at[i], tm.directivity[i]), tm.frequency_hz[i]});
         }
 
       // Stability: the damping ratio drops below −tolerance on this interval.
@@ -230,7 +239,7 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     auto f = [&](Real s) {
       const std::optional<Mode> mm = match_between(br.a, br.b, s);
       if (!mm) return nan;
-      w = mm->whirl;
+      w = whirl_sense(mm->whirl, mm->directivity);
       freq = mm->frequency_hz;
       return br.order > 0 ? mm->frequency_hz - br.order * rad_to_hz(s) : mm->damping_ratio + options.damping_tolerance;
     };
@@ -254,12 +263,14 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
         thresholds.begin(), thresholds.end(),
         [](const StabilityThreshold& a, const StabilityThreshold& b) { return a.speed < b.speed; });
 
-  // Labels: the whirl a mode shows at most speeds, numbered by frequency at the
-  // first speed within each family.
+  // Labels: the sense in which a mode whirls at most speeds of the sweep (a nearly
+  // straight-line orbit counts by the sign of its directivity), numbered by frequency
+  // at the first speed within each family; planar only when it whirls at no speed.
   std::map<std::string, int> counters;
   for (TrackedMode& tm : result.modes) {
     int forward = 0, backward = 0, mixed = 0;
-    for (Whirl w : tm.whirl_at) {
+    for (std::size_t i = 0; i < tm.whirl_at.size(); ++i) {
+      const Whirl w = whirl_sense(tm.whirl_at[i], tm.directivity[i]);
       forward += w == Whirl::forward;
       backward += w == Whirl::backward;
       mixed += w == Whirl::mixed;

@@ -34,7 +34,11 @@ struct CampbellOptions {
 /// NaN where the mode could not be followed.
 struct TrackedMode {
   std::string label;       ///< "backward 1", "forward 1", "torsional 1", …
-  Whirl whirl = Whirl::none;  ///< the whirl it shows at most speeds
+  /// The sense it whirls in at most speeds: forward, backward or mixed by its
+  /// orbits, a nearly straight-line orbit counting by the sign of its directivity;
+  /// planar only when it whirls at no speed of the sweep; none for axial and
+  /// torsional modes. The label's family.
+  Whirl whirl = Whirl::none;
   ModeType type = ModeType::lateral;
   std::vector<Real> frequency_hz;
   std::vector<Real> damping_ratio;
@@ -50,7 +54,9 @@ struct CriticalSpeed {
   Real frequency_hz = 0;  ///< = order·speed/2π
   Index mode = 0;         ///< index into CampbellResult::modes
   int order = 1;
-  Whirl whirl = Whirl::none;  ///< whirl of the mode at the critical speed
+  /// The sense the mode whirls in at the critical speed, as for TrackedMode::whirl
+  /// (planar only for a straight-line orbit).
+  Whirl whirl = Whirl::none;
 };
 
 /// The lowest speed at which a mode's damping ratio turns negative.
