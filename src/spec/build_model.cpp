@@ -57,6 +57,11 @@ using spec::element;
 constexpr std::string_view ground_word = "ground";
 constexpr std::string_view axis_word = "axis";
 
+/// The label of the @p i-th entry of a list: its name, or "<kind> <i+1>" without one.
+std::string entry_label(const std::string& name, std::string_view kind, std::size_t i) {
+  return name.empty() ? fmt::format("{} {}", kind, i + 1) : name;
+}
+
 /// Builds one Model from one spec; every check throws SpecError.
 class Builder {
  public:
@@ -548,7 +553,7 @@ void Builder::build_rigid_bodies() {
     const RigidBodySpec& s = spec_.rigid_bodies[i];
     const std::string path = element("rigid_bodies", i);
     const auto at = [&](std::string_view key) { return child(path, key); };
-    const std::string label = s.name.empty() ? fmt::format("rigid body {}", i + 1) : s.name;
+    const std::string label = entry_label(s.name, "rigid body", i);
     const Index node_index = node(s.node, at("node"), "node");
 
     // The first key given of each form, in the order the field table lists them.
@@ -627,7 +632,7 @@ void Builder::build_springs() {
   for (std::size_t i = 0; i < spec_.springs.size(); ++i) {
     const SpringSpec& s = spec_.springs[i];
     const std::string path = element("springs", i);
-    const std::string label = s.name.empty() ? fmt::format("spring {}", i + 1) : s.name;
+    const std::string label = entry_label(s.name, "spring", i);
     const Index a = node(s.node, child(path, "node"), "node");
     const std::optional<Index> b = other_node(s.to, path, ground_word, a);
     check_bounds(s, path);
@@ -670,7 +675,7 @@ void Builder::build_rotating_dampers() {
   for (std::size_t i = 0; i < spec_.rotating_dampers.size(); ++i) {
     const RotatingDamperSpec& s = spec_.rotating_dampers[i];
     const std::string path = element("rotating_dampers", i);
-    const std::string label = s.name.empty() ? fmt::format("rotating damper {}", i + 1) : s.name;
+    const std::string label = entry_label(s.name, "rotating damper", i);
     const Index a = node(s.node, child(path, "node"), "node");
     require_rotating(a, child(path, "node"), reason);
     const std::optional<Index> b = other_node(s.to, path, axis_word, a);
@@ -688,7 +693,7 @@ void Builder::build_friction() {
     const FrictionSpec& s = spec_.friction[i];
     const std::string path = element("friction", i);
     CoulombFriction f;
-    const std::string label = s.name.empty() ? fmt::format("friction {}", i + 1) : s.name;
+    const std::string label = entry_label(s.name, "friction", i);
     f.node_a = node(s.node, child(path, "node"), "node");
     require_rotating(f.node_a, child(path, "node"), reason);
     f.node_b = other_node(s.to, path, axis_word, f.node_a);
@@ -771,7 +776,7 @@ void Builder::build_unbalances() {
     const UnbalanceSpec& s = spec_.unbalances[i];
     const std::string path = element("unbalances", i);
     Unbalance u;
-    const std::string label = s.name.empty() ? fmt::format("unbalance {}", i + 1) : s.name;
+    const std::string label = entry_label(s.name, "unbalance", i);
     u.node = node(s.node, child(path, "node"), "node");
     check_bounds(s, path);
     u.mass = s.mass;
@@ -791,7 +796,7 @@ void Builder::build_forces() {
     const std::string path = element("forces", i);
     const auto at = [&](std::string_view key) { return child(path, key); };
     HarmonicForce f;
-    const std::string label = s.name.empty() ? fmt::format("force {}", i + 1) : s.name;
+    const std::string label = entry_label(s.name, "force", i);
     f.node = node(s.node, at("node"), "node");
 
     const auto kind = std::find(kinds.begin(), kinds.end(), s.kind);
@@ -855,7 +860,7 @@ void Builder::build_static_loads() {
     const StaticLoadSpec& s = spec_.static_loads[i];
     const std::string path = element("static_loads", i);
     StaticLoad load;
-    const std::string label = s.name.empty() ? fmt::format("static load {}", i + 1) : s.name;
+    const std::string label = entry_label(s.name, "static load", i);
     load.node = node(s.node, child(path, "node"), "node");
     check_bounds(s, path);
     load.load = {s.fx, s.fy, s.fz, s.mx, s.my, s.mz};

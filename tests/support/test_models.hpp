@@ -85,6 +85,25 @@ inline Model jeffcott(Real m, Real k, Real ca, Real ci) {
   return model;
 }
 
+// The run-up tests' Jeffcott rotor: a point mass of 9.1 kg on 1.6e5 N/m
+// (ω_n = 132.6 rad/s) with external damping c_a, rotating damping c_i, an unbalance
+// of @p unbalance kg at 50 mm and Coulomb friction of amplitude @p friction N between
+// rotor and shaft (regularised over a sliding speed ε_t = 1e-5 m/s), each when > 0.
+inline constexpr Real runup_mass = 9.1, runup_stiffness = 1.6e5;
+inline Model runup_jeffcott(Real ca, Real ci, Real unbalance = 0.0, Real friction = 0.0) {
+  Model model = jeffcott(runup_mass, runup_stiffness, ca, ci);
+  const Index n = 0;
+  if (unbalance > 0) model.forces.emplace_back(Unbalance{n, unbalance, 0.05, 0.0, 0.0}, "u");
+  if (friction > 0) {
+    CoulombFriction f;
+    f.node_a = n;
+    f.force_amplitude = friction;
+    f.epsilon_t = 1e-5;
+    model.forces.emplace_back(f);
+  }
+  return model;
+}
+
 // Friswell, Penny, Garvey & Lees (2010), Example 5.9.1: steel shaft 1.5 m, Ø 50 mm,
 // six Timoshenko elements; disks Ø 280 × 70 mm at 0.5 m and Ø 350 × 70 mm at 1.0 m
 // (bore = shaft diameter); isotropic bearings 1 MN/m at both ends. Axial and

@@ -14,21 +14,10 @@
 namespace feran {
 namespace {
 
-constexpr Real m = 9.1, k = 1.6e5;
+constexpr Real m = test::runup_mass, k = test::runup_stiffness;
 const Real wn = std::sqrt(k / m);  // 132.6 rad/s
 
-Model jeffcott(Real ca, Real ci, Real friction) {
-  Model model = test::jeffcott(m, k, ca, ci);
-  const Index n = 0;
-  {
-    CoulombFriction f;
-    f.node_a = n;
-    f.force_amplitude = friction;
-    f.epsilon_t = 1e-5;
-    model.forces.emplace_back(f);
-  }
-  return model;
-}
+Model jeffcott(Real ca, Real ci, Real friction) { return test::runup_jeffcott(ca, ci, 0.0, friction); }
 
 // Issue 12: the trapezoidal rule's Newton iteration accepted a step whose correction
 // was below an absolute 1e-10 m after one iteration with a stale friction Jacobian, so

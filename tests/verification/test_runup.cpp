@@ -15,21 +15,11 @@
 namespace feran {
 namespace {
 
-constexpr Real m = 9.1, k = 1.6e5;
+constexpr Real m = test::runup_mass, k = test::runup_stiffness;
 const Real wn = std::sqrt(k / m);  // 132.6 rad/s
 
 Model jeffcott(Real ca, Real ci, Real unbalance = 0.0, Real friction = 0.0) {
-  Model model = test::jeffcott(m, k, ca, ci);
-  const Index n = 0;
-  if (unbalance > 0) model.forces.emplace_back(Unbalance{n, unbalance, 0.05, 0.0, 0.0}, "u");
-  if (friction > 0) {
-    CoulombFriction f;
-    f.node_a = n;
-    f.force_amplitude = friction;
-    f.epsilon_t = 1e-5;
-    model.forces.emplace_back(f);
-  }
-  return model;
+  return test::runup_jeffcott(ca, ci, unbalance, friction);
 }
 
 // At constant speed the transient settles on the harmonic (steady-state) response:
