@@ -33,7 +33,7 @@ std::vector<std::string> valid_model_files() {
 
 TEST(ModelWriter, RoundTripOfEveryShippedAndValidModel) {
   const std::vector<std::string> files = valid_model_files();
-  ASSERT_GE(files.size(), 18u);  // 9 examples, 5 benchmark models, 4 valid fixtures
+  ASSERT_GE(files.size(), 21u);  // 9 examples, 6 benchmark models, 6 valid fixtures
   for (const std::string& path : files) {
     SCOPED_TRACE(path);
     const ModelFile file = read_model_file(path);
