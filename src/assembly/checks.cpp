@@ -171,6 +171,7 @@ std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assemble
 
 void check_model(const Model& model, const Assembler& assembler) {
   const DofMap& dofs = assembler.dof_map();
+  if (dofs.n_reduced() == 0) throw ModelStructureError(std::string(no_free_dof_message));
   const SystemMatrices sys = assembler.at(0.0);
   for (Index i = 0; i < sys.M.rows(); ++i) {
     if (sys.M.coeff(i, i) > 0.0) continue;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -412,10 +413,71 @@ std::vector<std::pair<Real, Real>> SpecReader::read_speed_table(const TableReade
   return points;
 }
 
+// Keys of more parts than this (dotted keys, table headers) are refused before the
+// TOML parser sees them: toml++ descends once per part, and tens of thousands of
+// parts on one line overflow its stack. A model file's deepest key has four.
+constexpr int max_key_parts = 64;
+
+// Throws ModelError at the first key (of a key–value pair or a table header) with
+// more than max_key_parts parts. A light scan: dots outside quoted strings in a
+// line's key part (before '=', or within a header's brackets); the contents of
+// multi-line strings are skipped.
+void check_key_depth(std::string_view text, const std::string& path) {
+  int line = 1;
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  std::string_view multiline;  // the delimiter of an open multi-line string
+  while (i < n) {
+    const std::size_t start = i;
+    std::size_t end = text.find('\n', i);
+    if (end == std::string_view::npos) end = n;
+    std::string_view l = text.substr(start, end - start);
+    if (!multiline.empty()) {
+      // Inside a multi-line string: look only for its end.
+      if (const std::size_t close = l.find(multiline); close != std::string_view::npos) multiline = {};
+    } else {
+      std::size_t k = l.find_first_not_of(" \t");
+      const bool header = k != std::string_view::npos && l[k] == '[';
+      int parts = 1;
+      char quote = 0;
+      for (; k != std::string_view::npos && k < l.size(); ++k) {
+        const char c = l[k];
+        if (quote != 0) {
+          if (c == '\\' && quote == '"') ++k;
+          else if (c == quote) quote = 0;
+          continue;
+        }
+        if (c == '"' || c == '\'') {
+          quote = c;
+        } else if (c == '.') {
+          if (++parts > max_key_parts)
+            throw ModelError(SourceLocation{path, line, static_cast<int>(k + 1)},
+                             fmt::format("nesting too deep: a key of more than {} parts (dotted keys or a table "
+                                         "header); a model file's keys have at most four",
+                                         max_key_parts));
+        } else if (c == '#' || (header && c == ']') || (!header && c == '=')) {
+          break;
+        }
+      }
+      // A multi-line string opened after the '=' of this line and not closed on it.
+      for (std::string_view delimiter : {std::string_view{"\"\"\""}, std::string_view{"\'\'\'"}}) {
+        const std::size_t open = l.find(delimiter);
+        if (open != std::string_view::npos && l.find(delimiter, open + 3) == std::string_view::npos) {
+          multiline = delimiter;
+          break;
+        }
+      }
+    }
+    i = end + 1;
+    ++line;
+  }
+}
+
 }  // namespace
 
 ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages,
                           SpecSource* source) {
+  check_key_depth(toml_text, path_for_messages);
   toml::table root;
   try {
     root = toml::parse(toml_text, std::string_view{path_for_messages});
@@ -467,6 +529,24 @@ ModelFile read_model_string(std::string_view toml_text, const std::string& path_
 }
 
 std::string read_text_file(const std::string& path) {
+  // Only a regular file of bounded size: a FIFO without a writer would block, a
+  // device such as /dev/zero never ends.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec) throw Error(fmt::format("cannot open model file '{}': {}", path, ec.message()));
+  if (fs::is_directory(status)) throw Error(fmt::format("'{}' is a directory, not a model file", path));
+  if (!fs::is_regular_file(status))
+    throw Error(fmt::format("'{}' is not a regular file ({}); a model is read from a regular file", path,
+                            fs::is_fifo(status)             ? "a FIFO"
+                            : fs::is_character_file(status) ? "a character device"
+                            : fs::is_block_file(status)     ? "a block device"
+                            : fs::is_socket(status)         ? "a socket"
+                                                            : "a special file"));
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > max_model_file_bytes)
+    throw Error(fmt::format("model file '{}' is {} bytes; model files are limited to {} bytes ({} MiB)", path,
+                            size, max_model_file_bytes, max_model_file_bytes >> 20));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(fmt::format("cannot open model file '{}'", path));
   std::ostringstream text;

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "json_text.hpp"
+
 #include <feran/core/error.hpp>
 
 namespace feran {
@@ -241,7 +243,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
     summary["largest_stress"] = js;
   }
   j["summary"] = summary;
-  return j.dump(2) + "\n";
+  return detail::json_text(j, 2);
 }
 
 std::string response_csv(const HarmonicResult& result, const Model& model) {
@@ -333,7 +335,7 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
   }
   j["stations"] = stations;
   j["total_load"] = components(result.total_load, all_dofs);
-  return j.dump(2) + "\n";
+  return detail::json_text(j, 2);
 }
 
 std::string static_csv(const StaticResult& result, const Model& model) {
@@ -396,7 +398,7 @@ std::string modal_json(const ModalResult& result, const Model& model, const Resu
     modes.push_back(jm);
   }
   j["modes"] = modes;
-  return j.dump(2) + "\n";
+  return detail::json_text(j, 2);
 }
 
 std::string modal_csv(const ModalResult& result) {
@@ -459,7 +461,7 @@ std::string campbell_json(const CampbellResult& result, const CampbellOptions& o
     j["stability_threshold_hz"] = nullptr;
     j["stability_threshold"] = nullptr;
   }
-  return j.dump(2) + "\n";
+  return detail::json_text(j, 2);
 }
 
 std::string campbell_csv(const CampbellResult& result) {
@@ -507,7 +509,7 @@ std::string parameters_json(const std::vector<Parameter>& parameters, const Resu
                     {"text", p.text()},
                     {"doc", p.doc}});
   out["parameters"] = std::move(list);
-  return out.dump(2) + "\n";
+  return detail::json_text(out, 2);
 }
 
 }  // namespace feran

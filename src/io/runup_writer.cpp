@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "json_text.hpp"
+
 #include <feran/core/error.hpp>
 
 namespace feran {
@@ -143,7 +145,7 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
     springs.push_back(js);
   }
   j["springs"] = springs;
-  return j.dump(1) + "\n";
+  return detail::json_text(j, 1);
 }
 
 }  // namespace feran

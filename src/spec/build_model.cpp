@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <unordered_map>
 #include <utility>
 
 #include <fmt/format.h>
@@ -134,6 +135,11 @@ class Builder {
   std::vector<Material> materials_;
   std::vector<std::string> node_paths_;       ///< per node: the table that defines it
   std::vector<std::string> node_name_paths_;  ///< per node: where its name (or it) is
+  // The nodes by number and by name (so that registering n nodes is linear in n),
+  // and the highest number so far.
+  std::unordered_map<int, std::size_t> node_by_number_;
+  std::unordered_map<std::string, std::size_t> node_by_name_;
+  int highest_number_ = 0;
   std::vector<std::string> unnamed_spring_labels_;
 };
 
@@ -374,15 +380,16 @@ void Builder::check_node_name(const std::string& name, const std::string& path) 
 }
 
 Index Builder::add_node(Node node, const std::string& defined_at, const std::string& name_at) {
-  for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
-    const Node& other = model_.nodes[i];
-    if (other.number == node.number)
-      fail(defined_at, fmt::format("node number {} is already used by the node defined at {}",
-                                   node.number, place(node_paths_[i])));
-    if (!node.name.empty() && other.name == node.name)
-      fail(name_at, fmt::format("node name '{}' is already used by node {}, defined at {}",
-                                node.name, other.number, place(node_name_paths_[i])));
-  }
+  if (const auto it = node_by_number_.find(node.number); it != node_by_number_.end())
+    fail(defined_at, fmt::format("node number {} is already used by the node defined at {}", node.number,
+                                 place(node_paths_[it->second])));
+  if (!node.name.empty())
+    if (const auto it = node_by_name_.find(node.name); it != node_by_name_.end())
+      fail(name_at, fmt::format("node name '{}' is already used by node {}, defined at {}", node.name,
+                                model_.nodes[it->second].number, place(node_name_paths_[it->second])));
+  node_by_number_.emplace(node.number, model_.nodes.size());
+  if (!node.name.empty()) node_by_name_.emplace(node.name, model_.nodes.size());
+  highest_number_ = std::max(highest_number_, node.number);
   node_paths_.push_back(defined_at);
   node_name_paths_.push_back(name_at);
   model_.nodes.push_back(std::move(node));
@@ -476,10 +483,14 @@ void Builder::build_nodes() {
     if (s.number) {
       node.number = static_cast<int>(*s.number);
     } else {
-      int highest = 0;
-      for (const Node& other : model_.nodes) highest = std::max(highest, other.number);
-      node.number = highest + 1;
-      while (claimed.count(node.number) != 0) ++node.number;
+      // The next number above every one so far that no entry claims.
+      std::int64_t next = std::int64_t{highest_number_} + 1;
+      while (claimed.count(next) != 0) ++next;
+      if (next > std::numeric_limits<int>::max())
+        fail(path, fmt::format("no node number is left for this node: the next free number, {}, is above the "
+                               "largest, {}; give it a 'number' below the others",
+                               next, std::numeric_limits<int>::max()));
+      node.number = static_cast<int>(next);
     }
     add_node(node, s.number ? child(path, "number") : path,
              s.name.empty() ? path : child(path, "name"));
@@ -491,11 +502,11 @@ void Builder::build_nodes() {
 Index Builder::node(const NodeRef& ref, const std::string& path, std::string_view key,
                     std::string_view special) const {
   if (const auto* number = std::get_if<std::int64_t>(&ref)) {
+    if (*number >= std::numeric_limits<int>::min() && *number <= std::numeric_limits<int>::max())
+      if (const auto it = node_by_number_.find(static_cast<int>(*number)); it != node_by_number_.end())
+        return static_cast<Index>(it->second);
     std::vector<int> numbers;
-    for (Index i = 0; i < model_.n_nodes(); ++i) {
-      if (model_.nodes[static_cast<std::size_t>(i)].number == *number) return i;
-      numbers.push_back(model_.nodes[static_cast<std::size_t>(i)].number);
-    }
+    for (const Node& n : model_.nodes) numbers.push_back(n.number);
     fail(path, fmt::format("node {} does not exist; the node numbers are {}", *number,
                            number_ranges(numbers)));
   }
@@ -504,8 +515,7 @@ Index Builder::node(const NodeRef& ref, const std::string& path, std::string_vie
     fail(path, fmt::format("'{}' cannot be \"{}\" here; expected {}a node number or a node name",
                            key, text,
                            special.empty() ? std::string{} : fmt::format("\"{}\", ", special)));
-  const Index found = model_.find_node(text);
-  if (found >= 0) return found;
+  if (const auto it = node_by_name_.find(text); it != node_by_name_.end()) return static_cast<Index>(it->second);
   std::vector<std::string> names;
   for (const Node& n : model_.nodes)
     if (!n.name.empty()) names.push_back(n.name);
@@ -1028,6 +1038,9 @@ void Builder::check_runup() const {
 void Builder::check_structure(BuildInfo* info) {
   try {
     auto built = std::make_shared<const Assembler>(model_);
+    // Located at the constraints that took the last DOF away.
+    if (built->dof_map().n_reduced() == 0)
+      fail(spec_.fixed.empty() ? std::string{} : element("fixed", 0), std::string(no_free_dof_message));
     check_model(model_, *built);
     if (info != nullptr) info->assembler = std::move(built);
   } catch (const ModelStructureError& e) {

@@ -4,6 +4,7 @@
 /// rigid-body motion.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <feran/assembly/assembler.hpp>
@@ -26,9 +27,15 @@ Matrix stiffness_null_space(const SparseMatrix& K, const SparseMatrix& M);
 /// The rigid-body motions of @p model at zero speed (may be empty).
 std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler);
 
-/// Throws ModelStructureError when the mass matrix is not positive definite (naming
-/// a node and DOF without mass) or when a rigid-body motion is free that
-/// model.free_motions does not allow (naming the motion).
+/// What check_model() says of a model whose constraints leave no DOF free.
+inline constexpr std::string_view no_free_dof_message =
+    "the model has no free degree of freedom: every DOF of every node is fixed or rigidly linked to a "
+    "fixed one, so nothing can move; free some DOFs in [[fixed]]";
+
+/// Throws ModelStructureError when no DOF is free (every one fixed or rigidly linked
+/// to a fixed one), when the mass matrix is not positive definite (naming a node and
+/// DOF without mass) or when a rigid-body motion is free that model.free_motions does
+/// not allow (naming the motion).
 void check_model(const Model& model, const Assembler& assembler);
 
 }  // namespace feran

@@ -3,6 +3,7 @@
 /// Reads a model file (TOML, format in docs/model-format.md) into a ModelSpec, and
 /// through build_model() into a Model.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,7 +44,13 @@ struct ModelFile {
 ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages,
                           SpecSource* source = nullptr);
 
-/// The bytes of the file at @p path; throws feran::Error when it cannot be read.
+/// The largest model file read_text_file() reads: 64 MiB (a mesh of a million
+/// elements is a few hundred bytes; a file this large is not a model).
+inline constexpr std::uintmax_t max_model_file_bytes = std::uintmax_t{64} << 20;
+
+/// The bytes of the file at @p path; throws feran::Error (saying why) when it does
+/// not exist, cannot be read, is not a regular file (a directory, FIFO, device or
+/// socket) or is larger than max_model_file_bytes.
 std::string read_text_file(const std::string& path);
 
 /// Reads and checks the model file at @p path.

@@ -13,6 +13,9 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+
+#include <sys/stat.h>
+#include <unistd.h>
 #include <ostream>
 #include <regex>
 #include <string>
@@ -244,6 +247,57 @@ TEST(ModelReaderErrors, MissingFileIsAnErrorButNotAModelError) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
+}
+
+// Only regular files are read: a directory, a FIFO without a writer (which blocked
+// forever) and a device such as /dev/zero (read until memory ran out) are refused
+// with a message saying what they are, and so is a file above the size limit.
+TEST(ModelReaderErrors, OnlyRegularFilesOfBoundedSize) {
+  const fs::path dir = fs::temp_directory_path() / ("feran_reader_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path fifo = dir / "model.toml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const fs::path big = dir / "big.toml";
+  { std::ofstream(big) << "title = \"x\"\n"; }
+  fs::resize_file(big, max_model_file_bytes + 1);  // sparse: no disk used
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {dir.string(), "is a directory, not a model file"},
+      {fifo.string(), "is not a regular file (a FIFO)"},
+      {"/dev/zero", "is not a regular file (a character device)"},
+      {big.string(), "model files are limited to 67108864 bytes (64 MiB)"}};
+  for (const auto& [path, expected] : cases) {
+    try {
+      (void)read_model_file(path);
+      ADD_FAILURE() << path << ": expected an error";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// Dotted keys and table headers of tens of thousands of parts overflowed the TOML
+// parser's stack (a crash without a message); more than 64 parts is refused at the
+// part where the limit is passed, before parsing.
+TEST(ModelReaderErrors, KeysNestedTooDeeplyAreRefusedBeforeParsing) {
+  std::string dotted, header = "title = \"t\"\n[";
+  for (int i = 0; i < 30000; ++i) dotted += "x.";
+  dotted += "x = 1\n";
+  for (int i = 0; i < 40000; ++i) header += "x.";
+  header += "x]\n";
+  for (const auto& [text, line] : {std::pair{dotted, 1}, std::pair{header, 2}}) {
+    try {
+      (void)read_model_spec(text, "deep.toml");
+      ADD_FAILURE() << "expected a ModelError";
+    } catch (const ModelError& e) {
+      EXPECT_EQ(e.where().line, line);
+      EXPECT_EQ(e.where().column, line == 1 ? 128 : 129);  // the 65th part's dot
+      EXPECT_NE(e.message().find("nesting too deep: a key of more than 64 parts"), std::string::npos) << e.message();
+    }
+  }
+  // Dots in values and quoted keys do not count.
+  std::string values = "title = \"a.b.c\"\n[options]\n";
+  EXPECT_NO_THROW((void)read_model_spec(values, "values.toml"));
 }
 
 TEST(ModelReaderErrors, StringInputIsNamedInMessages) {
