@@ -25,41 +25,42 @@ struct KindDef {
   std::string_view si_example;
   std::string_view unit_example;
   std::vector<UnitDef> units;     ///< SI unit first
+  PhysicalRange range;            ///< in SI
 };
 
 const std::vector<KindDef>& kinds() {
   static const std::vector<KindDef> table = {
       {Quantity::length, "a length", "length", "0.068", "68 mm",
-       {{"m"}, {"mm", 1.0, 1e3}, {"cm", 1.0, 1e2}, {"um", 1.0, 1e6}}},
-      {Quantity::mass, "a mass", "mass", "1.93", "1.93 kg", {{"kg"}, {"g", 1.0, 1e3}}},
+       {{"m"}, {"mm", 1.0, 1e3}, {"cm", 1.0, 1e2}, {"um", 1.0, 1e6}}, {1e4, 1e-9}},
+      {Quantity::mass, "a mass", "mass", "1.93", "1.93 kg", {{"kg"}, {"g", 1.0, 1e3}}, {1e9, 1e-12}},
       {Quantity::inertia, "a moment of inertia", "moment of inertia", "0.0063",
-       "6300 kg*mm^2", {{"kg*m^2"}, {"kg*mm^2", 1.0, 1e6}}},
+       "6300 kg*mm^2", {{"kg*m^2"}, {"kg*mm^2", 1.0, 1e6}}, {1e12, 1e-18}},
       {Quantity::pressure, "a pressure", "pressure", "2.1e11", "210 GPa",
-       {{"Pa"}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}, {"N/mm^2", 1e6}}},
+       {{"Pa"}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}, {"N/mm^2", 1e6}}, {1e13, 1e-3}},
       {Quantity::density, "a density", "density", "7850", "7.85 g/cm^3",
-       {{"kg/m^3"}, {"g/cm^3", 1e3}}},
+       {{"kg/m^3"}, {"g/cm^3", 1e3}}, {1e6, 1e-3}},
       {Quantity::stiffness, "a stiffness", "stiffness", "6e7", "6e7 N/m",
-       {{"N/m"}, {"kN/m", 1e3}, {"MN/m", 1e6}, {"N/mm", 1e3}, {"kN/mm", 1e6}}},
+       {{"N/m"}, {"kN/m", 1e3}, {"MN/m", 1e6}, {"N/mm", 1e3}, {"kN/mm", 1e6}}, {1e15, 1e-12}},
       {Quantity::rotational_stiffness, "a rotational stiffness", "rotational stiffness", "180",
-       "180 N*m/rad", {{"N*m/rad"}, {"Nm/rad"}, {"N*m"}}},
+       "180 N*m/rad", {{"N*m/rad"}, {"Nm/rad"}, {"N*m"}}, {1e15, 1e-12}},
       {Quantity::damping, "a damping coefficient", "damping", "75", "75 N*s/m",
-       {{"N*s/m"}, {"Ns/m"}, {"kN*s/m", 1e3}}},
+       {{"N*s/m"}, {"Ns/m"}, {"kN*s/m", 1e3}}, {1e12, 1e-12}},
       {Quantity::rotational_damping, "a rotational damping coefficient", "rotational damping",
-       "0.06", "0.06 N*m*s/rad", {{"N*m*s/rad"}, {"Nms/rad"}, {"N*m*s"}, {"Nms"}}},
+       "0.06", "0.06 N*m*s/rad", {{"N*m*s/rad"}, {"Nms/rad"}, {"N*m*s"}, {"Nms"}}, {1e12, 1e-12}},
       {Quantity::speed, "a speed", "speed", "188.5", "30 Hz",
-       {{"rad/s"}, {"Hz", 2.0 * pi}, {"rpm", 2.0 * pi, 60.0}}},
-      {Quantity::frequency, "a frequency", "frequency", "3.98", "3.98 Hz", {{"Hz"}}},
-      {Quantity::angle, "an angle", "angle", "0.5236", "30 deg", {{"rad"}, {"deg", pi, 180.0}}},
-      {Quantity::force, "a force", "force", "5.2", "5.2 N", {{"N"}, {"kN", 1e3}}},
-      {Quantity::moment, "a moment", "moment", "0.1", "0.1 N*m", {{"N*m"}, {"Nm"}}},
-      {Quantity::time, "a time", "time", "0.001", "1 ms", {{"s"}, {"ms", 1.0, 1e3}}},
+       {{"rad/s"}, {"Hz", 2.0 * pi}, {"rpm", 2.0 * pi, 60.0}}, {1e6, 1e-9}},
+      {Quantity::frequency, "a frequency", "frequency", "3.98", "3.98 Hz", {{"Hz"}}, {1e6, 1e-9}},
+      {Quantity::angle, "an angle", "angle", "0.5236", "30 deg", {{"rad"}, {"deg", pi, 180.0}}, {1e4, 0.0}},
+      {Quantity::force, "a force", "force", "5.2", "5.2 N", {{"N"}, {"kN", 1e3}}, {1e12, 1e-12}},
+      {Quantity::moment, "a moment", "moment", "0.1", "0.1 N*m", {{"N*m"}, {"Nm"}}, {1e12, 1e-12}},
+      {Quantity::time, "a time", "time", "0.001", "1 ms", {{"s"}, {"ms", 1.0, 1e3}}, {1e8, 1e-12}},
       {Quantity::velocity, "a velocity", "velocity", "1e-4", "0.1 mm/s",
-       {{"m/s"}, {"mm/s", 1.0, 1e3}}},
+       {{"m/s"}, {"mm/s", 1.0, 1e3}}, {1e4, 1e-15}},
       {Quantity::angular_velocity, "an angular velocity", "angular velocity", "0.001",
-       "0.001 rad/s", {{"rad/s"}}},
-      {Quantity::inverse_time, "a rate", "rate", "0.5", "0.5 1/s", {{"1/s"}}},
+       "0.001 rad/s", {{"rad/s"}}, {1e6, 1e-15}},
+      {Quantity::inverse_time, "a rate", "rate", "0.5", "0.5 1/s", {{"1/s"}}, {1e9, 1e-15}},
       {Quantity::acceleration, "an acceleration", "acceleration", "9.81", "9.81 m/s^2",
-       {{"m/s^2"}, {"mm/s^2", 1.0, 1e3}}},
+       {{"m/s^2"}, {"mm/s^2", 1.0, 1e3}}, {1e7, 1e-9}},
   };
   return table;
 }
@@ -90,6 +91,8 @@ bool iequal(std::string_view a, std::string_view b) {
 }  // namespace
 
 std::string_view quantity_name(Quantity kind) { return kind_def(kind).article_name; }
+
+PhysicalRange physical_range(Quantity kind) { return kind_def(kind).range; }
 
 std::string_view si_unit(Quantity kind) { return kind_def(kind).units.front().name; }
 

@@ -92,6 +92,10 @@ class Builder {
 
   template <class S>
   void check_bounds(const S& entry, const std::string& path) const;
+  // A quantity's magnitude within physical_range() (and at least its smallest
+  // positive value where it must be positive).
+  void check_range(Real v, const std::string& at, std::string_view key, Quantity quantity, std::string_view unit,
+                   bool positive) const;
   void check_coefficient(const SpeedCoefficient& c, const std::string& path,
                          std::string_view key, Quantity kind, bool direct) const;
   void check_choice(const std::string& value, const std::string& path, std::string_view key,
@@ -168,6 +172,18 @@ bool Builder::earlier(const std::string& a, const std::string& b) const {
 // ---------------------------------------------------------------------------------
 // Bounds declared in the field tables
 
+void Builder::check_range(Real v, const std::string& at, std::string_view key, Quantity quantity,
+                          std::string_view unit, bool positive) const {
+  const PhysicalRange range = physical_range(quantity);
+  const auto limit = [&](Real si) { return fmt::format("{:g} {}", si, si_unit(quantity)); };
+  if (std::abs(v) > range.largest)
+    fail(at, fmt::format("'{}' is {}, beyond the physical range of {} (at most {} in magnitude)", key,
+                         shown(at, v, quantity, unit), quantity_name(quantity), limit(range.largest)));
+  if (positive && v < range.smallest_positive)
+    fail(at, fmt::format("'{}' is {}, below the physical range of {} (at least {})", key,
+                         shown(at, v, quantity, unit), quantity_name(quantity), limit(range.smallest_positive)));
+}
+
 template <class S>
 void Builder::check_bounds(const S& entry, const std::string& path) const {
   using Kind = Bound::Kind;
@@ -183,6 +199,8 @@ void Builder::check_bounds(const S& entry, const std::string& path) const {
         fail(at, fmt::format("'{}' must be positive, got {}", f.key, text()));
       if (f.bound.kind == Kind::non_negative && !(v >= 0.0))
         fail(at, fmt::format("'{}' must not be negative, got {}", f.key, text()));
+      if (f.kind == spec::FieldKind::quantity)
+        check_range(v, at, f.key, f.quantity, f.unit, f.bound.kind == Kind::positive);
     };
     const auto check_integer = [&](std::int64_t v, const std::string& where, std::string_view name) {
       if (f.bound.kind != Kind::at_least) return;
@@ -226,9 +244,11 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
     if (direct && v < 0.0)
       fail(at, fmt::format("'{}' must not be negative, got {}{}", name, shown(at, v, kind),
                            in_law ? note : ""));
+    check_range(v, at, name, kind, {}, false);
   };
   const auto speed = [&](Real v, const std::string& at, std::string_view name) {
     if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", name, v));
+    check_range(v, at, name, Quantity::speed, "Hz", false);
   };
   std::visit(
       [&](const auto& law) {
@@ -260,7 +280,8 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
           value(law.value, child(path, "value"), "value", true);
           for (const auto& [name, v] : {std::pair{"f_as", law.f_as}, std::pair{"c0", law.c0},
                                         std::pair{"c1", law.c1}, std::pair{"c2", law.c2}})
-            speed(v, child(path, name), name);
+            if (!std::isfinite(v)) fail(child(path, name), fmt::format("'{}' must be a finite number, got {}", name, v));
+          check_range(law.f_as, child(path, "f_as"), "f_as", Quantity::frequency, {}, false);  // in Hz
           // s(f) runs between c0 − |c1|/2 and c0 + |c1|/2; a direct coefficient stays ≥ 0.
           if (direct && law.c0 < 0.5 * std::abs(law.c1))
             fail(given(child(path, "c0")) || source_ == nullptr ? child(path, "c0")

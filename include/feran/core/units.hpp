@@ -44,6 +44,17 @@ enum class Quantity {
   inverse_time,          ///< 1/s (a rate: the mass-proportional damping α)
 };
 
+/// The magnitudes of a kind that any rotor model can hold, in SI: beyond `largest`
+/// (a 10 km shaft, a 10¹³ Pa modulus, 10⁶ rad/s) a value is a mistake or an attack
+/// on the numerics, not a design; a value that must be positive is at least
+/// `smallest_positive` (a 1 nm section, a 1 ps step). Generous by orders of
+/// magnitude on both sides of real machines.
+struct PhysicalRange {
+  Real largest = 0;
+  Real smallest_positive = 0;
+};
+PhysicalRange physical_range(Quantity kind);
+
 /// Name of the kind with its article, for messages: "a length", "an angle".
 std::string_view quantity_name(Quantity kind);
 /// The unit a bare number of this kind is in: "m", "rad/s", "Hz" (frequency).
