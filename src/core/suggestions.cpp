@@ -32,6 +32,33 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+std::size_t edit_distance_at_most(std::string_view a, std::string_view b, std::size_t limit) {
+  if (a.size() > b.size()) std::swap(a, b);
+  // The distance is at least the difference in length.
+  if (b.size() - a.size() > limit) return limit + 1;
+  // Ukkonen's band: only cells with |i − j| ≤ limit can hold a distance ≤ limit;
+  // the others count as limit + 1. One row at a time, O(limit·|b|).
+  const std::size_t over = limit + 1;
+  std::vector<std::size_t> row(b.size() + 1, over);
+  for (std::size_t j = 0; j <= std::min(b.size(), limit); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    const std::size_t lo = i > limit ? i - limit : 1, hi = std::min(b.size(), i + limit);
+    std::size_t diagonal = row[lo - 1];
+    row[lo - 1] = lo == 1 && i <= limit ? i : over;
+    std::size_t best = row[lo - 1];
+    for (std::size_t j = lo; j <= hi; ++j) {
+      const std::size_t above = row[j];
+      const std::size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      row[j] = std::min({above + 1, row[j - 1] + 1, substitution, over});
+      diagonal = above;
+      best = std::min(best, row[j]);
+    }
+    if (hi < b.size()) row[hi + 1] = over;
+    if (best > limit) return over;  // every path is already too long
+  }
+  return std::min(row[b.size()], over);
+}
+
 std::optional<std::string> closest_match(std::string_view word,
                                          const std::vector<std::string>& candidates,
                                          std::size_t max_distance) {
@@ -43,7 +70,8 @@ std::optional<std::string> closest_match(std::string_view word,
   std::optional<std::string> best;
   std::size_t best_distance = max_distance + 1;
   for (const std::string& c : candidates) {
-    const std::size_t d = edit_distance(word, c);
+    // Linear in the names' length: a 100 kB name is compared in a band, not a table.
+    const std::size_t d = edit_distance_at_most(word, c, best_distance - 1);
     if (d < best_distance) {
       best_distance = d;
       best = c;

@@ -16,6 +16,11 @@ inline constexpr std::size_t node_name_distance = 2;
 /// Levenshtein distance (insertions, deletions, substitutions) between @p a and @p b.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
+/// edit_distance(a, b) when it is at most @p limit, else limit + 1; in time
+/// O(limit·max(|a|, |b|)) (a diagonal band of the table), so that long names cost
+/// little.
+std::size_t edit_distance_at_most(std::string_view a, std::string_view b, std::size_t limit);
+
 /// The candidate @p word was most likely meant to be: a case-insensitive match if
 /// there is one, else the candidate at the smallest edit distance when that distance
 /// is at most @p max_distance (the first such candidate on ties); std::nullopt
