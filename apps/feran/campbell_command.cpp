@@ -45,10 +45,10 @@ Runner add_campbell_command(CLI::App& app) {
   cmd->add_option("-p,--points", args->points, "Number of evenly spaced speeds (>= 2)")
       ->check(CLI::Range(2, 1000000));
   cmd->add_option("-n,--modes", args->modes, "Number of modes to track (the lowest at the first speed)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("-k,--orders", args->orders, "Harmonic orders k of the excitation lines f = k x speed, e.g. 1,2")
       ->delimiter(',')
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--solver", args->solver, "Eigen solver: auto, dense or sparse (see 'feran modal --help')")
       ->check(CLI::IsMember({"auto", "dense", "sparse"}));
   add_threads_option(*cmd, args->threads);

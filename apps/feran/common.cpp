@@ -1,6 +1,9 @@
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
+#include <exception>
+#include <string>
 
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
@@ -60,7 +63,38 @@ void write_if_asked(const std::string& path, const std::function<std::string()>&
 
 void add_threads_option(CLI::App& cmd, int& threads) {
   cmd.add_option("--threads", threads, "Threads for the sweep's points (default 0: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
+}
+
+namespace {
+
+// A check that the option's text is a finite number satisfying @p ok.
+CLI::Validator number_check(const char* requirement, bool (*ok)(double)) {
+  return CLI::Validator(
+      [requirement, ok](std::string& text) -> std::string {
+        double v = 0.0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != text.size() || !std::isfinite(v))
+          return fmt::format("'{}' is not a finite number", text);
+        if (!ok(v)) return fmt::format("must be {}, got {}", requirement, text);
+        return {};
+      },
+      requirement);
+}
+
+}  // namespace
+
+CLI::Validator positive_number() {
+  return number_check("positive", [](double v) { return v > 0.0; });
+}
+
+CLI::Validator non_negative_number() {
+  return number_check("non-negative", [](double v) { return v >= 0.0; });
 }
 
 }  // namespace feran::app

@@ -42,7 +42,7 @@ Runner add_modal_command(CLI::App& app) {
   add_model_argument(*cmd, args->model);
   cmd->add_option("-s,--speed", args->speed, "Rotor speed with unit: 30Hz, 1800rpm or 188.5rad/s");
   cmd->add_option("-n,--modes", args->modes, "Number of modes (lowest first); default: all (dense) or 12 (sparse)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--solver", args->solver,
                   "Eigen solver: auto (dense for all modes up to 400 DOF; with --modes, for each decoupled block "
                   "the one a cost model expects to be faster), dense (LAPACK QR) or sparse (lowest modes, "

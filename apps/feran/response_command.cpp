@@ -110,7 +110,7 @@ Runner add_response_command(CLI::App& app) {
                   "(fixed), rotating or rotating_moment (turning with the shaft), e.g. rotor:y:10N:90deg")
       ->take_all();
   cmd->add_option("--loss-factor", args->loss_factor, "Global hysteretic loss factor eta: adds j*eta*K")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_flag("--no-unbalance", args->no_unbalance, "Leave the model's unbalances out");
   cmd->add_option("--stations", args->stations,
                   "Section forces and stresses at the shaft stations: all (every station at every point), "

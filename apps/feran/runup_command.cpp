@@ -92,25 +92,25 @@ Runner add_runup_command(CLI::App& app) {
   cmd->add_option("-i,--integrator", args->integrator, "trapezoidal (default), rk3, wolfbrandt or ros34pw2")
       ->check(CLI::IsMember(integrator_names()));
   cmd->add_option("--dt", args->dt, "Time step (fixed-step methods) or first step (ros34pw2), e.g. 1e-4s");
-  cmd->add_option("--rtol", args->rtol, "ros34pw2: relative tolerance (default 1e-5)")->check(CLI::PositiveNumber);
-  cmd->add_option("--atol", args->atol, "ros34pw2: absolute tolerance (default 1e-8)")->check(CLI::PositiveNumber);
+  cmd->add_option("--rtol", args->rtol, "ros34pw2: relative tolerance (default 1e-5)")->check(positive_number());
+  cmd->add_option("--atol", args->atol, "ros34pw2: absolute tolerance (default 1e-8)")->check(positive_number());
   cmd->add_option("--output-interval", args->output_interval, "Time between recorded samples (default 1ms)");
   cmd->add_option("--probe", args->probes, "Node to record (name or number); repeat for several")->take_all();
   cmd->add_option("--spring", args->springs, "Spring-damper (by name) whose force is recorded; repeat")->take_all();
   cmd->add_option("--newton-tol", args->newton_tol, "trapezoidal: Newton tolerance (default 1e-10)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--newton-max-iter", args->newton_max_iter, "trapezoidal: Newton iteration limit (default 25)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--allow-unstable", args->allow_unstable, "rk3: warn instead of refusing a step above the stability limit");
   cmd->add_option("--jacobian", args->jacobian, "W-methods: exact (with friction tangents) or linear")
       ->check(CLI::IsMember({"exact", "linear"}));
   cmd->add_option("--jacobian-interval", args->jacobian_interval, "W-methods: refresh the Jacobian every N steps (default 10)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--blowup", args->blowup, "Stop when a displacement exceeds this length (default 1m)");
   cmd->add_option("--modes", args->modes,
                   "Integrate in a basis of the N lowest undamped modes (at 5 speeds of the run) instead of the "
                   "full model; lets rk3 take long steps (default: [runup] modes, else the full model)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--static-loads", args->static_loads, "Apply the model's [[static_loads]] as constant forces");
   add_output_options(*cmd, args->out);
 
