@@ -84,6 +84,14 @@ int main(int argc, char** argv) {
   runners["static"] = feran::app::add_static_command(app);
   runners["runup"] = feran::app::add_runup_command(app);
   runners["params"] = feran::app::add_params_command(app);
+  // An option given an empty value ('--json ""', '--speed ""') is an error, not the
+  // option left out.
+  const CLI::Validator non_empty(
+      [](std::string& text) { return text.empty() ? std::string("needs a value, got an empty string") : std::string(); },
+      "");
+  for (CLI::App* sub : app.get_subcommands({}))
+    for (CLI::Option* option : sub->get_options())
+      if (option->get_type_size() > 0 && option->get_expected_min() > 0) option->check(non_empty);
 
   try {
     app.parse(argc, argv);
