@@ -418,10 +418,11 @@ std::vector<std::pair<Real, Real>> SpecReader::read_speed_table(const TableReade
 // parts on one line overflow its stack. A model file's deepest key has four.
 constexpr int max_key_parts = 64;
 
-// Throws ModelError at the first key (of a key–value pair or a table header) with
-// more than max_key_parts parts. A light scan: dots outside quoted strings in a
-// line's key part (before '=', or within a header's brackets); the contents of
-// multi-line strings are skipped.
+// Throws ModelError at the first key (of a key–value pair, a table header or an
+// inline table) with more than max_key_parts parts. A light scan: outside quoted
+// strings, the dots between two separators (= , { } [ ] and line ends) — a dotted
+// key has one per part, a number at most one; the contents of multi-line strings are
+// skipped.
 void check_key_depth(std::string_view text, const std::string& path) {
   int line = 1;
   std::size_t i = 0;
@@ -436,11 +437,9 @@ void check_key_depth(std::string_view text, const std::string& path) {
       // Inside a multi-line string: look only for its end.
       if (const std::size_t close = l.find(multiline); close != std::string_view::npos) multiline = {};
     } else {
-      std::size_t k = l.find_first_not_of(" \t");
-      const bool header = k != std::string_view::npos && l[k] == '[';
       int parts = 1;
       char quote = 0;
-      for (; k != std::string_view::npos && k < l.size(); ++k) {
+      for (std::size_t k = 0; k < l.size(); ++k) {
         const char c = l[k];
         if (quote != 0) {
           if (c == '\\' && quote == '"') ++k;
@@ -455,8 +454,10 @@ void check_key_depth(std::string_view text, const std::string& path) {
                              fmt::format("nesting too deep: a key of more than {} parts (dotted keys or a table "
                                          "header); a model file's keys have at most four",
                                          max_key_parts));
-        } else if (c == '#' || (header && c == ']') || (!header && c == '=')) {
+        } else if (c == '#') {
           break;
+        } else if (c == '=' || c == ',' || c == '{' || c == '}' || c == '[' || c == ']') {
+          parts = 1;
         }
       }
       // A multi-line string opened after the '=' of this line and not closed on it.

@@ -280,23 +280,33 @@ TEST(ModelReaderErrors, OnlyRegularFilesOfBoundedSize) {
 // parser's stack (a crash without a message); more than 64 parts is refused at the
 // part where the limit is passed, before parsing.
 TEST(ModelReaderErrors, KeysNestedTooDeeplyAreRefusedBeforeParsing) {
-  std::string dotted, header = "title = \"t\"\n[";
+  std::string dotted, header = "title = \"t\"\n[", inline_table = "\n\nx = { ";
   for (int i = 0; i < 30000; ++i) dotted += "x.";
   dotted += "x = 1\n";
   for (int i = 0; i < 40000; ++i) header += "x.";
   header += "x]\n";
-  for (const auto& [text, line] : {std::pair{dotted, 1}, std::pair{header, 2}}) {
+  for (int i = 0; i < 30000; ++i) inline_table += "x.";
+  inline_table += "x = 1 }\n";
+  for (const auto& [text, line] : {std::pair{dotted, 1}, std::pair{header, 2}, std::pair{inline_table, 3}}) {
     try {
       (void)read_model_spec(text, "deep.toml");
       ADD_FAILURE() << "expected a ModelError";
     } catch (const ModelError& e) {
       EXPECT_EQ(e.where().line, line);
-      EXPECT_EQ(e.where().column, line == 1 ? 128 : 129);  // the 65th part's dot
+      EXPECT_EQ(e.where().column, line == 1 ? 128 : line == 2 ? 129 : 134);  // the 65th part's dot
       EXPECT_NE(e.message().find("nesting too deep: a key of more than 64 parts"), std::string::npos) << e.message();
     }
   }
-  // Dots in values and quoted keys do not count.
+  // Dots in values and quoted keys do not count, nor numbers in a long array.
   std::string values = "title = \"a.b.c\"\n[options]\n";
+  std::string numbers = "[runup]\ntable = [";
+  for (int i = 0; i < 200; ++i) numbers += "[0.5, 1.5], ";
+  numbers += "[2.5, 3.5]]\n";
+  try {
+    (void)read_model_spec(numbers, "numbers.toml");
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.message().find("nesting too deep"), std::string::npos) << e.message();
+  }
   EXPECT_NO_THROW((void)read_model_spec(values, "values.toml"));
 }
 
