@@ -48,6 +48,15 @@ void zunmhr_(const char* side, const char* trans, const int* m, const int* n, co
              std::complex<double>* c, const int* ldc, std::complex<double>* work, const int* lwork, int* info);
 void zgebak_(const char* job, const char* side, const int* n, const int* ilo, const int* ihi,
              const double* scale, const int* m, std::complex<double>* v, const int* ldv, int* info);
+
+// LAPACK's error handler, called with the routine's name and the position of an
+// illegal argument before the routine returns info < 0. OpenBLAS's (a weak symbol,
+// meant to be replaced) prints "** On entry to … had an illegal value" on standard
+// output, the reference one stops the program: feran's library neither prints nor
+// exits, and every caller checks info and reports the failure itself. Defined here,
+// in the object that calls LAPACK, so that every program linking the dense solvers
+// links this handler too.
+void xerbla_(const char* /*name*/, const int* /*info*/, std::size_t /*name_length*/) {}
 }
 
 namespace feran::detail {
