@@ -146,6 +146,7 @@ class DynamicStiffness {
 // One point of a sweep, computed independently of the others.
 struct PointResult {
   bool solved = false;
+  bool finite = true;  // false: the solve gave non-finite amplitudes
   std::vector<NodeAmplitudes> probes, springs, reactions;
   std::vector<SectionForces> forces;  // every station (StationOutput::all)
   std::vector<SectionStress> stress;
@@ -261,6 +262,10 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       q_full = T * ComplexVector(ws.lu.solve(f_reduced));
     }
     out.solved = true;
+    if (!q_full.allFinite()) {
+      out.finite = false;
+      return;
+    }
 
     for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));
     for (const Index e : springs) {
@@ -336,6 +341,13 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
           "the dynamic stiffness is singular at {:.6g} Hz (an undamped resonance on the grid); "
           "add damping or move the grid",
           rad_to_hz(result.frequency_sweep ? omega : speed));
+      break;
+    }
+    if (!pt.finite) {
+      result.info.fail(SolverStatus::numerical_failure,
+                       fmt::format("the response is not finite at {:.6g} Hz (the dynamic stiffness is too badly "
+                                   "conditioned for the loads); the results stop before it",
+                                   rad_to_hz(result.frequency_sweep ? omega : speed)));
       break;
     }
     result.speeds.push_back(speed);

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include <Eigen/Eigenvalues>
+#include <fmt/format.h>
 
 #include <feran/analyses/modal/whirl.hpp>
 
@@ -425,6 +426,13 @@ ModalResult ModalSolver::solve(Real speed) const {
 
   ModalResult result;
   result.speed = speed;
+  if (!sys.M.coeffs().allFinite() || !D.coeffs().allFinite() || !K.coeffs().allFinite()) {
+    result.info.fail(SolverStatus::numerical_failure,
+                     fmt::format("the matrices at {:.6g} Hz hold non-finite values (overflow: check the model's "
+                                 "magnitudes)",
+                                 rad_to_hz(speed)));
+    return result;
+  }
   const Choice choice = this->choice();
   const Index wanted = options_.n_modes > 0 ? options_.n_modes : choice != Choice::dense ? 12 : 0;
   // Automatic shift: just below zero, so that rigid-body modes (p = 0) do not make
@@ -562,6 +570,14 @@ ModalResult ModalSolver::solve(Real speed) const {
     for (Index i = 0; i < nb; ++i) pairs.vectors.row(dofs[static_cast<std::size_t>(i)]).tail(m) = part.vectors.row(i);
   }
   result.info = pairs.info;
+  if (!pairs.values.allFinite() || !pairs.vectors.allFinite()) {
+    // Overflow in the matrices or the solve: no mode is to be trusted.
+    result.info.fail(SolverStatus::numerical_failure,
+                     fmt::format("the eigen solve at {:.6g} Hz gave non-finite values (overflow: check the "
+                                 "model's magnitudes)",
+                                 rad_to_hz(speed)));
+    return result;
+  }
   result.complex_form = any_complex;
   split_repeated(pairs.values, pairs.vectors, assembler_->dof_map());
 

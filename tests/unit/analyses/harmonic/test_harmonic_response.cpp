@@ -128,3 +128,25 @@ TEST(HarmonicResponse, ASweepFromRestWithFreeMotions) {
 
 }  // namespace
 }  // namespace feran
+
+namespace feran {
+namespace {
+
+// A model built in code escapes the builder's physical ranges: an unbalance of
+// 1e300 kg·m overflows the load at speed. The non-finite response is a numerical
+// failure with a plain message, and the points before it are kept.
+TEST(HarmonicResponse, NonFiniteResponseIsANumericalFailure) {
+  Model model = test::jeffcott(10.0, 1e6, 100.0, 0.0);
+  model.forces.emplace_back(Unbalance{0, 1e300, 1.0, 0.0, 0.0}, "huge");
+  HarmonicOptions opt;
+  opt.speeds = {0.0, 1e-160, 1e10};  // the load m·e·Ω² is 0, 1e-20 N and then infinite
+  opt.probes = {0};
+  const HarmonicResult r = run_harmonic_response(model, opt);
+  EXPECT_EQ(r.info.status, SolverStatus::numerical_failure);
+  EXPECT_NE(r.info.message.find("the response is not finite at"), std::string::npos) << r.info.message;
+  ASSERT_EQ(r.speeds.size(), 2u);
+  EXPECT_TRUE(std::isfinite(r.probes[0].orbit[1].major));
+}
+
+}  // namespace
+}  // namespace feran

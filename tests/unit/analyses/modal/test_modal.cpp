@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
@@ -433,6 +434,24 @@ TEST(Modal, EachFreeMotionIsOneRigidBodyMode) {
     EXPECT_EQ(axial, 1) << speed;
     EXPECT_EQ(torsional, 1) << speed;
   }
+}
+
+}  // namespace
+}  // namespace feran
+
+namespace feran {
+namespace {
+
+// A model built in code skips the builder's checks: with an infinite stiffness the
+// eigen solve gives non-finite values, which are a numerical failure with a plain
+// message, not modes with NaN frequencies reported as a success. (Large finite
+// magnitudes, 1e300 N/m on 1e-300 kg, the solvers handle: ω = 1e300 rad/s.)
+TEST(ModalSolver, NonFiniteEigenvaluesAreANumericalFailure) {
+  const Model model = test::jeffcott(1.0, std::numeric_limits<Real>::infinity(), 0.0, 0.0);
+  ModalResult r;
+  ASSERT_NO_THROW(r = run_modal(model, 0.0));
+  EXPECT_EQ(r.info.status, SolverStatus::numerical_failure) << r.info.message;
+  EXPECT_TRUE(r.modes.empty());
 }
 
 }  // namespace
