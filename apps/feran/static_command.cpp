@@ -52,6 +52,11 @@ Runner add_static_command(CLI::App& app) {
     request.loads = !args->no_loads;
     const StaticOptions options = static_settings(file.spec.static_, request);
     const StaticResult result = run_static(file.model, options);
+    if (!result.info.converged()) {
+      // One solve: nothing was computed before the failure, so nothing is written.
+      std::fprintf(stderr, "feran: error: %s\n", result.info.message.c_str());
+      return static_cast<int>(numerical_failure);
+    }
     const ResultSource source{file.path, file.title,
                               speed_range_warnings(file.model, options.speed, options.speed)};
     write_if_asked(args->out.json_path, static_json(result, options, file.model, source));

@@ -122,3 +122,24 @@ TEST(StaticAnalysis, FreeMotionsAllowedOnlyWhenTheLoadLeavesThemAlone) {
 
 }  // namespace
 }  // namespace feran
+
+namespace feran {
+namespace {
+
+// A model built in code skips the builder's ranges: a load of 1e308 N on a soft
+// spring gives displacements that overflow. That is a numerical failure with a
+// plain message, not infinite displacements reported as a success.
+TEST(Static, NonFiniteDisplacementsAreANumericalFailure) {
+  Model model = test::jeffcott(1.0, 1e-300, 0.0, 0.0);
+  StaticLoad load;
+  load.node = 0;
+  load.load[static_cast<std::size_t>(Dof::v)] = 1e308;
+  model.forces.emplace_back(load, "huge");
+  const StaticOptions options;  // no gravity
+  const StaticResult r = run_static(model, options);
+  EXPECT_EQ(r.info.status, SolverStatus::numerical_failure);
+  EXPECT_NE(r.info.message.find("the displacements are not finite"), std::string::npos) << r.info.message;
+}
+
+}  // namespace
+}  // namespace feran

@@ -84,6 +84,14 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
     }
   }
   result.q = T * q;
+  if (!result.q.allFinite()) {
+    // Overflow (a model built in code, past the builder's physical ranges): nothing
+    // derived from the displacements can be trusted.
+    result.info.fail(SolverStatus::numerical_failure,
+                     "static analysis: the displacements are not finite (the stiffness is too badly conditioned "
+                     "for the loads)");
+    return result;
+  }
 
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const std::optional<Transmission> link = model.elements[e].transmission(options.speed);
