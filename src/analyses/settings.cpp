@@ -269,6 +269,18 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
   options.output_interval = positive_time(
       request.output_interval.value_or(file.output_interval.value_or(defaults::output_interval)),
       "the output interval");
+  const Real samples = options.duration / options.output_interval;
+  if (samples > defaults::max_runup_samples)
+    throw Error(fmt::format("runup: a duration of {:g} s sampled every {:g} s is {:.3g} samples; at most {:g} are "
+                            "recorded (a longer output interval or a shorter duration)",
+                            options.duration, options.output_interval, samples, defaults::max_runup_samples));
+  const Real steps = options.duration / s.dt;
+  const auto known = integrator_names();
+  if (std::find(known.begin(), known.end(), options.integrator) != known.end() && steps > defaults::max_runup_steps &&
+      !make_integrator(options.integrator, s)->adaptive())
+    throw Error(fmt::format("runup: a duration of {:g} s at a step of {:g} s is {:.3g} steps; at most {:g} are "
+                            "taken (a longer step or a shorter duration)",
+                            options.duration, s.dt, steps, defaults::max_runup_steps));
   if (request.blowup_limit) {
     if (!(*request.blowup_limit > 0)) throw Error("--blowup must be positive");
     options.blowup_limit = *request.blowup_limit;

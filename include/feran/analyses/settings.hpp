@@ -38,6 +38,11 @@ inline constexpr int frequency_points = 201;
 inline constexpr Real gravity = 9.81;          ///< [m/s²], pulling along −y
 inline constexpr Real runup_dt = 1e-4;         ///< [s]
 inline constexpr Real output_interval = 1e-3;  ///< [s]
+/// The most steps a fixed-step run-up takes (duration / dt), and the most samples it
+/// records (duration / output interval): bounds on its work and its output files, the
+/// same whether the values come from the model file or the command line.
+inline constexpr Real max_runup_steps = 1e9;
+inline constexpr Real max_runup_samples = 1e7;
 }  // namespace defaults
 
 /// The nodes a response or a run-up reports when neither the request nor the file
