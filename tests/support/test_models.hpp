@@ -2,6 +2,7 @@
 // Small programmatic model builders shared by the tests. Each builds a Model the
 // same way the model reader does, without going through a file.
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include <feran/forces/harmonic_force.hpp>
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
+#include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/model/model.hpp>
 
 namespace feran::test {
@@ -102,6 +104,20 @@ inline Model runup_jeffcott(Real ca, Real ci, Real unbalance = 0.0, Real frictio
     model.forces.emplace_back(f);
   }
   return model;
+}
+
+// The friction-whirl run of the run-up tests: 3 s at the constant speed 2·ω_n of
+// runup_jeffcott(), starting from v = 0.1 mm, sampled every millisecond at node 0.
+inline TransientOptions friction_whirl_run(const Model& model, Real dt) {
+  TransientOptions t;
+  t.profile = SpeedProfile::constant(2.0 * std::sqrt(runup_stiffness / runup_mass));
+  t.duration = 3.0;
+  t.settings.dt = dt;
+  t.output_interval = 1e-3;
+  t.probes = {0};
+  t.initial_displacement = Vector::Zero(model.n_dofs());
+  t.initial_displacement(global_dof(0, Dof::v)) = 1e-4;
+  return t;
 }
 
 // Friswell, Penny, Garvey & Lees (2010), Example 5.9.1: steel shaft 1.5 m, Ø 50 mm,

@@ -40,15 +40,7 @@ TEST(TrapezoidalNewton, FrictionWhirlConvergesAsDtSquared) {
   const std::vector<Real> steps = {1e-4, 4e-5, 2e-5, 1e-5};
   std::vector<Real> frequency_errors;
   for (const Real dt : steps) {
-    TransientOptions t;
-    t.profile = SpeedProfile::constant(2.0 * wn);
-    t.duration = 3.0;
-    t.settings.dt = dt;
-    t.output_interval = 1e-3;
-    t.probes = {0};
-    t.initial_displacement = Vector::Zero(model.n_dofs());
-    t.initial_displacement(global_dof(0, Dof::v)) = 1e-4;
-    const TransientResult r = run_transient(model, t);
+    const TransientResult r = run_transient(model, test::friction_whirl_run(model, dt));
     ASSERT_TRUE(r.info.converged()) << r.info.message;
     EXPECT_NEAR(r.samples.back().magnitude[0] / R, 1.0, 1e-9) << "dt " << dt;
     // The whirl frequency over the last second, from the unwrapped angle of (v, w).

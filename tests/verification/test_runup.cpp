@@ -121,15 +121,7 @@ TEST(Runup, InternalDampingGrowthMatchesTheEigenvalue) {
 TEST(Runup, CoulombFrictionWhirlRadius) {
   const Real ca = 300.0, F = 20.0;
   const Model model = jeffcott(ca, 0.0, 0.0, F);
-  TransientOptions t;
-  t.profile = SpeedProfile::constant(2.0 * wn);
-  t.duration = 3.0;
-  t.settings.dt = 5e-5;
-  t.output_interval = 1e-3;
-  t.probes = {0};
-  t.initial_displacement = Vector::Zero(model.n_dofs());
-  t.initial_displacement(global_dof(0, Dof::v)) = 1e-4;
-  const TransientResult r = run_transient(model, t);
+  const TransientResult r = run_transient(model, test::friction_whirl_run(model, 5e-5));
   ASSERT_TRUE(r.info.converged()) << r.info.message;
   const Real R = F / (ca * wn);
   EXPECT_NEAR(r.samples.back().magnitude[0], R, 0.01 * R);
