@@ -65,6 +65,10 @@ void write_if_asked(const std::string& path, const std::function<std::string()>&
 /// Adds --threads (speed sweeps: 0 = all cores) to a sub-command.
 void add_threads_option(CLI::App& cmd, int& threads);
 
+/// Makes @p option repeatable with one value per occurrence ('--probe a --probe b'),
+/// so that it never takes the positional model path after it.
+CLI::Option* repeatable(CLI::Option* option);
+
 /// Option checks with plain messages ("must be positive, got -1"): CLI11's own
 /// PositiveNumber and NonNegativeNumber print their range with the 309 digits of the
 /// largest double, and let nan through.

@@ -14,13 +14,16 @@
 
 namespace feran::app {
 
+CLI::Option* repeatable(CLI::Option* option) {
+  return option->take_all()->expected(1)->allow_extra_args(false);
+}
+
 void add_model_argument(CLI::App& cmd, ModelArgs& model) {
   cmd.add_option("model", model.path, "Model file (TOML, see docs/model-format.md)")->required();
-  cmd.add_option("--set", model.assignments,
-                 "Set a number of the model by its path, with its unit, e.g.\n"
-                 "--set 'springs[bearing 1].ky=2e7 N/m' (repeatable; 'feran params MODEL' lists them)")
-      ->type_name("PATH=VALUE")
-      ->allow_extra_args(false);
+  repeatable(cmd.add_option("--set", model.assignments,
+                            "Set a number of the model by its path, with its unit, e.g.\n"
+                            "--set 'springs[bearing 1].ky=2e7 N/m' (repeatable; 'feran params MODEL' lists them)"))
+      ->type_name("PATH=VALUE");
 }
 
 ModelFile read_model(const ModelArgs& model) { return read_model_file(model.path, model.assignments); }

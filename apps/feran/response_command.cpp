@@ -104,13 +104,10 @@ Runner add_response_command(CLI::App& app) {
   cmd->add_option("--freq-stop", args->freq_stop, "Frequency sweep: last excitation frequency (200Hz)");
   cmd->add_option("--freq-points", args->freq_points, "Frequency sweep: number of frequencies (default 201)")
       ->check(CLI::Range(1, 10000000));
-  cmd->add_option("--probe", args->probes, "Node to report (name or number); repeat for several")->take_all()->expected(1)->allow_extra_args(false);
-  cmd->add_option("--force", args->forces,
-                  "Add a harmonic force NODE:DIRECTION:AMPLITUDE[:PHASE]; DIRECTION x, y, z, rx, ry, rz "
-                  "(fixed), rotating or rotating_moment (turning with the shaft), e.g. rotor:y:10N:90deg")
-      ->take_all()
-      ->expected(1)
-      ->allow_extra_args(false);
+  repeatable(cmd->add_option("--probe", args->probes, "Node to report (name or number); repeat for several"));
+  repeatable(cmd->add_option("--force", args->forces,
+                             "Add a harmonic force NODE:DIRECTION:AMPLITUDE[:PHASE]; DIRECTION x, y, z, rx, ry, rz "
+                             "(fixed), rotating or rotating_moment (turning with the shaft), e.g. rotor:y:10N:90deg"));
   cmd->add_option("--loss-factor", args->loss_factor, "Global hysteretic loss factor eta: adds j*eta*K")
       ->check(non_negative_number());
   cmd->add_flag("--no-unbalance", args->no_unbalance, "Leave the model's unbalances out");

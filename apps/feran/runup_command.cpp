@@ -95,8 +95,8 @@ Runner add_runup_command(CLI::App& app) {
   cmd->add_option("--rtol", args->rtol, "ros34pw2: relative tolerance (default 1e-5)")->check(positive_number());
   cmd->add_option("--atol", args->atol, "ros34pw2: absolute tolerance (default 1e-8)")->check(positive_number());
   cmd->add_option("--output-interval", args->output_interval, "Time between recorded samples (default 1ms)");
-  cmd->add_option("--probe", args->probes, "Node to record (name or number); repeat for several")->take_all()->expected(1)->allow_extra_args(false);
-  cmd->add_option("--spring", args->springs, "Spring-damper (by name) whose force is recorded; repeat")->take_all()->expected(1)->allow_extra_args(false);
+  repeatable(cmd->add_option("--probe", args->probes, "Node to record (name or number); repeat for several"));
+  repeatable(cmd->add_option("--spring", args->springs, "Spring-damper (by name) whose force is recorded; repeat"));
   cmd->add_option("--newton-tol", args->newton_tol, "trapezoidal: Newton tolerance (default 1e-10)")
       ->check(positive_number());
   cmd->add_option("--newton-max-iter", args->newton_max_iter, "trapezoidal: Newton iteration limit (default 25)")
