@@ -12,6 +12,7 @@
 #include <feran/analyses/settings.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace feran::app {
 
@@ -55,6 +56,7 @@ Runner add_campbell_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
+    CommandOutputs outputs(args->model, args->out);
     const ModelFile file = read_model(args->model);
     CampbellRequest request;
     if (!args->start.empty()) request.start = parse_speed_option(args->start, "--start");
@@ -64,19 +66,17 @@ Runner add_campbell_command(CLI::App& app) {
     request.orders = args->orders;
     request.solver = parse_solver_name(args->solver);
     request.n_threads = args->threads;
-    const CampbellOptions options = campbell_settings(file.spec.campbell, request);
+    CampbellOptions options = campbell_settings(file.spec.campbell, request);
+    options.stop = interrupt_token();
 
     const CampbellResult result = run_campbell(file.model, options, file.assembler);
     const ResultSource source{file.path, file.title,
                               speed_range_warnings(file.model, options.speeds.front(), options.speeds.back())};
-    write_if_asked(args->out.json_path, [&] { return campbell_json(result, options, source); });
-    write_if_asked(args->out.csv_path, [&] { return campbell_csv(result); });
+    outputs.set_json([&] { return campbell_json(result, options, source); });
+    outputs.set_csv([&] { return campbell_csv(result); });
+    outputs.files.commit();
     if (!args->out.quiet) std::fputs(campbell_report(result, options, file.model, source).c_str(), stdout);
-    if (!result.info.converged()) {
-      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
-      return static_cast<int>(numerical_failure);
-    }
-    return static_cast<int>(ok);
+    return finish(result.info);
   };
 }
 

@@ -9,7 +9,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <feran/analyses/common/solver_info.hpp>
 #include <feran/io/model_reader.hpp>
+#include <feran/io/output_files.hpp>
 
 namespace feran::app {
 
@@ -17,7 +19,10 @@ namespace feran::app {
 enum ExitCode : int {
   ok = 0,
   input_error = 1,      ///< bad model file or option
-  numerical_failure = 3 ///< a solve failed; results so far were written
+  numerical_failure = 3, ///< a solve failed; results so far were written
+  /// Stopped by signal N (SIGINT, SIGTERM, SIGHUP): exit code 128 + N, the shell's
+  /// convention; sweeps and run-ups wrote their results so far.
+  interrupted_base = 128
 };
 
 using Runner = std::function<int()>;
@@ -57,10 +62,29 @@ double parse_speed_option(const std::string& text, const std::string& option);
 /// The same for an option that may be left out: std::nullopt for empty @p text.
 std::optional<double> optional_speed(const std::string& text, const std::string& option);
 
-/// Writes @p text to @p path (atomically) when the path is not empty.
-void write_if_asked(const std::string& path, const std::string& text);
-/// Same, building the text only when it is written (large sweeps make large files).
-void write_if_asked(const std::string& path, const std::function<std::string()>& make_text);
+/// The --json and --csv files of a command. Made before the model is read, so that
+/// every path is checked (OutputFiles::add) before anything runs; nothing is written
+/// until commit(), and nothing at all when the command fails before it.
+struct CommandOutputs {
+  /// With @p stream_csv the CSV is streamed (OutputFiles::append) as the run goes.
+  CommandOutputs(const ModelArgs& model, const OutputOptions& out, bool stream_csv = false);
+  OutputFiles files;
+  int json = -1;
+  int csv = -1;
+  /// The JSON or CSV text, built only when that file was asked for (a large sweep
+  /// makes a large text).
+  void set_json(const std::function<std::string()>& make_text);
+  void set_csv(const std::function<std::string()>& make_text);
+};
+
+/// The exit code of an analysis that ended with @p info, its results written: ok;
+/// numerical_failure; for a run stopped by a signal, 128 + the signal's number. The
+/// reason is printed on standard error.
+int finish(const SolverInfo& info);
+/// For an analysis of one solve (modal, static), which has no partial results: when a
+/// signal asked to stop while it ran, says so (nothing is written) and gives the
+/// exit code, 128 + the signal's number.
+std::optional<int> stopped_single_solve();
 
 /// Adds --threads (speed sweeps: 0 = all cores) to a sub-command.
 void add_threads_option(CLI::App& cmd, int& threads);

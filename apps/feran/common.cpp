@@ -11,6 +11,7 @@
 #include <feran/core/units.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace feran::app {
 
@@ -56,12 +57,40 @@ std::optional<double> optional_speed(const std::string& text, const std::string&
   return parse_speed_option(text, option);
 }
 
-void write_if_asked(const std::string& path, const std::string& text) {
-  if (!path.empty()) write_file_atomically(path, text);
+CommandOutputs::CommandOutputs(const ModelArgs& model, const OutputOptions& out, bool stream_csv)
+    : files(model.path) {
+  json = files.add("--json", out.json_path);
+  csv = files.add("--csv", out.csv_path, stream_csv);
 }
 
-void write_if_asked(const std::string& path, const std::function<std::string()>& make_text) {
-  if (!path.empty()) write_file_atomically(path, make_text());
+void CommandOutputs::set_json(const std::function<std::string()>& make_text) {
+  if (files.wanted(json)) files.write(json, make_text());
+}
+
+void CommandOutputs::set_csv(const std::function<std::string()>& make_text) {
+  if (files.wanted(csv)) files.write(csv, make_text());
+}
+
+int finish(const SolverInfo& info) {
+  if (info.status == SolverStatus::interrupted) {
+    const int signal = interrupt_signal();
+    std::fprintf(stderr, "feran: interrupted by %s: %s (the results up to there were written, marked incomplete)\n",
+                 signal_name(signal), info.message.c_str());
+    return interrupted_base + signal;
+  }
+  if (!info.converged()) {
+    std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", info.message.c_str());
+    return static_cast<int>(numerical_failure);
+  }
+  return static_cast<int>(ok);
+}
+
+std::optional<int> stopped_single_solve() {
+  const int signal = interrupt_signal();
+  if (signal == 0) return std::nullopt;
+  std::fprintf(stderr, "feran: interrupted by %s: nothing written (one solve has no partial results)\n",
+               signal_name(signal));
+  return interrupted_base + signal;
 }
 
 void add_threads_option(CLI::App& cmd, int& threads) {

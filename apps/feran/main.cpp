@@ -11,6 +11,7 @@
 #include <feran/core/error.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 #ifdef FERAN_OPENBLAS_LINKED
 // OpenBLAS linked into the program (apps/feran/CMakeLists.txt). Weak: a serial
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  feran::app::install_interrupt_handlers();
   try {
     for (const CLI::App* sub : app.get_subcommands()) return runners.at(sub->get_name())();
   } catch (const feran::Error& e) {

@@ -52,6 +52,7 @@ Runner add_modal_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
+    CommandOutputs outputs(args->model, args->out);
     const ModelFile file = read_model(args->model);
     ModalRequest request;
     if (!args->speed.empty()) request.speed = parse_speed_option(args->speed, "--speed");
@@ -62,14 +63,12 @@ Runner add_modal_command(CLI::App& app) {
     const ModalResult result = run_modal(file.model, settings.speed, settings.options, file.assembler);
     const ResultSource source{file.path, file.title,
                               speed_range_warnings(file.model, settings.speed, settings.speed)};
-    write_if_asked(args->out.json_path, modal_json(result, file.model, source, args->shapes));
-    write_if_asked(args->out.csv_path, modal_csv(result));
+    if (const auto stopped = stopped_single_solve()) return *stopped;
+    outputs.set_json([&] { return modal_json(result, file.model, source, args->shapes); });
+    outputs.set_csv([&] { return modal_csv(result); });
+    outputs.files.commit();
     if (!args->out.quiet) std::fputs(modal_report(result, file.model, source).c_str(), stdout);
-    if (!result.info.converged()) {
-      std::fprintf(stderr, "feran: error: %s\n", result.info.message.c_str());
-      return static_cast<int>(numerical_failure);
-    }
-    return static_cast<int>(ok);
+    return finish(result.info);
   };
 }
 

@@ -30,10 +30,12 @@ Runner add_params_command(CLI::App& app) {
   cmd->add_flag("-q,--quiet", args->out.quiet, "Do not print the table on standard output");
 
   return [args]() {
+    CommandOutputs outputs(args->model, args->out);
     const ModelFile file = read_model(args->model);
     const std::vector<Parameter> parameters = list_parameters(file.spec);
     const ResultSource source{file.path, file.title};
-    write_if_asked(args->out.json_path, [&] { return parameters_json(parameters, source); });
+    outputs.set_json([&] { return parameters_json(parameters, source); });
+    outputs.files.commit();
     if (!args->out.quiet) std::fputs(parameters_report(parameters, source).c_str(), stdout);
     return static_cast<int>(ok);
   };

@@ -15,6 +15,7 @@
 #include <feran/analyses/settings.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace feran::app {
 
@@ -119,6 +120,7 @@ Runner add_response_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
+    CommandOutputs outputs(args->model, args->out);
     const ModelFile file = read_model(args->model);
     const Model& model = file.model;
     ResponseRequest request;
@@ -135,20 +137,18 @@ Runner add_response_command(CLI::App& app) {
     if (args->freq_points > 0) request.freq_points = args->freq_points;
     for (const std::string& p : args->probes) request.probes.push_back(find_node_reference(model, p, "--probe"));
     if (!args->stations.empty()) request.stations = station_output(args->stations);
-    const HarmonicOptions options = response_settings(model, file.spec.response, request);
+    HarmonicOptions options = response_settings(model, file.spec.response, request);
+    options.stop = interrupt_token();
 
     const HarmonicResult result = run_harmonic_response(model, options);
     const Real low = options.frequencies.empty() ? options.speeds.front() : options.speed;
     const Real high = options.frequencies.empty() ? options.speeds.back() : options.speed;
     const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high)};
-    write_if_asked(args->out.json_path, [&] { return response_json(result, options, model, source); });
-    write_if_asked(args->out.csv_path, [&] { return response_csv(result, model); });
+    outputs.set_json([&] { return response_json(result, options, model, source); });
+    outputs.set_csv([&] { return response_csv(result, model); });
+    outputs.files.commit();
     if (!args->out.quiet) std::fputs(response_report(result, options, model, source).c_str(), stdout);
-    if (!result.info.converged()) {
-      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
-      return static_cast<int>(numerical_failure);
-    }
-    return static_cast<int>(ok);
+    return finish(result.info);
   };
 }
 

@@ -16,6 +16,7 @@
 #include <feran/analyses/settings.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace feran::app {
 
@@ -115,6 +116,7 @@ Runner add_runup_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
+    CommandOutputs outputs(args->model, args->out, true);
     const ModelFile file = read_model(args->model);
     const Model& model = file.model;
     RunupRequest request;
@@ -149,12 +151,13 @@ Runner add_runup_command(CLI::App& app) {
         throw Error(fmt::format("--spring '{}': no spring-damper has that name", name));
       }
     }
-    const TransientOptions options = runup_settings(model, file.spec.runup, request);
+    TransientOptions options = runup_settings(model, file.spec.runup, request);
+    options.stop = interrupt_token();
     const auto [low, high] = speed_span(options);
     const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high)};
 
     std::optional<RunupCsvWriter> csv;
-    if (!args->out.csv_path.empty()) csv.emplace(args->out.csv_path, model, options);
+    if (outputs.files.wanted(outputs.csv)) csv.emplace(outputs.files, outputs.csv, model, options);
     const auto t0 = std::chrono::steady_clock::now();
     auto last_print = t0;
     bool printed = false;
@@ -174,10 +177,11 @@ Runner add_runup_command(CLI::App& app) {
     if (printed) std::fputs("\n", stderr);
     // Refused before the first step (e.g. rk3 above its stability limit): a bad
     // option, not a failed run; nothing is written.
-    if (!result.info.converged() && result.steps == 0) throw Error(result.info.message);
+    if (result.info.status == SolverStatus::numerical_failure && result.steps == 0)
+      throw Error(result.info.message);
     const Real wall = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
-    if (csv) csv->finish();
-    write_if_asked(args->out.json_path, runup_json(result, options, model, source));
+    outputs.set_json([&] { return runup_json(result, options, model, source); });
+    outputs.files.commit();
     if (!args->out.quiet) {
       std::string out = fmt::format("feran runup: {} ({})\n", file.title.empty() ? file.path : file.title, file.path);
       out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz; {} steps ({} rejected), {} "
@@ -196,11 +200,7 @@ Runner add_runup_command(CLI::App& app) {
       if (!result.warning.empty()) out += "warning: " + result.warning + "\n";
       std::fputs(out.c_str(), stdout);
     }
-    if (!result.info.converged()) {
-      std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", result.info.message.c_str());
-      return static_cast<int>(numerical_failure);
-    }
-    return static_cast<int>(ok);
+    return finish(result.info);
   };
 }
 

@@ -44,6 +44,7 @@ Runner add_static_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
+    CommandOutputs outputs(args->model, args->out);
     const ModelFile file = read_model(args->model);
     StaticRequest request;
     if (!args->g.empty()) request.g = parse_quantity(args->g, Quantity::acceleration);
@@ -52,6 +53,7 @@ Runner add_static_command(CLI::App& app) {
     request.loads = !args->no_loads;
     const StaticOptions options = static_settings(file.spec.static_, request);
     const StaticResult result = run_static(file.model, options);
+    if (const auto stopped = stopped_single_solve()) return *stopped;
     if (!result.info.converged()) {
       // One solve: nothing was computed before the failure, so nothing is written.
       std::fprintf(stderr, "feran: error: %s\n", result.info.message.c_str());
@@ -59,8 +61,9 @@ Runner add_static_command(CLI::App& app) {
     }
     const ResultSource source{file.path, file.title,
                               speed_range_warnings(file.model, options.speed, options.speed)};
-    write_if_asked(args->out.json_path, static_json(result, options, file.model, source));
-    write_if_asked(args->out.csv_path, static_csv(result, file.model));
+    outputs.set_json([&] { return static_json(result, options, file.model, source); });
+    outputs.set_csv([&] { return static_csv(result, file.model); });
+    outputs.files.commit();
     if (!args->out.quiet) std::fputs(static_report(result, options, file.model, source).c_str(), stdout);
     return static_cast<int>(ok);
   };

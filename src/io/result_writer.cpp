@@ -1,13 +1,12 @@
 #include <feran/io/result_writer.hpp>
 
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "csv_text.hpp"
 #include "json_text.hpp"
 
 #include <feran/core/error.hpp>
@@ -46,12 +45,6 @@ json header(const std::string& analysis, const ResultSource& source) {
 
 // CSV field: numbers in full precision, empty for NaN.
 std::string csv_number(Real x) { return std::isfinite(x) ? fmt::format("{:.10g}", x) : ""; }
-
-std::string csv_name(std::string label) {
-  for (char& c : label)
-    if (c == ' ') c = '_';
-  return label;
-}
 
 
 json node_json(const Model& model, Index node) {
@@ -250,17 +243,17 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
   std::ostringstream out;
   auto node_tag = [&](Index node) {
     const Node& nd = model.nodes[static_cast<std::size_t>(node)];
-    return nd.name.empty() ? fmt::format("node{}", nd.number) : csv_name(nd.name);
+    return nd.name.empty() ? fmt::format("node{}", nd.number) : nd.name;
   };
   out << "speed_hz,frequency_hz";
-  for (const ProbeResponse& p : result.probes) {
-    const std::string t = node_tag(p.node);
-    out << ',' << t << "_amplitude_m," << t << "_minor_m," << t << "_v_amplitude_m," << t << "_v_phase_deg," << t
-        << "_w_amplitude_m," << t << "_w_phase_deg";
-  }
+  for (const ProbeResponse& p : result.probes)
+    for (const char* suffix : {"_amplitude_m", "_minor_m", "_v_amplitude_m", "_v_phase_deg", "_w_amplitude_m",
+                               "_w_phase_deg"})
+      out << ',' << detail::csv_column(node_tag(p.node), suffix);
   for (const SpringForceResponse& s : result.springs)
-    out << ',' << csv_name(element_label(model, s.element)) << "_peak_lateral_force_n";
-  for (const ReactionResponse& r : result.reactions) out << ',' << node_tag(r.node) << "_support_peak_lateral_force_n";
+    out << ',' << detail::csv_column(element_label(model, s.element), "_peak_lateral_force_n");
+  for (const ReactionResponse& r : result.reactions)
+    out << ',' << detail::csv_column(node_tag(r.node), "_support_peak_lateral_force_n");
   const bool peaks = !result.shaft_stations.empty();
   out << (peaks ? ",max_von_mises_pa,max_von_mises_x_m\n" : "\n");
   for (std::size_t k = 0; k < result.speeds.size(); ++k) {
@@ -468,7 +461,7 @@ std::string campbell_csv(const CampbellResult& result) {
   std::ostringstream out;
   out << "speed_hz,speed_rpm";
   for (const TrackedMode& m : result.modes)
-    out << ',' << csv_name(m.label) << "_frequency_hz," << csv_name(m.label) << "_damping_ratio";
+    out << ',' << detail::csv_column(m.label, "_frequency_hz") << ',' << detail::csv_column(m.label, "_damping_ratio");
   out << '\n';
   for (std::size_t i = 0; i < result.speeds.size(); ++i) {
     out << csv_number(rad_to_hz(result.speeds[i])) << ',' << csv_number(rad_to_hz(result.speeds[i]) * 60);
@@ -477,24 +470,6 @@ std::string campbell_csv(const CampbellResult& result) {
     out << '\n';
   }
   return out.str();
-}
-
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string temp = path + ".part";
-  {
-    std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-    if (!f) throw Error(fmt::format("cannot write '{}'", path));
-    f << content;
-    f.flush();
-    if (!f) {
-      std::remove(temp.c_str());
-      throw Error(fmt::format("cannot write '{}'", path));
-    }
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    std::remove(temp.c_str());
-    throw Error(fmt::format("cannot write '{}'", path));
-  }
 }
 
 std::string parameters_json(const std::vector<Parameter>& parameters, const ResultSource& source) {

@@ -1,11 +1,11 @@
 #include <feran/io/runup_writer.hpp>
 
 #include <cmath>
-#include <cstdio>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "csv_text.hpp"
 #include "json_text.hpp"
 
 #include <feran/core/error.hpp>
@@ -20,18 +20,12 @@ json number(Real x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
 std::string node_tag(const Model& model, Index node) {
   const Node& n = model.nodes[static_cast<std::size_t>(node)];
-  std::string s = n.name.empty() ? fmt::format("node{}", n.number) : n.name;
-  for (char& c : s)
-    if (c == ' ') c = '_';
-  return s;
+  return n.name.empty() ? fmt::format("node{}", n.number) : n.name;
 }
 
 std::string element_tag(const Model& model, Index element) {
   std::string s = model.elements[static_cast<std::size_t>(element)].label();
-  if (s.empty()) s = fmt::format("element{}", element + 1);
-  for (char& c : s)
-    if (c == ' ') c = '_';
-  return s;
+  return s.empty() ? fmt::format("element{}", element + 1) : s;
 }
 
 std::string csv(Real x) { return std::isfinite(x) ? fmt::format("{:.10g}", x) : ""; }
@@ -41,43 +35,39 @@ constexpr const char* direction_names[dofs_per_node] = {"x", "y", "z", "rx", "ry
 
 }  // namespace
 
-RunupCsvWriter::RunupCsvWriter(const std::string& path, const Model& model, const TransientOptions& options)
-    : path_(path), out_(path + ".part", std::ios::trunc) {
-  if (!out_) throw Error(fmt::format("cannot write '{}'", path));
-  out_ << "time_s,speed_hz";
+RunupCsvWriter::RunupCsvWriter(OutputFiles& files, int output, const Model& model, const TransientOptions& options)
+    : files_(files), output_(output) {
+  std::string header = "time_s,speed_hz";
   for (Index node : options.probes) {
     const std::string t = node_tag(model, node);
-    out_ << ',' << t << "_magnitude_m";
-    for (const char* d : dof_names) out_ << ',' << t << '_' << d;
+    header += ',' + detail::csv_column(t, "_magnitude_m");
+    for (const char* d : dof_names) header += ',' + detail::csv_column(t, std::string("_") + d);
   }
   for (Index e : options.springs)
-    for (const char* d : direction_names) out_ << ',' << element_tag(model, e) << "_f" << d;
-  out_ << '\n';
-}
-
-RunupCsvWriter::~RunupCsvWriter() {
-  if (!finished_) {
-    out_.close();
-    std::remove((path_ + ".part").c_str());
-  }
+    for (const char* d : direction_names) header += ',' + detail::csv_column(element_tag(model, e), std::string("_f") + d);
+  header += '\n';
+  files_.append(output_, header);
 }
 
 void RunupCsvWriter::write(const TransientSample& s) {
-  out_ << csv(s.t) << ',' << csv(rad_to_hz(s.speed));
+  row_ = csv(s.t);
+  row_ += ',';
+  row_ += csv(rad_to_hz(s.speed));
   for (std::size_t p = 0; p < s.probes.size(); ++p) {
-    out_ << ',' << csv(s.magnitude[p]);
-    for (Real q : s.probes[p]) out_ << ',' << csv(q);
+    row_ += ',';
+    row_ += csv(s.magnitude[p]);
+    for (Real q : s.probes[p]) {
+      row_ += ',';
+      row_ += csv(q);
+    }
   }
   for (const auto& f : s.springs)
-    for (Real c : f) out_ << ',' << csv(c);
-  out_ << '\n';
-}
-
-void RunupCsvWriter::finish() {
-  out_.close();
-  if (!out_ || std::rename((path_ + ".part").c_str(), path_.c_str()) != 0)
-    throw Error(fmt::format("cannot write '{}'", path_));
-  finished_ = true;
+    for (Real c : f) {
+      row_ += ',';
+      row_ += csv(c);
+    }
+  row_ += '\n';
+  files_.append(output_, row_);
 }
 
 std::string runup_json(const TransientResult& result, const TransientOptions& options, const Model& model,

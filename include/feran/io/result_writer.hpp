@@ -54,8 +54,4 @@ std::string static_csv(const StaticResult& result, const Model& model);
 /// JSON text of a model's settable parameters (feran params).
 std::string parameters_json(const std::vector<Parameter>& parameters, const ResultSource& source);
 
-/// Writes @p content to @p path through a temporary file in the same directory and
-/// a rename, so that a reader never sees a half-written file. Throws feran::Error.
-void write_file_atomically(const std::string& path, const std::string& content);
-
 }  // namespace feran

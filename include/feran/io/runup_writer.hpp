@@ -3,33 +3,29 @@
 /// Output of run-ups: CSV streamed sample by sample, JSON at the end
 /// (format in docs/output-format.md).
 
-#include <fstream>
 #include <string>
 
 #include <feran/analyses/transient/transient_analysis.hpp>
+#include <feran/io/output_files.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/model/model.hpp>
 
 namespace feran {
 
-/// Writes the samples of a run-up to a CSV file as they come, so that memory stays
-/// bounded however long the run. The file is written as PATH.part and renamed by
-/// finish(); without finish() (an exception) the partial file is removed.
+/// Writes the samples of a run-up as CSV rows, one whole row per sample as it comes,
+/// to an output of @p files (streamed, so that memory stays bounded however long the
+/// run); the file gets its name when @p files commits.
 class RunupCsvWriter {
  public:
-  RunupCsvWriter(const std::string& path, const Model& model, const TransientOptions& options);
-  ~RunupCsvWriter();
-  RunupCsvWriter(const RunupCsvWriter&) = delete;
-  RunupCsvWriter& operator=(const RunupCsvWriter&) = delete;
+  /// Writes the header to output @p output of @p files.
+  RunupCsvWriter(OutputFiles& files, int output, const Model& model, const TransientOptions& options);
 
   void write(const TransientSample& sample);
-  /// Closes the file and gives it its final name.
-  void finish();
 
  private:
-  std::string path_;
-  std::ofstream out_;
-  bool finished_ = false;
+  OutputFiles& files_;
+  int output_;
+  std::string row_;
 };
 
 /// JSON text of a run-up (its kept samples, envelopes and run statistics).

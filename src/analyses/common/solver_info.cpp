@@ -20,6 +20,7 @@ std::string_view to_string(SolverStatus status) {
     case SolverStatus::success: return "success";
     case SolverStatus::not_converged: return "not-converged";
     case SolverStatus::numerical_failure: return "numerical-failure";
+    case SolverStatus::interrupted: return "interrupted";
   }
   return "success";
 }

@@ -146,7 +146,8 @@ class DynamicStiffness {
 // One point of a sweep, computed independently of the others.
 struct PointResult {
   bool solved = false;
-  bool finite = true;  // false: the solve gave non-finite amplitudes
+  bool skipped = false;  // not started: a stop was asked for
+  bool finite = true;    // false: the solve gave non-finite amplitudes
   std::vector<NodeAmplitudes> probes, springs, reactions;
   std::vector<SectionForces> forces;  // every station (StationOutput::all)
   std::vector<SectionStress> stress;
@@ -219,6 +220,10 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   std::vector<PointResult> points(n_points);
 
   auto solve_point = [&](std::size_t k, Workspace& ws) {
+    if (options.stop.requested()) {
+      points[k].skipped = true;
+      return;
+    }
     const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
     const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
     std::optional<SystemMatrices> variable;
@@ -335,6 +340,12 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     PointResult& pt = points[k];
     const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
     const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
+    if (pt.skipped) {
+      result.info.fail(SolverStatus::interrupted,
+                       fmt::format("stopped on request before {:.6g} Hz",
+                                   rad_to_hz(result.frequency_sweep ? omega : speed)));
+      break;
+    }
     if (!pt.solved) {
       result.info.status = SolverStatus::numerical_failure;
       result.info.message = fmt::format(

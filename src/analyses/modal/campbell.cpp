@@ -1,11 +1,12 @@
 #include <feran/analyses/modal/campbell.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
 
-#include <atomic>
+#include <fmt/format.h>
 
 #include <feran/core/assignment.hpp>
 #include <feran/core/parallel.hpp>
@@ -110,8 +111,13 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
   };
   // All grid speeds first, in parallel; tracking then walks through them in order.
   std::vector<ModalResult> grid(options.speeds.size());
-  parallel_for(static_cast<Index>(grid.size()), options.n_threads,
-               [&](Index i, int) { grid[static_cast<std::size_t>(i)] = solver.solve(options.speeds[static_cast<std::size_t>(i)]); });
+  parallel_for(static_cast<Index>(grid.size()), options.n_threads, [&](Index i, int) {
+    ModalResult& r = grid[static_cast<std::size_t>(i)];
+    if (options.stop.requested())
+      r.info.fail(SolverStatus::interrupted, "stopped on request");
+    else
+      r = solver.solve(options.speeds[static_cast<std::size_t>(i)]);
+  });
 
   std::vector<Track> tracks;
   auto record = [&](TrackedMode& tm, const Mode* m, Real corr) {
@@ -153,10 +159,13 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     ModalResult r = std::move(grid[i]);
     ++result.n_solves;
     if (result.info.method == SolverMethod::none) result.info = r.info;
+    if (r.info.status == SolverStatus::interrupted) {
+      result.info.fail(SolverStatus::interrupted, fmt::format("stopped on request before {:.6g} Hz", rad_to_hz(speed)));
+      break;
+    }
     if (!r.info.converged()) {
       result.info = r.info;
-      result.info.message = "eigen solve failed at " + std::to_string(rad_to_hz(speed)) +
-                            " Hz: " + r.info.message;
+      result.info.message = "eigen solve failed at " + std::to_string(rad_to_hz(speed)) + " Hz: " + r.info.message;
       break;
     }
     std::vector<Mode> cands = oscillatory_modes(std::move(r), i == 0 ? n_track : n_cand);
@@ -231,7 +240,12 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
   // the brackets are independent, so they run in parallel.
   std::vector<std::optional<CriticalSpeed>> criticals(brackets.size());
   std::vector<std::optional<StabilityThreshold>> crossings(brackets.size());
+  std::atomic<Index> n_skipped{0};
   parallel_for(static_cast<Index>(brackets.size()), options.n_threads, [&](Index bi, int) {
+    if (options.stop.requested()) {
+      ++n_skipped;
+      return;
+    }
     const Bracket& br = brackets[static_cast<std::size_t>(bi)];
     const Real s0 = br.a.speed_last, s1 = br.b.speed_last;
     Whirl w = br.whirl;
@@ -251,6 +265,11 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
       crossings[static_cast<std::size_t>(bi)] = StabilityThreshold{s, br.mode, freq, false};
   });
   result.n_solves += n_refinement_solves;
+  if (n_skipped > 0 && result.info.converged())
+    result.info.fail(SolverStatus::interrupted,
+                     fmt::format("stopped on request while refining critical speeds and thresholds: {} of {} "
+                                 "not refined, and left out",
+                                 n_skipped.load(), brackets.size()));
   for (std::size_t b = 0; b < brackets.size(); ++b) {
     if (criticals[b]) result.critical_speeds.push_back(*criticals[b]);
     if (crossings[b]) thresholds.push_back(*crossings[b]);

@@ -176,6 +176,12 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
                                  rad_to_hz(options.profile.speed(s.t)), why));
   };
   while (s.t < t_end * (1 - 1e-12)) {
+    if (options.stop.requested()) {
+      result.info.fail(SolverStatus::interrupted,
+                       fmt::format("stopped on request at t = {:.6g} s (speed {:.4g} Hz)", s.t,
+                                   rad_to_hz(options.profile.speed(s.t))));
+      break;
+    }
     const Real h = std::min(dt, t_end - s.t);
     previous = s;
     const StepReport rep = integrator->step(sys, s, h);

@@ -26,11 +26,12 @@ enum class SolverStatus {
   success,            ///< every value asked for was computed
   not_converged,      ///< an iteration did not converge (results so far kept)
   numerical_failure,  ///< a singular matrix, a non-finite value or a blow-up (results so far kept)
+  interrupted,        ///< stopped on request (StopToken) at a clean point (results so far kept)
 };
 
 /// The name results and reports use: "dense-qr", "shift-invert-arnoldi", "sparse-lu", …
 std::string_view to_string(SolverMethod method);
-/// "success", "not-converged", "numerical-failure".
+/// "success", "not-converged", "numerical-failure", "interrupted".
 std::string_view to_string(SolverStatus status);
 
 /// Convergence record of a solve (never an exception: callers decide).

@@ -15,6 +15,7 @@
 #include <feran/analyses/common/orbit.hpp>
 #include <feran/analyses/common/shaft_sections.hpp>
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/core/stop.hpp>
 #include <feran/core/types.hpp>
 #include <feran/forces/harmonic_force.hpp>
 #include <feran/model/model.hpp>
@@ -47,6 +48,9 @@ struct HarmonicOptions {
   /// Threads for the sweep's points (0: all cores; the library's default is one, the
   /// command line's all cores); results do not depend on it.
   int n_threads = 1;
+  /// Asked before each point; the sweep then ends as interrupted, its points up to
+  /// the first not solved kept.
+  StopToken stop;
 };
 
 /// Complex amplitudes of the six DOFs of a node, indexed by Dof.

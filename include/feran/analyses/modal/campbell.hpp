@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/core/stop.hpp>
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
 
@@ -28,6 +29,9 @@ struct CampbellOptions {
   /// results do not depend on the number of threads. The library's default is one
   /// thread, the command line's all cores.
   int n_threads = 1;
+  /// Asked before each eigen solve; the sweep then ends as interrupted, its speeds
+  /// up to the first not solved kept.
+  StopToken stop;
 };
 
 /// One mode followed over the sweep. Vectors are indexed like CampbellResult::speeds;

@@ -10,6 +10,7 @@
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/transient/integrator.hpp>
 #include <feran/analyses/transient/speed_profile.hpp>
+#include <feran/core/stop.hpp>
 #include <feran/model/model.hpp>
 
 namespace feran {
@@ -34,6 +35,8 @@ struct TransientOptions {
   /// undamped modes at modal_basis_speeds speeds of the profile (modal_basis.hpp),
   /// which removes the high finite-element modes that limit explicit steps.
   Index reduced_modes = 0;
+  /// Asked before each step; the run then ends as interrupted at the last step taken.
+  StopToken stop;
 };
 
 /// Number of speeds, evenly spaced in time over the run, at which the basis of a
