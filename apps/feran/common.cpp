@@ -8,6 +8,7 @@
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
 #include <feran/io/result_writer.hpp>
+#include <feran/core/text.hpp>
 #include <feran/core/units.hpp>
 
 #include "commands.hpp"
@@ -31,7 +32,7 @@ ModelFile read_model(const ModelArgs& model) { return read_model_file(model.path
 
 std::vector<std::string> speed_range_warnings(const Model& model, double low, double high) {
   std::vector<std::string> warnings = range_warnings(model, low, high);
-  for (const std::string& w : warnings) std::fprintf(stderr, "feran: warning: %s\n", w.c_str());
+  for (const std::string& w : warnings) std::fprintf(stderr, "feran: warning: %s\n", printable(w, true).c_str());
   return warnings;
 }
 
@@ -75,11 +76,11 @@ int finish(const SolverInfo& info) {
   if (info.status == SolverStatus::interrupted) {
     const int signal = interrupt_signal();
     std::fprintf(stderr, "feran: interrupted by %s: %s (the results up to there were written, marked incomplete)\n",
-                 signal_name(signal), info.message.c_str());
+                 signal_name(signal), printable(info.message, true).c_str());
     return interrupted_base + signal;
   }
   if (!info.converged()) {
-    std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", info.message.c_str());
+    std::fprintf(stderr, "feran: error: %s (results up to there were kept)\n", printable(info.message, true).c_str());
     return static_cast<int>(numerical_failure);
   }
   return static_cast<int>(ok);

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <feran/core/error.hpp>
+#include <feran/core/text.hpp>
 
 #include "commands.hpp"
 #include "interrupt.hpp"
@@ -103,10 +104,10 @@ int main(int argc, char** argv) {
   try {
     for (const CLI::App* sub : app.get_subcommands()) return runners.at(sub->get_name())();
   } catch (const feran::Error& e) {
-    std::fprintf(stderr, "feran: error: %s\n", e.what());
+    std::fprintf(stderr, "feran: error: %s\n", feran::printable(e.what(), true).c_str());
     return feran::app::input_error;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "feran: internal error: %s\n", e.what());
+    std::fprintf(stderr, "feran: internal error: %s\n", feran::printable(e.what(), true).c_str());
     return 4;
   }
   return 0;

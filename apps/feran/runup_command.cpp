@@ -8,6 +8,7 @@
 
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/core/error.hpp>
+#include <feran/core/text.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/node_reference.hpp>
 #include <feran/io/runup_writer.hpp>
@@ -183,7 +184,8 @@ Runner add_runup_command(CLI::App& app) {
     outputs.set_json([&] { return runup_json(result, options, model, source); });
     outputs.files.commit();
     if (!args->out.quiet) {
-      std::string out = fmt::format("feran runup: {} ({})\n", file.title.empty() ? file.path : file.title, file.path);
+      std::string out = fmt::format("feran runup: {} ({})\n", printable(file.title.empty() ? file.path : file.title),
+                                    printable(file.path));
       out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz; {} steps ({} rejected), {} "
                          "factorizations, {} Newton iterations; {:.3g} s wall\n",
                          options.integrator, 0.0, result.t_end, rad_to_hz(options.profile.speed(0.0)),
@@ -195,9 +197,9 @@ Runner add_runup_command(CLI::App& app) {
       for (std::size_t p = 0; p < options.probes.size(); ++p) {
         const Envelope& e = result.envelopes[p];
         out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {:.4g} Hz\n",
-                           model.node_label(options.probes[p]), 1e3 * e.peak, e.peak_time, rad_to_hz(e.peak_speed));
+                           printable(model.node_label(options.probes[p])), 1e3 * e.peak, e.peak_time, rad_to_hz(e.peak_speed));
       }
-      if (!result.warning.empty()) out += "warning: " + result.warning + "\n";
+      if (!result.warning.empty()) out += "warning: " + printable(result.warning, true) + "\n";
       std::fputs(out.c_str(), stdout);
     }
     return finish(result.info);

@@ -5,6 +5,7 @@
 
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/core/error.hpp>
+#include <feran/core/text.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
@@ -56,7 +57,7 @@ Runner add_static_command(CLI::App& app) {
     if (const auto stopped = stopped_single_solve()) return *stopped;
     if (!result.info.converged()) {
       // One solve: nothing was computed before the failure, so nothing is written.
-      std::fprintf(stderr, "feran: error: %s\n", result.info.message.c_str());
+      std::fprintf(stderr, "feran: error: %s\n", printable(result.info.message, true).c_str());
       return static_cast<int>(numerical_failure);
     }
     const ResultSource source{file.path, file.title,

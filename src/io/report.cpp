@@ -5,13 +5,15 @@
 
 #include <fmt/format.h>
 
+#include <feran/core/text.hpp>
+
 namespace feran {
 
 namespace {
 
 std::string source_line(const char* analysis, const ResultSource& source) {
-  if (source.title.empty()) return fmt::format("feran {}: {}\n", analysis, source.model_path);
-  return fmt::format("feran {}: {} ({})\n", analysis, source.title, source.model_path);
+  if (source.title.empty()) return fmt::format("feran {}: {}\n", analysis, printable(source.model_path));
+  return fmt::format("feran {}: {} ({})\n", analysis, printable(source.title), printable(source.model_path));
 }
 
 std::string speed_text(Real speed) {
@@ -104,11 +106,12 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
 
 namespace {
 
-std::string node_name(const Model& model, Index node) { return model.node_label(node); }
+// Names as the model gives them, made printable (core/text.hpp).
+std::string node_name(const Model& model, Index node) { return printable(model.node_label(node)); }
 
 std::string element_name(const Model& model, Index element) {
   const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
-  return label.empty() ? fmt::format("element {}", element + 1) : label;
+  return label.empty() ? fmt::format("element {}", element + 1) : printable(label);
 }
 
 std::string point_text(const HarmonicResult& r, Index k) {
@@ -232,15 +235,15 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
 std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source) {
   std::size_t path_width = 4, value_width = 5;
   for (const Parameter& p : parameters) {
-    path_width = std::max(path_width, p.path.size());
-    value_width = std::max(value_width, p.text().size());
+    path_width = std::max(path_width, printable(p.path).size());
+    value_width = std::max(value_width, printable(p.text()).size());
   }
   std::string out = fmt::format("{} settable parameters of {}\n", parameters.size(),
-                                source.model_path);
+                                printable(source.model_path));
   out += "(set one with --set 'PATH=VALUE' on any analysis, the value with its unit)\n\n";
   out += fmt::format("{:<{}}  {:<{}}  {}\n", "path", path_width, "value", value_width, "meaning");
   for (const Parameter& p : parameters)
-    out += fmt::format("{:<{}}  {:<{}}  {}\n", p.path, path_width, p.text(), value_width, p.doc);
+    out += fmt::format("{:<{}}  {:<{}}  {}\n", printable(p.path), path_width, printable(p.text()), value_width, p.doc);
   return out;
 }
 

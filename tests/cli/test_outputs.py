@@ -220,6 +220,24 @@ class CsvFields(OutputTest):
                 self.assertIn("ext\ndamping_fx", rows[0])
 
 
+class TerminalText(OutputTest):
+    """Names that hold control characters are printed visibly: a model cannot move the
+    cursor or change colours of the terminal that runs it."""
+
+    def test_names_and_messages_are_printable(self):
+        text = read(self.model).replace('"rotor"', r'"rot\u001b[31mor"')
+        with open(self.model, "w") as f:
+            f.write(text)
+        r = run("response", self.model, "--points", "3", "--stop", "10Hz")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("rot\\e[31mor", r.stdout)
+        r = run("modal", self.model, "--set", "rigid_bodies[x\x1b[2J].mass=1 kg")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("x\\e[2J", r.stderr)
+        for out in (r.stdout, r.stderr):
+            self.assertNotIn("\x1b", out)
+
+
 if __name__ == "__main__":
     FERAN, EXAMPLE = sys.argv[1], sys.argv[2]
     unittest.main(argv=[sys.argv[0], *sys.argv[3:]], verbosity=2)
