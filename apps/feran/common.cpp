@@ -48,8 +48,11 @@ double parse_speed_option(const std::string& text, const std::string& option) {
     throw Error(fmt::format("{} '{}': give a speed with its unit, e.g. 30Hz, 1800rpm or 188.5rad/s",
                             option, text));
   const auto si = to_si(Quantity::speed, q->value, q->unit);
-  if (!si || !std::isfinite(*si))
-    throw Error(fmt::format("{} '{}': the unit must be Hz, rpm or rad/s", option, text));
+  if (!si) throw Error(fmt::format("{} '{}': the unit must be Hz, rpm or rad/s", option, text));
+  const Real largest = physical_range(Quantity::speed).largest;
+  if (!std::isfinite(*si) || std::abs(*si) > largest)
+    throw Error(fmt::format("{} '{}': beyond the physical range of a speed (at most {:g} rad/s in magnitude)", option,
+                            text, largest));
   return *si;
 }
 

@@ -1,12 +1,16 @@
 #include <feran/analyses/settings.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 
 #include <fmt/format.h>
 
 #include <feran/analyses/transient/integrator.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/suggestions.hpp>
+#include <feran/core/units.hpp>
+#include <feran/spec/fields.hpp>
 
 namespace feran {
 
@@ -32,6 +36,56 @@ std::vector<Index> node_indices(const Model& model, const std::vector<NodeRef>& 
 Real positive_time(Real t, const char* what) {
   if (!(t > 0.0)) throw Error(fmt::format("runup: {} must be positive, got {} s", what, t));
   return t;
+}
+
+// A value asked for (an option of the command line, named @p option in the message)
+// checked by the rule of the model file's key @p key of table S: its bound and, for
+// a quantity, the physical range of that quantity; so "-3 Hz" or "1e308 Hz" is
+// refused wherever it is given.
+template <class S>
+std::optional<Real> checked(std::optional<Real> value, std::string_view key, std::string_view option) {
+  if (!value) return value;
+  const spec::Field<S>& f = spec::field_of<S>(key);
+  const Real v = *value;
+  const bool quantity = f.kind == spec::FieldKind::quantity;
+  const auto text = [&] { return quantity ? format_quantity(v, f.quantity, f.unit) : fmt::format("{:g}", v); };
+  if (!std::isfinite(v)) throw Error(fmt::format("{}: must be a finite number", option));
+  if (f.bound.kind == spec::Bound::Kind::positive && !(v > 0.0))
+    throw Error(fmt::format("{}: must be positive, got {}", option, text()));
+  if (f.bound.kind == spec::Bound::Kind::non_negative && !(v >= 0.0))
+    throw Error(fmt::format("{}: must not be negative, got {}", option, text()));
+  if (quantity) {
+    const PhysicalRange range = physical_range(f.quantity);
+    const auto limit = [&](Real si) { return fmt::format("{:g} {}", si, si_unit(f.quantity)); };
+    if (std::abs(v) > range.largest)
+      throw Error(fmt::format("{}: {} is beyond the physical range of {} (at most {} in magnitude)", option, text(),
+                              quantity_name(f.quantity), limit(range.largest)));
+    if (f.bound.kind == spec::Bound::Kind::positive && v < range.smallest_positive)
+      throw Error(fmt::format("{}: {} is below the physical range of {} (at least {})", option, text(),
+                              quantity_name(f.quantity), limit(range.smallest_positive)));
+  }
+  return value;
+}
+
+// A count asked for, checked by the bound of the model file's key @p key of table S.
+template <class S>
+std::optional<int> checked_count(std::optional<int> value, std::string_view key, std::string_view option) {
+  if (!value) return value;
+  const spec::Bound& b = spec::field_of<S>(key).bound;
+  if (b.kind == spec::Bound::Kind::at_least && *value < b.minimum)
+    throw Error(fmt::format("{}: must be at least {}, got {}", option, b.minimum, *value));
+  if (b.kind == spec::Bound::Kind::at_least && *value > b.maximum)
+    throw Error(fmt::format("{}: must be at most {}, got {}", option, b.maximum, *value));
+  return value;
+}
+
+// Nodes or elements asked for, each once (a node twice made two equal CSV columns).
+void check_distinct(const std::vector<Index>& items, std::string_view option, std::string_view what,
+                    const std::function<std::string(Index)>& name) {
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (std::find(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(i), items[i]) !=
+        items.begin() + static_cast<std::ptrdiff_t>(i))
+      throw Error(fmt::format("{}: {} {} is given twice", option, what, name(items[i])));
 }
 
 }  // namespace
@@ -106,25 +160,27 @@ Index spring_element(const Model& model, const std::string& name) {
 
 ModalSettings modal_settings(const ModalSpec& file, const ModalRequest& request) {
   ModalSettings s;
-  s.speed = request.speed.value_or(file.speed.value_or(0.0));
+  s.speed = checked<ModalSpec>(request.speed, "speed", "--speed").value_or(file.speed.value_or(0.0));
   s.options.solver = request.solver;
-  s.options.n_modes = request.modes.value_or(file.modes.value_or(0));
+  s.options.n_modes = checked_count<ModalSpec>(request.modes, "modes", "--modes").value_or(file.modes.value_or(0));
   s.options.shapes = request.shapes;
   return s;
 }
 
 CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellRequest& request) {
-  const Real start = request.start.value_or(file.start.value_or(0.0));
-  const std::optional<Real> stop = request.stop ? request.stop : file.stop;
+  const Real start = checked<CampbellSpec>(request.start, "start", "--start").value_or(file.start.value_or(0.0));
+  const std::optional<Real> stop = request.stop ? checked<CampbellSpec>(request.stop, "stop", "--stop") : file.stop;
   if (!stop)
     throw Error("campbell: give the last speed with --stop (e.g. --stop 80Hz) or in the model's "
                 "[campbell] table");
   if (!(*stop > start)) throw Error("campbell: the last speed must be above the first");
-  const int points = request.points.value_or(file.points.value_or(defaults::campbell_points));
-  if (points < 2) throw Error("campbell: at least 2 speeds are needed");
+  const int points = checked_count<CampbellSpec>(request.points, "points", "--points")
+                         .value_or(file.points.value_or(defaults::campbell_points));
   CampbellOptions options;
   options.speeds = linspace(start, *stop, points);
-  options.n_modes = request.modes.value_or(file.modes.value_or(defaults::campbell_modes));
+  options.n_modes = checked_count<CampbellSpec>(request.modes, "modes", "--modes")
+                        .value_or(file.modes.value_or(defaults::campbell_modes));
+  for (int k : request.orders) checked_count<CampbellSpec>(k, "orders", "--orders");
   options.orders = !request.orders.empty() ? request.orders
                    : !file.orders.empty()  ? file.orders
                                            : std::vector<int>{1};
@@ -144,7 +200,16 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
   HarmonicOptions options;
   options.unbalance = request.unbalance;
   options.n_threads = request.n_threads;
-  options.loss_factor = request.loss_factor.value_or(file.loss_factor.value_or(0.0));
+  options.loss_factor = checked<ResponseSpec>(request.loss_factor, "loss_factor", "--loss-factor")
+                            .value_or(file.loss_factor.value_or(0.0));
+  checked<ResponseSpec>(request.freq_start, "start", "--freq-start");
+  checked<ResponseSpec>(request.freq_stop, "stop", "--freq-stop");
+  checked<ResponseSpec>(request.speed, "start", "--speed");
+  checked<ResponseSpec>(request.start, "start", "--start");
+  checked<ResponseSpec>(request.stop, "stop", "--stop");
+  checked_count<ResponseSpec>(request.points, "points", "--points");
+  checked_count<ResponseSpec>(request.freq_points, "points", "--freq-points");
+  check_distinct(request.probes, "--probe", "node", [&](Index n) { return model.node_label(n); });
   options.stations = request.stations ? *request.stations
                      : file.stations  ? station_output(*file.stations)
                                       : StationOutput::summary;
@@ -201,6 +266,10 @@ StaticOptions static_settings(const StaticSpec& file, const StaticRequest& reque
   const Real g = request.g ? *request.g
                  : (!request.gravity && file.gravity) ? file.g.value_or(defaults::gravity)
                                                       : defaults::gravity;
+  checked<StaticSpec>(request.g, "g", "--g");
+  checked<StaticSpec>(request.speed, "speed", "--speed");
+  if (request.g && direction == "none")
+    throw Error("--g cannot be given with --gravity none; give a direction such as --gravity -z, or leave --g out");
   if (!(g > 0.0)) throw Error("--g must be positive");
   if (direction != "none") {
     const bool signed_direction = direction.size() == 2 && (direction[0] == '+' || direction[0] == '-');
@@ -218,6 +287,35 @@ StaticOptions static_settings(const StaticSpec& file, const StaticRequest& reque
 TransientOptions runup_settings(const Model& model, const RunupSpec& file,
                                 const RunupRequest& request) {
   TransientOptions options;
+  checked<RunupSpec>(request.speed, "speed", "--speed");
+  checked<RunupSpec>(request.from, "from", "--from");
+  checked<RunupSpec>(request.to, "to", "--to");
+  checked<RunupSpec>(request.ramp_time, "ramp_time", "--ramp-time");
+  checked<RunupSpec>(request.duration, "duration", "--duration");
+  checked<RunupSpec>(request.dt, "dt", "--dt");
+  checked<RunupSpec>(request.output_interval, "output_interval", "--output-interval");
+  checked<RunupSpec>(request.rel_tol, "rel_tol", "--rtol");
+  checked<RunupSpec>(request.abs_tol, "abs_tol", "--atol");
+  checked_count<RunupSpec>(request.modes, "modes", "--modes");
+  // The table by the file's rule: from time 0, strictly increasing times, speeds ≥ 0.
+  for (std::size_t i = 0; i < request.table.size(); ++i) {
+    const auto [time, speed] = request.table[i];
+    checked<RunupSpec>(speed, "speed", fmt::format("--table point {}", i + 1));
+    if (!std::isfinite(time) || std::abs(time) > physical_range(Quantity::time).largest)
+      throw Error(fmt::format("--table point {}: the time must be a finite time", i + 1));
+    if (i == 0 && time != 0.0)
+      throw Error(fmt::format("--table must start at time 0, where the run-up starts, but its first time is {}",
+                              format_quantity(time, Quantity::time)));
+    if (i > 0 && !(time > request.table[i - 1].first))
+      throw Error(fmt::format("--table: the times must be strictly increasing, but point {} ({}) does not come "
+                              "after point {} ({})",
+                              i + 1, format_quantity(time, Quantity::time), i,
+                              format_quantity(request.table[i - 1].first, Quantity::time)));
+  }
+  check_distinct(request.probes, "--probe", "node", [&](Index n) { return model.node_label(n); });
+  check_distinct(request.springs, "--spring", "spring", [&](Index e) {
+    return fmt::format("'{}'", model.elements[static_cast<std::size_t>(e)].label());
+  });
   const bool ramp = request.from || request.to || request.ramp_time;
   const int forms = static_cast<int>(request.speed.has_value()) + static_cast<int>(ramp) +
                     static_cast<int>(!request.table.empty());

@@ -382,7 +382,7 @@ const FieldTable<ModalSpec>& fields_of<ModalSpec>() {
   using S = ModalSpec;
   static const FieldTable<S> table = {
       {.key = "speed", .kind = K::quantity, .member = &S::speed, .doc = "rotor speed of the modal analysis",
-       .quantity = Q::speed, .unit = "Hz"},
+       .quantity = Q::speed, .bound = non_negative, .unit = "Hz"},
       {.key = "modes", .kind = K::integer, .member = &S::modes, .doc = "number of modes",
        .bound = at_least(1)},
   };
@@ -394,11 +394,11 @@ const FieldTable<CampbellSpec>& fields_of<CampbellSpec>() {
   using S = CampbellSpec;
   static const FieldTable<S> table = {
       {.key = "start", .kind = K::quantity, .member = &S::start, .doc = "first speed",
-       .quantity = Q::speed, .unit = "Hz"},
+       .quantity = Q::speed, .bound = non_negative, .unit = "Hz"},
       {.key = "stop", .kind = K::quantity, .member = &S::stop,
-       .doc = "last speed; > `start` when both are given", .quantity = Q::speed, .unit = "Hz"},
+       .doc = "last speed; > `start` when both are given", .quantity = Q::speed, .bound = non_negative, .unit = "Hz"},
       {.key = "points", .kind = K::integer, .member = &S::points,
-       .doc = "number of speeds", .bound = at_least(2)},
+       .doc = "number of speeds", .bound = at_least(2, max_sweep_points)},
       {.key = "modes", .kind = K::integer, .member = &S::modes, .doc = "number of modes to track",
        .bound = at_least(1)},
       {.key = "orders", .kind = K::integer_list, .member = &S::orders,
@@ -412,11 +412,12 @@ const FieldTable<ResponseSpec>& fields_of<ResponseSpec>() {
   using S = ResponseSpec;
   static const FieldTable<S> table = {
       {.key = "start", .kind = K::quantity, .member = &S::start,
-       .doc = "first point of the sweep (rotor speed, or excitation frequency in a frequency sweep)", .quantity = Q::speed, .unit = "Hz"},
+       .doc = "first point of the sweep (rotor speed, or excitation frequency in a frequency sweep)", .quantity = Q::speed,
+       .bound = non_negative, .unit = "Hz"},
       {.key = "stop", .kind = K::quantity, .member = &S::stop,
-       .doc = "last point; > `start` when both are given", .quantity = Q::speed, .unit = "Hz"},
+       .doc = "last point; > `start` when both are given", .quantity = Q::speed, .bound = non_negative, .unit = "Hz"},
       {.key = "points", .kind = K::integer, .member = &S::points,
-       .doc = "number of points", .bound = at_least(2)},
+       .doc = "number of points; 1: the response at `start` alone", .bound = at_least(1, max_sweep_points)},
       {.key = "probes", .kind = K::node_list, .member = &S::probes,
        .doc = "non-empty, no node twice: the nodes whose response is reported", .if_empty = default_hint},
       {.key = "loss_factor", .kind = K::number, .member = &S::loss_factor,
@@ -440,7 +441,7 @@ const FieldTable<StaticSpec>& fields_of<StaticSpec>() {
        .bound = positive, .default_text = "`9.81 m/s^2`"},
       {.key = "speed", .kind = K::quantity, .member = &S::speed,
        .doc = "rotor speed at which speed-dependent coefficients (section 5) are evaluated; without it the static analysis uses zero speed", .quantity = Q::speed,
-       .unit = "Hz"},
+       .bound = non_negative, .unit = "Hz"},
   };
   return table;
 }

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -94,6 +95,19 @@ using FieldTable = std::vector<Field<S>>;
 /// StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec and RunupSpec.
 template <class S>
 const FieldTable<S>& fields_of();
+
+/// The most points of a sweep (Campbell speeds, response points, frequencies): a
+/// million eigen solves or factorisations, hours of work and gigabytes of results;
+/// the same limit whether the count comes from a model file or a command line.
+inline constexpr std::int64_t max_sweep_points = 1'000'000;
+
+/// The field @p key of spec type S (std::logic_error when S has none: a defect).
+template <class S>
+const Field<S>& field_of(std::string_view key) {
+  for (const Field<S>& f : fields_of<S>())
+    if (f.key == key) return f;
+  throw std::logic_error("no field " + std::string(key));
+}
 
 /// The words field @p key of spec type S takes (empty for a key without choices).
 template <class S>
