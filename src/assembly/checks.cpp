@@ -76,6 +76,31 @@ std::string describe_plane_motion(const Model& model, const Vector& q, int famil
   return fmt::format("rotation about the {} axis through x = {:.4g} m", about, -a / b);
 }
 
+// The number of separate parts of a system: connected groups of DOFs, two DOFs
+// joined when K or M couples them (union–find over the non-zeros).
+Index connected_parts(const SparseMatrix& K, const SparseMatrix& M) {
+  const Index n = K.rows();
+  std::vector<Index> parent(static_cast<std::size_t>(n));
+  for (Index i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
+  const auto root = [&](Index i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+      parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+      i = parent[static_cast<std::size_t>(i)];
+    }
+    return i;
+  };
+  for (const SparseMatrix* A : {&K, &M})
+    for (Index j = 0; j < A->outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(*A, j); it; ++it)
+        if (it.value() != 0.0) {
+          const Index a = root(it.row()), b = root(it.col());
+          if (a != b) parent[static_cast<std::size_t>(a)] = b;
+        }
+  Index parts = 0;
+  for (Index i = 0; i < n; ++i) parts += root(i) == i ? 1 : 0;
+  return parts;
+}
+
 }  // namespace
 
 Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
@@ -95,20 +120,54 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
   const Real rigid_tol = tolerance::rigid_body * lambda_max;
 
   // Sylvester's law of inertia: an LDLᵀ factorisation of K − τ·M has as many negative
-  // pivots as (K, M) has eigenvalues below τ. With τ = rigid_tol and every pivot
-  // positive, no motion can pass the Rayleigh-quotient test below (Ritz values bound
-  // the lowest eigenvalues from above): one factorisation instead of the subspace
-  // iteration, for the usual model held by its bearings.
-  {
-    const Eigen::SimplicialLDLT<SparseMatrix> inertia(SparseMatrix(K - rigid_tol * M));
-    if (inertia.info() == Eigen::Success && (inertia.vectorD().array() > 0.0).all()) return Matrix(n, 0);
+  // pivots as (K, M) has eigenvalues below τ (-1: it could not be factorised). Ritz
+  // values bound the lowest eigenvalues from above, so no more motions than that can
+  // pass the Rayleigh-quotient test below.
+  const auto count_below = [&](Real tau) -> Index {
+    const Eigen::SimplicialLDLT<SparseMatrix> inertia(SparseMatrix(K - tau * M));
+    if (inertia.info() != Eigen::Success) return -1;
+    return (inertia.vectorD().array() < 0.0).count();
+  };
+  // None below τ, for the usual model held by its bearings: one factorisation.
+  Index expected = count_below(rigid_tol);
+  if (expected == 0) return Matrix(n, 0);
+  Real tol = rigid_tol, shift = mu;
+  if (expected > 0) {
+    // Eigenvalues between the floor and τ are vibrations of a wide spectrum (a fine
+    // mesh), not rigid motions: the test moves down to the floor, and the shift with
+    // it, so that the iteration separates the two (with μ far above them it did not
+    // converge, and grew with the model).
+    const Real floor = tolerance::rigid_body_floor * lambda_max;
+    const Index below_floor = count_below(floor);
+    if (below_floor >= 0 && below_floor < expected) {
+      if (below_floor == 0) return Matrix(n, 0);
+      expected = below_floor;
+      tol = floor;
+      shift = 0.1 * floor;
+    }
   }
+  // A body has at most six rigid motions, so more eigenvalues below the test than six
+  // per separate part are vibrations whose frequencies are 10⁻⁷ of the highest and
+  // less, within a hundred times the round-off of double precision: rigid-body
+  // motion cannot be told from vibration, and the lowest modes of any analysis would
+  // lose their accuracy. Said as such, rather than naming vibrations free motions.
+  const Index most_rigid = 6 * connected_parts(K, M);
+  if (expected > most_rigid)
+    throw ModelStructureError(fmt::format(
+        "the stiffness spans too many orders of magnitude to be resolved: {} motions have natural "
+        "frequencies below 1e-6 times the highest ({:.3g} Hz), more than the {} rigid-body motions "
+        "the model's parts can have; very short shaft elements (a fine mesh: the highest frequency "
+        "grows with the number of elements) or very stiff springs beside soft parts cause this; use "
+        "fewer, longer elements",
+        expected, std::sqrt(lambda_max) / (2 * pi), most_rigid));
 
-  Eigen::SimplicialLDLT<SparseMatrix> shifted(K + mu * M);
+  Eigen::SimplicialLDLT<SparseMatrix> shifted(K + shift * M);
   if (shifted.info() != Eigen::Success)
     throw ModelStructureError("the stiffness matrix could not be factorised (is it indefinite?)");
 
-  for (Index p = std::min<Index>(n, 12);; p = std::min<Index>(n, 2 * p)) {
+  // Subspace iteration on a few more vectors than the motions counted above.
+  const Index p0 = expected > 0 ? std::min<Index>(n, expected + 6) : std::min<Index>(n, 12);
+  for (Index p = p0;; p = std::min<Index>(n, 2 * p)) {
     std::mt19937 rng(12345);
     std::uniform_real_distribution<Real> dist(-1.0, 1.0);
     Matrix X(n, p);
@@ -123,7 +182,7 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
     Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(0.5 * (kr + kr.transpose()),
                                                           0.5 * (mr + mr.transpose()));
     Index n_null = 0;
-    while (n_null < p && ritz.eigenvalues()(n_null) < rigid_tol) ++n_null;
+    while (n_null < p && ritz.eigenvalues()(n_null) < tol) ++n_null;
     if (n_null < p || p == n) return X * ritz.eigenvectors().leftCols(n_null);
   }
 }

@@ -21,7 +21,9 @@ struct FreeMotionInfo {
 
 /// An M-orthonormal basis (reduced coordinates) of the motions along which the
 /// symmetric part of @p K is singular: Rayleigh quotient below 1e-12·max(K_ii/M_ii).
-/// Zero columns when K is regular.
+/// Zero columns when K is regular. Throws ModelStructureError when more eigenvalues lie
+/// below that than six per connected part (the most rigid motions a body has): the
+/// spectrum is too wide for double precision to tell rigid motion from vibration.
 Matrix stiffness_null_space(const SparseMatrix& K, const SparseMatrix& M);
 
 /// The rigid-body motions of @p model at zero speed (may be empty).

@@ -19,6 +19,11 @@ inline constexpr Real symmetry = 1e-12;
 /// this times the largest K_ii/M_ii: a natural frequency 10⁻⁶ times the highest one,
 /// far above round-off (~1e-16 times the largest).
 inline constexpr Real rigid_body = 1e-12;
+/// The same for a model whose vibrations reach below rigid_body (a fine mesh: the
+/// highest natural frequency grows with the number of elements, so the lowest can be
+/// 10⁻⁶ of it and less): a frequency 10⁻⁷ times the highest, still 100 times the
+/// round-off. Used only where the spectrum has eigenvalues between the two.
+inline constexpr Real rigid_body_floor = 1e-14;
 
 /// A computed eigenvalue is real when |Im p| is at most this times |p|: the round-off
 /// of the complex arithmetic of the solvers.
