@@ -9,6 +9,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib
+  clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers (scripts/fuzz.sh)
 )
 
 missing=()

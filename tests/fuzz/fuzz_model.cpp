@@ -1,0 +1,67 @@
+// Fuzzing harness: reader, builder and checks, then what a user does with a small
+// model that passes them: a modal analysis (dense, all modes), a static deflection,
+// and every writer (JSON, CSV, the terminal table, the model written back as TOML).
+// Invariants beyond "no crash": the TOML written reads back to an equal spec, and a
+// valid model's results are written without an exception. Any exception other than
+// feran::Error is a defect (abort). docs/fuzzing.md says how to run it.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/settings.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/core/error.hpp>
+#include <feran/io/model_reader.hpp>
+#include <feran/io/model_writer.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+
+namespace {
+
+// Larger models are read and checked but not analysed: the harness looks for defects
+// of the code, and a dense eigen solve of thousands of DOFs only slows it down.
+constexpr feran::Index max_analysed_dofs = 300;
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace feran;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  ModelFile file;
+  try {
+    file = read_model_string(text, "fuzz.toml");
+  } catch (const Error&) {
+    return 0;  // a bad model, refused with a message
+  }
+  // The model written back reads as the same spec.
+  try {
+    if (!(read_model_spec(write_toml(file.spec), "written.toml") == file.spec)) std::abort();
+  } catch (const Error&) {
+    std::abort();
+  }
+  if (file.model.n_dofs() > max_analysed_dofs) return 0;
+  const ResultSource source{file.path, file.title};
+  try {
+    ModalRequest request;
+    request.solver = EigenSolver::dense;
+    const ModalSettings settings = modal_settings(file.spec.modal, request);
+    const ModalResult modal = run_modal(file.model, settings.speed, settings.options, file.assembler);
+    (void)modal_json(modal, file.model, source, true);
+    (void)modal_csv(modal);
+    (void)modal_report(modal, file.model, source);
+  } catch (const Error&) {
+  }
+  try {
+    const StaticOptions options = static_settings(file.spec.static_, StaticRequest{});
+    const StaticResult result = run_static(file.model, options);
+    if (result.info.converged()) {
+      (void)static_json(result, options, file.model, source);
+      (void)static_csv(result, file.model);
+      (void)static_report(result, options, file.model, source);
+    }
+  } catch (const Error&) {
+  }
+  return 0;
+}
