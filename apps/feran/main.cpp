@@ -8,7 +8,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <fmt/format.h>
+
 #include <feran/core/error.hpp>
+#include <feran/core/suggestions.hpp>
 #include <feran/core/text.hpp>
 
 #include "commands.hpp"
@@ -95,6 +98,17 @@ int main(int argc, char** argv) {
     for (CLI::Option* option : sub->get_options())
       if (option->get_type_size() > 0 && option->get_expected_min() > 0) option->check(non_empty);
 
+  // A first argument that is neither an option nor a command is a mistyped command
+  // (CLI11 would only say that a command is required).
+  if (argc > 1 && argv[1][0] != '-' && runners.count(argv[1]) == 0) {
+    std::vector<std::string> names;
+    for (const auto& [name, runner] : runners) names.push_back(name);
+    std::string message = fmt::format("unknown command '{}'", feran::printable(argv[1]));
+    if (const auto match = feran::detail::closest_match(argv[1], names, 2)) message += fmt::format("; did you mean '{}'?", *match);
+    std::fprintf(stderr, "feran: error: %s (the commands are %s)\n", message.c_str(),
+                 feran::detail::join_list(names, "and", '\'').c_str());
+    return static_cast<int>(CLI::ExitCodes::ExtrasError);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -264,17 +264,19 @@ void OutputFiles::commit() {
     o->fd = -1;
     if (o->error != 0) throw o->failure(system_reason(o->error));
   }
+  // Then what is written in place (a failure there still leaves every regular target
+  // as it was), and last the renames.
+  for (auto& o : outputs_) {
+    if (o->kind != Output::Kind::descriptor && o->kind != Output::Kind::in_place) continue;
+    o->flush();
+    if (o->error != 0) throw o->failure(system_reason(o->error));
+  }
   for (auto& o : outputs_) {
     if (o->kind != Output::Kind::replace) continue;
     if (::rename(o->temporary.c_str(), o->target.c_str()) != 0) throw o->failure(system_reason(errno));
     o->done = true;
     unregister_temporary(o->slot);
     o->slot = -1;
-  }
-  for (auto& o : outputs_) {
-    if (o->kind != Output::Kind::descriptor && o->kind != Output::Kind::in_place) continue;
-    o->flush();
-    if (o->error != 0) throw o->failure(system_reason(o->error));
   }
   committed_ = true;
 }

@@ -52,9 +52,10 @@ class OutputFiles {
   /// More of streamed output @p id. A write error is kept and reported by commit().
   void append(int id, std::string_view text);
   /// Writes every output and gives each its name: first all temporary files are
-  /// completed (a failure removes them all and throws, no target touched), then each
-  /// is renamed and the outputs written in place are written. Throws feran::Error
-  /// naming the file and the system's reason.
+  /// completed, then the outputs written in place are written (a failure in either
+  /// removes every temporary file and throws, no regular target touched), and last
+  /// each temporary file is renamed. Throws feran::Error naming the file and the
+  /// system's reason.
   void commit();
 
  private:

@@ -1,0 +1,369 @@
+"""A corpus of hostile inputs for the feran command: bad syntax, types, units, ranges,
+references, sizes, encodings, special files and option combinations. Each case
+states its exit code and the message (with its location, file:line:column, where
+the problem is in a file); every case runs in a directory of its own with --json and
+--csv asked for, and must leave no file behind. A case ends in one of:
+
+  located   the stated exit code and message (a clear, located error)   -- expected
+  crash     a signal, an internal error (exit 4) or a sanitizer report
+  hang      no end within the time limit
+  accepted  exit 0 for an input that must be refused (nonsense accepted)
+  damaged   an output file written, or the model file changed
+  other     another exit code or another message
+
+Run by ctest (tests/hostile/CMakeLists.txt), one test per group:
+
+    python3 tests/hostile/test_hostile.py FERAN SOURCE_DIR [GROUP]
+    python3 tests/hostile/test_hostile.py FERAN SOURCE_DIR --summary   # counts per outcome, never fails
+"""
+import os
+import re
+import stat
+import subprocess
+import sys
+import tempfile
+
+TIME_LIMIT = 120  # seconds per case; the slowest legitimate refusal takes well under one
+
+
+class Case:
+    def __init__(self, group, name, args, code, message, model=None, files=None, setup=None):
+        self.group, self.name, self.args, self.code, self.message = group, name, args, code, message
+        self.model = model  # text (str or bytes) of model.toml, written into the case's directory
+        self.files = files or {}  # more files: name -> bytes
+        self.setup = setup  # a function of the directory, for special files
+
+
+def base_model():
+    with open(os.path.join(SOURCE, "examples", "01_internal_damping", "model.toml"), encoding="utf-8") as f:
+        return f.read()
+
+
+def mutated(old, new, count=1):
+    text = base_model()
+    assert old in text, old
+    return text.replace(old, new, count)
+
+
+def line_of(text, needle):
+    return text[: text.index(needle)].count("\n") + 1
+
+
+def in_model(group, name, old, new, message, line_needle=None, args=("modal",), code=1, line_offset=0):
+    """A case of the example model with @p old replaced by @p new; the message must be
+    located at the line holding @p line_needle (default: @p new), plus @p line_offset."""
+    text = mutated(old, new)
+    line = line_of(text, line_needle if line_needle is not None else new) + line_offset
+    return Case(group, name, [args[0], "model.toml", *args[1:]], code,
+                rf"model\.toml:{line}:\d+: .*{message}", model=text)
+
+
+def cases():
+    out = []
+    add = out.append
+    E = ["modal", "model.toml"]
+
+    # ------------------------------------------------------------------ fixtures
+    invalid = os.path.join(SOURCE, "tests", "models", "invalid")
+    for name in sorted(os.listdir(invalid)):
+        with open(os.path.join(invalid, name), "rb") as f:
+            data = f.read()
+        head = data.decode("utf-8", "replace").splitlines()
+        line = re.match(r"# error-line: (\d+)", head[0]).group(1)
+        match = re.match(r"# error-match: (.*)", head[1]).group(1)
+        match = match[1:] if match.startswith("^") else ".*" + match
+        add(Case("fixtures", name[:-5], ["modal", "model.toml"], 1, rf"model\.toml:{line}:\d+: {match}", model=data))
+
+    # ------------------------------------------------------------------ syntax
+    add(in_model("syntax", "unclosed_string", 'name = "steel"', 'name = "steel', "TOML syntax error"))
+    add(in_model("syntax", "unclosed_header", "[[springs]]", "[[springs]", "TOML syntax error"))
+    add(in_model("syntax", "duplicate_key", 'nu = 0.3', 'nu = 0.3\nnu = 0.4', "TOML syntax error.*redefine", "nu = 0.4"))
+    add(in_model("syntax", "missing_equals", 'nu = 0.3', 'nu 0.3', "TOML syntax error"))
+    add(in_model("syntax", "missing_value", 'nu = 0.3', 'nu =', "TOML syntax error"))
+    add(in_model("syntax", "bad_escape", 'name = "steel"', r'name = "st\qeel"', "TOML syntax error"))
+    add(in_model("syntax", "bare_word_value", 'material = "steel"', 'material = steel', "TOML syntax error"))
+    add(in_model("syntax", "unclosed_inline_table", 'nu = 0.3', 'nu = {a = 1', "TOML syntax error"))
+    add(in_model("syntax", "unclosed_array", 'nu = 0.3', 'nu = [1, 2', "TOML syntax error", "nu = [", line_offset=1))
+    add(in_model("syntax", "stray_bracket", 'nu = 0.3', 'nu = 0.3 ]', "TOML syntax error"))
+    add(in_model("syntax", "table_redefined", "[campbell]", "[campbell]\n[campbell]", "TOML syntax error",
+                 "[campbell]\n[campbell]", line_offset=1))
+    add(in_model("syntax", "header_without_name", "[[springs]]", "[[ =springs]]",
+                 "a table header must name its table"))
+    add(in_model("syntax", "unit_without_quotes", 'length = "60 mm"', 'length = 60 mm', "TOML syntax error"))
+    add(in_model("syntax", "micro_unquoted", 'length = "60 mm"', 'length = 60000 µm',
+                 "'µ' outside a quoted string or a comment"))
+    add(in_model("syntax", "key_too_deep", 'nu = 0.3', "a" + ".a" * 80 + " = 1", "nesting too deep"))
+    add(in_model("syntax", "arrays_too_deep", 'nu = 0.3', "nu = " + "[" * 300 + "]" * 300,
+                 "exceeded maximum nested value depth"))
+    add(in_model("syntax", "unknown_table", "[campbell]", "[campbel]", "unknown key 'campbel' at the top level; did you mean 'campbell'"))
+    add(in_model("syntax", "unknown_key", 'nu = 0.3', 'nuu = 0.3', "unknown key 'nuu'.*did you mean 'nu'"))
+
+    # ------------------------------------------------------------------ encodings
+    text = base_model()
+    add(Case("encodings", "nul_byte", E, 1, r"model\.toml:\d+:\d+: TOML syntax error",
+             model=text.replace('nu = 0.3', 'nu = 0\x003').encode()))
+    add(Case("encodings", "invalid_utf8_in_string", E, 1, r"model\.toml:\d+:\d+: TOML syntax error",
+             model=text.encode().replace(b'name = "steel"', b'name = "st\xffeel"')))
+    add(Case("encodings", "invalid_utf8_outside_string", E, 1,
+             r"model\.toml:\d+:\d+: the byte \\xff outside a quoted string",
+             model=text.encode().replace(b"nu = 0.3", b"nu = 0.3 \xff")))
+    add(Case("encodings", "utf16", E, 1, r"model\.toml:1:\d+: ",
+             model=text.encode("utf-16")))
+    add(Case("encodings", "lone_carriage_return", E, 1, r"model\.toml:\d+:\d+: TOML syntax error",
+             model=text.replace("nu = 0.3\n", "nu = 0.3\rrho2 = 1\n")))
+    add(Case("encodings", "middle_dot", E, 1, r"model\.toml:1:1: '·' outside a quoted string", model=b"\xc2\xb7"))
+    add(Case("encodings", "binary_garbage", E, 1, r"model\.toml:1:\d+: ", model=bytes(range(256)) * 4))
+    add(Case("encodings", "empty_file", E, 1, r"model\.toml:1:1: the model has no nodes", model=b""))
+    add(Case("encodings", "only_comments", E, 1, r"model\.toml:1:1: the model has no nodes", model=b"# nothing\n"))
+
+    # ------------------------------------------------------------------ types
+    add(in_model("types", "boolean_modulus", 'E = "210 GPa"', 'E = true', "'E' must be"))
+    add(in_model("types", "string_number", 'nu = 0.3', 'nu = "0.3"', "'nu' must be a number"))
+    add(in_model("types", "fractional_count", 'elements = 6', 'elements = 2.5', "'elements' must be an integer"))
+    add(in_model("types", "string_count", 'elements = 6', 'elements = "6"', "'elements' must be an integer"))
+    add(in_model("types", "list_not_string", 'name = "rotor"', 'name = ["rotor"]', "'name' must be a string"))
+    add(in_model("types", "table_not_list", 'probes = ["rotor"]', 'probes = {a = 1}', "'probes' must be"))
+    add(in_model("types", "string_not_list", 'probes = ["rotor"]\n\n[runup]', 'probes = "rotor"\n\n[runup]',
+                 "'probes' must be", 'probes = "rotor"'))
+    add(in_model("types", "date_value", 'nu = 0.3', 'nu = 1979-05-27', "'nu' must be a number"))
+    add(in_model("types", "array_of_tables_as_table", '[[fixed]]', '[fixed]', "'fixed' must be an array of tables"))
+
+    # ------------------------------------------------------------------ units
+    add(in_model("units", "unknown_unit", 'length = "60 mm"', 'length = "60 mmm"', "'length' has unit 'mmm', expected a length"))
+    add(in_model("units", "wrong_quantity", 'length = "60 mm"', 'length = "60 kg"', "'kg' is a unit of mass"))
+    add(in_model("units", "no_number", 'length = "60 mm"', 'length = "mm"', "'length' must be a length"))
+    add(in_model("units", "compound_wrong", 'rho = "7850 kg/m^3"', 'rho = "7850 kg/m^4"', "'rho'"))
+    add(in_model("units", "overflowing_number", 'length = "60 mm"', 'length = "1e400 mm"', "'length'"))
+    add(in_model("units", "nan_quantity", 'length = "60 mm"', 'length = "nan mm"', "'length'"))
+    add(in_model("units", "inf_quantity", 'length = "60 mm"', 'length = "inf mm"', "'length'"))
+    add(in_model("units", "double_sign", 'length = "60 mm"', 'length = "--60 mm"', "'length'"))
+    add(in_model("units", "speed_in_seconds", 'stop = "80 Hz"', 'stop = "80 s"', "'stop' has unit 's', expected a speed"))
+
+    # ------------------------------------------------------------------ ranges
+    add(in_model("ranges", "modulus_1e308", 'E = "210 GPa"', 'E = "1e308 GPa"', "'E' must be a finite number"))
+    add(in_model("ranges", "density_1e308", 'rho = "7850 kg/m^3"', 'rho = "1e308 g/cm^3"', "'rho' must be a finite number"))
+    add(in_model("ranges", "length_1e-300", 'length = "60 mm"', 'length = "1e-300 m"', "below the physical range"))
+    add(in_model("ranges", "length_1e308", 'length = "60 mm"', 'length = "1e308 m"', "beyond the physical range"))
+    add(in_model("ranges", "speed_1e308", 'stop = "80 Hz"\npoints = 161\nmodes', 'stop = "1e308 Hz"\npoints = 161\nmodes',
+                 "'stop'", 'stop = "1e308 Hz"'))
+    add(in_model("ranges", "mass_1e308", 'mass = "9.1 kg"', 'mass = "1e308 kg"', "beyond the physical range"))
+    add(in_model("ranges", "unbalance_1e300", 'mass = "0.01 kg"', 'mass = "1e300 kg"', "beyond the physical range"))
+    add(in_model("ranges", "negative_length", 'length = "60 mm"', 'length = "-60 mm"', "'length' must be positive"))
+    add(in_model("ranges", "poisson_too_large", 'nu = 0.3', 'nu = 0.6', "'nu'"))
+    add(in_model("ranges", "zero_elements", 'elements = 6', 'elements = 0', "'elements' must be at least 1"))
+    add(in_model("ranges", "too_many_elements", 'elements = 6', 'elements = 1000000', "'elements' must be at most"))
+    add(in_model("ranges", "points_1e9", 'points = 161\nmodes', 'points = 1000000000\nmodes',
+                 "'points' must be at most 1000000", "points = 1000000000"))
+    add(in_model("ranges", "negative_speed", 'start = "0 Hz"\nstop = "80 Hz"\npoints = 161\nmodes',
+                 'start = "-5 Hz"\nstop = "80 Hz"\npoints = 161\nmodes', "'start' must not be negative",
+                 'start = "-5 Hz"'))
+    add(in_model("ranges", "stop_below_start", 'start = "0 Hz"\nstop = "80 Hz"\npoints = 161\nmodes',
+                 'start = "90 Hz"\nstop = "80 Hz"\npoints = 161\nmodes', "'stop'.*must be greater than 'start'",
+                 'stop = "80 Hz"\npoints = 161\nmodes'))
+    add(in_model("ranges", "inner_above_outer", 'outer_diameter = "6 mm"', 'outer_diameter = "6 mm"\n  inner_diameter = "7 mm"',
+                 "inner_diameter", 'inner_diameter = "7 mm"'))
+    add(in_model("ranges", "damping_1e300", 'cy = "250 N*s/m"', 'cy = "1e300 N*s/m"', "beyond the physical range"))
+    add(in_model("ranges", "runup_dt_1e-300", 'dt = "0.1 ms"', 'dt = "1e-300 s"', "below the physical range"))
+    add(in_model("ranges", "runup_duration_1e300", 'ramp_time = "5 s"', 'ramp_time = "5 s"\nduration = "1e300 s"',
+                 "beyond the physical range", 'duration = "1e300 s"'))
+
+    # ------------------------------------------------------------------ references
+    add(in_model("references", "unknown_material", 'material = "steel"', 'material = "titanium"',
+                 "material 'titanium' is not defined; the defined materials are 'steel'"))
+    fixed = '[[fixed]]              # clamped at the drive end (all six DOFs)\nnode = "drive"'
+    add(in_model("references", "unknown_node", fixed, '[[fixed]]\nnode = "driev"', "'driev' does not exist.*did you mean 'drive'",
+                 'node = "driev"'))
+    add(in_model("references", "unknown_probe", 'probes = ["rotor"]', 'probes = ["rotr"]', "'rotr'"))
+    add(in_model("references", "duplicate_probe", 'probes = ["rotor"]', 'probes = ["rotor", "rotor"]', "appears twice"))
+    add(in_model("references", "unknown_dof", '[[fixed]]              # clamped at the drive end (all six DOFs)\nnode = "drive"',
+                 '[[fixed]]\nnode = "drive"\ndofs = ["qx"]', "got \"qx\"; did you mean \"rx\"", 'dofs = ["qx"]'))
+    add(in_model("references", "unknown_free_motion", '[campbell]', '[options]\nfree_motions = ["wobble"]\n\n[campbell]',
+                 "wobble", 'free_motions'))
+    add(in_model("references", "unknown_integrator", 'integrator = "trapezoidal"', 'integrator = "euler"', 'got "euler"'))
+    add(in_model("references", "node_number_overflow", 'start_node = "drive"', 'start_node = 2147483648', "start_node"))
+    long_name = "x" * 100000
+    add(in_model("references", "long_unknown_name", fixed, f'[[fixed]]\nnode = "{long_name}"', "does not exist",
+                 'node = "xxx'))
+
+    # ------------------------------------------------------------------ special files
+    def fifo(d):
+        os.mkfifo(os.path.join(d, "fifo.toml"))
+
+    def sparse(d):
+        with open(os.path.join(d, "big.toml"), "wb") as f:
+            f.write(b'title = "x"\n')
+            f.truncate((64 << 20) + 1)
+
+    def directory(d):
+        os.mkdir(os.path.join(d, "dir.toml"))
+
+    def loop(d):
+        os.symlink("loop.toml", os.path.join(d, "loop.toml"))
+
+    add(Case("special", "fifo_without_writer", ["modal", "fifo.toml"], 1, r"'fifo\.toml' is not a regular file \(a FIFO\)",
+             setup=fifo))
+    add(Case("special", "dev_zero", ["modal", "/dev/zero"], 1, r"is not a regular file \(a character device\)"))
+    add(Case("special", "dev_urandom", ["modal", "/dev/urandom"], 1, r"is not a regular file \(a character device\)"))
+    add(Case("special", "dev_null", ["modal", "/dev/null"], 1, r"is not a regular file \(a character device\)"))
+    add(Case("special", "directory", ["modal", "dir.toml"], 1, r"'dir\.toml' is a directory, not a model file",
+             setup=directory))
+    add(Case("special", "larger_than_64_mib", ["modal", "big.toml"], 1, r"limited to 67108864 bytes", setup=sparse))
+    add(Case("special", "missing", ["modal", "missing.toml"], 1, r"cannot open model file 'missing\.toml'"))
+    add(Case("special", "symlink_loop", ["modal", "loop.toml"], 1, r"loop\.toml", setup=loop))
+
+    # ------------------------------------------------------------------ options
+    R = ["runup", "model.toml"]
+    S = ["response", "model.toml"]
+    C = ["campbell", "model.toml"]
+    T = ["static", "model.toml"]
+    opts = [
+        ("speed_without_unit", E + ["--speed", "30"], 1, r"--speed '30': give a speed with its unit"),
+        ("speed_bad_unit", E + ["--speed", "30kg"], 1, r"the unit must be Hz, rpm or rad/s"),
+        ("speed_negative", E + ["--speed", "-3Hz"], 1, r"--speed: must not be negative, got -3 Hz"),
+        ("speed_beyond_range", E + ["--speed", "1e308Hz"], 1, r"beyond the physical range of a speed"),
+        ("speed_empty", E + ["--speed", ""], 105, r"--speed: needs a value"),
+        ("modes_zero", E + ["--modes", "0"], 105, r"--modes: must be positive, got 0"),
+        ("modes_text", E + ["--modes", "many"], 105, r"--modes"),
+        ("solver_unknown", E + ["--solver", "magic"], 105, r"--solver"),
+        ("points_zero", C + ["--points", "0"], 1, r"--points: must be at least 2, got 0"),
+        ("points_huge", C + ["--points", "2000000"], 1, r"--points: must be at most 1000000"),
+        ("campbell_stop_below_start", C + ["--start", "50Hz", "--stop", "10Hz"], 1, r"must be above the first"),
+        ("campbell_orders_zero", C + ["--orders", "0"], 105, r"--orders: must be positive"),
+        ("response_points_huge", S + ["--points", "2000000"], 1, r"--points: must be at most 1000000"),
+        ("loss_factor_nan", S + ["--loss-factor", "nan"], 105, r"--loss-factor: 'nan' is not a finite number"),
+        ("loss_factor_negative", S + ["--loss-factor", "-1"], 105, r"--loss-factor: must be non-negative"),
+        ("probe_unknown", S + ["--probe", "rotr"], 1, r"--probe 'rotr'"),
+        ("probe_twice", S + ["--probe", "rotor", "--probe", "7"], 1, r"--probe: node 7 \(rotor\) is given twice"),
+        ("force_malformed", S + ["--force", "rotor:q:1N"], 1, r"--force"),
+        ("freq_start_alone", S + ["--freq-start", "1Hz"], 1, r"needs both --freq-start and --freq-stop"),
+        ("gravity_unknown", T + ["--gravity", "sideways"], 105, r"--gravity"),
+        ("gravity_none_with_g", T + ["--gravity", "none", "--g", "5m/s^2"], 1, r"--g cannot be given with --gravity none"),
+        ("g_negative", T + ["--g", "-1m/s^2"], 1, r"--g"),
+        ("g_beyond_range", T + ["--g", "1e308m/s^2"], 1, r"beyond the physical range of an acceleration"),
+        ("static_speed_negative", T + ["--speed", "-1Hz"], 1, r"--speed: must not be negative"),
+        ("runup_from_negative", R + ["--from", "-3Hz", "--to", "5Hz", "--ramp-time", "1s"], 1, r"--from: must not be negative"),
+        ("runup_ramp_incomplete", R + ["--to", "5Hz"], 1, r"a ramp needs --to and --ramp-time"),
+        ("runup_two_profiles", R + ["--speed", "5Hz", "--table", "0s:0Hz,1s:5Hz"], 1, r"give one speed profile"),
+        ("runup_table_malformed", R + ["--table", "0s-0Hz"], 1, r"--table"),
+        ("runup_table_not_at_zero", R + ["--table", "1s:0Hz,2s:5Hz"], 1, r"--table must start at time 0"),
+        ("runup_table_negative", R + ["--table", "0s:0Hz,2s:-5Hz"], 1, r"--table point 2: must not be negative"),
+        ("runup_table_not_increasing", R + ["--table", "0s:0Hz,0s:5Hz"], 1, r"strictly increasing"),
+        ("runup_dt_zero", R + ["--dt", "0s"], 1, r"--dt"),
+        ("runup_dt_tiny", R + ["--dt", "1e-300s"], 1, r"--dt: 1e-300 s is below the physical range"),
+        ("runup_duration_huge", R + ["--speed", "1Hz", "--duration", "1e300s"], 1, r"--duration: 1e\+300 s is beyond"),
+        ("runup_too_many_samples", R + ["--output-interval", "1e-9s"], 1, r"samples; at most 1e\+07"),
+        ("runup_too_many_steps", R + ["--dt", "1e-9s", "--duration", "10s"], 1, r"steps; at most 1e\+09"),
+        ("runup_integrator_unknown", R + ["--integrator", "euler"], 105, r"--integrator"),
+        ("runup_rk3_unstable", R + ["--speed", "10Hz", "--duration", "0.1s", "--integrator", "rk3", "--dt", "1e-2s"],
+         1, r"stability limit"),
+        ("runup_spring_unknown", R + ["--spring", "nope"], 1, r"--spring 'nope': no spring-damper has that name"),
+        ("runup_spring_twice", R + ["--speed", "1Hz", "--duration", "0.01s", "--spring", "external damping",
+                                    "--spring", "external damping"], 1, r"--spring: spring 'external damping' is given twice"),
+        ("set_unknown_path", E + ["--set", "springs[0].kyy=1 N/m"], 1, r"did you mean 'ky'"),
+        ("set_bad_value", E + ["--set", "rigid_bodies[rotor].mass=-2 kg"], 1, r"'mass' must not be negative"),
+        ("set_without_value", E + ["--set", "materials[steel].E"], 1, r"expected PATH=VALUE"),
+        ("set_beyond_range", E + ["--set", "materials[steel].E=1e308 GPa"], 1, r"'E' must be a finite number"),
+        ("unknown_option", E + ["--sped", "3Hz"], 109, r"--sped"),
+        ("unknown_command", ["modl", "model.toml"], 109, r"unknown command 'modl'; did you mean 'modal'\?"),
+        ("no_command", [], 106, r"A subcommand is required"),
+        ("no_model", ["modal"], 106, r"model is required"),
+        ("probe_swallows_nothing", ["response", "--probe", "rotor"], 106, r"model is required"),
+    ]
+    for name, args, code, message in opts:
+        add(Case("options", name, args, code, message, model=base_model()))
+
+    # ------------------------------------------------------------------ outputs
+    outputs = [
+        ("json_is_model", E + ["--json", "model.toml"], 1, r"--json 'model\.toml': cannot write: it is the model file"),
+        ("json_and_csv_same", E + ["--json", "x.json", "--csv", "x.json"], 1, r"--json already writes 'x\.json'"),
+        ("csv_missing_directory", E + ["--csv", "nodir/x.csv"], 1, r"the directory 'nodir' does not exist"),
+        ("json_directory", E + ["--json", "."], 1, r"--json '\.': cannot write: it is a directory"),
+        ("json_empty", E + ["--json", ""], 105, r"--json: needs a value"),
+        ("csv_full_device", E + ["--csv", "/dev/full"], 1, r"cannot write: No space left on device"),
+        ("runup_csv_missing_directory", R + ["--speed", "1Hz", "--duration", "0.01s", "--csv", "nodir/r.csv"], 1,
+         r"the directory 'nodir' does not exist"),
+        ("params_json_is_model", ["params", "model.toml", "--json", "model.toml"], 1, r"it is the model file"),
+    ]
+    for name, args, code, message in outputs:
+        add(Case("outputs", name, args, code, message, model=base_model()))
+    return out
+
+
+def run_case(case):
+    """The outcome of @p case and a line saying what happened."""
+    with tempfile.TemporaryDirectory(prefix="feran_hostile_") as d:
+        if case.model is not None:
+            data = case.model.encode() if isinstance(case.model, str) else case.model
+            with open(os.path.join(d, "model.toml"), "wb") as f:
+                f.write(data)
+        if case.setup:
+            case.setup(d)
+        before = snapshot(d)
+        args = list(case.args)
+        # Ask for outputs where the case has not chosen its own (not for params, or
+        # the option parser's own errors, which stop before any command runs).
+        if args and args[0] in ("modal", "campbell", "response", "static", "runup"):
+            if "--json" not in args:
+                args += ["--json", "out.json"]
+            if "--csv" not in args and args[0] != "params":
+                args += ["--csv", "out.csv"]
+        try:
+            r = subprocess.run([FERAN, *args], cwd=d, capture_output=True, timeout=TIME_LIMIT)
+        except subprocess.TimeoutExpired:
+            return "hang", f"no end after {TIME_LIMIT} s"
+        stderr = r.stderr.decode("utf-8", "replace")
+        after = snapshot(d)
+        if r.returncode < 0 or r.returncode == 4 or "Sanitizer" in stderr or "runtime error" in stderr:
+            return "crash", f"exit {r.returncode}: {stderr[-400:]}"
+        if after != before:
+            changed = sorted(set(after.items()) ^ set(before.items()))
+            return "damaged", f"files changed: {[c[0] for c in changed]}"
+        if r.returncode == 0:
+            return "accepted", "exit 0"
+        if r.returncode != case.code or not re.search(case.message, stderr):
+            return "other", f"exit {r.returncode} (expected {case.code}): {stderr.strip()[:400]!r}"
+        return "located", ""
+
+
+def snapshot(d):
+    """Name, size and content hash of every file of @p d (links not followed)."""
+    out = {}
+    for root, dirs, files in os.walk(d):
+        for name in files + dirs:
+            p = os.path.join(root, name)
+            st = os.lstat(p)
+            if stat.S_ISREG(st.st_mode) and st.st_size < (1 << 20):
+                with open(p, "rb") as f:
+                    out[os.path.relpath(p, d)] = hash(f.read())
+            else:
+                out[os.path.relpath(p, d)] = (st.st_mode, st.st_size)
+    return out
+
+
+def main():
+    global FERAN, SOURCE
+    FERAN, SOURCE = sys.argv[1], sys.argv[2]
+    selector = sys.argv[3] if len(sys.argv) > 3 else None
+    all_cases = cases()
+    if selector == "--summary":
+        counts = {}
+        for c in all_cases:
+            outcome, why = run_case(c)
+            counts[outcome] = counts.get(outcome, 0) + 1
+            if outcome != "located":
+                print(f"{c.group}/{c.name}: {outcome}: {why}")
+        print(f"{len(all_cases)} cases: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())))
+        return 0
+    chosen = [c for c in all_cases if selector is None or c.group == selector]
+    failures = 0
+    for c in chosen:
+        outcome, why = run_case(c)
+        if outcome != "located":
+            failures += 1
+            print(f"FAIL {c.group}/{c.name}: {outcome}: {why}")
+    print(f"{len(chosen) - failures} of {len(chosen)} cases refused as stated")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
