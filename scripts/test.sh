@@ -7,7 +7,9 @@
 #     run in the Release pass only; the run-up code itself is covered in both. It is
 #     built without debug information (-g0): a fifth less compile time and half the
 #     object size; the sanitizers' reports still name the functions (rebuild with
-#     -DCMAKE_CXX_FLAGS_DEBUG=-g for file and line).
+#     -DCMAKE_CXX_FLAGS_DEBUG=-g for file and line);
+#  3. the two fuzzing harnesses (libFuzzer, clang-14, ASan and UBSan) for a minute
+#     each from the seed corpus (scripts/fuzz.sh, docs/fuzzing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -19,3 +21,5 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g
   -DFERAN_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build build-sanitize -j "$jobs" >/dev/null
 ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long_runup
+
+bash scripts/fuzz.sh 60
