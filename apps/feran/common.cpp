@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 
@@ -98,8 +99,14 @@ std::optional<int> stopped_single_solve() {
 }
 
 void add_threads_option(CLI::App& cmd, int& threads) {
-  cmd.add_option("--threads", threads, "Threads for the sweep's points (default 0: all cores)")
-      ->check(non_negative_number());
+  cmd.add_option("--threads", threads, "Threads for the sweep's points (default 0: all cores; at most 1024)")
+      ->check(non_negative_number())
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            return std::strtod(text.c_str(), nullptr) > 1024 ? fmt::format("at most 1024 threads, got {}", text)
+                                                              : std::string();
+          },
+          ""));
 }
 
 namespace {

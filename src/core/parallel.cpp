@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -37,7 +38,13 @@ void parallel_for(Index n, int n_threads, const std::function<void(Index i, int 
     }
   };
   std::vector<std::thread> pool;
-  for (int w = 1; w < threads; ++w) pool.emplace_back(work, w);
+  pool.reserve(static_cast<std::size_t>(threads - 1));
+  // The system may refuse a thread (a limit on processes or memory): the items are
+  // then shared by those that started, instead of the program ending.
+  try {
+    for (int w = 1; w < threads; ++w) pool.emplace_back(work, w);
+  } catch (const std::system_error&) {
+  }
   work(0);
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);

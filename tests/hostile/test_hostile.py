@@ -226,6 +226,8 @@ def cases():
         ("modes_text", E + ["--modes", "many"], 105, r"--modes"),
         ("solver_unknown", E + ["--solver", "magic"], 105, r"--solver"),
         ("points_zero", C + ["--points", "0"], 1, r"--points: must be at least 2, got 0"),
+        ("threads_too_many", C + ["--threads", "100000"], 105, r"--threads: at most 1024 threads, got 100000"),
+        ("threads_negative", S + ["--threads", "-2"], 105, r"--threads: must be non-negative"),
         ("points_huge", C + ["--points", "2000000"], 1, r"--points: must be at most 1000000"),
         ("campbell_stop_below_start", C + ["--start", "50Hz", "--stop", "10Hz"], 1, r"must be above the first"),
         ("campbell_orders_zero", C + ["--orders", "0"], 105, r"--orders: must be positive"),

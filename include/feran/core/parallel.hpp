@@ -17,7 +17,8 @@ int resolve_threads(int requested);
 /// thread, so that each can use its own workspace. Items are handed out in order,
 /// one at a time, so uneven items balance. The first exception thrown by a body is
 /// rethrown after all threads have stopped; items not yet started are skipped.
-/// With one thread (or n ≤ 1) everything runs on the calling thread.
+/// With one thread (or n ≤ 1) everything runs on the calling thread. Threads the
+/// system refuses to start are done without: their items go to the others.
 void parallel_for(Index n, int n_threads, const std::function<void(Index i, int worker)>& body);
 
 }  // namespace feran
