@@ -317,11 +317,18 @@ def run_case(case):
         after = snapshot(d)
         if r.returncode < 0 or r.returncode == 4 or "Sanitizer" in stderr or "runtime error" in stderr:
             return "crash", f"exit {r.returncode}: {stderr[-400:]}"
-        if after != before:
-            changed = sorted(set(after.items()) ^ set(before.items()))
-            return "damaged", f"files changed: {[c[0] for c in changed]}"
+        # Devices a case writes to must stay devices (a program that renames a temporary
+        # file over its output replaces /dev/full with a regular file, as root).
+        for device in ("/dev/full", "/dev/null"):
+            if not stat.S_ISCHR(os.stat(device).st_mode):
+                return "damaged", f"{device} is no longer a device"
+        touched = sorted(name for name in before if after.get(name) != before[name])
+        if touched:
+            return "damaged", f"files changed or removed: {touched}"
         if r.returncode == 0:
-            return "accepted", "exit 0"
+            return "accepted", f"exit 0{', wrote ' + str(sorted(set(after) - set(before))) if after != before else ''}"
+        if after != before:
+            return "damaged", f"exit {r.returncode}, but wrote {sorted(set(after) - set(before))}"
         if r.returncode != case.code or not re.search(case.message, stderr):
             return "other", f"exit {r.returncode} (expected {case.code}): {stderr.strip()[:400]!r}"
         return "located", ""
