@@ -9,6 +9,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib
+  python3-dev pybind11-dev python3-pytest python3-pandas  # the Python module (python/)
   clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers (scripts/fuzz.sh)
 )
 

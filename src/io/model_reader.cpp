@@ -571,7 +571,7 @@ void build(ModelFile& file, const std::vector<std::pair<std::string, std::string
       file.node_locations.push_back(file.source.locate(path));
   } catch (const SpecError& e) {
     for (const auto& [assignment, path] : set)
-      if (overlaps(path, e.path())) throw Error(fmt::format("--set '{}': {}", assignment, e.message()));
+      if (overlaps(path, e.path())) throw Error(fmt::format("{}: {}", assignment, e.message()));
     throw file.source.locate(e);
   }
 }
@@ -619,18 +619,25 @@ ModelFile read_model_file(const std::string& path) {
 }
 
 ModelFile read_model_file(const std::string& path, const std::vector<std::string>& assignments) {
-  ModelFile file;
-  file.path = path;
-  file.spec = read_model_spec(read_text_file(path), path, &file.source);
+  SpecSource source;
+  ModelSpec spec = read_model_spec(read_text_file(path), path, &source);
   std::vector<std::pair<std::string, std::string>> set;
-  for (const std::string& assignment : assignments) {
-    const std::string canonical = apply_assignment(file.spec, assignment);
-    set.emplace_back(assignment, canonical);
-    // The file's text of that value is no longer what the spec holds.
+  for (const std::string& assignment : assignments)
+    set.emplace_back(fmt::format("--set '{}'", assignment), apply_assignment(spec, assignment));
+  return build_model_file(std::move(spec), std::move(source), path, set);
+}
+
+ModelFile build_model_file(ModelSpec spec, SpecSource source, std::string path,
+                           const std::vector<std::pair<std::string, std::string>>& changed) {
+  ModelFile file;
+  file.path = std::move(path);
+  file.spec = std::move(spec);
+  file.source = std::move(source);
+  // The file's text of a value set since is no longer what the spec holds.
+  for (const auto& [what, canonical] : changed)
     std::erase_if(file.source.written, [&](const auto& w) { return overlaps(canonical, w.first); });
-  }
   file.title = file.spec.title;
-  build(file, set);
+  build(file, changed);
   return file;
 }
 

@@ -65,6 +65,14 @@ ModelFile read_model_file(const std::string& path);
 /// assignment set is reported as "--set 'PATH=VALUE': …" instead of at the file's line.
 ModelFile read_model_file(const std::string& path, const std::vector<std::string>& assignments);
 
+/// Builds and checks @p spec, read from @p path with @p source (where each part was
+/// written, for located errors) and changed since by set_parameter(): @p changed
+/// pairs how each change is named in messages ("--set 'PATH=VALUE'") with the
+/// canonical path it set. A problem in a changed value is reported as "NAME: …"
+/// instead of at the file's line. Throws ModelError, or Error for a changed value.
+ModelFile build_model_file(ModelSpec spec, SpecSource source, std::string path,
+                           const std::vector<std::pair<std::string, std::string>>& changed = {});
+
 /// Reads and checks a model given as TOML text; @p path_for_messages names it in
 /// errors and in ModelFile::path. Throws ModelError as read_model_file() does.
 ModelFile read_model_string(std::string_view toml_text, const std::string& path_for_messages);
