@@ -634,8 +634,10 @@ ModelFile build_model_file(ModelSpec spec, SpecSource source, std::string path,
   file.spec = std::move(spec);
   file.source = std::move(source);
   // The file's text of a value set since is no longer what the spec holds.
-  for (const auto& [what, canonical] : changed)
+  for (const auto& change : changed) {
+    const std::string& canonical = change.second;
     std::erase_if(file.source.written, [&](const auto& w) { return overlaps(canonical, w.first); });
+  }
   file.title = file.spec.title;
   build(file, changed);
   return file;
