@@ -6,6 +6,7 @@
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/core/error.hpp>
 #include <feran/io/model_reader.hpp>
+#include <feran/io/option_text.hpp>
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
 
@@ -15,8 +16,6 @@
 #include "interrupt.hpp"
 
 namespace feran::app {
-
-EigenSolver parse_solver_name(const std::string& name);
 
 namespace {
 struct CampbellArgs {
@@ -58,12 +57,12 @@ Runner add_campbell_command(CLI::App& app) {
     CommandOutputs outputs(args->model, args->out);
     const ModelFile file = read_model(args->model);
     CampbellRequest request;
-    if (!args->start.empty()) request.start = parse_speed_option(args->start, "--start");
-    if (!args->stop.empty()) request.stop = parse_speed_option(args->stop, "--stop");
+    if (!args->start.empty()) request.start = parse_speed_text(args->start, "--start");
+    if (!args->stop.empty()) request.stop = parse_speed_text(args->stop, "--stop");
     request.points = args->points;
     if (args->modes > 0) request.modes = args->modes;
     request.orders = args->orders;
-    request.solver = parse_solver_name(args->solver);
+    request.solver = parse_solver_name(args->solver, "--solver");
     request.n_threads = args->threads;
     CampbellOptions options = campbell_settings(file.spec.campbell, request);
     options.stop = interrupt_token();

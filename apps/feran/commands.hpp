@@ -56,10 +56,8 @@ struct OutputOptions {
 };
 void add_output_options(CLI::App& cmd, OutputOptions& out);
 
-/// Parses a speed with its unit ("30Hz", "1800 rpm", "188.5rad/s") into rad/s;
-/// throws feran::Error naming @p option when it is not one.
-double parse_speed_option(const std::string& text, const std::string& option);
-/// The same for an option that may be left out: std::nullopt for empty @p text.
+/// A speed option that may be left out (parse_speed_text(), io/option_text.hpp):
+/// std::nullopt for empty @p text.
 std::optional<double> optional_speed(const std::string& text, const std::string& option);
 
 /// The --json and --csv files of a command. Made before the model is read, so that

@@ -8,6 +8,7 @@
 
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
+#include <feran/io/option_text.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/core/text.hpp>
 #include <feran/core/units.hpp>
@@ -43,23 +44,9 @@ void add_output_options(CLI::App& cmd, OutputOptions& out) {
   cmd.add_flag("-q,--quiet", out.quiet, "Do not print the table on standard output");
 }
 
-double parse_speed_option(const std::string& text, const std::string& option) {
-  const auto q = split_quantity(text);
-  if (!q || q->unit.empty())
-    throw Error(fmt::format("{} '{}': give a speed with its unit, e.g. 30Hz, 1800rpm or 188.5rad/s",
-                            option, text));
-  const auto si = to_si(Quantity::speed, q->value, q->unit);
-  if (!si) throw Error(fmt::format("{} '{}': the unit must be Hz, rpm or rad/s", option, text));
-  const Real largest = physical_range(Quantity::speed).largest;
-  if (!std::isfinite(*si) || std::abs(*si) > largest)
-    throw Error(fmt::format("{} '{}': beyond the physical range of a speed (at most {:g} rad/s in magnitude)", option,
-                            text, largest));
-  return *si;
-}
-
 std::optional<double> optional_speed(const std::string& text, const std::string& option) {
   if (text.empty()) return std::nullopt;
-  return parse_speed_option(text, option);
+  return parse_speed_text(text, option);
 }
 
 CommandOutputs::CommandOutputs(const ModelArgs& model, const OutputOptions& out, bool stream_csv)

@@ -6,6 +6,7 @@
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/core/error.hpp>
 #include <feran/io/model_reader.hpp>
+#include <feran/io/option_text.hpp>
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
 
@@ -25,12 +26,7 @@ struct ModalArgs {
   OutputOptions out;
 };
 
-EigenSolver solver_from(const std::string& name) {
-  return name == "dense" ? EigenSolver::dense : name == "sparse" ? EigenSolver::sparse : EigenSolver::automatic;
-}
 }  // namespace
-
-EigenSolver parse_solver_name(const std::string& name) { return solver_from(name); }
 
 Runner add_modal_command(CLI::App& app) {
   auto args = std::make_shared<ModalArgs>();
@@ -55,9 +51,9 @@ Runner add_modal_command(CLI::App& app) {
     CommandOutputs outputs(args->model, args->out);
     const ModelFile file = read_model(args->model);
     ModalRequest request;
-    if (!args->speed.empty()) request.speed = parse_speed_option(args->speed, "--speed");
+    if (!args->speed.empty()) request.speed = parse_speed_text(args->speed, "--speed");
     if (args->modes > 0) request.modes = args->modes;
-    request.solver = solver_from(args->solver);
+    request.solver = parse_solver_name(args->solver, "--solver");
     request.shapes = args->shapes;
     const ModalSettings settings = modal_settings(file.spec.modal, request);
     const ModalResult result = run_modal(file.model, settings.speed, settings.options, file.assembler);

@@ -8,6 +8,7 @@
 #include <feran/core/error.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/node_reference.hpp>
+#include <feran/io/option_text.hpp>
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/core/units.hpp>
@@ -36,49 +37,6 @@ struct ResponseArgs {
   int threads = 0;
   OutputOptions out;
 };
-
-// "NODE:DIRECTION:AMPLITUDE[:PHASE]", e.g. "rotor:y:10N", "3:rotating:2N:90deg".
-HarmonicForce parse_force(const Model& model, const std::string& text) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= text.size(); ++i)
-    if (i == text.size() || text[i] == ':') {
-      parts.push_back(text.substr(start, i - start));
-      start = i + 1;
-    }
-  if (parts.size() < 3 || parts.size() > 4)
-    throw Error(fmt::format("--force '{}': expected NODE:DIRECTION:AMPLITUDE[:PHASE], e.g. rotor:y:10N or "
-                            "rotor:rotating:2N:90deg",
-                            text));
-  HarmonicForce f;
-  f.node = find_node_reference(model, parts[0], "--force");
-  const std::string& dir = parts[1];
-  static const std::pair<const char*, Dof> dirs[] = {{"x", Dof::u},   {"y", Dof::v},   {"z", Dof::w},
-                                                     {"rx", Dof::rx}, {"ry", Dof::ry}, {"rz", Dof::rz}};
-  bool moment = false;
-  if (dir == "rotating") {
-    f.type = HarmonicForce::Kind::rotating_force;
-  } else if (dir == "rotating_moment") {
-    f.type = HarmonicForce::Kind::rotating_moment;
-    moment = true;
-  } else {
-    const auto* it = std::find_if(std::begin(dirs), std::end(dirs), [&](const auto& p) { return dir == p.first; });
-    if (it == std::end(dirs))
-      throw Error(fmt::format("--force '{}': direction '{}' is not one of x, y, z, rx, ry, rz, rotating, "
-                              "rotating_moment",
-                              text, dir));
-    f.direction = it->second;
-    moment = f.direction == Dof::rx || f.direction == Dof::ry || f.direction == Dof::rz;
-  }
-  try {
-    f.amplitude = parse_quantity(parts[2], moment ? Quantity::moment : Quantity::force);
-    if (parts.size() == 4) f.phase = parse_quantity(parts[3], Quantity::angle);
-  } catch (const Error& e) {
-    throw Error(fmt::format("--force '{}': {}", text, e.what()));
-  }
-  if (!(f.amplitude > 0)) throw Error(fmt::format("--force '{}': the amplitude must be positive", text));
-  return f;
-}
 
 }  // namespace
 
@@ -126,7 +84,7 @@ Runner add_response_command(CLI::App& app) {
     request.unbalance = !args->no_unbalance;
     request.n_threads = args->threads;
     if (args->loss_factor >= 0) request.loss_factor = args->loss_factor;
-    for (const std::string& f : args->forces) request.extra_forces.push_back(parse_force(model, f));
+    for (const std::string& f : args->forces) request.extra_forces.push_back(parse_force_text(model, f, "--force"));
     request.start = optional_speed(args->start, "--start");
     request.stop = optional_speed(args->stop, "--stop");
     request.speed = optional_speed(args->speed, "--speed");

@@ -11,6 +11,8 @@
 #include <feran/core/text.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/node_reference.hpp>
+#include <feran/io/option_text.hpp>
+#include <feran/io/report.hpp>
 #include <feran/io/runup_writer.hpp>
 #include <feran/core/units.hpp>
 
@@ -41,33 +43,6 @@ struct RunupArgs {
   bool static_loads = false;
   OutputOptions out;
 };
-
-Real time_option(const std::string& text, const std::string& option) {
-  try {
-    const Real t = parse_quantity(text, Quantity::time);
-    if (!(t > 0)) throw Error("must be positive");
-    return t;
-  } catch (const Error& e) {
-    throw Error(fmt::format("{} '{}': {} (a time such as 5s or 0.1ms)", option, text, e.what()));
-  }
-}
-
-// "0s:0Hz,2s:50Hz,5s:50Hz"
-std::vector<std::pair<Real, Real>> parse_table(const std::string& text) {
-  std::vector<std::pair<Real, Real>> points;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t end = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, end - start);
-    const std::size_t colon = item.find(':');
-    if (colon == std::string::npos)
-      throw Error(fmt::format("--table '{}': each point is TIME:SPEED, e.g. 0s:0Hz,5s:80Hz", text));
-    const Real t = parse_quantity(item.substr(0, colon), Quantity::time);
-    points.emplace_back(t, parse_speed_option(item.substr(colon + 1), "--table"));
-    start = end + 1;
-  }
-  return points;
-}
 
 }  // namespace
 
@@ -123,13 +98,13 @@ Runner add_runup_command(CLI::App& app) {
     RunupRequest request;
     const auto time = [](const std::string& text, const char* option) -> std::optional<Real> {
       if (text.empty()) return std::nullopt;
-      return time_option(text, option);
+      return parse_time_text(text, option);
     };
     request.speed = optional_speed(args->speed, "--speed");
     request.from = optional_speed(args->from, "--from");
     request.to = optional_speed(args->to, "--to");
     request.ramp_time = time(args->ramp_time, "--ramp-time");
-    if (!args->table.empty()) request.table = parse_table(args->table);
+    if (!args->table.empty()) request.table = parse_speed_table_text(args->table, "--table");
     request.duration = time(args->duration, "--duration");
     if (!args->integrator.empty()) request.integrator = args->integrator;
     request.dt = time(args->dt, "--dt");
@@ -183,25 +158,7 @@ Runner add_runup_command(CLI::App& app) {
     const Real wall = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
     outputs.set_json([&] { return runup_json(result, options, model, source); });
     outputs.files.commit();
-    if (!args->out.quiet) {
-      std::string out = fmt::format("feran runup: {} ({})\n", printable(file.title.empty() ? file.path : file.title),
-                                    printable(file.path));
-      out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz; {} steps ({} rejected), {} "
-                         "factorizations, {} Newton iterations; {:.3g} s wall\n",
-                         options.integrator, 0.0, result.t_end, rad_to_hz(options.profile.speed(0.0)),
-                         rad_to_hz(options.profile.speed(result.t_end)), result.steps, result.rejected,
-                         result.factorizations, result.newton_iterations, wall);
-      if (result.basis_size > 0)
-        out += fmt::format("modal reduction: {} modes at {} speeds, a basis of {} vectors\n",
-                           options.reduced_modes, modal_basis_speeds, result.basis_size);
-      for (std::size_t p = 0; p < options.probes.size(); ++p) {
-        const Envelope& e = result.envelopes[p];
-        out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {:.4g} Hz\n",
-                           printable(model.node_label(options.probes[p])), 1e3 * e.peak, e.peak_time, rad_to_hz(e.peak_speed));
-      }
-      if (!result.warning.empty()) out += "warning: " + printable(result.warning, true) + "\n";
-      std::fputs(out.c_str(), stdout);
-    }
+    if (!args->out.quiet) std::fputs(runup_report(result, options, model, source, wall).c_str(), stdout);
     return finish(result.info);
   };
 }

@@ -13,6 +13,8 @@
 
 #include <feran/analyses/settings.hpp>
 
+#include <feran/io/option_text.hpp>
+
 #include "commands.hpp"
 
 namespace feran::app {
@@ -50,7 +52,7 @@ Runner add_static_command(CLI::App& app) {
     StaticRequest request;
     if (!args->g.empty()) request.g = parse_quantity(args->g, Quantity::acceleration);
     if (!args->gravity.empty()) request.gravity = args->gravity;
-    if (!args->speed.empty()) request.speed = parse_speed_option(args->speed, "--speed");
+    if (!args->speed.empty()) request.speed = parse_speed_text(args->speed, "--speed");
     request.loads = !args->no_loads;
     const StaticOptions options = static_settings(file.spec.static_, request);
     const StaticResult result = run_static(file.model, options);

@@ -7,7 +7,9 @@
 """
 import json as _json
 
-from ._feran import Error, Model, ModalResult, ModelError, ParameterError, modal, read_model
+from ._feran import (CampbellResult, Error, Interrupted, ModalResult, Model, ModelError, ParameterError,
+                     ResponseResult, RunupResult, StaticResult, campbell, modal, read_model, response,
+                     runup, static)
 
 
 def _to_dict(result):
@@ -15,6 +17,9 @@ def _to_dict(result):
     return _json.loads(result.to_json())
 
 
-ModalResult.to_dict = _to_dict
+for _result in (ModalResult, CampbellResult, ResponseResult, StaticResult, RunupResult):
+    _result.to_dict = _to_dict
 
-__all__ = ["Error", "Model", "ModalResult", "ModelError", "ParameterError", "modal", "read_model"]
+__all__ = ["CampbellResult", "Error", "Interrupted", "ModalResult", "Model", "ModelError", "ParameterError",
+           "ResponseResult", "RunupResult", "StaticResult", "campbell", "modal", "read_model", "response",
+           "runup", "static"]

@@ -13,6 +13,7 @@
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
+#include <feran/io/option_text.hpp>
 #include <feran/io/report.hpp>
 #include <feran/io/result_writer.hpp>
 
@@ -35,13 +36,6 @@ py::array_t<double> per_mode(const PyModalResult& r, F&& value) {
   auto a = out.mutable_unchecked<1>();
   for (std::size_t i = 0; i < r.result.modes.size(); ++i) a(static_cast<py::ssize_t>(i)) = value(r.result.modes[i]);
   return out;
-}
-
-EigenSolver solver_named(const std::string& name) {
-  if (name == "auto") return EigenSolver::automatic;
-  if (name == "dense") return EigenSolver::dense;
-  if (name == "sparse") return EigenSolver::sparse;
-  throw Error(fmt::format("solver='{}': expected 'auto', 'dense' or 'sparse'", name));
 }
 
 }  // namespace
@@ -82,6 +76,26 @@ void bind_modal(py::module_& m) {
                                for (const Mode& x : r.result.modes) out.append(to_string(x.type));
                                return out;
                              })
+      .def_property_readonly("shapes",
+                             [](const PyModalResult& r) {
+                               const auto& modes = r.result.modes;
+                               const std::size_t nodes = r.shapes ? r.file->model.nodes.size() : 0;
+                               return array_3d<std::complex<double>>(
+                                   r.shapes ? modes.size() : 0, nodes, dofs_per_node,
+                                   [&](std::size_t i, std::size_t n, std::size_t d) {
+                                     const auto& shape = modes[i].shape;
+                                     const auto k = static_cast<Index>(dofs_per_node * n + d);
+                                     return k < shape.size() ? shape(k) : std::complex<double>(0.0, 0.0);
+                                   });
+                             },
+                             "with shapes=True: complex u, v, w, rx, ry, rz of every node per mode, shape\n"
+                             "(modes, nodes, 6), scaled so that the largest component is 1")
+      .def_property_readonly("nodes", [](const PyModalResult& r) {
+             return string_list(r.file->model.nodes.size(), [&](std::size_t i) { return node_name(r.file->model, static_cast<Index>(i)); });
+           })
+      .def_property_readonly("x", [](const PyModalResult& r) {
+             return array_1d(r.file->model.nodes.size(), [&](std::size_t i) { return r.file->model.nodes[i].x; });
+           }, "axial position of each node [m]")
       .def("__len__", [](const PyModalResult& r) { return r.result.modes.size(); })
       .def("to_json", [](const PyModalResult& r) {
              return modal_json(r.result, r.file->model, ResultSource{r.file->path, r.file->title}, r.shapes);
@@ -97,7 +111,7 @@ void bind_modal(py::module_& m) {
         ModalRequest request;
         if (!speed.is_none()) request.speed = speed_argument(speed, "speed");
         request.modes = modes;
-        request.solver = solver_named(solver);
+        request.solver = parse_solver_name(solver, "solver");
         request.shapes = shapes;
         auto file = std::make_shared<const ModelFile>(model.built());
         const ModalSettings settings = modal_settings(file->spec.modal, request);

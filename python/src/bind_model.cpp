@@ -1,11 +1,15 @@
 // Models: reading, parameters by path, writing back, errors as Python exceptions.
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include <feran/core/error.hpp>
+#include <feran/core/operating_point.hpp>
 #include <feran/core/units.hpp>
+#include <feran/model/element.hpp>
 #include <feran/io/model_writer.hpp>
 #include <feran/spec/parameters.hpp>
 
@@ -30,18 +34,6 @@ const ModelFile& PyModel::built() const {
   return *built_;
 }
 
-double speed_argument(const py::handle& value, const char* name) {
-  if (py::isinstance<py::str>(value)) {
-    const std::string text = value.cast<std::string>();
-    try {
-      return parse_quantity(text, Quantity::speed);
-    } catch (const Error& e) {
-      throw Error(fmt::format("{}='{}': {}", name, text, e.what()));
-    }
-  }
-  return value.cast<double>();
-}
-
 namespace {
 
 PyModel read(const std::string& path_or_text) {
@@ -61,6 +53,48 @@ PyModel read(const std::string& path_or_text) {
   return model;
 }
 
+py::dict geometry(const PyModel& self) {
+  const Model& model = self.built().model;
+  std::vector<const Element*> segments, bodies, springs;
+  for (const Element& e : model.elements) {
+    if (e.shaft_segment()) segments.push_back(&e);
+    else if (e.kind() == "rigid_body") bodies.push_back(&e);
+    else if (e.kind() == "spring_damper") springs.push_back(&e);
+  }
+  const auto x = [&](Index node) { return model.nodes[static_cast<std::size_t>(node)].x; };
+  py::dict g;
+  g["nodes"] = string_list(model.nodes.size(), [&](std::size_t i) { return node_name(model, static_cast<Index>(i)); });
+  g["node_x"] = array_1d(model.nodes.size(), [&](std::size_t i) { return model.nodes[i].x; });
+  g["node_rotating"] = array_1d<bool>(model.nodes.size(), [&](std::size_t i) { return model.nodes[i].rotating; });
+  const auto segment = [&](std::size_t i) { return *segments[i]->shaft_segment(); };
+  g["segment_x0"] = array_1d(segments.size(), [&](std::size_t i) { return x(segment(i).node_a); });
+  g["segment_x1"] = array_1d(segments.size(), [&](std::size_t i) { return x(segment(i).node_b); });
+  g["segment_outer"] = array_1d(segments.size(), [&](std::size_t i) { return segment(i).section.outer_diameter; });
+  g["segment_inner"] = array_1d(segments.size(), [&](std::size_t i) { return segment(i).section.inner_diameter; });
+  g["segment_rotating"] = array_1d<bool>(segments.size(), [&](std::size_t i) {
+    return model.nodes[static_cast<std::size_t>(segment(i).node_a)].rotating;
+  });
+  // A rigid body's mass and polar inertia from its own mass matrix at its node.
+  std::vector<LocalMatrices> body_matrices;
+  for (const Element* e : bodies) body_matrices.push_back(e->local_matrices(OperatingPoint{}));
+  const auto body_node = [&](std::size_t i) { return body_matrices[i].dofs.at(0) / dofs_per_node; };
+  g["body_names"] = string_list(bodies.size(), [&](std::size_t i) { return bodies[i]->label(); });
+  g["body_x"] = array_1d(bodies.size(), [&](std::size_t i) { return x(body_node(i)); });
+  g["body_mass"] = array_1d(bodies.size(), [&](std::size_t i) { return body_matrices[i].M(0, 0); });
+  g["body_Jp"] = array_1d(bodies.size(), [&](std::size_t i) { return body_matrices[i].M(3, 3); });
+  g["body_rotating"] = array_1d<bool>(bodies.size(), [&](std::size_t i) {
+    return model.nodes[static_cast<std::size_t>(body_node(i))].rotating;
+  });
+  std::vector<Transmission> links;
+  for (const Element* e : springs) links.push_back(*e->transmission(0.0));
+  g["spring_names"] = string_list(springs.size(), [&](std::size_t i) { return springs[i]->label(); });
+  g["spring_x"] = array_1d(springs.size(), [&](std::size_t i) { return x(links[i].node_a); });
+  g["spring_to_x"] = array_1d(springs.size(), [&](std::size_t i) {
+    return links[i].node_b ? x(*links[i].node_b) : std::numeric_limits<double>::quiet_NaN();
+  });
+  return g;
+}
+
 }  // namespace
 
 void bind_model(py::module_& m) {
@@ -73,6 +107,9 @@ void bind_model(py::module_& m) {
   m.attr("Error") = py::handle(error);
   m.attr("ModelError") = py::handle(model_error);
   m.attr("ParameterError") = py::handle(parameter_error);
+  // Ctrl-C during an analysis: a KeyboardInterrupt that carries the results so far.
+  static PyObject* interrupted = PyErr_NewException("feran.Interrupted", PyExc_KeyboardInterrupt, nullptr);
+  m.attr("Interrupted") = py::handle(interrupted);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -82,6 +119,16 @@ void bind_model(py::module_& m) {
       value.attr("line") = e.where().line;
       value.attr("column") = e.where().column;
       value.attr("message") = e.message();
+      value.attr("path") = py::none();
+      PyErr_SetObject(model_error, value.ptr());
+    } catch (const SpecError& e) {
+      // A model built in code: located by its path into the model ("shafts[0].sections[1].length").
+      py::object value = py::handle(model_error)(e.what());
+      value.attr("file") = "<code>";
+      value.attr("line") = 0;
+      value.attr("column") = 0;
+      value.attr("message") = e.message();
+      value.attr("path") = e.path();
       PyErr_SetObject(model_error, value.ptr());
     } catch (const ParameterError& e) {
       PyErr_SetString(parameter_error, e.what());
@@ -123,6 +170,11 @@ void bind_model(py::module_& m) {
       .def("__deepcopy__", [](const PyModel& self, py::dict) { return PyModel(self); })
       .def_property_readonly("n_dofs", [](const PyModel& self) { return self.built().model.n_dofs(); },
                              "degrees of freedom of the built model (6 per node)")
+      .def("geometry", &geometry,
+           "What a drawing of the rotor needs, as numpy arrays (all lengths in m): nodes (names),\n"
+           "node_x, node_rotating; shaft segments (segment_x0, segment_x1, segment_outer,\n"
+           "segment_inner, segment_rotating); rigid bodies (body_names, body_x, body_mass, body_Jp,\n"
+           "body_rotating); spring-dampers (spring_names, spring_x, spring_to_x, NaN to ground).")
       .def("check", [](const PyModel& self) { (void)self.built(); },
            "Builds and checks the model (raises ModelError as reading does)");
 

@@ -2,12 +2,21 @@
 // What the binding files share: the model as Python holds it, and the functions that
 // add each area to the module.
 
+#include <atomic>
+#include <functional>
+#include <cstddef>
+#include <exception>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+
+#include <feran/core/stop.hpp>
+#include <feran/io/result_writer.hpp>
 
 #include <feran/io/model_reader.hpp>
 #include <feran/spec/model_spec.hpp>
@@ -42,8 +51,79 @@ class PyModel {
 
 void bind_model(py::module_& m);
 void bind_modal(py::module_& m);
+void bind_campbell(py::module_& m);
+void bind_response(py::module_& m);
+void bind_static(py::module_& m);
+void bind_runup(py::module_& m);
 
 /// A speed given as text with its unit ("30 Hz", "1800 rpm") or as a number in rad/s.
 double speed_argument(const py::handle& value, const char* name);
+/// The same, None for an argument left out.
+std::optional<double> optional_speed(const py::handle& value, const char* name);
+/// A positive time given as text with its unit ("5 s", "0.1 ms") or a number in s.
+std::optional<double> optional_time(const py::handle& value, const char* name);
+/// Node references: None (none), one name or number, or a list of them.
+std::vector<Index> node_arguments(const Model& model, const py::handle& value, const char* name);
+/// Names: None (none), one string, or a list of strings.
+std::vector<std::string> text_arguments(const py::handle& value, const char* name);
+
+/// What every result keeps: the model it was computed on and where it came from.
+struct ResultContext {
+  std::shared_ptr<const ModelFile> file;
+  ResultSource source;
+};
+/// The context of an analysis of @p file over the speeds [@p low, @p high] (rad/s):
+/// the range warnings are issued as Python warnings (UserWarning) and kept.
+ResultContext result_context(std::shared_ptr<const ModelFile> file, double low, double high);
+
+/// Runs @p solve (which fills its result) with the GIL released, watching for
+/// Ctrl-C: a KeyboardInterrupt sets @p flag (the analysis's StopToken), the analysis
+/// ends at its next clean point with its results so far, and the interrupt is raised
+/// again by the caller with the result attached (raise_interrupted()): @p interrupted
+/// says whether to.
+void run_watched(const std::function<void()>& solve, std::atomic<bool>& flag, bool& interrupted);
+/// Raises feran.Interrupted with @p result attached.
+[[noreturn]] void raise_interrupted(py::object result);
+
+/// numpy arrays filled from a function of the index, without Python loops.
+template <class T = double, class F>
+py::array_t<T> array_1d(std::size_t n, F&& value) {
+  py::array_t<T> out(static_cast<py::ssize_t>(n));
+  auto a = out.template mutable_unchecked<1>();
+  for (std::size_t i = 0; i < n; ++i) a(static_cast<py::ssize_t>(i)) = value(i);
+  return out;
+}
+template <class T = double, class F>
+py::array_t<T> array_2d(std::size_t rows, std::size_t cols, F&& value) {
+  py::array_t<T> out({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(cols)});
+  auto a = out.template mutable_unchecked<2>();
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t j = 0; j < cols; ++j) a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = value(i, j);
+  return out;
+}
+template <class T = double, class F>
+py::array_t<T> array_3d(std::size_t n0, std::size_t n1, std::size_t n2, F&& value) {
+  py::array_t<T> out({static_cast<py::ssize_t>(n0), static_cast<py::ssize_t>(n1), static_cast<py::ssize_t>(n2)});
+  auto a = out.template mutable_unchecked<3>();
+  for (std::size_t i = 0; i < n0; ++i)
+    for (std::size_t j = 0; j < n1; ++j)
+      for (std::size_t k = 0; k < n2; ++k)
+        a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j), static_cast<py::ssize_t>(k)) = value(i, j, k);
+  return out;
+}
+
+/// A node as Python names it: its name, else its number.
+inline std::string node_name(const Model& model, Index node) {
+  const Node& n = model.nodes[static_cast<std::size_t>(node)];
+  return n.name.empty() ? std::to_string(n.number) : n.name;
+}
+
+/// A Python list of the strings f(i), i < n.
+template <class F>
+py::list string_list(std::size_t n, F&& f) {
+  py::list out;
+  for (std::size_t i = 0; i < n; ++i) out.append(py::str(std::string(f(i))));
+  return out;
+}
 
 }  // namespace feran::python

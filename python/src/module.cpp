@@ -16,4 +16,8 @@ PYBIND11_MODULE(_feran, m) {
   if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
   feran::python::bind_model(m);
   feran::python::bind_modal(m);
+  feran::python::bind_campbell(m);
+  feran::python::bind_response(m);
+  feran::python::bind_static(m);
+  feran::python::bind_runup(m);
 }

@@ -232,6 +232,28 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   return out;
 }
 
+std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,
+                         const ResultSource& source, double wall_seconds) {
+  std::string out = source_line("runup", source);
+  out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz; {} steps ({} rejected), {} "
+                     "factorizations, {} Newton iterations",
+                     options.integrator, 0.0, result.t_end, rad_to_hz(options.profile.speed(0.0)),
+                     rad_to_hz(options.profile.speed(result.t_end)), result.steps, result.rejected,
+                     result.factorizations, result.newton_iterations);
+  out += wall_seconds >= 0 ? fmt::format("; {:.3g} s wall\n", wall_seconds) : std::string("\n");
+  if (result.basis_size > 0)
+    out += fmt::format("modal reduction: {} modes at {} speeds, a basis of {} vectors\n", options.reduced_modes,
+                       modal_basis_speeds, result.basis_size);
+  for (std::size_t p = 0; p < options.probes.size() && p < result.envelopes.size(); ++p) {
+    const Envelope& e = result.envelopes[p];
+    out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {:.4g} Hz\n",
+                       printable(model.node_label(options.probes[p])), 1e3 * e.peak, e.peak_time,
+                       rad_to_hz(e.peak_speed));
+  }
+  if (!result.warning.empty()) out += "warning: " + printable(result.warning, true) + "\n";
+  return out;
+}
+
 std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source) {
   std::size_t path_width = 4, value_width = 5;
   for (const Parameter& p : parameters) {

@@ -7,6 +7,7 @@
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
+#include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/model/model.hpp>
@@ -26,6 +27,11 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
 /// Static result: deflections, spring and support forces, shaft stresses.
 std::string static_report(const StaticResult& result, const StaticOptions& options, const Model& model,
                           const ResultSource& source);
+
+/// Summary of a run-up: the integrator's work, the peak |r| of each probe and any
+/// warning; @p wall_seconds is the time it took (negative: not shown).
+std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,
+                         const ResultSource& source, double wall_seconds = -1);
 
 /// Table of a model's settable parameters: path, value with unit, meaning.
 std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source);

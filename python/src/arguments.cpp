@@ -1,0 +1,144 @@
+// Keyword arguments as the analyses take them (speeds, times, nodes, names), the
+// context every result keeps, and solves that Ctrl-C can stop.
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/settings.hpp>
+#include <feran/core/error.hpp>
+#include <feran/core/units.hpp>
+#include <feran/io/node_reference.hpp>
+#include <feran/io/option_text.hpp>
+
+#include "bindings.hpp"
+
+namespace feran::python {
+
+namespace {
+
+double number_argument(const py::handle& value, const char* name, const char* expected) {
+  if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value))
+    throw Error(fmt::format("{}={}: expected {}", name, py::repr(value).cast<std::string>(), expected));
+  const double x = value.cast<double>();
+  if (!std::isfinite(x)) throw Error(fmt::format("{}={}: expected a finite number", name, x));
+  return x;
+}
+
+}  // namespace
+
+double speed_argument(const py::handle& value, const char* name) {
+  if (py::isinstance<py::str>(value)) return parse_speed_text(value.cast<std::string>(), name);
+  const double x = number_argument(value, name, "a speed as text with its unit ('30 Hz') or a number in rad/s");
+  const Real largest = physical_range(Quantity::speed).largest;
+  if (std::abs(x) > largest)
+    throw Error(fmt::format("{}={:g}: beyond the physical range of a speed (at most {:g} rad/s in magnitude)", name,
+                            x, largest));
+  return x;
+}
+
+std::optional<double> optional_speed(const py::handle& value, const char* name) {
+  if (value.is_none()) return std::nullopt;
+  return speed_argument(value, name);
+}
+
+std::optional<double> optional_time(const py::handle& value, const char* name) {
+  if (value.is_none()) return std::nullopt;
+  if (py::isinstance<py::str>(value)) return parse_time_text(value.cast<std::string>(), name);
+  const double t = number_argument(value, name, "a time as text with its unit ('5 s') or a number in s");
+  if (!(t > 0)) throw Error(fmt::format("{}={:g}: must be positive (a time such as '5 s' or 0.1)", name, t));
+  return t;
+}
+
+std::vector<Index> node_arguments(const Model& model, const py::handle& value, const char* name) {
+  std::vector<Index> out;
+  if (value.is_none()) return out;
+  const auto one = [&](const py::handle& v) {
+    if (py::isinstance<py::str>(v)) return find_node_reference(model, v.cast<std::string>(), name);
+    if (py::isinstance<py::int_>(v) && !py::isinstance<py::bool_>(v))
+      return find_node_reference(model, std::to_string(v.cast<long long>()), name);
+    throw Error(fmt::format("{}: a node is a name (str) or a number (int), got {}", name,
+                            py::repr(v).cast<std::string>()));
+  };
+  if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value)) {
+    out.push_back(one(value));
+    return out;
+  }
+  for (const py::handle& v : py::iter(value)) out.push_back(one(v));
+  return out;
+}
+
+std::vector<std::string> text_arguments(const py::handle& value, const char* name) {
+  std::vector<std::string> out;
+  if (value.is_none()) return out;
+  if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
+  for (const py::handle& v : py::iter(value)) {
+    if (!py::isinstance<py::str>(v))
+      throw Error(fmt::format("{}: expected text, got {}", name, py::repr(v).cast<std::string>()));
+    out.push_back(v.cast<std::string>());
+  }
+  return out;
+}
+
+ResultContext result_context(std::shared_ptr<const ModelFile> file, double low, double high) {
+  ResultContext out{file, ResultSource{file->path, file->title, range_warnings(file->model, low, high)}};
+  if (!out.source.warnings.empty()) {
+    const py::object warn = py::module_::import("warnings").attr("warn");
+    for (const std::string& w : out.source.warnings) warn(w, py::handle(PyExc_UserWarning), 2);
+  }
+  return out;
+}
+
+void run_watched(const std::function<void()>& solve, std::atomic<bool>& flag, bool& interrupted) {
+  // The solve runs on a thread of its own while this one, the caller's, wakes every
+  // 50 ms and asks Python whether a signal came (PyErr_CheckSignals needs the GIL;
+  // only the main thread ever sees one). Errors cross back as exceptions.
+  std::mutex mutex;
+  std::condition_variable done_signal;
+  bool done = false;
+  std::exception_ptr error;
+  interrupted = false;
+  {
+    py::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        solve();
+      } catch (...) {
+        error = std::current_exception();
+      }
+      const std::lock_guard<std::mutex> lock(mutex);
+      done = true;
+      done_signal.notify_one();
+    });
+    std::unique_lock<std::mutex> lock(mutex);
+    while (!done_signal.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; })) {
+      if (interrupted) continue;
+      lock.unlock();
+      {
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) {
+          PyErr_Clear();  // raised again, with the results, once the solve has ended
+          interrupted = true;
+          flag = true;
+        }
+      }
+      lock.lock();
+    }
+    lock.unlock();
+    worker.join();
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+void raise_interrupted(py::object result) {
+  const py::object type = py::module_::import("feran._feran").attr("Interrupted");
+  py::object value = type("interrupted: the results so far are in .result");
+  value.attr("result") = std::move(result);
+  PyErr_SetObject(type.ptr(), value.ptr());
+  throw py::error_already_set();
+}
+
+}  // namespace feran::python

@@ -1,0 +1,185 @@
+// Campbell diagrams: tracked modes over a speed range as 2D numpy arrays (mode ×
+// speed), critical speeds with look-ups by whirl, order and mode, the stability
+// threshold, and the JSON and table of feran campbell.
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/settings.hpp>
+#include <feran/core/error.hpp>
+#include <feran/core/units.hpp>
+#include <feran/io/option_text.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+
+#include "bindings.hpp"
+
+namespace feran::python {
+
+namespace {
+
+struct PyCampbellResult {
+  ResultContext context;
+  CampbellOptions options;
+  CampbellResult result;
+};
+
+/// Per mode and speed: value(mode) [speed], NaN where a mode has no value.
+template <class F>
+py::array_t<double> per_mode_speed(const PyCampbellResult& r, F&& values) {
+  const auto& modes = r.result.modes;
+  return array_2d(modes.size(), r.result.speeds.size(), [&](std::size_t i, std::size_t j) {
+    const std::vector<Real>& v = values(modes[i]);
+    return j < v.size() ? v[j] : std::numeric_limits<double>::quiet_NaN();
+  });
+}
+
+/// A speed in rad/s converted to "rad/s", "Hz" or "rpm".
+double in_unit(double speed, const std::string& unit) {
+  if (unit == "rad/s") return speed;
+  if (unit == "Hz") return rad_to_hz(speed);
+  if (unit == "rpm") return 60.0 * rad_to_hz(speed);
+  throw Error(fmt::format("unit='{}': expected 'rad/s', 'Hz' or 'rpm'", unit));
+}
+
+py::dict critical_dict(const PyCampbellResult& r, const CriticalSpeed& c) {
+  py::dict d;
+  d["speed"] = c.speed;
+  d["speed_hz"] = rad_to_hz(c.speed);
+  d["speed_rpm"] = 60.0 * rad_to_hz(c.speed);
+  d["frequency_hz"] = c.frequency_hz;
+  d["order"] = c.order;
+  d["mode"] = c.mode;
+  d["label"] = r.result.modes.at(static_cast<std::size_t>(c.mode)).label;
+  d["whirl"] = to_string(c.whirl);
+  return d;
+}
+
+}  // namespace
+
+void bind_campbell(py::module_& m) {
+  py::class_<PyCampbellResult>(m, "CampbellResult",
+                               "Tracked modes over a speed range, critical speeds and the stability threshold")
+      .def_property_readonly("speeds", [](const PyCampbellResult& r) {
+             return array_1d(r.result.speeds.size(), [&](std::size_t i) { return r.result.speeds[i]; });
+           }, "speeds solved [rad/s] (fewer than asked when a solve failed or it was interrupted)")
+      .def_property_readonly("speeds_hz", [](const PyCampbellResult& r) {
+             return array_1d(r.result.speeds.size(), [&](std::size_t i) { return rad_to_hz(r.result.speeds[i]); });
+           })
+      .def_property_readonly("labels", [](const PyCampbellResult& r) {
+             return string_list(r.result.modes.size(), [&](std::size_t i) { return r.result.modes[i].label; });
+           }, "per mode: 'backward 1', 'forward 1', 'axial 1', …")
+      .def_property_readonly("whirl", [](const PyCampbellResult& r) {
+             return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].whirl); });
+           }, "per mode: its prevailing whirl ('forward', 'backward', 'planar', 'none')")
+      .def_property_readonly("type", [](const PyCampbellResult& r) {
+             return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].type); });
+           }, "per mode: 'lateral', 'axial' or 'torsional'")
+      .def_property_readonly("whirl_at", [](const PyCampbellResult& r) {
+             py::list out;
+             for (const TrackedMode& mode : r.result.modes)
+               out.append(string_list(mode.whirl_at.size(), [&](std::size_t j) { return to_string(mode.whirl_at[j]); }));
+             return out;
+           }, "per mode, per speed: the whirl there")
+      .def_property_readonly("frequency_hz",
+                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.frequency_hz; }); },
+                             "damped natural frequencies [Hz], shape (modes, speeds)")
+      .def_property_readonly("damping_ratio",
+                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.damping_ratio; }); },
+                             "shape (modes, speeds)")
+      .def_property_readonly("log_decrement",
+                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.log_decrement; }); },
+                             "shape (modes, speeds); NaN for a non-oscillatory mode")
+      .def_property_readonly("directivity",
+                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.directivity; }); },
+                             "+1 forward circles … -1 backward circles, shape (modes, speeds)")
+      .def_property_readonly("orders", [](const PyCampbellResult& r) { return r.options.orders; },
+                             "harmonic orders k of the excitation lines f = k × speed")
+      .def_property_readonly("criticals", [](const PyCampbellResult& r) {
+             py::list out;
+             for (const CriticalSpeed& c : r.result.critical_speeds) out.append(critical_dict(r, c));
+             return out;
+           }, "every critical speed (crossing of a mode with an excitation line), sorted by speed, as dicts")
+      .def(
+          "critical_speeds",
+          [](const PyCampbellResult& r, std::optional<std::string> whirl, std::optional<int> order,
+             std::optional<std::string> label, const std::string& unit) {
+            if (whirl && *whirl != "forward" && *whirl != "backward" && *whirl != "planar" && *whirl != "none")
+              throw Error(fmt::format("whirl='{}': expected 'forward', 'backward', 'planar' or 'none'", *whirl));
+            std::vector<double> speeds;
+            for (const CriticalSpeed& c : r.result.critical_speeds) {
+              if (whirl && *whirl != to_string(c.whirl)) continue;
+              if (order && *order != c.order) continue;
+              if (label && *label != r.result.modes.at(static_cast<std::size_t>(c.mode)).label) continue;
+              speeds.push_back(in_unit(c.speed, unit));
+            }
+            return array_1d(speeds.size(), [&](std::size_t i) { return speeds[i]; });
+          },
+          py::kw_only(), py::arg("whirl") = py::none(), py::arg("order") = py::none(), py::arg("label") = py::none(),
+          py::arg("unit") = "rad/s",
+          "The critical speeds, in increasing order, of the modes that whirl so at the crossing\n"
+          "(whirl='forward'), of one excitation order (order=1) and/or of one tracked mode\n"
+          "(label='forward 1'); unit 'rad/s', 'Hz' or 'rpm'. The whirl is the mode's at the\n"
+          "critical speed itself, not a label's word.")
+      .def_property_readonly("stability_threshold", [](const PyCampbellResult& r) -> py::object {
+             if (!r.result.stability_threshold) return py::none();
+             const StabilityThreshold& t = *r.result.stability_threshold;
+             py::dict d;
+             d["speed"] = t.speed;
+             d["speed_hz"] = rad_to_hz(t.speed);
+             d["mode"] = t.mode;
+             d["label"] = r.result.modes.at(static_cast<std::size_t>(t.mode)).label;
+             d["frequency_hz"] = t.frequency_hz;
+             d["unstable_at_start"] = t.unstable_at_start;
+             return d;
+           }, "the lowest speed at which a mode's damping turns negative (a dict), or None")
+      .def_property_readonly("complete", [](const PyCampbellResult& r) { return r.result.info.converged(); },
+                             "whether every speed was solved")
+      .def_property_readonly("message", [](const PyCampbellResult& r) { return r.result.info.message; })
+      .def_property_readonly("n_solves", [](const PyCampbellResult& r) { return r.result.n_solves; })
+      .def_property_readonly("warnings", [](const PyCampbellResult& r) { return r.context.source.warnings; })
+      .def("to_json", [](const PyCampbellResult& r) { return campbell_json(r.result, r.options, r.context.source); },
+           "The JSON text that feran campbell --json writes (docs/output-format.md)")
+      .def("to_csv", [](const PyCampbellResult& r) { return campbell_csv(r.result); },
+           "The CSV text that feran campbell --csv writes")
+      .def("report", [](const PyCampbellResult& r) {
+             return campbell_report(r.result, r.options, r.context.file->model, r.context.source);
+           }, "The table that feran campbell prints");
+
+  m.def(
+      "campbell",
+      [](const PyModel& model, const py::object& start, const py::object& stop, std::optional<int> points,
+         std::optional<int> modes, std::vector<int> orders, const std::string& solver, int threads) {
+        CampbellRequest request;
+        request.start = optional_speed(start, "start");
+        request.stop = optional_speed(stop, "stop");
+        request.points = points;
+        request.modes = modes;
+        request.orders = std::move(orders);
+        request.solver = parse_solver_name(solver, "solver");
+        request.n_threads = threads;
+        auto file = std::make_shared<const ModelFile>(model.built());
+        PyCampbellResult out{{}, campbell_settings(file->spec.campbell, request), {}};
+        out.context = result_context(file, out.options.speeds.front(), out.options.speeds.back());
+        std::atomic<bool> flag{false};
+        out.options.stop = StopToken(flag);
+        bool interrupted = false;
+        run_watched([&] { out.result = run_campbell(file->model, out.options, file->assembler); }, flag, interrupted);
+        if (interrupted) raise_interrupted(py::cast(std::move(out)));
+        return out;
+      },
+      py::arg("model"), py::kw_only(), py::arg("start") = py::none(), py::arg("stop") = py::none(),
+      py::arg("points") = py::none(), py::arg("modes") = py::none(), py::arg("orders") = std::vector<int>{},
+      py::arg("solver") = "auto", py::arg("threads") = 0,
+      "A Campbell diagram, as feran campbell: start, stop (speeds as '80 Hz' or rad/s), points,\n"
+      "modes, orders, solver as the CLI's options, each defaulting to the model's [campbell]\n"
+      "table and then to feran's defaults. threads: 0 (default, as the CLI) all cores, or 1 to\n"
+      "run Python threads side by side instead. Ctrl-C raises feran.Interrupted with the speeds so far.");
+}
+
+}  // namespace feran::python

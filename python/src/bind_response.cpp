@@ -1,0 +1,187 @@
+// Steady-state (harmonic) response: speed and frequency sweeps, with complex
+// amplitudes of probes, spring forces and support reactions as numpy arrays
+// (item × point × DOF), orbits, and shaft stresses.
+#include <complex>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+#include <pybind11/complex.h>
+#include <pybind11/stl.h>
+
+#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/settings.hpp>
+#include <feran/core/error.hpp>
+#include <feran/core/units.hpp>
+#include <feran/io/option_text.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+
+#include "bindings.hpp"
+
+namespace feran::python {
+
+namespace {
+
+struct PyResponseResult {
+  ResultContext context;
+  HarmonicOptions options;
+  HarmonicResult result;
+  const Model& model() const { return context.file->model; }
+  std::size_t points() const { return result.speeds.size(); }
+};
+
+/// Items × points × 6 complex amplitudes.
+template <class Items, class Get>
+py::array_t<std::complex<double>> amplitudes(const PyResponseResult& r, const Items& items, Get&& get) {
+  return array_3d<std::complex<double>>(items.size(), r.points(), dofs_per_node,
+                                        [&](std::size_t i, std::size_t k, std::size_t d) {
+                                          const std::vector<NodeAmplitudes>& v = get(items[i]);
+                                          return k < v.size() ? v[k][d] : std::complex<double>(NAN, NAN);
+                                        });
+}
+
+template <class F>
+py::array_t<double> orbit_values(const PyResponseResult& r, F&& value) {
+  return array_2d(r.result.probes.size(), r.points(), [&](std::size_t i, std::size_t k) {
+    const auto& orbit = r.result.probes[i].orbit;
+    return k < orbit.size() ? value(orbit[k]) : NAN;
+  });
+}
+
+template <class F>
+py::array_t<double> peak_values(const PyResponseResult& r, F&& peak) {
+  return array_1d(r.result.station_peaks.size(), [&](std::size_t k) { return peak(r.result.station_peaks[k]).value; });
+}
+
+template <class F>
+py::array_t<double> peak_places(const PyResponseResult& r, F&& peak) {
+  return array_1d(r.result.station_peaks.size(), [&](std::size_t k) {
+    const Index s = peak(r.result.station_peaks[k]).station;
+    return s < 0 ? NAN : r.result.shaft_stations[static_cast<std::size_t>(s)].x;
+  });
+}
+
+}  // namespace
+
+void bind_response(py::module_& m) {
+  py::class_<PyResponseResult>(m, "ResponseResult",
+                               "Steady-state response over a speed or frequency sweep")
+      .def_property_readonly("frequency_sweep", [](const PyResponseResult& r) { return r.result.frequency_sweep; })
+      .def_property_readonly("speeds", [](const PyResponseResult& r) {
+             return array_1d(r.points(), [&](std::size_t k) { return r.result.speeds[k]; });
+           }, "rotor speed per point [rad/s]")
+      .def_property_readonly("frequencies", [](const PyResponseResult& r) {
+             return array_1d(r.result.frequencies.size(), [&](std::size_t k) { return r.result.frequencies[k]; });
+           }, "excitation frequency per point [rad/s] (the speed itself in a speed sweep)")
+      .def_property_readonly("probes", [](const PyResponseResult& r) {
+             return string_list(r.result.probes.size(), [&](std::size_t i) { return node_name(r.model(), r.result.probes[i].node); });
+           }, "the probe nodes, by name (else number)")
+      .def_property_readonly("displacement", [](const PyResponseResult& r) {
+             return amplitudes(r, r.result.probes, [](const ProbeResponse& p) -> const std::vector<NodeAmplitudes>& { return p.q; });
+           }, "complex amplitudes of u, v, w, rx, ry, rz [m, rad], shape (probes, points, 6)")
+      .def_property_readonly("orbit_major", [](const PyResponseResult& r) { return orbit_values(r, [](const Orbit& o) { return o.major; }); },
+                             "major semi-axis of the (v, w) orbit [m], shape (probes, points)")
+      .def_property_readonly("orbit_minor", [](const PyResponseResult& r) { return orbit_values(r, [](const Orbit& o) { return o.minor; }); })
+      .def_property_readonly("orbit_inclination", [](const PyResponseResult& r) { return orbit_values(r, [](const Orbit& o) { return o.inclination; }); },
+                             "angle of the major axis from +y towards +z [rad]")
+      .def_property_readonly("orbit_forward", [](const PyResponseResult& r) { return orbit_values(r, [](const Orbit& o) { return o.forward; }); })
+      .def_property_readonly("orbit_backward", [](const PyResponseResult& r) { return orbit_values(r, [](const Orbit& o) { return o.backward; }); })
+      .def_property_readonly("springs", [](const PyResponseResult& r) {
+             return string_list(r.result.springs.size(), [&](std::size_t i) { return r.model().elements[static_cast<std::size_t>(r.result.springs[i].element)].label(); });
+           })
+      .def_property_readonly("spring_force", [](const PyResponseResult& r) {
+             return amplitudes(r, r.result.springs, [](const SpringForceResponse& s) -> const std::vector<NodeAmplitudes>& { return s.force; });
+           }, "complex force amplitudes of each spring-damper [N, N m], shape (springs, points, 6)")
+      .def_property_readonly("spring_peak", [](const PyResponseResult& r) {
+             return array_2d(r.result.springs.size(), r.points(), [&](std::size_t i, std::size_t k) { return r.result.springs[i].peak_lateral[k]; });
+           }, "largest lateral spring force over a period [N], shape (springs, points)")
+      .def_property_readonly("reactions", [](const PyResponseResult& r) {
+             return string_list(r.result.reactions.size(), [&](std::size_t i) { return node_name(r.model(), r.result.reactions[i].node); });
+           }, "nodes with fixed DOFs")
+      .def_property_readonly("reaction_force", [](const PyResponseResult& r) {
+             return amplitudes(r, r.result.reactions, [](const ReactionResponse& s) -> const std::vector<NodeAmplitudes>& { return s.force; });
+           }, "complex support reactions [N, N m], shape (reactions, points, 6)")
+      .def_property_readonly("reaction_peak", [](const PyResponseResult& r) {
+             return array_2d(r.result.reactions.size(), r.points(), [&](std::size_t i, std::size_t k) { return r.result.reactions[i].peak_lateral[k]; });
+           })
+      .def_property_readonly("peak_von_mises", [](const PyResponseResult& r) { return peak_values(r, [](const StationPeaks& p) { return p.von_mises; }); },
+                             "per point: the largest equivalent stress over the shaft stations [Pa]")
+      .def_property_readonly("peak_von_mises_x", [](const PyResponseResult& r) { return peak_places(r, [](const StationPeaks& p) { return p.von_mises; }); },
+                             "per point: where along x it is [m]")
+      .def_property_readonly("peak_bending_moment", [](const PyResponseResult& r) { return peak_values(r, [](const StationPeaks& p) { return p.bending_moment; }); })
+      .def_property_readonly("peak_shear_force", [](const PyResponseResult& r) { return peak_values(r, [](const StationPeaks& p) { return p.shear_force; }); })
+      .def_property_readonly("station_x", [](const PyResponseResult& r) {
+             return array_1d(r.result.stations.size(), [&](std::size_t s) { return r.result.stations[s].station.x; });
+           }, "with stations='all': the axial position of each station [m]")
+      .def_property_readonly("station_von_mises", [](const PyResponseResult& r) {
+             return array_2d(r.result.stations.size(), r.points(), [&](std::size_t s, std::size_t k) { return r.result.stations[s].stress[k].von_mises; });
+           }, "with stations='all': equivalent stress [Pa], shape (stations, points)")
+      .def_property_readonly("section_forces", [](const PyResponseResult& r) {
+             return array_3d<std::complex<double>>(r.result.stations.size(), r.points(), 6, [&](std::size_t s, std::size_t k, std::size_t c) {
+               const SectionForces& f = r.result.stations[s].forces[k];
+               const Complex v[6] = {f.N, f.Vy, f.Vz, f.T, f.My, f.Mz};
+               return v[c];
+             });
+           }, "with stations='all': N, Vy, Vz, T, My, Mz [N, N m], shape (stations, points, 6)")
+      .def("probe_index", [](const PyResponseResult& r, const py::object& node) {
+             const std::vector<Index> wanted = node_arguments(r.model(), node, "node");
+             for (std::size_t i = 0; i < r.result.probes.size(); ++i)
+               if (r.result.probes[i].node == wanted.at(0)) return i;
+             throw Error(fmt::format("node {}: not a probe of this response", py::repr(node).cast<std::string>()));
+           }, py::arg("node"), "The index in probes of a node (name or number)")
+      .def_property_readonly("complete", [](const PyResponseResult& r) { return r.result.info.converged(); })
+      .def_property_readonly("message", [](const PyResponseResult& r) { return r.result.info.message; })
+      .def_property_readonly("warnings", [](const PyResponseResult& r) { return r.context.source.warnings; })
+      .def("to_json", [](const PyResponseResult& r) { return response_json(r.result, r.options, r.model(), r.context.source); },
+           "The JSON text that feran response --json writes (docs/output-format.md)")
+      .def("to_csv", [](const PyResponseResult& r) { return response_csv(r.result, r.model()); })
+      .def("report", [](const PyResponseResult& r) { return response_report(r.result, r.options, r.model(), r.context.source); });
+
+  m.def(
+      "response",
+      [](const PyModel& model, const py::object& start, const py::object& stop, std::optional<int> points,
+         const py::object& speed, const py::object& freq_start, const py::object& freq_stop,
+         std::optional<int> freq_points, const py::object& probes, const py::object& forces,
+         std::optional<double> loss_factor, bool unbalance, std::optional<std::string> stations, int threads) {
+        auto file = std::make_shared<const ModelFile>(model.built());
+        const Model& built = file->model;
+        ResponseRequest request;
+        request.start = optional_speed(start, "start");
+        request.stop = optional_speed(stop, "stop");
+        request.points = points;
+        request.speed = optional_speed(speed, "speed");
+        request.freq_start = optional_speed(freq_start, "freq_start");
+        request.freq_stop = optional_speed(freq_stop, "freq_stop");
+        request.freq_points = freq_points;
+        request.probes = node_arguments(built, probes, "probe");
+        for (const std::string& f : text_arguments(forces, "force")) request.extra_forces.push_back(parse_force_text(built, f, "force"));
+        request.loss_factor = loss_factor;
+        request.unbalance = unbalance;
+        if (stations) request.stations = station_output(*stations);
+        request.n_threads = threads;
+        PyResponseResult out{{}, response_settings(built, file->spec.response, request), {}};
+        const bool fsweep = !out.options.frequencies.empty();
+        out.context = result_context(file, fsweep ? out.options.speed : out.options.speeds.front(),
+                                     fsweep ? out.options.speed : out.options.speeds.back());
+        std::atomic<bool> flag{false};
+        out.options.stop = StopToken(flag);
+        bool interrupted = false;
+        run_watched([&] { out.result = run_harmonic_response(built, out.options); }, flag, interrupted);
+        if (interrupted) raise_interrupted(py::cast(std::move(out)));
+        return out;
+      },
+      py::arg("model"), py::kw_only(), py::arg("start") = py::none(), py::arg("stop") = py::none(),
+      py::arg("points") = py::none(), py::arg("speed") = py::none(), py::arg("freq_start") = py::none(),
+      py::arg("freq_stop") = py::none(), py::arg("freq_points") = py::none(), py::arg("probe") = py::none(),
+      py::arg("force") = py::none(), py::arg("loss_factor") = py::none(), py::arg("unbalance") = true,
+      py::arg("stations") = py::none(), py::arg("threads") = 0,
+      "Steady-state response, as feran response. A speed sweep (start, stop, points) excites at\n"
+      "the rotor speed; a frequency sweep (freq_start, freq_stop, freq_points) holds the rotor at\n"
+      "speed and excites at each frequency; speed alone gives one point. probe: node name(s) or\n"
+      "number(s); force: 'NODE:DIRECTION:AMPLITUDE[:PHASE]' text(s) as --force; unbalance=False\n"
+      "as --no-unbalance; stations 'all', 'summary' or 'none'. Unset options come from the\n"
+      "model's [response] table. threads: 0 (all cores, as the CLI) or 1.");
+}
+
+}  // namespace feran::python

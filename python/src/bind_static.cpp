@@ -1,0 +1,112 @@
+// Static analysis: deflection of every node, spring forces, support reactions and
+// shaft section forces and stresses under gravity and static loads.
+#include <optional>
+#include <string>
+
+#include <pybind11/stl.h>
+
+#include <feran/analyses/settings.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/core/error.hpp>
+#include <feran/core/text.hpp>
+#include <feran/io/report.hpp>
+#include <feran/io/result_writer.hpp>
+
+#include "bindings.hpp"
+
+namespace feran::python {
+
+namespace {
+
+struct PyStaticResult {
+  ResultContext context;
+  StaticOptions options;
+  StaticResult result;
+  const Model& model() const { return context.file->model; }
+};
+
+}  // namespace
+
+void bind_static(py::module_& m) {
+  py::class_<PyStaticResult>(m, "StaticResult", "Static deflection, forces and stresses")
+      .def_property_readonly("nodes", [](const PyStaticResult& r) {
+             return string_list(r.model().nodes.size(), [&](std::size_t i) { return node_name(r.model(), static_cast<Index>(i)); });
+           })
+      .def_property_readonly("x", [](const PyStaticResult& r) {
+             return array_1d(r.model().nodes.size(), [&](std::size_t i) { return r.model().nodes[i].x; });
+           }, "axial position of each node [m]")
+      .def_property_readonly("displacement", [](const PyStaticResult& r) {
+             return array_2d(r.model().nodes.size(), dofs_per_node, [&](std::size_t i, std::size_t d) {
+               return r.result.q(static_cast<Index>(dofs_per_node * i + d));
+             });
+           }, "u, v, w, rx, ry, rz of every node [m, rad], shape (nodes, 6)")
+      .def_property_readonly("springs", [](const PyStaticResult& r) {
+             return string_list(r.result.springs.size(), [&](std::size_t i) { return r.model().elements[static_cast<std::size_t>(r.result.springs[i].first)].label(); });
+           })
+      .def_property_readonly("spring_force", [](const PyStaticResult& r) {
+             return array_2d(r.result.springs.size(), dofs_per_node, [&](std::size_t i, std::size_t d) { return r.result.springs[i].second[d]; });
+           }, "force each spring-damper transmits to its second node or ground, K (q_a - q_b) [N, N m],\n"
+                             "shape (springs, 6)")
+      .def_property_readonly("reactions", [](const PyStaticResult& r) {
+             return string_list(r.result.reactions.size(), [&](std::size_t i) { return node_name(r.model(), r.result.reactions[i].first); });
+           })
+      .def_property_readonly("reaction_force", [](const PyStaticResult& r) {
+             return array_2d(r.result.reactions.size(), dofs_per_node, [&](std::size_t i, std::size_t d) { return r.result.reactions[i].second[d]; });
+           }, "the force the rotor puts on the support at each node with fixed DOFs [N, N m],\n"
+                             "shape (reactions, 6); zero in free directions")
+      .def_property_readonly("station_x", [](const PyStaticResult& r) {
+             return array_1d(r.result.stations.size(), [&](std::size_t s) { return r.result.stations[s].x; });
+           })
+      .def_property_readonly("section_forces", [](const PyStaticResult& r) {
+             return array_2d(r.result.stations.size(), 6, [&](std::size_t s, std::size_t c) {
+               const SectionForces& f = r.result.section_forces[s];
+               const Complex v[6] = {f.N, f.Vy, f.Vz, f.T, f.My, f.Mz};
+               return v[c].real();
+             });
+           }, "N, Vy, Vz, T, My, Mz at each shaft station [N, N m], shape (stations, 6)")
+      .def_property_readonly("von_mises", [](const PyStaticResult& r) {
+             return array_1d(r.result.stresses.size(), [&](std::size_t s) { return r.result.stresses[s].von_mises; });
+           }, "equivalent stress at each shaft station [Pa]")
+      .def_property_readonly("total_load", [](const PyStaticResult& r) {
+             return array_1d(dofs_per_node, [&](std::size_t d) { return r.result.total_load[d]; });
+           }, "sum of the applied forces and moments about the origin [N, N m]")
+      .def_property_readonly("warnings", [](const PyStaticResult& r) { return r.context.source.warnings; })
+      .def("to_json", [](const PyStaticResult& r) { return static_json(r.result, r.options, r.model(), r.context.source); },
+           "The JSON text that feran static --json writes (docs/output-format.md)")
+      .def("to_csv", [](const PyStaticResult& r) { return static_csv(r.result, r.model()); })
+      .def("report", [](const PyStaticResult& r) { return static_report(r.result, r.options, r.model(), r.context.source); });
+
+  m.def(
+      "static",
+      [](const PyModel& model, std::optional<std::string> gravity, const py::object& g, const py::object& speed,
+         bool loads) {
+        auto file = std::make_shared<const ModelFile>(model.built());
+        StaticRequest request;
+        request.gravity = std::move(gravity);
+        if (!g.is_none()) {
+          if (py::isinstance<py::str>(g))
+            request.g = parse_quantity(g.cast<std::string>(), Quantity::acceleration);
+          else
+            request.g = g.cast<double>();
+        }
+        request.speed = optional_speed(speed, "speed");
+        request.loads = loads;
+        PyStaticResult out{{}, static_settings(file->spec.static_, request), {}};
+        out.context = result_context(file, out.options.speed, out.options.speed);
+        {
+          py::gil_scoped_release release;
+          out.result = run_static(file->model, out.options);
+        }
+        // One solve: a failure leaves nothing to keep.
+        if (!out.result.info.converged()) throw Error(out.result.info.message);
+        return out;
+      },
+      py::arg("model"), py::kw_only(), py::arg("gravity") = py::none(), py::arg("g") = py::none(),
+      py::arg("speed") = py::none(), py::arg("loads") = true,
+      "Static analysis, as feran static: gravity '+x' … '-z' or 'none', g ('9.81 m/s^2' or a\n"
+      "number in m/s²), speed (of speed-dependent coefficients), loads=False as --no-loads.\n"
+      "Unset options come from the model's [static] table. A singular or failed solve raises\n"
+      "feran.Error.");
+}
+
+}  // namespace feran::python

@@ -1,0 +1,182 @@
+"""Every analysis from Python equals the command line's JSON on every shipped example,
+to 1e-12 relative (the same library code runs both ways; the tolerance allows only for
+rounding in the JSON text, which keeps 17 significant digits), and the numpy arrays
+hold the numbers the JSON holds."""
+import glob
+import json
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import feran
+
+SOURCE = os.environ.get("FERAN_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+FERAN = os.environ.get("FERAN_PROGRAM", os.path.join(SOURCE, "build", "feran"))
+EXAMPLES = sorted(glob.glob(os.path.join(SOURCE, "examples", "*", "*.toml")))
+RTOL = 1e-12
+
+# (analysis, command-line options, the same as Python keywords)
+CASES = [
+    ("modal", ["--speed", "30Hz"], dict(speed="30 Hz")),
+    ("modal", ["--speed", "10Hz", "--shapes"], dict(speed="10 Hz", shapes=True)),
+    ("campbell", ["--stop", "60Hz", "--points", "13"], dict(stop="60 Hz", points=13)),
+    ("response", ["--stop", "60Hz", "--points", "13", "--stations", "all"],
+     dict(stop="60 Hz", points=13, stations="all")),
+    ("static", [], {}),
+]
+
+
+def same(a, b, where="result"):
+    """Asserts a and b (parsed JSON) equal, numbers to RTOL."""
+    if isinstance(a, dict):
+        assert isinstance(b, dict) and sorted(a) == sorted(b), where
+        for k in a:
+            same(a[k], b[k], f"{where}.{k}")
+    elif isinstance(a, list):
+        assert isinstance(b, list) and len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            same(x, y, f"{where}[{i}]")
+    elif isinstance(a, float) or isinstance(b, float):
+        assert a == pytest.approx(b, rel=RTOL, abs=1e-300) or (math.isnan(a) and math.isnan(b)), where
+    else:
+        assert a == b, where
+
+
+def cli_json(tmp_path, analysis, path, options):
+    out = tmp_path / f"{analysis}.json"
+    subprocess.run([FERAN, analysis, path, *options, "--json", str(out), "-q"], check=True,
+                   stderr=subprocess.DEVNULL)
+    return json.loads(out.read_text())
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: os.path.relpath(p, SOURCE))
+@pytest.mark.parametrize("analysis,options,keywords", CASES, ids=[" ".join([c[0], *c[1]]) for c in CASES])
+def test_every_analysis_equals_the_command_line(tmp_path, path, analysis, options, keywords):
+    model = feran.read_model(path)
+    with _no_check():
+        result = getattr(feran, analysis)(model, **keywords)
+    same(result.to_dict(), cli_json(tmp_path, analysis, path, options))
+
+
+class _no_check:
+    """Range warnings (a table evaluated beyond its range) are expected for some examples."""
+
+    def __enter__(self):
+        import warnings
+        self._w = warnings.catch_warnings()
+        self._w.__enter__()
+        warnings.simplefilter("ignore")
+
+    def __exit__(self, *exc):
+        self._w.__exit__(*exc)
+
+
+RUNUPS = [
+    ("01_internal_damping/model.toml", ["--from", "0Hz", "--to", "40Hz", "--ramp-time", "0.1s"],
+     dict(from_="0 Hz", to="40 Hz", ramp_time="0.1 s")),
+    ("03_coulomb_friction/model_20_8N.toml", ["--speed", "20Hz", "--duration", "0.05s", "--integrator", "ros34pw2"],
+     dict(speed="20 Hz", duration="0.05 s", integrator="ros34pw2")),
+    ("02_centrifuge/model.toml", ["--table", "0s:0Hz,0.05s:10Hz,0.1s:10Hz", "--integrator", "rk3",
+                                  "--modes", "12", "--dt", "2e-5s"],
+     dict(table=[(0, "0 Hz"), ("0.05 s", "10 Hz"), (0.1, 2 * math.pi * 10)], integrator="rk3", modes=12,
+          dt=2e-5)),
+]
+
+
+@pytest.mark.parametrize("path,options,keywords", RUNUPS, ids=[r[0] for r in RUNUPS])
+def test_runup_equals_the_command_line(tmp_path, path, options, keywords):
+    path = os.path.join(SOURCE, "examples", path)
+    result = feran.runup(feran.read_model(path), **keywords)
+    cli = cli_json(tmp_path, "runup", path, options)
+    same(result.to_dict(), cli)
+    assert result.complete
+    for i, probe in enumerate(cli["probes"]):
+        np.testing.assert_allclose(result.magnitude[i], probe["magnitude_m"], rtol=RTOL)
+    np.testing.assert_allclose(result.time, cli["time_s"], rtol=RTOL)
+
+
+EXAMPLE = os.path.join(SOURCE, "examples", "01_internal_damping", "model.toml")
+
+
+def test_campbell_arrays_and_critical_speeds(tmp_path):
+    model = feran.read_model(EXAMPLE)
+    c = feran.campbell(model, stop="80 Hz", points=81, orders=[1, 2])
+    cli = cli_json(tmp_path, "campbell", EXAMPLE, ["--stop", "80Hz", "--points", "81", "--orders", "1,2"])
+    assert c.frequency_hz.shape == (len(cli["modes"]), len(cli["speeds_hz"]))
+    for i, mode in enumerate(cli["modes"]):
+        assert c.labels[i] == mode["label"]
+        np.testing.assert_allclose(c.frequency_hz[i], mode["frequency_hz"], rtol=RTOL)
+        np.testing.assert_allclose(c.damping_ratio[i], mode["damping_ratio"], rtol=RTOL)
+    np.testing.assert_allclose(c.speeds_hz, cli["speeds_hz"], rtol=RTOL)
+    # The look-up selects by the whirl at the crossing and by the order, not by label text.
+    forward = [x["speed_hz"] for x in cli["critical_speeds"] if x["whirl"] == "forward" and x["order"] == 1]
+    np.testing.assert_allclose(c.critical_speeds(whirl="forward", order=1, unit="Hz"), forward, rtol=RTOL)
+    assert len(forward) >= 1
+    assert np.all(np.diff(c.critical_speeds(order=2)) >= 0)
+    assert c.critical_speeds(order=2, unit="rpm") == pytest.approx(60 * c.critical_speeds(order=2, unit="Hz"))
+    # At a critical speed of order k the mode's frequency is k times the speed.
+    for x in c.criticals:
+        assert x["frequency_hz"] == pytest.approx(x["order"] * x["speed_hz"], rel=1e-9)
+    assert c.stability_threshold["speed_hz"] == pytest.approx(cli["stability_threshold_hz"], rel=RTOL)
+    with pytest.raises(feran.Error, match="whirl="):
+        c.critical_speeds(whirl="forwards")
+
+
+def test_response_arrays_match_the_json(tmp_path):
+    model = feran.read_model(EXAMPLE)
+    r = feran.response(model, stop="60 Hz", points=31, probe=["rotor", 1])
+    cli = cli_json(tmp_path, "response", EXAMPLE, ["--stop", "60Hz", "--points", "31", "--probe", "rotor",
+                                                  "--probe", "1"])
+    assert r.probes == [p["name"] or str(p["node"]) for p in cli["probes"]]
+    for i, probe in enumerate(cli["probes"]):
+        np.testing.assert_allclose(r.orbit_major[i], probe["amplitude_m"], rtol=RTOL)
+        np.testing.assert_allclose(r.orbit_minor[i], probe["minor_m"], rtol=RTOL)
+        for d, dof in enumerate(["u", "v", "w", "rx", "ry", "rz"]):
+            np.testing.assert_allclose(np.abs(r.displacement[i, :, d]), probe["dofs"][dof]["amplitude"], rtol=RTOL,
+                                       atol=1e-300)
+    # The orbit's major semi-axis lies between max(|v|, |w|) and sqrt(|v|^2 + |w|^2), whatever
+    # the phases (an ellipse inscribed in the |v| x |w| rectangle touches its sides).
+    v, w = np.abs(r.displacement[:, :, 1]), np.abs(r.displacement[:, :, 2])
+    assert np.all(r.orbit_major <= np.sqrt(v**2 + w**2) * (1 + 1e-12))
+    assert np.all(r.orbit_major >= np.maximum(v, w) * (1 - 1e-12))
+    assert r.probe_index("rotor") == 0
+
+
+def test_frequency_sweep_and_extra_force(tmp_path):
+    model = feran.read_model(EXAMPLE)
+    r = feran.response(model, speed="20 Hz", freq_start="1 Hz", freq_stop="50 Hz", freq_points=25,
+                       force="rotor:y:1N", unbalance=False, probe="rotor")
+    cli = cli_json(tmp_path, "response", EXAMPLE, ["--speed", "20Hz", "--freq-start", "1Hz", "--freq-stop",
+                                                  "50Hz", "--freq-points", "25", "--force", "rotor:y:1N",
+                                                  "--no-unbalance", "--probe", "rotor"])
+    same(r.to_dict(), cli)
+    assert r.frequency_sweep
+    np.testing.assert_allclose(r.frequencies / (2 * np.pi), np.linspace(1, 50, 25), rtol=1e-12)
+
+
+def test_static_arrays_balance_the_load():
+    model = feran.read_model(EXAMPLE)
+    s = feran.static(model)
+    # Equilibrium (an invariant, not the solver's own residual): the forces the rotor puts
+    # on its supports and on the springs to ground add up to the applied weight.
+    carried = s.reaction_force.sum(axis=0)[1] + sum(
+        f[1] for f, to in zip(s.spring_force, model.geometry()["spring_to_x"]) if np.isnan(to))
+    assert carried == pytest.approx(s.total_load[1], rel=1e-9)
+    assert s.displacement.shape == (len(s.nodes), 6)
+
+
+def test_bad_options_are_errors():
+    model = feran.read_model(EXAMPLE)
+    with pytest.raises(feran.Error, match="give a speed with its unit"):
+        feran.campbell(model, stop="80")
+    with pytest.raises(feran.Error, match="probe 'rotr': no such node; did you mean 'rotor'"):
+        feran.response(model, stop="60 Hz", probe="rotr")
+    with pytest.raises(feran.Error, match="ramp_time"):
+        feran.runup(model, from_="0 Hz", to="10 Hz", ramp_time=-1)
+    with pytest.raises(feran.Error, match="solver"):
+        feran.modal(model, solver="fast")
+    with pytest.raises(TypeError):
+        feran.campbell(model, "80 Hz")  # keywords only, as the CLI's options are named

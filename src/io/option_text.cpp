@@ -1,0 +1,103 @@
+#include <feran/io/option_text.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+#include <feran/core/units.hpp>
+#include <feran/io/node_reference.hpp>
+
+namespace feran {
+
+Real parse_speed_text(const std::string& text, const std::string& what) {
+  const auto q = split_quantity(text);
+  if (!q || q->unit.empty())
+    throw Error(fmt::format("{} '{}': give a speed with its unit, e.g. 30Hz, 1800rpm or 188.5rad/s", what, text));
+  const auto si = to_si(Quantity::speed, q->value, q->unit);
+  if (!si) throw Error(fmt::format("{} '{}': the unit must be Hz, rpm or rad/s", what, text));
+  const Real largest = physical_range(Quantity::speed).largest;
+  if (!std::isfinite(*si) || std::abs(*si) > largest)
+    throw Error(fmt::format("{} '{}': beyond the physical range of a speed (at most {:g} rad/s in magnitude)", what,
+                            text, largest));
+  return *si;
+}
+
+Real parse_time_text(const std::string& text, const std::string& what) {
+  try {
+    const Real t = parse_quantity(text, Quantity::time);
+    if (!(t > 0)) throw Error("must be positive");
+    return t;
+  } catch (const Error& e) {
+    throw Error(fmt::format("{} '{}': {} (a time such as 5s or 0.1ms)", what, text, e.what()));
+  }
+}
+
+std::vector<std::pair<Real, Real>> parse_speed_table_text(const std::string& text, const std::string& what) {
+  std::vector<std::pair<Real, Real>> points;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    const std::size_t colon = item.find(':');
+    if (colon == std::string::npos)
+      throw Error(fmt::format("{} '{}': each point is TIME:SPEED, e.g. 0s:0Hz,5s:80Hz", what, text));
+    const Real t = parse_quantity(item.substr(0, colon), Quantity::time);
+    points.emplace_back(t, parse_speed_text(item.substr(colon + 1), what));
+    start = end + 1;
+  }
+  return points;
+}
+
+HarmonicForce parse_force_text(const Model& model, const std::string& text, const std::string& what) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i)
+    if (i == text.size() || text[i] == ':') {
+      parts.push_back(text.substr(start, i - start));
+      start = i + 1;
+    }
+  if (parts.size() < 3 || parts.size() > 4)
+    throw Error(fmt::format("{} '{}': expected NODE:DIRECTION:AMPLITUDE[:PHASE], e.g. rotor:y:10N or "
+                            "rotor:rotating:2N:90deg",
+                            what, text));
+  HarmonicForce f;
+  f.node = find_node_reference(model, parts[0], what);
+  const std::string& dir = parts[1];
+  static const std::pair<const char*, Dof> dirs[] = {{"x", Dof::u},   {"y", Dof::v},   {"z", Dof::w},
+                                                     {"rx", Dof::rx}, {"ry", Dof::ry}, {"rz", Dof::rz}};
+  bool moment = false;
+  if (dir == "rotating") {
+    f.type = HarmonicForce::Kind::rotating_force;
+  } else if (dir == "rotating_moment") {
+    f.type = HarmonicForce::Kind::rotating_moment;
+    moment = true;
+  } else {
+    const auto* it = std::find_if(std::begin(dirs), std::end(dirs), [&](const auto& p) { return dir == p.first; });
+    if (it == std::end(dirs))
+      throw Error(fmt::format("{} '{}': direction '{}' is not one of x, y, z, rx, ry, rz, rotating, "
+                              "rotating_moment",
+                              what, text, dir));
+    f.direction = it->second;
+    moment = f.direction == Dof::rx || f.direction == Dof::ry || f.direction == Dof::rz;
+  }
+  try {
+    f.amplitude = parse_quantity(parts[2], moment ? Quantity::moment : Quantity::force);
+    if (parts.size() == 4) f.phase = parse_quantity(parts[3], Quantity::angle);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{} '{}': {}", what, text, e.what()));
+  }
+  if (!(f.amplitude > 0)) throw Error(fmt::format("{} '{}': the amplitude must be positive", what, text));
+  return f;
+}
+
+EigenSolver parse_solver_name(const std::string& name, const std::string& what) {
+  if (name == "auto") return EigenSolver::automatic;
+  if (name == "dense") return EigenSolver::dense;
+  if (name == "sparse") return EigenSolver::sparse;
+  throw Error(fmt::format("{} '{}': expected auto, dense or sparse", what, name));
+}
+
+}  // namespace feran
