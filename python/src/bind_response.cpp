@@ -77,6 +77,9 @@ void bind_response(py::module_& m) {
       .def_property_readonly("probes", [](const PyResponseResult& r) {
              return string_list(r.result.probes.size(), [&](std::size_t i) { return node_name(r.model(), r.result.probes[i].node); });
            }, "the probe nodes, by name (else number)")
+      .def_property_readonly("probe_x", [](const PyResponseResult& r) {
+             return array_1d(r.result.probes.size(), [&](std::size_t i) { return r.model().nodes[static_cast<std::size_t>(r.result.probes[i].node)].x; });
+           }, "axial position of each probe [m]")
       .def_property_readonly("displacement", [](const PyResponseResult& r) {
              return amplitudes(r, r.result.probes, [](const ProbeResponse& p) -> const std::vector<NodeAmplitudes>& { return p.q; });
            }, "complex amplitudes of u, v, w, rx, ry, rz [m, rad], shape (probes, points, 6)")
