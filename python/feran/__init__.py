@@ -7,6 +7,8 @@
 """
 import json as _json
 
+import numpy as _np
+
 from ._feran import (CampbellResult, Error, Interrupted, ModalResult, Model, ModelError, ParameterError,
                      ResponseResult, RunupResult, StaticResult, campbell, modal, read_model, response,
                      runup, static)
@@ -17,8 +19,172 @@ def _to_dict(result):
     return _json.loads(result.to_json())
 
 
-for _result in (ModalResult, CampbellResult, ResponseResult, StaticResult, RunupResult):
+_DOFS = ("u", "v", "w", "rx", "ry", "rz")
+_HZ = 1 / (2 * _np.pi)
+
+
+def _modal_frame(r):
+    """One row per mode."""
+    return _pd().DataFrame({"frequency_hz": r.frequency_hz, "damping_ratio": r.damping_ratio,
+                            "log_decrement": r.log_decrement, "directivity": r.directivity,
+                            "whirl": r.whirl, "type": r.type, "eigenvalue": r.eigenvalues})
+
+
+def _campbell_frame(r):
+    """One row per mode and speed (long form: group by 'label' for each mode's curve)."""
+    n_modes, n_speeds = r.frequency_hz.shape
+    return _pd().DataFrame({
+        "speed_hz": _np.tile(r.speeds_hz, n_modes),
+        "label": _np.repeat(_np.array(r.labels, dtype=object), n_speeds),
+        "frequency_hz": r.frequency_hz.ravel(), "damping_ratio": r.damping_ratio.ravel(),
+        "log_decrement": r.log_decrement.ravel(), "directivity": r.directivity.ravel(),
+        "whirl": _np.array(r.whirl_at, dtype=object).ravel() if n_speeds else []})
+
+
+def _response_frame(r):
+    """One row per probe and point: speed and frequency [Hz], the orbit, and the complex
+    amplitude of each DOF."""
+    n_probes, n_points, _ = r.displacement.shape
+    columns = {"probe": _np.repeat(_np.array(r.probes, dtype=object), n_points),
+               "speed_hz": _np.tile(r.speeds * _HZ, n_probes),
+               "frequency_hz": _np.tile(r.frequencies * _HZ, n_probes),
+               "orbit_major": r.orbit_major.ravel(), "orbit_minor": r.orbit_minor.ravel()}
+    for d, name in enumerate(_DOFS):
+        columns[name] = r.displacement[:, :, d].ravel()
+    return _pd().DataFrame(columns)
+
+
+def _static_frame(r):
+    """One row per node: x and the six displacements."""
+    frame = _pd().DataFrame(r.displacement, columns=list(_DOFS))
+    frame.insert(0, "x", r.x)
+    frame.insert(0, "node", r.nodes)
+    return frame
+
+
+def _runup_frame(r):
+    """One row per sample: time, speed [Hz], then per probe 'PROBE.u' … 'PROBE.rz' and
+    'PROBE.r' (|r|), and per recorded spring 'SPRING.fx' … 'SPRING.mz'."""
+    columns = {"time": r.time, "speed_hz": r.speed * _HZ}
+    for i, probe in enumerate(r.probes):
+        for d, name in enumerate(_DOFS):
+            columns[f"{probe}.{name}"] = r.displacement[i, :, d]
+        columns[f"{probe}.r"] = r.magnitude[i]
+    for i, spring in enumerate(r.springs):
+        for d, name in enumerate(("fx", "fy", "fz", "mx", "my", "mz")):
+            columns[f"{spring}.{name}"] = r.spring_force[i, :, d]
+    return _pd().DataFrame(columns)
+
+
+# -- building a model in code ----------------------------------------------------------
+# Each add_<entry>(**keys) adds one entry of a model file's array of tables, with the
+# file's keys (docs/model-format.md); set_table(name, **keys) sets a single table. The
+# keys are handed to the model reader as TOML, so they are checked by the same rules
+# as a file's; values are numbers in SI units or text with a unit ("210 GPa").
+
+_ENTRIES = {"material": "materials", "shaft": "shafts", "node": "nodes", "rigid_body": "rigid_bodies",
+            "spring": "springs", "rotating_damper": "rotating_dampers", "friction": "friction",
+            "rigid_link": "rigid_links", "fixed": "fixed", "unbalance": "unbalances", "force": "forces",
+            "static_load": "static_loads"}
+_TABLES = ("options", "modal", "campbell", "response", "static", "runup")
+
+
+def _toml_key(key):
+    key = key[:-1] if key.endswith("_") and key[:-1] in ("from",) else key
+    return key if key and all(c.isalnum() or c in "_-" for c in key) else _json.dumps(key)
+
+
+def _toml_value(value, where):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, _np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, _np.floating)):
+        x = float(value)
+        return "nan" if x != x else ("inf" if x == float("inf") else "-inf" if x == -float("inf") else repr(x))
+    if isinstance(value, str):
+        return _json.dumps(value)  # JSON's escapes are TOML's
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{_toml_key(k)} = {_toml_value(v, f'{where}.{k}')}" for k, v in value.items()) + "}"
+    if isinstance(value, (list, tuple, _np.ndarray)):
+        return "[" + ", ".join(_toml_value(v, f"{where}[{i}]") for i, v in enumerate(value)) + "]"
+    raise TypeError(f"{where}: {type(value).__name__} is not a value of a model (a number, text, true/false, "
+                    f"a list or a dict)")
+
+
+def _keys_toml(keys, call):
+    if not all(isinstance(k, str) for k in keys):
+        raise TypeError(f"{call}: keys are text")
+    return "\n".join(f"{_toml_key(k)} = {_toml_value(v, f'{call}: {k}')}" for k, v in keys.items()) + "\n"
+
+
+def _call_name(method, keys):
+    name = keys.get("name", keys.get("node"))
+    return f"{method}({'name' if 'name' in keys else 'node'}={name!r})" if name is not None else f"{method}()"
+
+
+def _adder(entry, table):
+    def add(self, **keys):
+        call = _call_name(f"add_{entry}", keys)
+        self._add(table, _keys_toml(keys, call), call)
+        return self
+
+    add.__name__ = f"add_{entry}"
+    add.__doc__ = (f"Adds a [[{table}]] entry with the keys of docs/model-format.md (numbers in SI units or "
+                   f"text with a unit); returns the model, so that calls chain.")
+    return add
+
+
+for _entry, _table in _ENTRIES.items():
+    setattr(Model, f"add_{_entry}", _adder(_entry, _table))
+
+
+def _set_table(self, table, **keys):
+    """Sets the single table [options], [modal], [campbell], [response], [static] or
+    [runup] to these keys (those not given take their defaults); returns the model."""
+    if table not in _TABLES:
+        raise Error(f"set_table({table!r}): expected one of {', '.join(_TABLES)}")
+    call = f"set_table({table!r})"
+    self._add(table, _keys_toml(keys, call), call)
+    return self
+
+
+def _from_dict(data):
+    """A model from a dict shaped like the model file: {"title": …, "materials": [{…}],
+    "shafts": [{…, "sections": [{…}]}], "campbell": {…}, …}."""
+    data = dict(data)
+    model = Model(data.pop("title", ""))
+    tables = {t: e for e, t in _ENTRIES.items()}
+    for key, value in data.items():
+        if key in tables:
+            if not isinstance(value, (list, tuple)):
+                raise Error(f"from_dict: '{key}' is a list of entries (an array of tables)")
+            for entry in value:
+                getattr(model, f"add_{tables[key]}")(**entry)
+        elif key in _TABLES:
+            model.set_table(key, **value)
+        else:
+            raise Error(f"from_dict: no table '{key}' in a model (docs/model-format.md)")
+    return model
+
+
+Model.set_table = _set_table
+Model.from_dict = staticmethod(_from_dict)
+
+
+def _pd():
+    try:
+        import pandas
+    except ImportError as e:  # pandas is optional: everything else works without it
+        raise ImportError("to_pandas() needs pandas (Debian: apt-get install python3-pandas)") from e
+    return pandas
+
+
+for _result, _frame in ((ModalResult, _modal_frame), (CampbellResult, _campbell_frame),
+                        (ResponseResult, _response_frame), (StaticResult, _static_frame),
+                        (RunupResult, _runup_frame)):
     _result.to_dict = _to_dict
+    _result.to_pandas = _frame
 
 __all__ = ["CampbellResult", "Error", "Interrupted", "ModalResult", "Model", "ModelError", "ParameterError",
            "ResponseResult", "RunupResult", "StaticResult", "campbell", "modal", "read_model", "response",

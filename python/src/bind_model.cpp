@@ -11,7 +11,9 @@
 #include <feran/core/units.hpp>
 #include <feran/model/element.hpp>
 #include <feran/io/model_writer.hpp>
+#include <feran/spec/fields.hpp>
 #include <feran/spec/parameters.hpp>
+#include <feran/spec/spec_path.hpp>
 
 #include "bindings.hpp"
 
@@ -26,6 +28,47 @@ void PyModel::set(const std::string& path, const std::string& value) {
 void PyModel::set(const std::string& path, double si) {
   const std::string canonical = set_parameter(spec_, path, si);
   changed_.emplace_back(fmt::format("model['{}'] = {}", path, si), canonical);
+  built_.reset();
+}
+
+void PyModel::add(const std::string& table, const std::string& keys_toml, const std::string& call) {
+  bool known = false, array = false;
+  spec::visit_tables(spec_, [&](std::string_view key, spec::TableForm form, std::string_view, auto&) {
+    if (key == table) {
+      known = true;
+      array = form == spec::TableForm::array_of_tables;
+    }
+  });
+  if (!known) throw Error(fmt::format("{}: no table '{}' in a model (docs/model-format.md)", call, table));
+  const std::string document = (array ? "[[" + table + "]]\n" : "[" + table + "]\n") + keys_toml;
+  ModelSpec read;
+  try {
+    read = read_model_spec(document, "<code>");
+  } catch (const ModelError& e) {
+    throw Error(fmt::format("{}: {}", call, e.message()));
+  }
+  std::string path;
+  spec::visit_tables(spec_, [&](std::string_view key, spec::TableForm, std::string_view, auto& mine) {
+    if (key != table) return;
+    spec::visit_tables(read, [&](std::string_view other, spec::TableForm, std::string_view, auto& theirs) {
+      if constexpr (std::is_same_v<decltype(mine), decltype(theirs)>) {
+        if (other != key) return;
+        if constexpr (requires { mine.push_back(theirs.front()); }) {
+          path = spec::element(std::string(key), mine.size());
+          mine.push_back(theirs.front());
+        } else {
+          path = std::string(key);
+          mine = theirs;
+        }
+      }
+    });
+  });
+  changed_.emplace_back(call, path);
+  built_.reset();
+}
+
+void PyModel::set_title(const std::string& title) {
+  spec_.title = title;
   built_.reset();
 }
 
@@ -137,9 +180,20 @@ void bind_model(py::module_& m) {
     }
   });
 
-  py::class_<PyModel>(m, "Model", "A rotor model (docs/model-format.md); read_model() makes one.")
+  py::class_<PyModel>(m, "Model",
+                      "A rotor model (docs/model-format.md): read_model() reads one; Model(title) starts an\n"
+                      "empty one to build in code (add_material(), add_shaft(), …; docs/python.md).")
+      .def(py::init([](const std::string& title) {
+             ModelSpec spec;
+             spec.title = title;
+             return PyModel(std::move(spec), SpecSource{}, "<code>");
+           }),
+           py::arg("title") = "")
+      .def("_add", &PyModel::add, py::arg("table"), py::arg("keys_toml"), py::arg("call"))
+      .def("__eq__", [](const PyModel& a, const PyModel& b) { return a == b; },
+           "Whether two models say the same (every table and key, values in SI units)")
       .def_property_readonly("path", &PyModel::path, "the file it was read from, or '<string>'")
-      .def_property_readonly("title", [](const PyModel& self) { return self.spec().title; })
+      .def_property("title", [](const PyModel& self) { return self.spec().title; }, &PyModel::set_title)
       .def("__getitem__",
            [](const PyModel& self, const std::string& path) { return get_parameter(self.spec(), path).value; },
            "The value (SI units) of the parameter at a path, e.g. model['springs[bearing 1].ky']")

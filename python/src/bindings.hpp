@@ -38,6 +38,13 @@ class PyModel {
   /// Sets a parameter by its path ("springs[bearing 1].ky", "2e7 N/m").
   void set(const std::string& path, const std::string& value);
   void set(const std::string& path, double si);
+  /// Adds an entry to an array of tables ("materials") or sets a table ("campbell"),
+  /// given as TOML text of its keys and read by the model reader's rules; @p call
+  /// names it in messages ("add_material(name='steel')"). Problems the builder finds
+  /// in it later are reported as "CALL: …".
+  void add(const std::string& table, const std::string& keys_toml, const std::string& call);
+  void set_title(const std::string& title);
+  bool operator==(const PyModel& other) const { return spec_ == other.spec_; }
   /// The built and checked model (ModelError, or Error for a value set since).
   const ModelFile& built() const;
 

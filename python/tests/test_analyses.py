@@ -180,3 +180,26 @@ def test_bad_options_are_errors():
         feran.modal(model, solver="fast")
     with pytest.raises(TypeError):
         feran.campbell(model, "80 Hz")  # keywords only, as the CLI's options are named
+
+
+def test_to_pandas_holds_the_arrays():
+    model = feran.read_model(EXAMPLE)
+    c = feran.campbell(model, stop="60 Hz", points=7)
+    frame = c.to_pandas()
+    assert len(frame) == c.frequency_hz.size
+    for i, label in enumerate(c.labels):
+        rows = frame[frame["label"] == label]
+        np.testing.assert_array_equal(rows["frequency_hz"], c.frequency_hz[i])
+        np.testing.assert_array_equal(rows["speed_hz"], c.speeds_hz)
+        assert list(rows["whirl"]) == c.whirl_at[i]
+    r = feran.response(model, stop="60 Hz", points=7, probe=["rotor", "drive"])
+    frame = r.to_pandas()
+    rows = frame[frame["probe"] == "drive"]
+    np.testing.assert_array_equal(rows["v"], r.displacement[1, :, 1])
+    np.testing.assert_array_equal(rows["speed_hz"], r.speeds / (2 * np.pi))
+    m = feran.modal(model)
+    assert list(m.to_pandas()["frequency_hz"]) == list(m.frequency_hz)
+    s = feran.static(model)
+    np.testing.assert_array_equal(s.to_pandas()["v"], s.displacement[:, 1])
+    u = feran.runup(model, speed="10 Hz", duration="0.02 s", probe="rotor")
+    np.testing.assert_array_equal(u.to_pandas()["rotor.r"], u.magnitude[0])
