@@ -284,13 +284,8 @@ def _nearest_point(result, speed):
 
 
 def _as_speed(speed):
-    if isinstance(speed, str):
-        text = speed.replace(" ", "")
-        for unit, factor in (("rad/s", 1.0), ("rpm", 2 * math.pi / 60), ("Hz", 2 * math.pi)):
-            if text.endswith(unit):
-                return float(text[: -len(unit)]) * factor
-        raise ValueError(f"speed={speed!r}: give the unit, Hz, rpm or rad/s")
-    return float(speed)
+    from ._feran import _speed  # the library's reading of a speed, as the analyses use it
+    return _speed(speed)
 
 
 def orbit(result, probe, speed, points=100, ax=None):

@@ -232,6 +232,8 @@ void bind_model(py::module_& m) {
       .def("check", [](const PyModel& self) { (void)self.built(); },
            "Builds and checks the model (raises ModelError as reading does)");
 
+  m.def("_speed", [](const py::object& value) { return speed_argument(value, "speed"); }, py::arg("value"),
+        "A speed as the analyses take it ('30 Hz', '1800 rpm', or a number in rad/s), in rad/s");
   m.def("read_model", &read, py::arg("path_or_text"),
         "Reads and checks a model from a file path or from TOML text (docs/model-format.md).\n"
         "Raises feran.ModelError with file, line, column and message.");
