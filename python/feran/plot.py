@@ -20,6 +20,7 @@ import matplotlib
 import matplotlib.pyplot as plt
 from matplotlib.collections import LineCollection
 from matplotlib.patches import Rectangle
+from matplotlib.ticker import EngFormatter
 
 DOFS = ("u", "v", "w", "rx", "ry", "rz")
 _SPEED_UNITS = {"Hz": 1 / (2 * math.pi), "rpm": 60 / (2 * math.pi), "rad/s": 1.0}
@@ -53,6 +54,7 @@ def rotor(model, ax=None, names=True):
     their mass and polar inertia (d = sqrt(8 Jp / m)), spring–dampers as markers to
     ground or to their second node, and the node names."""
     g = model.geometry()
+    owned = ax is None
     fig, ax = _axes(ax, size=(9, 3.5))
     for x0, x1, d, di, rot in zip(g["segment_x0"], g["segment_x1"], g["segment_outer"], g["segment_inner"],
                                   g["segment_rotating"]):
@@ -62,12 +64,14 @@ def rotor(model, ax=None, names=True):
             ax.add_patch(Rectangle((x0, y0), x1 - x0, (d - di) / 2, facecolor=colour, edgecolor="k", lw=0.5,
                                    gid="section"))
     radius = float(np.max(g["segment_outer"], initial=0.0)) / 2
+    extent = (float(np.min(g["node_x"])), float(np.max(g["node_x"])))
     for name, x, m, jp, rot in zip(g["body_names"], g["body_x"], g["body_mass"], g["body_Jp"], g["body_rotating"]):
         d = math.sqrt(8 * jp / m) if m > 0 and jp > 0 else 2 * max(radius, 1e-3) * 2
         width = 0.15 * d
         ax.add_patch(Rectangle((x - width / 2, -d / 2), width, d, facecolor="tab:blue" if rot else "tab:orange",
                                alpha=0.6, edgecolor="k", lw=0.5, gid="body"))
         radius = max(radius, d / 2)
+        extent = (min(extent[0], x - width / 2), max(extent[1], x + width / 2))
     span = max(float(np.ptp(g["node_x"])) if len(g["node_x"]) else 0.0, 1e-3)
     ground = -1.25 * max(radius, 0.02 * span)
     for name, x, to in zip(g["spring_names"], g["spring_x"], g["spring_to_x"]):
@@ -86,12 +90,21 @@ def rotor(model, ax=None, names=True):
         for x, here in at.items():
             ax.annotate(", ".join(here), (x, 1.15 * radius), ha="center", va="bottom", fontsize=7, rotation=90,
                         gid="name")
-    ax.set_xlim(float(np.min(g["node_x"])) - 0.05 * span, float(np.max(g["node_x"])) + 0.05 * span)
-    ax.set_ylim(1.6 * ground, 3.5 * max(radius, 0.02 * span))
+    x_limits = (extent[0] - 0.05 * span, extent[1] + 0.05 * span)
+    y_limits = (1.6 * ground, 3.5 * max(radius, 0.02 * span))
+    ax.set_xlim(*x_limits)
+    ax.set_ylim(*y_limits)
     ax.set_aspect("equal", adjustable="box")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("r [m]")
     ax.set_title(model.title or model.path)
+    if owned:  # a figure of the drawing's own proportions, so that it fills the figure
+        aspect = (y_limits[1] - y_limits[0]) / (x_limits[1] - x_limits[0])
+        width, height = 9.0, 9.0 * aspect + 1.2
+        if height > 7:
+            width, height = max(5.8 / aspect + 1.5, 6.0), 7.0
+        fig.set_size_inches(width, max(height, 2.5))
+        fig.tight_layout()
     return fig
 
 
@@ -278,6 +291,31 @@ def polar(result, probe, dof="v", unit="Hz", ax=None):
     return fig
 
 
+def forces(result, unit="Hz", springs=None, reactions=True, ax=None):
+    """Peak lateral forces against the sweep: of each spring–damper (a bearing's load)
+    and, with ``reactions``, of each fixed support that carries a lateral load;
+    ``springs`` selects springs by
+    name (default: all)."""
+    x, label = _sweep_axis(result, unit)
+    fig, ax = _axes(ax)
+    names = list(result.springs) if springs is None else list(springs)
+    for name in names:
+        if name not in result.springs:
+            raise ValueError(f"springs: no spring {name!r} in the result; it has {', '.join(result.springs)}")
+        ax.plot(x, result.spring_peak[list(result.springs).index(name)], label=name, gid=f"spring {name}")
+    if reactions:
+        for i, name in enumerate(result.reactions):
+            if not np.any(result.reaction_peak[i] > 0):
+                continue  # a support that carries no lateral load (axial or torsional only)
+            ax.plot(x, result.reaction_peak[i], ls="--", label=f"support {name}", gid=f"reaction {name}")
+    ax.set_xlabel(label)
+    ax.set_ylabel("peak lateral force [N]")
+    ax.set_title("bearing and support forces")
+    if ax.get_lines():
+        ax.legend(fontsize=8)
+    return fig
+
+
 def _nearest_point(result, speed):
     axis = result.frequencies if result.frequency_sweep else result.speeds
     return int(np.argmin(np.abs(axis - speed)))
@@ -392,6 +430,7 @@ def waterfall(result, probe=0, dof="v", window=None, unit="Hz", orders=(1,), fma
         ax.plot(k * speeds * factor, speeds * factor, np.zeros_like(speeds), "r--", lw=0.8, gid=f"order {k}")
     ax.set_xlabel(f"frequency [{unit}]")
     ax.set_ylabel(f"speed [{unit}]")
-    ax.set_zlabel(f"|{dof}| [m]")
+    ax.set_zlabel(f"|{dof}|", labelpad=14)
+    ax.zaxis.set_major_formatter(EngFormatter(unit="m" if _dof(dof) < 3 else "rad"))
     ax.set_title(f"waterfall at {result.probes[probe] if isinstance(probe, int) else probe}")
     return fig

@@ -122,6 +122,18 @@ def test_bode_polar_orbit_and_deflected_shape(model):
     s = feran.static(model)
     fig = feran.plot.deflected_shape(s)
     np.testing.assert_allclose(lines(fig, "static v")[0].get_ydata(), s.displacement[np.argsort(s.x), 1])
+    # Forces: one line per spring and per support, the peaks the library computed,
+    # in rpm the speeds times 60.
+    fig = feran.plot.forces(r, unit="rpm")
+    for i, name in enumerate(r.springs):
+        (line,) = lines(fig, f"spring {name}")
+        np.testing.assert_allclose(line.get_ydata(), r.spring_peak[i])
+        np.testing.assert_allclose(line.get_xdata(), r.speeds * 60 / (2 * np.pi))
+    assert r.reactions and np.all(r.reaction_peak[:, 1:] > 0)
+    for i, name in enumerate(r.reactions):
+        np.testing.assert_allclose(lines(fig, f"reaction {name}")[0].get_ydata(), r.reaction_peak[i])
+    with pytest.raises(ValueError, match="no spring 'bearing 9'"):
+        feran.plot.forces(r, springs=["bearing 9"])
 
 
 def test_runup_envelope_and_waterfall(model):
