@@ -154,6 +154,31 @@ def main():
         print(f"{name:32s} {1e3 * med:10.2f} ms  ({r['median_per_unit_ms']:.3f} ms/{unit}, CPU "
               f"{1e3 * r['median_cpu_s']:.1f} ms)  {r['peak_memory_mib']:7.1f} MiB", flush=True)
 
+    # The same analyses through the Python package, timed inside one process
+    # (bench/python_api.py): the cost per call of a script, against the whole CLI run.
+    package = os.path.join(os.path.dirname(os.path.abspath(args.feran)), "python")
+    ex = os.path.join(ROOT, "examples")
+    for name, analysis, model, cli in [
+            ("python_example01_campbell", "campbell", os.path.join(ex, "01_internal_damping", "model.toml"),
+             "example01_campbell"),
+            ("python_example01_response", "response", os.path.join(ex, "01_internal_damping", "model.toml"),
+             "example01_response"),
+            ("python_example02_campbell", "campbell", os.path.join(ex, "02_centrifuge", "model.toml"),
+             "example02_campbell")]:
+        if (args.only and args.only not in name) or not os.path.isdir(os.path.join(package, "feran")):
+            continue
+        env = dict(os.environ, PYTHONPATH=package)
+        out = subprocess.run(["/usr/bin/python3", os.path.join(HERE, "python_api.py"), analysis, model,
+                              str(args.repeats)], env=env, check=True, capture_output=True, text=True).stdout
+        r = {"case": name, "group": "python", "command": f"feran.{analysis}(feran.read_model("
+             f"\"{os.path.relpath(model, ROOT)}\"))", "cli_case": cli, "repeats": args.repeats,
+             **json.loads(out), "per_unit": "run"}
+        r["median_per_unit_ms"] = 1e3 * r["median_s"]
+        r["median_cpu_per_unit_ms"] = 1e3 * r["median_cpu_s"]
+        results.append(r)
+        print(f"{name:32s} {1e3 * r['median_s']:10.2f} ms  (in one Python process, CPU "
+              f"{1e3 * r['median_cpu_s']:.1f} ms)", flush=True)
+
     if args.only and os.path.exists(args.out):
         # A partial run updates its cases in the existing results and keeps the rest.
         with open(args.out) as f:
@@ -188,6 +213,9 @@ def main():
         if single in by_name and multi in by_name:
             speedups[multi] = by_name[single]["median_s"] / by_name[multi]["median_s"]
 
+    python_over_cli = {r["case"]: r["median_s"] / by_name[r["cli_case"]]["median_s"]
+                       for r in results if r["group"] == "python" and r["cli_case"] in by_name}
+
     choice = {}
     for r in results:
         if r["group"] == "solver_choice" and r["case"].endswith("_auto"):
@@ -206,6 +234,7 @@ def main():
         "scaling": scaling,
         "parallel_speedup": speedups,
         "solver_choice": choice,
+        "python_over_cli": python_over_cli,
     }
     with open(args.out, "w") as f:
         json.dump(doc, f, indent=1)
