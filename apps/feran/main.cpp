@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
   runners["static"] = feran::app::add_static_command(app);
   runners["runup"] = feran::app::add_runup_command(app);
   runners["params"] = feran::app::add_params_command(app);
+  runners["study"] = feran::app::add_study_command(app);
   // An option given an empty value ('--json ""', '--speed ""') is an error, not the
   // option left out.
   const CLI::Validator non_empty(

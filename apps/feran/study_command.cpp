@@ -1,0 +1,121 @@
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include <feran/core/parallel.hpp>
+#include <feran/core/units.hpp>
+#include <feran/io/study_log.hpp>
+#include <feran/io/study_reader.hpp>
+
+#include "commands.hpp"
+#include "interrupt.hpp"
+
+namespace feran::app {
+
+namespace {
+
+struct StudyArgs {
+  std::string path;
+  std::string output;
+  bool resume = false;
+  int threads = 0;
+  int batch = 0;
+  bool quiet = false;
+};
+
+std::string shown(Real si, const std::optional<Quantity>& kind, const std::string& unit) {
+  if (!kind) return fmt::format("{:.6g}", si);
+  return format_quantity(si, *kind, unit);
+}
+
+std::string design_line(const StudySpec& study, const Evaluation& e) {
+  std::string line = fmt::format("  design {}:", e.index);
+  for (std::size_t i = 0; i < study.variables.size(); ++i)
+    line += fmt::format(" {} = {}", study.variables[i].name,
+                        shown(e.values[i], study.variables[i].quantity, study.variables[i].unit));
+  line += "\n   ";
+  for (std::size_t i = 0; i < study.quantities.size(); ++i) {
+    const auto& q = study.quantities[i];
+    line += fmt::format(" {} = {}", q.name, shown(e.quantities[i], quantity_kind_unit(q.kind), q.unit));
+  }
+  return line + "\n";
+}
+
+}  // namespace
+
+Runner add_study_command(CLI::App& app) {
+  auto args = std::make_shared<StudyArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "study", "Run a design study: designs from a grid, a Latin hypercube or a Sobol' sequence, evaluated "
+               "on all cores");
+  cmd->footer(
+      "Example:\n  feran study examples/04_design_study/bearing_study.toml -o out/bearing_study\n\n"
+      "The study file (docs/study-format.md) names a base model, design variables (parameter paths\n"
+      "with bounds), quantities, objectives and constraints. Every evaluation is appended to\n"
+      "DIR/evaluations.jsonl and DIR/evaluations.csv as it completes; an interrupted study\n"
+      "continues with --resume without repeating what was done.");
+  cmd->add_option("study", args->path, "Study file (TOML)")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Directory of the results (default: the study file's name with .results)");
+  cmd->add_flag("--resume", args->resume, "Continue the study recorded in the output directory");
+  add_threads_option(*cmd, args->threads);
+  cmd->add_option("--batch", args->batch,
+                  "Designs evaluated between two writes to disk (default: 4 per thread)")
+      ->check(CLI::Range(1, 1'000'000));
+  cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary on standard output");
+
+  return [args]() {
+    const StudyFile file = read_study_file(args->path);
+    const StudySpec& study = file.study;
+    std::string directory = args->output;
+    if (directory.empty()) {
+      std::filesystem::path p(args->path);
+      directory = (p.parent_path() / (p.stem().string() + ".results")).string();
+    }
+    StudyLog log(directory, study, args->resume);
+    const int threads = resolve_threads(args->threads);
+    const Index batch = args->batch > 0 ? args->batch : 4 * threads;
+    ThreadEvaluator evaluator(threads, interrupt_token());
+    const auto all = run_exploration(
+        study, evaluator, log.done(), [&](std::span<const Evaluation> e) { log.append(e); }, batch,
+        interrupt_token());
+    const Index total = static_cast<Index>(exploration_points(study).size());
+    const bool complete = static_cast<Index>(all.size()) == total;
+    const auto models = log.finish(all, complete);
+
+    if (!args->quiet) {
+      Index evaluated = 0, feasible = 0;
+      for (const auto& e : all) {
+        evaluated += e.evaluated;
+        feasible += e.feasible;
+      }
+      std::string out = fmt::format("feran study: {} ({})\n", study.title.empty() ? args->path : study.title,
+                                    study.model_path);
+      out += fmt::format("{} of {} designs evaluated ({} resumed), {} failed, {} feasible\n", all.size(), total,
+                         log.done().size(), static_cast<Index>(all.size()) - evaluated, feasible);
+      if (study.objectives.size() == 1) {
+        if (const auto best = best_design(study, all)) out += "best:\n" + design_line(study, all[static_cast<std::size_t>(*best)]);
+        else out += "no feasible design\n";
+      } else if (study.objectives.size() > 1) {
+        const auto front = pareto_set(study, all);
+        out += fmt::format("Pareto set: {} designs\n", front.size());
+        for (const Index i : front) out += design_line(study, all[static_cast<std::size_t>(i)]);
+      }
+      out += fmt::format("results in {}/ (evaluations.csv, evaluations.jsonl, summary.json", directory);
+      for (const auto& m : models) out += ", " + std::filesystem::path(m).filename().string();
+      out += ")\n";
+      std::fputs(out.c_str(), stdout);
+    }
+    if (const int signal = interrupt_signal(); signal != 0) {
+      std::fprintf(stderr, "feran study: stopped by %s after %zu of %ld designs; --resume continues it\n",
+                   signal_name(signal), all.size(), static_cast<long>(total));
+      return static_cast<int>(interrupted_base) + signal;
+    }
+    return static_cast<int>(ok);
+  };
+}
+
+}  // namespace feran::app

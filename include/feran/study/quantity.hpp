@@ -1,0 +1,83 @@
+#pragma once
+/// @file
+/// What a study evaluates for each design: quantities of the analyses.
+///
+/// Each quantity names the analysis it comes from; the analyses run with the
+/// settings of the model's own tables ([campbell], [response], [runup]; a study can
+/// change them by parameter path, e.g. campbell.stop), each at most once per design
+/// however many quantities use it, on one thread (studies run designs side by side).
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <feran/core/stop.hpp>
+#include <feran/core/types.hpp>
+#include <feran/core/units.hpp>
+#include <feran/model/model.hpp>
+#include <feran/spec/model_spec.hpp>
+
+namespace feran {
+
+enum class QuantityKind {
+  critical_speed,       ///< the n-th critical speed of a whirl and order in a speed range [rad/s]
+  separation_margin,    ///< smallest relative distance of the critical speeds from the operating range [-]
+  min_damping_ratio,    ///< smallest damping ratio of the lateral modes over a speed range [-]
+  min_log_decrement,    ///< smallest logarithmic decrement over a speed range [-]
+  stability_threshold,  ///< lowest speed where a mode's damping turns negative [rad/s]
+  natural_frequency,    ///< the n-th natural frequency of a whirl at a speed [Hz]
+  damping_ratio,        ///< the damping ratio of that mode [-]
+  log_decrement,        ///< the logarithmic decrement of that mode [-]
+  peak_response,        ///< largest orbit semi-axis at a probe over the unbalance response [m]
+  peak_spring_force,    ///< largest lateral force of a spring (or of all) over the response [N]
+  peak_stress,          ///< largest equivalent (von Mises) shaft stress over the response [Pa]
+  runup_peak,           ///< largest |r| at a probe during the run-up [m]
+  runup_spring_force,   ///< largest lateral force of a spring (or of all) during the run-up [N]
+  rotor_mass,           ///< mass of the rotating parts [kg]
+};
+
+/// Which modes a modal quantity looks at.
+enum class WhirlSelection { forward, backward, any };
+
+struct QuantitySpec {
+  std::string name;
+  QuantityKind kind = QuantityKind::critical_speed;
+  WhirlSelection whirl = WhirlSelection::forward;
+  int order = 1;                 ///< excitation order of critical speeds
+  int n = 1;                     ///< which one (1: the lowest)
+  std::optional<Real> low, high; ///< the speed range it applies to [rad/s]; default the analysis'
+  Real operating_low = 0.0, operating_high = 0.0;  ///< the operating speed range [rad/s]
+  std::optional<Real> speed;     ///< natural_frequency, damping_ratio, log_decrement: the rotor speed [rad/s]
+  std::optional<NodeRef> probe;  ///< peak_response, runup_peak
+  std::optional<std::string> spring;  ///< *_spring_force: a spring's name; empty: all
+  std::string unit;              ///< unit the value is shown in ("rpm", "mm"); empty: SI
+};
+
+/// The kind a quantity's value has (for units), or nullopt for a pure number.
+std::optional<Quantity> quantity_kind_unit(QuantityKind kind);
+/// "critical_speed", … (as a study file names them).
+std::string_view to_string(QuantityKind kind);
+/// The kind named @p name; nullopt for an unknown name.
+std::optional<QuantityKind> quantity_kind_named(std::string_view name);
+/// Every kind's name, for messages.
+std::vector<std::string_view> quantity_kind_names();
+
+/// The values of @p quantities for the built @p model of @p spec, in order, in SI
+/// units. Throws Error when an analysis cannot give one: a solve that failed, no n-th
+/// critical speed in the range, an unknown probe; the study records the message and
+/// treats the design as failed. Analyses stop early through @p stop.
+std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
+                                      std::span<const QuantitySpec> quantities, const StopToken& stop = {});
+
+/// Mass of the rotating parts of @p model [kg]: rᵀ M r for r the unit lateral
+/// translation of every rotating node.
+Real rotating_mass(const Model& model);
+
+/// Relative distance of @p critical from the operating range [low, high]:
+/// (low − c)/low below it, (c − high)/high above it, and minus the smaller of the two
+/// inside it (API 684's separation margin, as a fraction).
+Real separation_margin(Real critical, Real low, Real high);
+
+}  // namespace feran

@@ -1,0 +1,251 @@
+#include <feran/io/study_log.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <feran/core/error.hpp>
+#include <feran/io/model_writer.hpp>
+
+#include "csv_text.hpp"
+
+namespace feran {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const char* scale_name(VariableScale s) { return s == VariableScale::log ? "log" : "linear"; }
+const char* method_name(ExploreMethod m) {
+  switch (m) {
+    case ExploreMethod::grid: return "grid";
+    case ExploreMethod::latin_hypercube: return "latin_hypercube";
+    case ExploreMethod::sobol: return "sobol";
+  }
+  return "?";
+}
+
+std::string si_unit_of(const std::optional<Quantity>& q) { return q ? std::string(si_unit(*q)) : std::string(); }
+
+json number(Real x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+void write_all(std::FILE* f, const std::string& text, const std::string& path) {
+  if (std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fflush(f) != 0 || ::fsync(fileno(f)) != 0)
+    throw Error(fmt::format("cannot write '{}'", path));
+}
+
+std::string csv_header(const StudySpec& study) {
+  std::vector<std::string> cells{"index"};
+  for (const auto& v : study.variables) {
+    const auto unit = si_unit_of(v.quantity);
+    cells.push_back(unit.empty() ? v.name : fmt::format("{} [{}]", v.name, unit));
+  }
+  for (const auto& q : study.quantities) {
+    const auto unit = si_unit_of(quantity_kind_unit(q.kind));
+    cells.push_back(unit.empty() ? q.name : fmt::format("{} [{}]", q.name, unit));
+  }
+  for (const char* c : {"evaluated", "feasible", "seconds", "message"}) cells.emplace_back(c);
+  std::string line;
+  for (std::size_t i = 0; i < cells.size(); ++i) line += (i ? "," : "") + detail::csv_field(cells[i]);
+  return line + "\n";
+}
+
+std::string csv_row(const StudySpec& study, const Evaluation& e) {
+  std::string line = fmt::format("{}", e.index);
+  for (const Real v : e.values) line += fmt::format(",{:.17g}", v);
+  for (std::size_t i = 0; i < study.quantities.size(); ++i)
+    line += e.quantities.empty() ? std::string(",") : fmt::format(",{:.17g}", e.quantities[i]);
+  line += fmt::format(",{},{},{:.6f},{}\n", e.evaluated, e.feasible, e.seconds, detail::csv_field(e.message));
+  return line;
+}
+
+std::FILE* open_append(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "ab");
+  if (f == nullptr) throw Error(fmt::format("cannot open '{}' for writing", path));
+  return f;
+}
+
+}  // namespace
+
+std::string study_json(const StudySpec& study) {
+  json variables = json::array(), quantities = json::array();
+  for (const auto& v : study.variables) {
+    json j = {{"name", v.name}, {"paths", v.paths}, {"unit", si_unit_of(v.quantity)}};
+    if (v.discrete()) j["values"] = v.values;
+    else j.update({{"lower", v.lower}, {"upper", v.upper}, {"scale", scale_name(v.scale)}});
+    variables.push_back(j);
+  }
+  for (const auto& q : study.quantities)
+    quantities.push_back({{"name", q.name}, {"kind", to_string(q.kind)}, {"unit", si_unit_of(quantity_kind_unit(q.kind))}});
+  json objectives = json::array(), constraints = json::array();
+  for (const auto& o : study.objectives)
+    objectives.push_back({{"quantity", study.quantities[static_cast<std::size_t>(o.quantity)].name},
+                          {"sense", o.sense == Sense::minimise ? "minimise" : "maximise"}});
+  for (const auto& c : study.constraints) {
+    json j = {{"quantity", study.quantities[static_cast<std::size_t>(c.quantity)].name}};
+    if (c.at_most) j["at_most"] = *c.at_most;
+    if (c.at_least) j["at_least"] = *c.at_least;
+    constraints.push_back(j);
+  }
+  const json explore = {{"method", method_name(study.explore.method)},
+                        {"levels", study.explore.levels},
+                        {"samples", study.explore.samples},
+                        {"seed", study.explore.seed}};
+  const json j = {{"program", "feran"},       {"format_version", 1},       {"analysis", "study"},
+                  {"title", study.title},     {"model", study.model_path}, {"base_model", write_toml(study.base)},
+                  {"variables", variables},   {"quantities", quantities},  {"objectives", objectives},
+                  {"constraints", constraints}, {"explore", explore}};
+  return j.dump(1) + "\n";
+}
+
+std::string evaluation_json(const StudySpec& study, const Evaluation& e) {
+  json values = json::object(), quantities = nullptr;
+  for (std::size_t i = 0; i < study.variables.size(); ++i) values[study.variables[i].name] = e.values[i];
+  if (!e.quantities.empty()) {
+    quantities = json::object();
+    for (std::size_t i = 0; i < study.quantities.size(); ++i) quantities[study.quantities[i].name] = number(e.quantities[i]);
+  }
+  const json j = {{"index", e.index},       {"unit", e.unit},          {"variables", values},
+                  {"quantities", quantities}, {"evaluated", e.evaluated}, {"feasible", e.feasible},
+                  {"message", e.message},   {"seconds", e.seconds}};
+  return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+Evaluation evaluation_from_json(const StudySpec& study, const std::string& line) {
+  try {
+    const json j = json::parse(line);
+    Evaluation e;
+    e.index = j.at("index").get<Index>();
+    e.unit = j.at("unit").get<std::vector<Real>>();
+    for (const auto& v : study.variables) e.values.push_back(j.at("variables").at(v.name).get<Real>());
+    if (!j.at("quantities").is_null())
+      for (const auto& q : study.quantities) {
+        const auto& x = j.at("quantities").at(q.name);
+        e.quantities.push_back(x.is_null() ? std::numeric_limits<Real>::quiet_NaN() : x.get<Real>());
+      }
+    e.evaluated = j.at("evaluated").get<bool>();
+    e.feasible = j.at("feasible").get<bool>();
+    e.message = j.at("message").get<std::string>();
+    e.seconds = j.at("seconds").get<Real>();
+    if (e.unit.size() != study.variables.size()) throw Error("wrong number of coordinates");
+    return e;
+  } catch (const json::exception& error) {
+    throw Error(error.what());
+  }
+}
+
+StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume)
+    : directory_(std::move(directory)), study_(study) {
+  std::error_code ec;
+  fs::create_directories(directory_, ec);
+  if (!fs::is_directory(directory_))
+    throw Error(fmt::format("cannot make the output directory '{}'{}", directory_, ec ? ": " + ec.message() : ""));
+  const auto jsonl_path = (fs::path(directory_) / "evaluations.jsonl").string();
+  const auto csv_path = (fs::path(directory_) / "evaluations.csv").string();
+  const auto study_path = (fs::path(directory_) / "study.json").string();
+  const std::string description = study_json(study);
+  const bool has_results = fs::exists(jsonl_path) && fs::file_size(jsonl_path, ec) > 0;
+  if (has_results && !resume)
+    throw Error(fmt::format("'{}' already holds the evaluations of a study; --resume continues it, or give "
+                            "another directory with -o",
+                            directory_));
+  if (has_results) {
+    std::ifstream old_description(study_path);
+    const std::string old((std::istreambuf_iterator<char>(old_description)), std::istreambuf_iterator<char>());
+    if (old != description)
+      throw Error(fmt::format("'{}' holds the evaluations of a different study (its study.json differs: the "
+                              "model, variables, quantities, objectives, constraints or exploration changed); "
+                              "resume only the same study, or give another directory with -o",
+                              directory_));
+    // Read back every complete line; a line cut short (a crash while writing) ends
+    // the valid part, and the files are cut back to it.
+    std::ifstream in(jsonl_path, std::ios::binary);
+    std::string line, valid;
+    while (std::getline(in, line)) {
+      if (in.eof()) break;  // no newline: cut short
+      try {
+        done_.push_back(evaluation_from_json(study, line));
+      } catch (const Error&) {
+        break;
+      }
+      valid += line + "\n";
+    }
+    in.close();
+    std::ofstream(jsonl_path, std::ios::binary | std::ios::trunc) << valid;
+    std::string csv = csv_header(study);
+    for (const auto& e : done_) csv += csv_row(study, e);
+    std::ofstream(csv_path, std::ios::binary | std::ios::trunc) << csv;
+    std::sort(done_.begin(), done_.end(), [](const Evaluation& a, const Evaluation& b) { return a.index < b.index; });
+  } else {
+    std::ofstream(study_path, std::ios::binary | std::ios::trunc) << description;
+    std::ofstream(jsonl_path, std::ios::binary | std::ios::trunc);
+    std::ofstream(csv_path, std::ios::binary | std::ios::trunc) << csv_header(study);
+  }
+  jsonl_ = open_append(jsonl_path);
+  csv_ = open_append(csv_path);
+}
+
+StudyLog::~StudyLog() {
+  if (jsonl_ != nullptr) std::fclose(jsonl_);
+  if (csv_ != nullptr) std::fclose(csv_);
+}
+
+void StudyLog::append(std::span<const Evaluation> evaluations) {
+  std::string lines, rows;
+  for (const auto& e : evaluations) {
+    lines += evaluation_json(study_, e);
+    rows += csv_row(study_, e);
+  }
+  write_all(jsonl_, lines, directory_ + "/evaluations.jsonl");
+  write_all(csv_, rows, directory_ + "/evaluations.csv");
+}
+
+std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool complete) {
+  std::vector<std::string> written;
+  const auto write_model = [&](const Evaluation& e, const std::string& name) {
+    const ModelSpec spec = apply_design(study_.base, study_.variables, e.values);
+    const auto path = (fs::path(directory_) / name).string();
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << fmt::format("# design {} of the study '{}' (feran study), model {}\n", e.index, study_.title,
+                       study_.model_path)
+        << write_toml(spec);
+    if (!out) throw Error(fmt::format("cannot write '{}'", path));
+    written.push_back(path);
+  };
+  Index evaluated = 0, feasible = 0;
+  for (const auto& e : all) {
+    evaluated += e.evaluated;
+    feasible += e.feasible;
+  }
+  json summary = {{"program", "feran"},     {"format_version", 1},   {"analysis", "study"},
+                  {"complete", complete},   {"evaluations", all.size()}, {"evaluated", evaluated},
+                  {"feasible", feasible}};
+  if (study_.objectives.size() == 1) {
+    if (const auto best = best_design(study_, all)) {
+      summary["best"] = json::parse(evaluation_json(study_, all[static_cast<std::size_t>(*best)]));
+      write_model(all[static_cast<std::size_t>(*best)], "best.toml");
+    } else {
+      summary["best"] = nullptr;
+    }
+  } else if (study_.objectives.size() > 1) {
+    json pareto = json::array();
+    for (const Index i : pareto_set(study_, all)) {
+      const auto& e = all[static_cast<std::size_t>(i)];
+      pareto.push_back(json::parse(evaluation_json(study_, e)));
+      write_model(e, fmt::format("pareto-{}.toml", e.index));
+    }
+    summary["pareto"] = pareto;
+  }
+  const auto path = (fs::path(directory_) / "summary.json").string();
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << summary.dump(1) << "\n";
+  return written;
+}
+
+}  // namespace feran

@@ -1,0 +1,317 @@
+#include <feran/io/study_reader.hpp>
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include <feran/spec/parameters.hpp>
+
+#include "suggestions.hpp"
+#include "table_reader.hpp"
+
+namespace feran {
+
+namespace {
+
+using detail::TableReader;
+using detail::closest_match;
+using detail::join_list;
+
+class StudyReader {
+ public:
+  StudyReader(const toml::table& root, const std::string& path) : root_(root, "", path), path_(path) {}
+
+  StudyFile read() {
+    root_.check_keys({"title", "model", "settings", "variables", "quantities", "objectives", "constraints", "explore"});
+    StudyFile file;
+    file.path = path_;
+    auto& study = file.study;
+    study.title = root_.string("title").value_or("");
+    const auto& model_node = root_.require("model", "the path of the base model file, a string");
+    const auto model = model_node.value<std::string>();
+    if (!model) root_.fail(model_node, fmt::format("'model' must be a string (a file path), got {}", detail::type_name(model_node)));
+    study.model_path = *model;
+    namespace fs = std::filesystem;
+    fs::path model_path(*model);
+    if (model_path.is_relative()) model_path = fs::path(path_).parent_path() / model_path;
+    try {
+      file.base = read_model_file(model_path.lexically_normal().string());
+    } catch (const ModelError&) {
+      throw;
+    } catch (const Error& e) {
+      root_.fail(model_node, e.what());
+    }
+    study.base = file.base.spec;
+    read_settings(study, file.base);
+    read_variables(study);
+    read_quantities(study);
+    read_objectives(study);
+    read_constraints(study);
+    read_explore(study);
+    return file;
+  }
+
+ private:
+  // An array of tables at the top level, each read by @p each.
+  template <class F>
+  void each_table(std::string_view key, std::string_view what, F&& each) {
+    const toml::node* node = root_.find(key);
+    if (node == nullptr) return;
+    const auto* array = node->as_array();
+    if (array == nullptr || !array->is_array_of_tables())
+      root_.fail(*node, fmt::format("'{}' must be an array of tables ([[{}]], one per {})", key, key, what));
+    int i = 0;
+    for (const auto& element : *array) {
+      TableReader t(*element.as_table(), fmt::format("[[{}]] {}", key, i + 1), path_);
+      each(t, i++);
+    }
+  }
+
+  // Settings: parameter paths set on the base model before the study.
+  void read_settings(StudySpec& study, const ModelFile& base) {
+    const toml::node* node = root_.find("settings");
+    if (node == nullptr) return;
+    const auto* table = node->as_table();
+    if (table == nullptr) root_.fail(*node, "'settings' must be a table of parameter paths and values");
+    std::vector<std::pair<std::string, std::string>> changed;
+    for (auto&& [key, value] : *table) {
+      std::string text;
+      if (const auto s = value.value<std::string>(); s && value.is_string()) text = *s;
+      else if (value.is_integer() || value.is_floating_point()) text = fmt::format("{}", *value.value<double>());
+      else root_.fail(value, fmt::format("setting '{}' must be a number or a text with its unit, got {}", key.str(),
+                                          detail::type_name(value)));
+      try {
+        const auto canonical = set_parameter(study.base, key.str(), text);
+        const auto at = detail::location_of(path_, value);
+        changed.emplace_back(fmt::format("{}:{}:{}: setting '{}'", at.file, at.line, at.column, key.str()), canonical);
+      } catch (const ParameterError& e) {
+        root_.fail(value, fmt::format("setting '{}': {}", key.str(), e.what()));
+      }
+    }
+    if (!changed.empty()) build_model_file(study.base, base.source, base.path, changed);
+  }
+
+  void read_variables(StudySpec& study) {
+    each_table("variables", "design variable", [&](const TableReader& t, int i) {
+      t.check_keys({"name", "path", "paths", "lower", "upper", "scale", "values", "unit"});
+      DesignVariable v;
+      v.name = t.required_string("name", "the variable's name, a string");
+      if (t.has("path") == t.has("paths")) t.fail_here("give either 'path' (one parameter path) or 'paths' (tied ones)");
+      std::vector<const toml::node*> path_nodes;
+      if (t.has("path")) {
+        v.paths.push_back(t.required_string("path", "a parameter path"));
+        path_nodes.push_back(t.find("path"));
+      } else {
+        const auto& array = t.required_array("paths", "parameter paths, strings");
+        for (const auto& p : array) {
+          if (!p.is_string()) t.fail(p, fmt::format("'paths' must hold strings, got {}", detail::type_name(p)));
+          v.paths.push_back(*p.value<std::string>());
+          path_nodes.push_back(&p);
+        }
+        if (v.paths.empty()) t.fail(*t.find("paths"), "'paths' needs at least one parameter path");
+      }
+      // Each path must name a number of the base model; tied paths one kind.
+      for (std::size_t k = 0; k < v.paths.size(); ++k) {
+        Parameter p;
+        try {
+          p = get_parameter(study.base, v.paths[k]);
+        } catch (const ParameterError& e) {
+          t.fail(*path_nodes[k], e.what());
+        }
+        if (k == 0) {
+          v.quantity = p.quantity;
+          v.unit = p.unit;
+        } else if (p.quantity != v.quantity) {
+          t.fail(*path_nodes[k], fmt::format("'{}' is not of the same kind as '{}': tied paths take one value",
+                                             v.paths[k], v.paths[0]));
+        }
+      }
+      if (const auto unit = t.string("unit")) v.unit = *unit;
+      const auto value_of = [&](const toml::node& n, std::string_view name) {
+        if (v.quantity) return t.quantity_at(n, name, *v.quantity).si;
+        if (const auto x = n.value<double>(); x && (n.is_integer() || n.is_floating_point())) return *x;
+        t.fail(n, fmt::format("'{}' must be a number, got {}", name, detail::type_name(n)));
+      };
+      if (const auto* values = t.array("values")) {
+        if (t.has("lower") || t.has("upper") || t.has("scale"))
+          t.fail_here("a variable has either 'values' (discrete) or 'lower' and 'upper', not both");
+        int k = 0;
+        for (const auto& n : *values) v.values.push_back(value_of(n, fmt::format("values[{}]", k++)));
+        if (v.values.empty()) t.fail(*t.find("values"), "'values' needs at least one value");
+      } else {
+        v.lower = value_of(t.require("lower", "the lower bound"), "lower");
+        v.upper = value_of(t.require("upper", "the upper bound"), "upper");
+        if (const auto scale = t.string("scale")) {
+          if (*scale == "log") v.scale = VariableScale::log;
+          else if (*scale != "linear") t.fail(*t.find("scale"), fmt::format("'scale' must be \"linear\" or \"log\", got \"{}\"", *scale));
+        }
+      }
+      study.variables.push_back(std::move(v));
+      try {
+        check_variables(study.variables);
+      } catch (const SpecError& e) {
+        t.fail_here(e.message());
+      }
+      (void)i;
+    });
+    if (study.variables.empty()) root_.fail_here("a study needs at least one [[variables]] entry");
+  }
+
+  void read_quantities(StudySpec& study) {
+    each_table("quantities", "quantity", [&](const TableReader& t, int) {
+      t.check_keys({"name", "kind", "whirl", "order", "n", "range", "operating", "speed", "probe", "spring", "unit"});
+      QuantitySpec q;
+      q.name = t.required_string("name", "the quantity's name, a string");
+      for (const auto& other : study.quantities)
+        if (other.name == q.name) t.fail(*t.find("name"), fmt::format("another quantity is named '{}'", q.name));
+      const auto& kind_node = t.require("kind", "what to compute");
+      const auto kind_name = t.required_string("kind", "what to compute");
+      const auto kind = quantity_kind_named(kind_name);
+      if (!kind) {
+        std::vector<std::string> names(quantity_kind_names().begin(), quantity_kind_names().end());
+        std::string message = fmt::format("unknown quantity kind '{}'", kind_name);
+        if (const auto m = closest_match(kind_name, names, 4)) message += fmt::format("; did you mean '{}'?", *m);
+        else message += fmt::format("; the kinds are {}", join_list(names, "and", '\''));
+        t.fail(kind_node, message);
+      }
+      q.kind = *kind;
+      const bool damping = q.kind == QuantityKind::min_damping_ratio || q.kind == QuantityKind::min_log_decrement ||
+                           q.kind == QuantityKind::damping_ratio || q.kind == QuantityKind::log_decrement;
+      q.whirl = damping ? WhirlSelection::any : WhirlSelection::forward;
+      if (const auto w = t.string("whirl")) {
+        if (*w == "forward") q.whirl = WhirlSelection::forward;
+        else if (*w == "backward") q.whirl = WhirlSelection::backward;
+        else if (*w == "any") q.whirl = WhirlSelection::any;
+        else t.fail(*t.find("whirl"), fmt::format("'whirl' must be \"forward\", \"backward\" or \"any\", got \"{}\"", *w));
+      }
+      q.order = t.integer("order", 1, 100).value_or(1);
+      q.n = t.integer("n", 1, 1000).value_or(1);
+      if (const auto* range = t.array("range")) {
+        if (range->size() != 2) t.fail(*t.find("range"), "'range' must be [low, high], two speeds");
+        q.low = t.quantity_at(*range->get(0), "range[0]", Quantity::speed).si;
+        q.high = t.quantity_at(*range->get(1), "range[1]", Quantity::speed).si;
+        if (!(*q.low < *q.high)) t.fail(*t.find("range"), "'range' must be [low, high] with low < high");
+      }
+      if (const auto* op = t.array("operating")) {
+        if (op->size() != 2) t.fail(*t.find("operating"), "'operating' must be [low, high], two speeds");
+        q.operating_low = t.quantity_at(*op->get(0), "operating[0]", Quantity::speed).si;
+        q.operating_high = t.quantity_at(*op->get(1), "operating[1]", Quantity::speed).si;
+        if (!(q.operating_low > 0 && q.operating_low <= q.operating_high))
+          t.fail(*t.find("operating"), "'operating' must be [low, high] with 0 < low ≤ high");
+      } else if (q.kind == QuantityKind::separation_margin) {
+        t.fail_here("a separation_margin needs 'operating' = [low, high], the operating speed range");
+      }
+      if (const auto s = t.quantity("speed", Quantity::speed)) q.speed = s->si;
+      if (const auto* p = t.find("probe")) {
+        if (p->is_string()) q.probe = NodeRef(*p->value<std::string>());
+        else if (p->is_integer()) q.probe = NodeRef(*p->value<std::int64_t>());
+        else t.fail(*p, fmt::format("'probe' must be a node name or number, got {}", detail::type_name(*p)));
+      }
+      if (const auto s = t.string("spring")) q.spring = *s;
+      if (const auto u = t.string("unit")) {
+        const auto kind_unit = quantity_kind_unit(q.kind);
+        if (!kind_unit || !to_si(*kind_unit, 1.0, *u))
+          t.fail(*t.find("unit"), kind_unit ? fmt::format("'unit' must be a unit of {}: {}", quantity_name(*kind_unit),
+                                                          accepted_units_text(*kind_unit))
+                                            : fmt::format("a {} is a pure number and takes no unit", kind_name));
+        q.unit = *u;
+      }
+      study.quantities.push_back(std::move(q));
+    });
+    if (study.quantities.empty()) root_.fail_here("a study needs at least one [[quantities]] entry");
+  }
+
+  Index quantity_named(const TableReader& t) {
+    const auto& node = t.require("quantity", "the name of a quantity");
+    const auto name = t.required_string("quantity", "the name of a quantity");
+    for (std::size_t i = 0; i < quantities_->size(); ++i)
+      if ((*quantities_)[i].name == name) return static_cast<Index>(i);
+    std::vector<std::string> names;
+    for (const auto& q : *quantities_) names.push_back(q.name);
+    std::string message = fmt::format("no quantity named '{}'", name);
+    if (const auto m = closest_match(name, names, 3)) message += fmt::format("; did you mean '{}'?", *m);
+    else message += fmt::format("; the quantities are {}", join_list(names, "and", '\''));
+    t.fail(node, message);
+  }
+
+  void read_objectives(StudySpec& study) {
+    quantities_ = &study.quantities;
+    each_table("objectives", "objective", [&](const TableReader& t, int) {
+      t.check_keys({"quantity", "sense"});
+      Objective o;
+      o.quantity = quantity_named(t);
+      const auto sense = t.required_string("sense", "\"minimise\" or \"maximise\"");
+      if (sense == "minimise" || sense == "minimize") o.sense = Sense::minimise;
+      else if (sense == "maximise" || sense == "maximize") o.sense = Sense::maximise;
+      else t.fail(*t.find("sense"), fmt::format("'sense' must be \"minimise\" or \"maximise\", got \"{}\"", sense));
+      study.objectives.push_back(o);
+    });
+  }
+
+  void read_constraints(StudySpec& study) {
+    quantities_ = &study.quantities;
+    each_table("constraints", "constraint", [&](const TableReader& t, int) {
+      t.check_keys({"quantity", "at_most", "at_least"});
+      Constraint c;
+      c.quantity = quantity_named(t);
+      const auto kind = quantity_kind_unit(study.quantities[static_cast<std::size_t>(c.quantity)].kind);
+      const auto bound = [&](std::string_view key) -> std::optional<Real> {
+        const auto* n = t.find(key);
+        if (n == nullptr) return std::nullopt;
+        if (kind) return t.quantity_at(*n, key, *kind).si;
+        if (const auto x = n->value<double>(); x && (n->is_integer() || n->is_floating_point())) return *x;
+        t.fail(*n, fmt::format("'{}' must be a number, got {}", key, detail::type_name(*n)));
+      };
+      c.at_most = bound("at_most");
+      c.at_least = bound("at_least");
+      if (!c.at_most && !c.at_least) t.fail_here("a constraint needs 'at_most' or 'at_least'");
+      study.constraints.push_back(c);
+    });
+  }
+
+  void read_explore(StudySpec& study) {
+    const toml::node* node = root_.find("explore");
+    if (node == nullptr) return;
+    const auto* table = node->as_table();
+    if (table == nullptr) root_.fail(*node, "'explore' must be a table ([explore])");
+    TableReader t(*table, "[explore]", path_);
+    t.check_keys({"method", "levels", "samples", "seed"});
+    if (const auto m = t.string("method")) {
+      if (*m == "grid") study.explore.method = ExploreMethod::grid;
+      else if (*m == "latin_hypercube" || *m == "lhs") study.explore.method = ExploreMethod::latin_hypercube;
+      else if (*m == "sobol") study.explore.method = ExploreMethod::sobol;
+      else t.fail(*t.find("method"), fmt::format("'method' must be \"grid\", \"latin_hypercube\" or \"sobol\", got \"{}\"", *m));
+    }
+    study.explore.levels = t.integer("levels", 1, 10000).value_or(5);
+    study.explore.samples = t.integer("samples", 1, 10'000'000).value_or(32);
+    if (const auto* s = t.find("seed")) {
+      if (!s->is_integer() || *s->value<std::int64_t>() < 0) t.fail(*s, "'seed' must be a non-negative integer");
+      study.explore.seed = static_cast<std::uint64_t>(*s->value<std::int64_t>());
+    }
+    if (study.explore.method == ExploreMethod::sobol &&
+        static_cast<Index>(study.variables.size()) > max_sobol_dimensions)
+      t.fail(*t.find("method"), fmt::format("a Sobol' sequence takes at most {} variables, the study has {}",
+                                            max_sobol_dimensions, study.variables.size()));
+  }
+
+  TableReader root_;
+  const std::string& path_;
+  const std::vector<QuantitySpec>* quantities_ = nullptr;
+};
+
+}  // namespace
+
+StudyFile read_study_string(std::string_view toml_text, const std::string& path) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, std::string_view{path});
+  } catch (const toml::parse_error& e) {
+    throw ModelError(SourceLocation{path, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
+                     fmt::format("TOML syntax error: {}", e.description()));
+  }
+  return StudyReader(root, path).read();
+}
+
+StudyFile read_study_file(const std::string& path) { return read_study_string(read_text_file(path), path); }
+
+}  // namespace feran

@@ -1,0 +1,364 @@
+#include <feran/study/quantity.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/settings.hpp>
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+namespace {
+
+constexpr std::array<std::pair<QuantityKind, std::string_view>, 14> kind_names{{
+    {QuantityKind::critical_speed, "critical_speed"},
+    {QuantityKind::separation_margin, "separation_margin"},
+    {QuantityKind::min_damping_ratio, "min_damping_ratio"},
+    {QuantityKind::min_log_decrement, "min_log_decrement"},
+    {QuantityKind::stability_threshold, "stability_threshold"},
+    {QuantityKind::natural_frequency, "natural_frequency"},
+    {QuantityKind::damping_ratio, "damping_ratio"},
+    {QuantityKind::log_decrement, "log_decrement"},
+    {QuantityKind::peak_response, "peak_response"},
+    {QuantityKind::peak_spring_force, "peak_spring_force"},
+    {QuantityKind::peak_stress, "peak_stress"},
+    {QuantityKind::runup_peak, "runup_peak"},
+    {QuantityKind::runup_spring_force, "runup_spring_force"},
+    {QuantityKind::rotor_mass, "rotor_mass"},
+}};
+
+bool uses_response(QuantityKind k) {
+  return k == QuantityKind::peak_response || k == QuantityKind::peak_spring_force || k == QuantityKind::peak_stress;
+}
+bool uses_runup(QuantityKind k) { return k == QuantityKind::runup_peak || k == QuantityKind::runup_spring_force; }
+
+bool selected(Whirl w, WhirlSelection s) {
+  switch (s) {
+    case WhirlSelection::forward: return w == Whirl::forward;
+    case WhirlSelection::backward: return w == Whirl::backward;
+    case WhirlSelection::any: return w != Whirl::none;
+  }
+  return false;
+}
+
+std::string_view whirl_word(WhirlSelection s) {
+  switch (s) {
+    case WhirlSelection::forward: return "forward ";
+    case WhirlSelection::backward: return "backward ";
+    case WhirlSelection::any: return "";
+  }
+  return "";
+}
+
+std::string ordinal(int n) {
+  const int tens = n % 100, units = n % 10;
+  const char* suffix = (tens >= 11 && tens <= 13) ? "th" : units == 1 ? "st" : units == 2 ? "nd" : units == 3 ? "rd" : "th";
+  return fmt::format("{}{}", n, suffix);
+}
+
+std::string rpm(Real speed) { return format_quantity(speed, Quantity::speed, "rpm"); }
+
+void check_solver(const SolverInfo& info, std::string_view analysis) {
+  if (!info.converged()) throw Error(fmt::format("the {} failed: {}", analysis, info.message));
+}
+
+Index spring_index(const Model& model, const std::string& name) { return spring_element(model, name); }
+
+// The analyses of one design, each run when a quantity first needs it.
+class Analyses {
+ public:
+  Analyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop)
+      : spec_(spec), model_(model), stop_(std::move(stop)) {
+    for (const auto& q : quantities) {
+      if (q.probe && uses_response(q.kind)) add(response_probes_, node_index(model, *q.probe));
+      if (q.probe && uses_runup(q.kind)) add(runup_probes_, node_index(model, *q.probe));
+      if (q.kind == QuantityKind::runup_spring_force) {
+        if (q.spring) add(runup_springs_, spring_index(model, *q.spring));
+        else all_runup_springs_ = true;
+      }
+    }
+  }
+
+  const CampbellResult& campbell() {
+    if (!campbell_) {
+      CampbellRequest request;
+      request.n_threads = 1;
+      options_ = campbell_settings(spec_.campbell, request);
+      options_.stop = stop_;
+      campbell_ = run_campbell(model_, options_);
+      check_solver(campbell_->info, "Campbell diagram");
+    }
+    return *campbell_;
+  }
+
+  const HarmonicResult& response() {
+    if (!response_) {
+      ResponseRequest request;
+      request.n_threads = 1;
+      request.probes = response_probes_;
+      auto options = response_settings(model_, spec_.response, request);
+      options.stop = stop_;
+      response_ = run_harmonic_response(model_, options);
+      check_solver(response_->info, "unbalance response");
+    }
+    return *response_;
+  }
+
+  const TransientResult& runup() {
+    if (!runup_) {
+      RunupRequest request;
+      request.probes = runup_probes_;
+      if (all_runup_springs_) {
+        for (Index e = 0; e < static_cast<Index>(model_.elements.size()); ++e)
+          if (model_.elements[static_cast<std::size_t>(e)].kind() == "spring_damper") add(runup_springs_, e);
+      }
+      request.springs = runup_springs_;
+      auto options = runup_settings(model_, spec_.runup, request);
+      options.keep_samples = !runup_springs_.empty();
+      options.stop = stop_;
+      runup_ = run_transient(model_, options);
+      check_solver(runup_->info, "run-up");
+      runup_probe_nodes_ = options.probes;
+      runup_spring_elements_ = options.springs;
+    }
+    return *runup_;
+  }
+
+  Real campbell_low() { return campbell().speeds.front(); }
+  Real campbell_high() { return campbell().speeds.back(); }
+  const std::vector<Index>& runup_probe_nodes() const { return runup_probe_nodes_; }
+  const std::vector<Index>& runup_spring_elements() const { return runup_spring_elements_; }
+  const Model& model() const { return model_; }
+  const ModelSpec& spec() const { return spec_; }
+  const StopToken& stop() const { return stop_; }
+
+ private:
+  static void add(std::vector<Index>& list, Index i) {
+    if (std::find(list.begin(), list.end(), i) == list.end()) list.push_back(i);
+  }
+  const ModelSpec& spec_;
+  const Model& model_;
+  StopToken stop_;
+  CampbellOptions options_;
+  std::optional<CampbellResult> campbell_;
+  std::optional<HarmonicResult> response_;
+  std::optional<TransientResult> runup_;
+  std::vector<Index> response_probes_, runup_probes_, runup_springs_;
+  bool all_runup_springs_ = false;
+  std::vector<Index> runup_probe_nodes_, runup_spring_elements_;
+};
+
+// The critical speeds a quantity selects, in increasing order, within [low, high].
+std::vector<Real> selected_criticals(const CampbellResult& c, const QuantitySpec& q, Real low, Real high) {
+  std::vector<Real> out;
+  for (const auto& x : c.critical_speeds) {
+    const auto& mode = c.modes[static_cast<std::size_t>(x.mode)];
+    if (mode.type != ModeType::lateral || x.order != q.order || !selected(x.whirl, q.whirl)) continue;
+    if (x.speed >= low && x.speed <= high) out.push_back(x.speed);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Real smallest_damping(const CampbellResult& c, const QuantitySpec& q, Real low, Real high, bool log_decrement) {
+  Real smallest = std::numeric_limits<Real>::infinity();
+  for (const auto& mode : c.modes) {
+    if (mode.type != ModeType::lateral) continue;
+    for (std::size_t k = 0; k < c.speeds.size(); ++k) {
+      if (c.speeds[k] < low || c.speeds[k] > high || !selected(mode.whirl_at[k], q.whirl)) continue;
+      const Real d = log_decrement ? mode.log_decrement[k] : mode.damping_ratio[k];
+      if (std::isfinite(d)) smallest = std::min(smallest, d);
+    }
+  }
+  if (!std::isfinite(smallest))
+    throw Error(fmt::format("no {}lateral mode between {} and {}", whirl_word(q.whirl), rpm(low), rpm(high)));
+  return smallest;
+}
+
+Real evaluate_one(Analyses& a, const QuantitySpec& q) {
+  switch (q.kind) {
+    case QuantityKind::critical_speed: {
+      const auto& c = a.campbell();
+      const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
+      const auto criticals = selected_criticals(c, q, low, high);
+      if (static_cast<int>(criticals.size()) < q.n)
+        throw Error(fmt::format("no {} {}critical speed of order {} between {} and {} (found {})", ordinal(q.n),
+                                whirl_word(q.whirl), q.order, rpm(low), rpm(high), criticals.size()));
+      return criticals[static_cast<std::size_t>(q.n - 1)];
+    }
+    case QuantityKind::separation_margin: {
+      const auto& c = a.campbell();
+      const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
+      // Critical speeds beyond the analysed range are unknown but at least as far
+      // away as its ends: the margin of the ends bounds theirs.
+      Real margin = std::min(separation_margin(low, q.operating_low, q.operating_high),
+                             separation_margin(high, q.operating_low, q.operating_high));
+      if (low <= 0) margin = separation_margin(high, q.operating_low, q.operating_high);
+      for (const Real s : selected_criticals(c, q, low, high))
+        margin = std::min(margin, separation_margin(s, q.operating_low, q.operating_high));
+      return margin;
+    }
+    case QuantityKind::min_damping_ratio:
+    case QuantityKind::min_log_decrement: {
+      const auto& c = a.campbell();
+      return smallest_damping(c, q, q.low.value_or(c.speeds.front()), q.high.value_or(c.speeds.back()),
+                              q.kind == QuantityKind::min_log_decrement);
+    }
+    case QuantityKind::stability_threshold: {
+      const auto& c = a.campbell();
+      // None in the range: the threshold lies above it; its end is a lower bound.
+      return c.stability_threshold ? c.stability_threshold->speed : c.speeds.back();
+    }
+    case QuantityKind::natural_frequency:
+    case QuantityKind::damping_ratio:
+    case QuantityKind::log_decrement: {
+      ModalRequest request;
+      request.speed = q.speed;
+      auto settings = modal_settings(a.spec().modal, request);
+      const auto result = run_modal(a.model(), settings.speed, settings.options);
+      check_solver(result.info, "modal analysis");
+      int seen = 0;
+      for (const auto& m : result.modes)
+        if (m.type == ModeType::lateral && m.oscillatory && selected(m.whirl, q.whirl) && ++seen == q.n)
+          return q.kind == QuantityKind::natural_frequency ? m.frequency_hz
+                 : q.kind == QuantityKind::damping_ratio   ? m.damping_ratio
+                                                           : m.log_decrement;
+      throw Error(fmt::format("no {} {}lateral mode at {} (found {})", ordinal(q.n), whirl_word(q.whirl),
+                              rpm(settings.speed), seen));
+    }
+    case QuantityKind::peak_response: {
+      const auto& r = a.response();
+      const Index node = q.probe ? node_index(a.model(), *q.probe) : r.probes.front().node;
+      for (const auto& p : r.probes) {
+        if (p.node != node) continue;
+        Real peak = 0;
+        for (std::size_t k = 0; k < p.orbit.size(); ++k) {
+          if ((q.low && r.speeds[k] < *q.low) || (q.high && r.speeds[k] > *q.high)) continue;
+          peak = std::max(peak, p.orbit[k].major);
+        }
+        return peak;
+      }
+      throw Error("the response has no such probe");
+    }
+    case QuantityKind::peak_spring_force: {
+      const auto& r = a.response();
+      const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
+      Real peak = 0;
+      for (const auto& s : r.springs) {
+        if (only >= 0 && s.element != only) continue;
+        for (std::size_t k = 0; k < s.peak_lateral.size(); ++k)
+          if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
+            peak = std::max(peak, s.peak_lateral[k]);
+      }
+      return peak;
+    }
+    case QuantityKind::peak_stress: {
+      const auto& r = a.response();
+      Real peak = 0;
+      for (std::size_t k = 0; k < r.station_peaks.size(); ++k)
+        if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
+          peak = std::max(peak, r.station_peaks[k].von_mises.value);
+      return peak;
+    }
+    case QuantityKind::runup_peak: {
+      const auto& r = a.runup();
+      const auto& nodes = a.runup_probe_nodes();
+      const Index node = q.probe ? node_index(a.model(), *q.probe) : nodes.front();
+      const auto at = std::find(nodes.begin(), nodes.end(), node);
+      return r.envelopes[static_cast<std::size_t>(at - nodes.begin())].peak;
+    }
+    case QuantityKind::runup_spring_force: {
+      const auto& r = a.runup();
+      const auto& springs = a.runup_spring_elements();
+      const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
+      Real peak = 0;
+      for (const auto& sample : r.samples)
+        for (std::size_t i = 0; i < springs.size(); ++i)
+          if (only < 0 || springs[i] == only)
+            peak = std::max(peak, std::hypot(sample.springs[i][1], sample.springs[i][2]));
+      return peak;
+    }
+    case QuantityKind::rotor_mass: return rotating_mass(a.model());
+  }
+  throw Error("unknown quantity");
+}
+
+}  // namespace
+
+std::optional<Quantity> quantity_kind_unit(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::critical_speed:
+    case QuantityKind::stability_threshold: return Quantity::speed;
+    case QuantityKind::natural_frequency: return Quantity::frequency;
+    case QuantityKind::peak_response:
+    case QuantityKind::runup_peak: return Quantity::length;
+    case QuantityKind::peak_spring_force:
+    case QuantityKind::runup_spring_force: return Quantity::force;
+    case QuantityKind::peak_stress: return Quantity::pressure;
+    case QuantityKind::rotor_mass: return Quantity::mass;
+    default: return std::nullopt;
+  }
+}
+
+std::string_view to_string(QuantityKind kind) {
+  for (const auto& [k, name] : kind_names)
+    if (k == kind) return name;
+  return "?";
+}
+
+std::optional<QuantityKind> quantity_kind_named(std::string_view name) {
+  for (const auto& [k, n] : kind_names)
+    if (n == name) return k;
+  return std::nullopt;
+}
+
+std::vector<std::string_view> quantity_kind_names() {
+  std::vector<std::string_view> out;
+  for (const auto& [k, n] : kind_names) out.push_back(n);
+  return out;
+}
+
+std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
+                                      std::span<const QuantitySpec> quantities, const StopToken& stop) {
+  Analyses analyses(spec, model, quantities, stop);
+  std::vector<Real> values;
+  values.reserve(quantities.size());
+  for (const auto& q : quantities) {
+    try {
+      values.push_back(evaluate_one(analyses, q));
+    } catch (const Error& e) {
+      throw Error(fmt::format("quantity '{}': {}", q.name, e.what()));
+    }
+  }
+  return values;
+}
+
+Real rotating_mass(const Model& model) {
+  const OperatingPoint rest{};
+  Real mass = 0;
+  for (const auto& element : model.elements) {
+    const auto m = element.local_matrices(rest);
+    if (m.M.size() == 0) continue;
+    Vector r = Vector::Zero(static_cast<Index>(m.dofs.size()));
+    for (std::size_t i = 0; i < m.dofs.size(); ++i) {
+      const Index node = m.dofs[i] / dofs_per_node;
+      if (m.dofs[i] % dofs_per_node == static_cast<Index>(Dof::v) && model.nodes[static_cast<std::size_t>(node)].rotating)
+        r(static_cast<Index>(i)) = 1.0;
+    }
+    mass += r.dot(m.M * r);
+  }
+  return mass;
+}
+
+Real separation_margin(Real critical, Real low, Real high) {
+  if (critical < low) return (low - critical) / low;
+  if (critical > high) return (critical - high) / high;
+  return -std::min((critical - low) / low, (high - critical) / high);
+}
+
+}  // namespace feran
