@@ -168,7 +168,8 @@ class StudyReader {
       const auto kind_name = t.required_string("kind", "what to compute");
       const auto kind = quantity_kind_named(kind_name);
       if (!kind) {
-        std::vector<std::string> names(quantity_kind_names().begin(), quantity_kind_names().end());
+        const auto kinds = quantity_kind_names();
+        const std::vector<std::string> names(kinds.begin(), kinds.end());
         std::string message = fmt::format("unknown quantity kind '{}'", kind_name);
         if (const auto m = closest_match(kind_name, names, 4)) message += fmt::format("; did you mean '{}'?", *m);
         else message += fmt::format("; the kinds are {}", join_list(names, "and", '\''));
