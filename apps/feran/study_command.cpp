@@ -26,9 +26,12 @@ struct StudyArgs {
   bool quiet = false;
 };
 
+// A value with six significant digits in @p unit (default the SI unit of @p kind).
 std::string shown(Real si, const std::optional<Quantity>& kind, const std::string& unit) {
   if (!kind) return fmt::format("{:.6g}", si);
-  return format_quantity(si, *kind, unit);
+  const std::string u = unit.empty() ? std::string(si_unit(*kind)) : unit;
+  const auto one = to_si(*kind, 1.0, u);
+  return one ? fmt::format("{:.6g} {}", si / *one, u) : fmt::format("{:.6g} {}", si, si_unit(*kind));
 }
 
 std::string design_line(const StudySpec& study, const Evaluation& e) {

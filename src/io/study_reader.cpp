@@ -171,7 +171,11 @@ class StudyReader {
         const auto kinds = quantity_kind_names();
         const std::vector<std::string> names(kinds.begin(), kinds.end());
         std::string message = fmt::format("unknown quantity kind '{}'", kind_name);
+        std::vector<std::string> longer;  // kinds the name is the start of ("min_damping")
+        for (const auto& n : names)
+          if (n.starts_with(kind_name)) longer.push_back(n);
         if (const auto m = closest_match(kind_name, names, 4)) message += fmt::format("; did you mean '{}'?", *m);
+        else if (!longer.empty()) message += fmt::format("; did you mean {}?", join_list(longer, "or", '\''));
         else message += fmt::format("; the kinds are {}", join_list(names, "and", '\''));
         t.fail(kind_node, message);
       }
