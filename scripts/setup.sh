@@ -11,6 +11,7 @@ packages=(
   python3 python3-numpy python3-matplotlib
   python3-dev pybind11-dev python3-pytest python3-pandas  # the Python module (python/)
   clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers (scripts/fuzz.sh)
+  libpagmo-dev  # the optimisers of design studies (pagmo2, built without NLopt)
 )
 
 missing=()

@@ -42,7 +42,7 @@ std::string design_line(const StudySpec& study, const Evaluation& e) {
   line += "\n   ";
   for (std::size_t i = 0; i < study.quantities.size(); ++i) {
     const auto& q = study.quantities[i];
-    line += fmt::format(" {} = {}", q.name, shown(e.quantities[i], quantity_kind_unit(q.kind), q.unit));
+    line += fmt::format(" {} = {}", q.name, shown(e.quantities[i], quantity_unit(q), q.unit));
   }
   return line + "\n";
 }
@@ -85,8 +85,9 @@ Runner add_study_command(CLI::App& app) {
     const auto all = run_exploration(
         study, evaluator, log.done(), [&](std::span<const Evaluation> e) { log.append(e); }, batch,
         interrupt_token());
-    const Index total = static_cast<Index>(exploration_points(study).size());
-    const bool complete = static_cast<Index>(all.size()) == total;
+    const bool optimiser = study.explore.method == ExploreMethod::optimise || study.explore.method == ExploreMethod::pareto;
+    const Index total = planned_evaluations(study);
+    const bool complete = interrupt_signal() == 0 && (optimiser || static_cast<Index>(all.size()) == total);
     const auto models = log.finish(all, complete);
 
     if (!args->quiet) {
@@ -97,24 +98,29 @@ Runner add_study_command(CLI::App& app) {
       }
       std::string out = fmt::format("feran study: {} ({})\n", study.title.empty() ? args->path : study.title,
                                     study.model_path);
-      out += fmt::format("{} of {} designs evaluated ({} resumed), {} failed, {} feasible\n", all.size(), total,
-                         log.done().size(), static_cast<Index>(all.size()) - evaluated, feasible);
+      out += optimiser ? fmt::format("{} designs evaluated ({} resumed)", all.size(), log.done().size())
+                       : fmt::format("{} of {} designs evaluated ({} resumed)", all.size(), total, log.done().size());
+      out += fmt::format(", {} failed, {} feasible\n", static_cast<Index>(all.size()) - evaluated, feasible);
       if (study.objectives.size() == 1) {
         if (const auto best = best_design(study, all)) out += "best:\n" + design_line(study, all[static_cast<std::size_t>(*best)]);
         else out += "no feasible design\n";
       } else if (study.objectives.size() > 1) {
         const auto front = pareto_set(study, all);
-        out += fmt::format("Pareto set: {} designs\n", front.size());
-        for (const Index i : front) out += design_line(study, all[static_cast<std::size_t>(i)]);
+        const auto shown_ones = spread_along_front(study, all, front, 10);
+        out += fmt::format("Pareto set: {} designs{}\n", front.size(),
+                           shown_ones.size() < front.size() ? fmt::format(", {} of them along the front", shown_ones.size()) : "");
+        for (const Index i : shown_ones) out += design_line(study, all[static_cast<std::size_t>(i)]);
       }
       out += fmt::format("results in {}/ (evaluations.csv, evaluations.jsonl, summary.json", directory);
-      for (const auto& m : models) out += ", " + std::filesystem::path(m).filename().string();
+      if (models.size() > 3) out += fmt::format(", {} model files pareto-*.toml", models.size());
+      else
+        for (const auto& m : models) out += ", " + std::filesystem::path(m).filename().string();
       out += ")\n";
       std::fputs(out.c_str(), stdout);
     }
     if (const int signal = interrupt_signal(); signal != 0) {
-      std::fprintf(stderr, "feran study: stopped by %s after %zu of %ld designs; --resume continues it\n",
-                   signal_name(signal), all.size(), static_cast<long>(total));
+      std::fprintf(stderr, "feran study: stopped by %s after %zu designs; --resume continues it\n",
+                   signal_name(signal), all.size());
       return static_cast<int>(interrupted_base) + signal;
     }
     return static_cast<int>(ok);

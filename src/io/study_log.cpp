@@ -28,6 +28,8 @@ const char* method_name(ExploreMethod m) {
     case ExploreMethod::grid: return "grid";
     case ExploreMethod::latin_hypercube: return "latin_hypercube";
     case ExploreMethod::sobol: return "sobol";
+    case ExploreMethod::optimise: return "optimise";
+    case ExploreMethod::pareto: return "pareto";
   }
   return "?";
 }
@@ -48,7 +50,7 @@ std::string csv_header(const StudySpec& study) {
     cells.push_back(unit.empty() ? v.name : fmt::format("{} [{}]", v.name, unit));
   }
   for (const auto& q : study.quantities) {
-    const auto unit = si_unit_of(quantity_kind_unit(q.kind));
+    const auto unit = si_unit_of(quantity_unit(q));
     cells.push_back(unit.empty() ? q.name : fmt::format("{} [{}]", q.name, unit));
   }
   for (const char* c : {"evaluated", "feasible", "seconds", "message"}) cells.emplace_back(c);
@@ -83,7 +85,7 @@ std::string study_json(const StudySpec& study) {
     variables.push_back(j);
   }
   for (const auto& q : study.quantities)
-    quantities.push_back({{"name", q.name}, {"kind", to_string(q.kind)}, {"unit", si_unit_of(quantity_kind_unit(q.kind))}});
+    quantities.push_back({{"name", q.name}, {"kind", to_string(q.kind)}, {"unit", si_unit_of(quantity_unit(q))}});
   json objectives = json::array(), constraints = json::array();
   for (const auto& o : study.objectives)
     objectives.push_back({{"quantity", study.quantities[static_cast<std::size_t>(o.quantity)].name},
@@ -94,10 +96,15 @@ std::string study_json(const StudySpec& study) {
     if (c.at_least) j["at_least"] = *c.at_least;
     constraints.push_back(j);
   }
-  const json explore = {{"method", method_name(study.explore.method)},
-                        {"levels", study.explore.levels},
-                        {"samples", study.explore.samples},
-                        {"seed", study.explore.seed}};
+  const auto& x = study.explore;
+  json explore = {{"method", method_name(x.method)}, {"seed", x.seed}};
+  if (x.method == ExploreMethod::grid) explore["levels"] = x.levels;
+  else if (x.method == ExploreMethod::latin_hypercube || x.method == ExploreMethod::sobol) explore["samples"] = x.samples;
+  else {
+    explore.update({{"population", x.population}, {"generations", x.generations}});
+    if (x.method == ExploreMethod::optimise)
+      explore.update({{"algorithm", x.algorithm == GlobalAlgorithm::pso ? "pso" : "gaco"}, {"polish", x.polish}});
+  }
   const json j = {{"program", "feran"},       {"format_version", 1},       {"analysis", "study"},
                   {"title", study.title},     {"model", study.model_path}, {"base_model", write_toml(study.base)},
                   {"variables", variables},   {"quantities", quantities},  {"objectives", objectives},
@@ -235,13 +242,18 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
       summary["best"] = nullptr;
     }
   } else if (study_.objectives.size() > 1) {
-    json pareto = json::array();
-    for (const Index i : pareto_set(study_, all)) {
+    json pareto = json::array(), models = json::array();
+    const auto front = pareto_set(study_, all);
+    for (const Index i : front) pareto.push_back(json::parse(evaluation_json(study_, all[static_cast<std::size_t>(i)])));
+    // Model files for at most a population's worth, spread along the front.
+    const Index count = study_.explore.method == ExploreMethod::pareto ? study_.explore.population : 32;
+    for (const Index i : spread_along_front(study_, all, front, count)) {
       const auto& e = all[static_cast<std::size_t>(i)];
-      pareto.push_back(json::parse(evaluation_json(study_, e)));
       write_model(e, fmt::format("pareto-{}.toml", e.index));
+      models.push_back(e.index);
     }
     summary["pareto"] = pareto;
+    summary["pareto_models"] = models;
   }
   const auto path = (fs::path(directory_) / "summary.json").string();
   std::ofstream(path, std::ios::binary | std::ios::trunc) << summary.dump(1) << "\n";

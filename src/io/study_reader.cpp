@@ -159,7 +159,7 @@ class StudyReader {
 
   void read_quantities(StudySpec& study) {
     each_table("quantities", "quantity", [&](const TableReader& t, int) {
-      t.check_keys({"name", "kind", "whirl", "order", "n", "range", "operating", "speed", "probe", "spring", "unit"});
+      t.check_keys({"name", "kind", "whirl", "order", "n", "range", "operating", "speed", "probe", "spring", "path", "unit"});
       QuantitySpec q;
       q.name = t.required_string("name", "the quantity's name, a string");
       for (const auto& other : study.quantities)
@@ -213,8 +213,18 @@ class StudyReader {
         else t.fail(*p, fmt::format("'probe' must be a node name or number, got {}", detail::type_name(*p)));
       }
       if (const auto s = t.string("spring")) q.spring = *s;
+      if (q.kind == QuantityKind::parameter) {
+        q.path = t.required_string("path", "the parameter path of the number");
+        try {
+          q.value_kind = get_parameter(study.base, q.path).quantity;
+        } catch (const ParameterError& e) {
+          t.fail(*t.find("path"), e.what());
+        }
+      } else if (t.has("path")) {
+        t.fail(*t.find("path"), "'path' belongs to quantities of kind \"parameter\"");
+      }
       if (const auto u = t.string("unit")) {
-        const auto kind_unit = quantity_kind_unit(q.kind);
+        const auto kind_unit = quantity_unit(q);
         if (!kind_unit || !to_si(*kind_unit, 1.0, *u))
           t.fail(*t.find("unit"), kind_unit ? fmt::format("'unit' must be a unit of {}: {}", quantity_name(*kind_unit),
                                                           accepted_units_text(*kind_unit))
@@ -259,7 +269,7 @@ class StudyReader {
       t.check_keys({"quantity", "at_most", "at_least"});
       Constraint c;
       c.quantity = quantity_named(t);
-      const auto kind = quantity_kind_unit(study.quantities[static_cast<std::size_t>(c.quantity)].kind);
+      const auto kind = quantity_unit(study.quantities[static_cast<std::size_t>(c.quantity)]);
       const auto bound = [&](std::string_view key) -> std::optional<Real> {
         const auto* n = t.find(key);
         if (n == nullptr) return std::nullopt;
@@ -280,15 +290,42 @@ class StudyReader {
     const auto* table = node->as_table();
     if (table == nullptr) root_.fail(*node, "'explore' must be a table ([explore])");
     TableReader t(*table, "[explore]", path_);
-    t.check_keys({"method", "levels", "samples", "seed"});
+    t.check_keys({"method", "levels", "samples", "seed", "algorithm", "population", "generations", "polish"});
+    auto& x = study.explore;
     if (const auto m = t.string("method")) {
-      if (*m == "grid") study.explore.method = ExploreMethod::grid;
-      else if (*m == "latin_hypercube" || *m == "lhs") study.explore.method = ExploreMethod::latin_hypercube;
-      else if (*m == "sobol") study.explore.method = ExploreMethod::sobol;
-      else t.fail(*t.find("method"), fmt::format("'method' must be \"grid\", \"latin_hypercube\" or \"sobol\", got \"{}\"", *m));
+      if (*m == "grid") x.method = ExploreMethod::grid;
+      else if (*m == "latin_hypercube" || *m == "lhs") x.method = ExploreMethod::latin_hypercube;
+      else if (*m == "sobol") x.method = ExploreMethod::sobol;
+      else if (*m == "optimise" || *m == "optimize") x.method = ExploreMethod::optimise;
+      else if (*m == "pareto") x.method = ExploreMethod::pareto;
+      else t.fail(*t.find("method"), fmt::format("'method' must be \"grid\", \"latin_hypercube\", \"sobol\", "
+                                                 "\"optimise\" or \"pareto\", got \"{}\"", *m));
     }
-    study.explore.levels = t.integer("levels", 1, 10000).value_or(5);
-    study.explore.samples = t.integer("samples", 1, 10'000'000).value_or(32);
+    const bool optimiser = x.method == ExploreMethod::optimise || x.method == ExploreMethod::pareto;
+    for (const char* key : {"algorithm", "population", "generations", "polish"})
+      if (!optimiser && t.has(key))
+        t.fail(*t.find(key), fmt::format("'{}' belongs to the methods \"optimise\" and \"pareto\"", key));
+    if (const auto a = t.string("algorithm")) {
+      if (x.method == ExploreMethod::pareto) t.fail(*t.find("algorithm"), "method \"pareto\" is NSGA-II; it takes no 'algorithm'");
+      if (*a == "pso") x.algorithm = GlobalAlgorithm::pso;
+      else if (*a == "gaco") x.algorithm = GlobalAlgorithm::gaco;
+      else t.fail(*t.find("algorithm"), fmt::format("'algorithm' must be \"pso\" or \"gaco\", got \"{}\"", *a));
+    }
+    x.population = t.integer("population", 2, 100000).value_or(x.method == ExploreMethod::pareto ? 32 : 16);
+    x.generations = t.integer("generations", 0, 100000).value_or(20);
+    x.polish = t.integer("polish", 0, 1000000).value_or(0);
+    if (x.method == ExploreMethod::pareto && (x.population < 8 || x.population % 4 != 0))
+      t.fail(t.has("population") ? *t.find("population") : *node,
+             fmt::format("NSGA-II needs a population that is a multiple of 4 and at least 8, got {}", x.population));
+    if (x.method == ExploreMethod::pareto && study.objectives.size() < 2)
+      t.fail(*t.find("method"), fmt::format("method \"pareto\" needs two objectives or more, the study has {}",
+                                            study.objectives.size()));
+    if (x.method == ExploreMethod::optimise && study.objectives.size() != 1)
+      t.fail(*t.find("method"), fmt::format("method \"optimise\" takes one objective, the study has {}; "
+                                            "\"pareto\" takes several",
+                                            study.objectives.size()));
+    x.levels = t.integer("levels", 1, 10000).value_or(5);
+    x.samples = t.integer("samples", 1, 10'000'000).value_or(32);
     if (const auto* s = t.find("seed")) {
       if (!s->is_integer() || *s->value<std::int64_t>() < 0) t.fail(*s, "'seed' must be a non-negative integer");
       study.explore.seed = static_cast<std::uint64_t>(*s->value<std::int64_t>());

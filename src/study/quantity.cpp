@@ -10,12 +10,13 @@
 
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
+#include <feran/spec/parameters.hpp>
 
 namespace feran {
 
 namespace {
 
-constexpr std::array<std::pair<QuantityKind, std::string_view>, 14> kind_names{{
+constexpr std::array<std::pair<QuantityKind, std::string_view>, 15> kind_names{{
     {QuantityKind::critical_speed, "critical_speed"},
     {QuantityKind::separation_margin, "separation_margin"},
     {QuantityKind::min_damping_ratio, "min_damping_ratio"},
@@ -30,6 +31,7 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 14> kind_names{{
     {QuantityKind::runup_peak, "runup_peak"},
     {QuantityKind::runup_spring_force, "runup_spring_force"},
     {QuantityKind::rotor_mass, "rotor_mass"},
+    {QuantityKind::parameter, "parameter"},
 }};
 
 bool uses_response(QuantityKind k) {
@@ -284,6 +286,7 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
       return peak;
     }
     case QuantityKind::rotor_mass: return rotating_mass(a.model());
+    case QuantityKind::parameter: return get_parameter(a.spec(), q.path).value;
   }
   throw Error("unknown quantity");
 }
@@ -303,6 +306,10 @@ std::optional<Quantity> quantity_kind_unit(QuantityKind kind) {
     case QuantityKind::rotor_mass: return Quantity::mass;
     default: return std::nullopt;
   }
+}
+
+std::optional<Quantity> quantity_unit(const QuantitySpec& q) {
+  return q.kind == QuantityKind::parameter ? q.value_kind : quantity_kind_unit(q.kind);
 }
 
 std::string_view to_string(QuantityKind kind) {

@@ -78,8 +78,17 @@ std::vector<UnitPoint> exploration_points(const StudySpec& study) {
     }
     case ExploreMethod::latin_hypercube: return latin_hypercube(study.explore.samples, dim, study.explore.seed);
     case ExploreMethod::sobol: return sobol(study.explore.samples, dim);
+    case ExploreMethod::optimise:
+    case ExploreMethod::pareto: break;
   }
   return {};
+}
+
+Index planned_evaluations(const StudySpec& study) {
+  const auto& x = study.explore;
+  if (x.method == ExploreMethod::optimise || x.method == ExploreMethod::pareto)
+    return x.population * (x.generations + 1) + (x.method == ExploreMethod::optimise ? x.polish : 0);
+  return static_cast<Index>(exploration_points(study).size());
 }
 
 std::vector<Evaluation> ThreadEvaluator::evaluate(const StudySpec& study,
@@ -95,6 +104,8 @@ std::vector<Evaluation> ThreadEvaluator::evaluate(const StudySpec& study,
 std::vector<Evaluation> run_exploration(const StudySpec& study, BatchEvaluator& evaluator,
                                         const std::vector<Evaluation>& done, const EvaluationSink& sink,
                                         Index batch_size, const StopToken& stop) {
+  if (study.explore.method == ExploreMethod::optimise || study.explore.method == ExploreMethod::pareto)
+    return run_optimisation(study, evaluator, done, sink, stop);
   std::map<Index, Evaluation> all;
   for (const auto& e : done) all.emplace(e.index, e);
   const auto points = exploration_points(study);
@@ -152,8 +163,26 @@ std::vector<Index> pareto_set(const StudySpec& study, std::span<const Evaluation
   std::vector<Index> out;
   for (std::size_t i = 0; i < feasible.size(); ++i) {
     bool dominated = false;
-    for (std::size_t j = 0; j < feasible.size() && !dominated; ++j) dominated = j != i && dominates(f[j], f[i]);
+    // Dominated by another, or the same objectives as an earlier design (an
+    // optimiser evaluating one point twice): left out.
+    for (std::size_t j = 0; j < feasible.size() && !dominated; ++j)
+      dominated = j != i && (dominates(f[j], f[i]) || (j < i && f[j] == f[i]));
     if (!dominated) out.push_back(feasible[i]);
+  }
+  return out;
+}
+
+std::vector<Index> spread_along_front(const StudySpec& study, std::span<const Evaluation> evaluations,
+                                      std::vector<Index> front, Index count) {
+  if (front.empty() || count <= 0) return {};
+  const auto first = [&](Index i) { return costs(study, evaluations[static_cast<std::size_t>(i)]).front(); };
+  std::stable_sort(front.begin(), front.end(), [&](Index a, Index b) { return first(a) < first(b); });
+  const auto n = static_cast<Index>(front.size());
+  if (n <= count) return front;
+  std::vector<Index> out;
+  for (Index k = 0; k < count; ++k) {
+    const Index at = count == 1 ? 0 : (k * (n - 1) + (count - 1) / 2) / (count - 1);
+    if (out.empty() || out.back() != front[static_cast<std::size_t>(at)]) out.push_back(front[static_cast<std::size_t>(at)]);
   }
   return out;
 }

@@ -36,6 +36,7 @@ enum class QuantityKind {
   runup_peak,           ///< largest |r| at a probe during the run-up [m]
   runup_spring_force,   ///< largest lateral force of a spring (or of all) during the run-up [N]
   rotor_mass,           ///< mass of the rotating parts [kg]
+  parameter,            ///< a number of the design's model, by its parameter path (its SI unit)
 };
 
 /// Which modes a modal quantity looks at.
@@ -52,8 +53,13 @@ struct QuantitySpec {
   std::optional<Real> speed;     ///< natural_frequency, damping_ratio, log_decrement: the rotor speed [rad/s]
   std::optional<NodeRef> probe;  ///< peak_response, runup_peak
   std::optional<std::string> spring;  ///< *_spring_force: a spring's name; empty: all
+  std::string path;              ///< parameter: the parameter path
+  std::optional<Quantity> value_kind;  ///< parameter: the kind of its value (none: a number)
   std::string unit;              ///< unit the value is shown in ("rpm", "mm"); empty: SI
 };
+
+/// The kind of @p q's value: quantity_kind_unit(q.kind), or for a parameter its kind.
+std::optional<Quantity> quantity_unit(const QuantitySpec& q);
 
 /// The kind a quantity's value has (for units), or nullopt for a pure number.
 std::optional<Quantity> quantity_kind_unit(QuantityKind kind);

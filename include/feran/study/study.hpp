@@ -39,13 +39,29 @@ struct Constraint {
   std::optional<Real> at_most, at_least;
 };
 
-enum class ExploreMethod { grid, latin_hypercube, sobol };
+enum class ExploreMethod {
+  grid,             ///< every combination of levels
+  latin_hypercube,  ///< a Latin hypercube sample
+  sobol,            ///< the Sobol' sequence
+  optimise,         ///< one objective: a global method, then a local polish (pagmo2)
+  pareto,           ///< several objectives: NSGA-II's Pareto set (pagmo2)
+};
+
+/// The global method of an optimisation.
+enum class GlobalAlgorithm {
+  pso,   ///< particle swarm, generational (pagmo2 pso_gen; Poli, Kennedy & Blackwell 2007)
+  gaco,  ///< extended ant colony optimisation (pagmo2 gaco; Schlüter, Egea & Banga 2009)
+};
 
 struct Exploration {
   ExploreMethod method = ExploreMethod::latin_hypercube;
   Index levels = 5;        ///< grid: values per continuous variable
   Index samples = 32;      ///< Latin hypercube and Sobol': number of designs
-  std::uint64_t seed = 1;  ///< Latin hypercube
+  std::uint64_t seed = 1;  ///< Latin hypercube and the optimisers
+  GlobalAlgorithm algorithm = GlobalAlgorithm::pso;
+  Index population = 16;   ///< optimisers: designs per generation (NSGA-II: a multiple of 4, ≥ 8)
+  Index generations = 20;  ///< optimisers: generations after the first population
+  Index polish = 0;        ///< optimise: evaluations of the local polish (compass search); 0: none
 };
 
 struct StudySpec {
@@ -110,17 +126,42 @@ using EvaluationSink = std::function<void(std::span<const Evaluation>)>;
 /// Runs the exploration: every point not already in @p done (by index) is evaluated
 /// by @p evaluator in batches of @p batch_size, each batch passed to @p sink. Returns
 /// all evaluations, @p done included, in index order. Stops between batches when
-/// @p stop is set (what was evaluated is kept and passed to the sink).
+/// @p stop is set (what was evaluated is kept and passed to the sink). An optimiser
+/// (ExploreMethod::optimise, pareto) runs through run_optimisation().
 std::vector<Evaluation> run_exploration(const StudySpec& study, BatchEvaluator& evaluator,
                                         const std::vector<Evaluation>& done, const EvaluationSink& sink,
                                         Index batch_size, const StopToken& stop = {});
+
+/// Runs the study's optimiser (ExploreMethod::optimise or pareto) with pagmo2, its
+/// generations evaluated as batches by @p evaluator and passed to @p sink. Designs get
+/// indices in the order the optimiser asks for them; for a fixed seed that order is
+/// always the same, so evaluations in @p done (a resumed study) are taken from there
+/// instead of recomputed, after checking that the optimiser asked for the same point.
+/// The problem the optimiser sees lives in the unit cube: each objective (negated when
+/// maximised) for a feasible design; for an infeasible or failed one 1e30·(1 + v),
+/// v the sum of the constraints' relative violations (10³ for a failed design), so that
+/// every feasible design is better than every infeasible one and the less violated
+/// better among those. Returns all evaluations, @p done included, in index order.
+std::vector<Evaluation> run_optimisation(const StudySpec& study, BatchEvaluator& evaluator,
+                                         const std::vector<Evaluation>& done, const EvaluationSink& sink,
+                                         const StopToken& stop = {});
+
+/// The evaluations a study plans: the sampler's points, or for an optimiser its
+/// population times (generations + 1) plus the polish (an upper bound).
+Index planned_evaluations(const StudySpec& study);
 
 /// The best feasible design of a single-objective study (lowest index among equals),
 /// or nullopt when none is feasible.
 std::optional<Index> best_design(const StudySpec& study, std::span<const Evaluation> evaluations);
 
 /// The feasible designs that no other feasible design dominates in the objectives
-/// (positions in @p evaluations, in index order).
+/// (positions in @p evaluations, in index order); of designs with equal objectives
+/// only the first.
 std::vector<Index> pareto_set(const StudySpec& study, std::span<const Evaluation> evaluations);
+
+/// At most @p count members of @p front (positions in @p evaluations), evenly spread
+/// along the first objective (its ends kept), in order of it.
+std::vector<Index> spread_along_front(const StudySpec& study, std::span<const Evaluation> evaluations,
+                                      std::vector<Index> front, Index count);
 
 }  // namespace feran

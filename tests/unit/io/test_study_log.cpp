@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "stopping_evaluator.hpp"
+
 #include <feran/core/error.hpp>
 #include <feran/io/study_log.hpp>
 #include <feran/io/study_reader.hpp>
@@ -27,21 +29,7 @@ std::vector<std::string> lines_of(const fs::path& p) {
   return out;
 }
 
-// Evaluates with threads, and asks to stop after @p batches batches.
-class StoppingEvaluator : public BatchEvaluator {
- public:
-  StoppingEvaluator(std::atomic<bool>& flag, int batches) : flag_(flag), left_(batches) {}
-  std::vector<Evaluation> evaluate(const StudySpec& s, const std::vector<std::pair<Index, UnitPoint>>& b) override {
-    auto out = inner_.evaluate(s, b);
-    if (--left_ == 0) flag_ = true;
-    return out;
-  }
-
- private:
-  std::atomic<bool>& flag_;
-  int left_;
-  ThreadEvaluator inner_{2};
-};
+using test::StoppingEvaluator;
 
 TEST(StudyLog, AnInterruptedStudyResumesToTheUninterruptedResult) {
   const auto file = read_study_file(FERAN_TEST_MODELS "/studies/bearing_damping_grid.toml");
