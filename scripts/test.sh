@@ -3,8 +3,8 @@
 #  1. the Release build, warnings as errors;
 #  2. a Debug build with AddressSanitizer and UndefinedBehaviorSanitizer, so that
 #     Eigen's and feran's debug assertions and memory errors are checked too. The
-#     full-length example run-ups (label long_runup, minutes each when instrumented)
-#     run in the Release pass only; the run-up code itself is covered in both. It is
+#     full-length example run-ups and the command-line study test (label long_runup,
+#     minutes each when instrumented) run in the Release pass only; the run-up code itself is covered in both. It is
 #     built without debug information (-g0): a fifth less compile time and half the
 #     object size; the sanitizers' reports still name the functions (rebuild with
 #     -DCMAKE_CXX_FLAGS_DEBUG=-g for file and line);
@@ -13,13 +13,21 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
+stage() { echo "test.sh: $1 took $((SECONDS - stage_start)) s (total ${SECONDS} s)"; stage_start=$SECONDS; }
+stage_start=$SECONDS
 bash scripts/setup.sh
+stage "set-up"
 FERAN_WARNINGS_AS_ERRORS=ON bash scripts/build.sh
+stage "the Release build"
 ctest --test-dir build --output-on-failure -j "$jobs"
+stage "the Release tests"
 
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g0 -DFERAN_SANITIZE=ON \
   -DFERAN_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build build-sanitize -j "$jobs" >/dev/null
+stage "the sanitizer build"
 ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long_runup
+stage "the sanitizer tests"
 
 bash scripts/fuzz.sh 60
+stage "fuzzing (build and 2 x 60 s)"

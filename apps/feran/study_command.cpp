@@ -9,6 +9,7 @@
 #include <feran/core/units.hpp>
 #include <feran/io/study_log.hpp>
 #include <feran/io/study_reader.hpp>
+#include <feran/study/sensitivity.hpp>
 
 #include "commands.hpp"
 #include "interrupt.hpp"
@@ -110,6 +111,18 @@ Runner add_study_command(CLI::App& app) {
         out += fmt::format("Pareto set: {} designs{}\n", front.size(),
                            shown_ones.size() < front.size() ? fmt::format(", {} of them along the front", shown_ones.size()) : "");
         for (const Index i : shown_ones) out += design_line(study, all[static_cast<std::size_t>(i)]);
+      }
+      if (!optimiser) {
+        const auto table = sensitivities(study, all);
+        if (!table.empty() && !table.front().src.empty()) {
+          out += "sensitivity: standardised regression coefficients on the variables' unit coordinates (R² of the fit)\n";
+          for (const auto& x : table) {
+            out += fmt::format("  {:<20}", x.quantity);
+            for (std::size_t j = 0; j < study.variables.size(); ++j)
+              out += fmt::format(" {} {:+.3f}", study.variables[j].name, x.src[j]);
+            out += fmt::format("  (R² {:.3f}; on ranks {:.3f})\n", x.r2, x.r2_ranks);
+          }
+        }
       }
       out += fmt::format("results in {}/ (evaluations.csv, evaluations.jsonl, summary.json", directory);
       if (models.size() > 3) out += fmt::format(", {} model files pareto-*.toml", models.size());

@@ -12,6 +12,7 @@
 
 #include <feran/core/error.hpp>
 #include <feran/io/model_writer.hpp>
+#include <feran/study/sensitivity.hpp>
 
 #include "csv_text.hpp"
 
@@ -254,6 +255,21 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
     }
     summary["pareto"] = pareto;
     summary["pareto_models"] = models;
+  }
+  const bool sampled = study_.explore.method != ExploreMethod::optimise && study_.explore.method != ExploreMethod::pareto;
+  if (sampled) {
+    json table = json::array();
+    for (const auto& x : sensitivities(study_, all)) {
+      if (x.src.empty()) continue;
+      json src = json::object(), srrc = json::object();
+      for (std::size_t j = 0; j < study_.variables.size(); ++j) {
+        src[study_.variables[j].name] = number(x.src[j]);
+        srrc[study_.variables[j].name] = number(x.srrc[j]);
+      }
+      table.push_back({{"quantity", x.quantity}, {"src", src}, {"r2", number(x.r2)}, {"srrc", srrc},
+                       {"r2_ranks", number(x.r2_ranks)}, {"samples", x.samples}});
+    }
+    summary["sensitivity"] = table;
   }
   const auto path = (fs::path(directory_) / "summary.json").string();
   std::ofstream(path, std::ios::binary | std::ios::trunc) << summary.dump(1) << "\n";
