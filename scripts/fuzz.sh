@@ -12,8 +12,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 jobs=$(nproc 2>/dev/null || echo 2)
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -DFERAN_FUZZ=ON -DFERAN_BUILD_TESTS=OFF \
-  -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" >/dev/null
-cmake --build build-fuzz -j "$jobs" >/dev/null
+  -DFERAN_BUILD_PYTHON=OFF -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" >/dev/null
+cmake --build build-fuzz -j "$jobs" --target fuzz_reader fuzz_model >/dev/null  # the harnesses only
 
 seeds=build-fuzz/seeds
 rm -rf "$seeds" && mkdir -p "$seeds" build-fuzz/findings
