@@ -235,6 +235,7 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
     }
     case QuantityKind::peak_response: {
       const auto& r = a.response();
+      if (r.probes.empty()) throw Error("the response has no probe: give the quantity a 'probe'");
       const Index node = q.probe ? node_index(a.model(), *q.probe) : r.probes.front().node;
       for (const auto& p : r.probes) {
         if (p.node != node) continue;
@@ -270,6 +271,7 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
     case QuantityKind::runup_peak: {
       const auto& r = a.runup();
       const auto& nodes = a.runup_probe_nodes();
+      if (nodes.empty()) throw Error("the run-up records no probe: give the quantity a 'probe'");
       const Index node = q.probe ? node_index(a.model(), *q.probe) : nodes.front();
       const auto at = std::find(nodes.begin(), nodes.end(), node);
       return r.envelopes[static_cast<std::size_t>(at - nodes.begin())].peak;
