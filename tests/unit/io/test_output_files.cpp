@@ -158,7 +158,8 @@ TEST_F(OutputFilesTest, RefusedBeforeAnythingRuns) {
       {(dir / "missing" / "x.json").string(), "the directory '" + (dir / "missing").string() + "' does not exist"},
       {(dir / "model.toml" / "x.json").string(), "'" + model + "' is not a directory"},
   };
-  for (const auto& [path, expected] : cases) {
+  for (const auto& [path_, expected] : cases) {
+    const std::string& path = path_;  // a structured binding is not captured by clang 14
     OutputFiles files(model);
     const std::string message = error_of([&] { files.add("--json", path); });
     EXPECT_NE(message.find("--json '" + path + "': cannot write: " + expected), std::string::npos)

@@ -83,7 +83,7 @@ TEST(Sobol, EveryDimensionIsANetAndTheFirstTwoATwoDimensionalOne) {
   for (int a = 0; a <= m; ++a) {
     std::set<std::pair<Index, Index>> boxes;
     for (const auto& x : p)
-      boxes.insert({static_cast<Index>(x[0] * (Index(1) << a)), static_cast<Index>(x[1] * (Index(1) << (m - a)))});
+      boxes.insert({static_cast<Index>(x[0] * std::ldexp(1.0, a)), static_cast<Index>(x[1] * std::ldexp(1.0, m - a))});
     EXPECT_EQ(boxes.size(), static_cast<std::size_t>(n)) << "boxes of 2^-" << a << " by 2^-" << m - a;
   }
 }
