@@ -12,6 +12,7 @@ packages=(
   python3-dev pybind11-dev python3-pytest python3-pandas  # the Python module (python/)
   clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers (scripts/fuzz.sh)
   libpagmo-dev  # the optimisers of design studies (pagmo2, built without NLopt)
+  libopenmpi-dev openmpi-bin  # feran study over the processes of an MPI job (apps/feran/mpi/)
 )
 
 missing=()

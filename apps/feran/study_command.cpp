@@ -1,4 +1,6 @@
+#include <csignal>
 #include <cstdio>
+#include <optional>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -9,10 +11,12 @@
 #include <feran/core/units.hpp>
 #include <feran/io/study_log.hpp>
 #include <feran/io/study_reader.hpp>
+#include <feran/study/distributed.hpp>
 #include <feran/study/sensitivity.hpp>
 
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "mpi_group.hpp"
 
 namespace feran::app {
 
@@ -53,8 +57,8 @@ std::string design_line(const StudySpec& study, const Evaluation& e) {
 Runner add_study_command(CLI::App& app) {
   auto args = std::make_shared<StudyArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "study", "Run a design study: designs from a grid, a Latin hypercube or a Sobol' sequence, evaluated "
-               "on all cores");
+      "study", "Run a design study: designs from a grid, a Latin hypercube or a Sobol' sequence or an optimiser, "
+               "evaluated on all cores, or on the processes of an MPI job (mpirun -np N feran study ...)");
   cmd->footer(
       "Example:\n  feran study examples/04_design_study/bearing_study.toml -o out/bearing_study\n\n"
       "The study file (docs/study-format.md) names a base model, design variables (parameter paths\n"
@@ -67,29 +71,75 @@ Runner add_study_command(CLI::App& app) {
   cmd->add_flag("--resume", args->resume, "Continue the study recorded in the output directory");
   add_threads_option(*cmd, args->threads);
   cmd->add_option("--batch", args->batch,
-                  "Designs evaluated between two writes to disk (default: 4 per thread)")
+                  "Designs evaluated between two writes to disk (default: 4 per thread of every process)")
       ->check(CLI::Range(1, 1'000'000));
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary on standard output");
 
   return [args]() {
-    const StudyFile file = read_study_file(args->path);
-    const StudySpec& study = file.study;
+    // Under MPI (mpirun -np N feran study ...) every process runs this: each reads the
+    // study, evaluates its share of every batch and gets the whole batch back; the
+    // first process alone keeps the record, prints and writes.
+    const auto group = process_group();
+    const bool first = group->rank() == 0;
+    // An error every process meets (a bad study file) is reported once, by the first;
+    // the others only end.
+    const auto agreed = [&](bool ok, const std::string& message) {
+      std::string why;
+      if (all_agree(*group, ok, message, &why)) return true;
+      if (first) throw Error(why);
+      return false;
+    };
+    std::optional<StudyFile> file;
+    std::string error;
+    try {
+      file = read_study_file(args->path);
+    } catch (const Error& e) {
+      error = e.what();
+    }
+    if (!agreed(file.has_value(), error)) return static_cast<int>(input_error);
+    const StudySpec& study = file->study;
     std::string directory = args->output;
     if (directory.empty()) {
       std::filesystem::path p(args->path);
       directory = (p.parent_path() / (p.stem().string() + ".results")).string();
     }
-    StudyLog log(directory, study, args->resume);
-    const int threads = resolve_threads(args->threads);
-    const Index batch = args->batch > 0 ? args->batch : 4 * threads;
-    ThreadEvaluator evaluator(threads, interrupt_token());
-    const auto all = run_exploration(
-        study, evaluator, log.done(), [&](std::span<const Evaluation> e) { log.append(e); }, batch,
-        interrupt_token());
+    std::unique_ptr<StudyLog> log;
+    if (first) {
+      try {
+        log = std::make_unique<StudyLog>(directory, study, args->resume);
+      } catch (const Error& e) {
+        error = e.what();
+      }
+    }
+    if (!agreed(!first || log != nullptr, error)) return static_cast<int>(input_error);
+    const auto done = unpack_evaluations(group->broadcast(first ? pack_evaluations(log->done()) : std::string(), 0));
+    const int threads = threads_per_process(args->threads);
+    // The first process's batch: the same on all, so that all leave at the same one.
+    const Index batch = std::stoll(group->broadcast(
+        std::to_string(args->batch > 0 ? args->batch : 4 * threads * group->size()), 0));
+    ThreadEvaluator local(threads, interrupt_token());
+    DistributedEvaluator evaluator(*group, local, interrupt_token());
+    std::vector<Evaluation> all;
+    try {
+      all = run_exploration(
+          study, evaluator, done, [&](std::span<const Evaluation> e) { if (log) log->append(e); }, batch,
+          evaluator.stop_token());
+    } catch (const Error& e) {
+      // The others may be waiting for this process: the whole job ends.
+      if (group->size() > 1) {
+        std::fprintf(stderr, "feran: error: %s%s\n", first ? "" : fmt::format("process {}: ", group->rank()).c_str(),
+                     e.what());
+        group->abort(input_error);
+      }
+      throw;
+    }
+    // A stop asked of another process ends this one as if by SIGTERM.
+    const int signal = evaluator.stopped() ? (interrupt_signal() != 0 ? interrupt_signal() : SIGTERM) : 0;
+    if (!first) return static_cast<int>(signal != 0 ? interrupted_base + signal : ok);
     const bool optimiser = study.explore.method == ExploreMethod::optimise || study.explore.method == ExploreMethod::pareto;
     const Index total = planned_evaluations(study);
-    const bool complete = interrupt_signal() == 0 && (optimiser || static_cast<Index>(all.size()) == total);
-    const auto models = log.finish(all, complete);
+    const bool complete = !evaluator.stopped() && (optimiser || static_cast<Index>(all.size()) == total);
+    const auto models = log->finish(all, complete);
 
     if (!args->quiet) {
       Index evaluated = 0, feasible = 0;
@@ -99,8 +149,9 @@ Runner add_study_command(CLI::App& app) {
       }
       std::string out = fmt::format("feran study: {} ({})\n", study.title.empty() ? args->path : study.title,
                                     study.model_path);
-      out += optimiser ? fmt::format("{} designs evaluated ({} resumed)", all.size(), log.done().size())
-                       : fmt::format("{} of {} designs evaluated ({} resumed)", all.size(), total, log.done().size());
+      if (group->size() > 1) out += fmt::format("{} processes, {} thread{} each\n", group->size(), threads, threads == 1 ? "" : "s");
+      out += optimiser ? fmt::format("{} designs evaluated ({} resumed)", all.size(), done.size())
+                       : fmt::format("{} of {} designs evaluated ({} resumed)", all.size(), total, done.size());
       out += fmt::format(", {} failed, {} feasible\n", static_cast<Index>(all.size()) - evaluated, feasible);
       if (study.objectives.size() == 1) {
         if (const auto best = best_design(study, all)) out += "best:\n" + design_line(study, all[static_cast<std::size_t>(*best)]);
@@ -131,9 +182,9 @@ Runner add_study_command(CLI::App& app) {
       out += ")\n";
       std::fputs(out.c_str(), stdout);
     }
-    if (const int signal = interrupt_signal(); signal != 0) {
+    if (signal != 0) {
       std::fprintf(stderr, "feran study: stopped by %s after %zu designs; --resume continues it\n",
-                   signal_name(signal), all.size());
+                   interrupt_signal() != 0 ? signal_name(signal) : "a signal to another process", all.size());
       return static_cast<int>(interrupted_base) + signal;
     }
     return static_cast<int>(ok);

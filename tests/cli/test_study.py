@@ -13,23 +13,14 @@ import sys
 import time
 import unittest
 
+from study_records import records
+
 FERAN, SOURCE, SCRATCH = sys.argv[1], sys.argv[2], sys.argv[3]
 STUDY = os.path.join(SOURCE, "tests", "models", "studies", "centrifuge_sobol.toml")
 
 
 def run(*args, **kw):
     return subprocess.run([FERAN, "study", *args], capture_output=True, text=True, **kw)
-
-
-def records(directory):
-    """The evaluations by index, without their wall times."""
-    out = {}
-    with open(os.path.join(directory, "evaluations.jsonl")) as f:
-        for line in f:
-            r = json.loads(line)
-            r.pop("seconds")
-            out[r["index"]] = r
-    return out
 
 
 class Study(unittest.TestCase):
