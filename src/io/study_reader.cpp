@@ -203,8 +203,9 @@ class StudyReader {
         q.operating_high = t.quantity_at(*op->get(1), "operating[1]", Quantity::speed).si;
         if (!(q.operating_low > 0 && q.operating_low <= q.operating_high))
           t.fail(*t.find("operating"), "'operating' must be [low, high] with 0 < low ≤ high");
-      } else if (q.kind == QuantityKind::separation_margin) {
-        t.fail_here("a separation_margin needs 'operating' = [low, high], the operating speed range");
+      } else if (q.kind == QuantityKind::separation_margin || q.kind == QuantityKind::required_margin ||
+                 q.kind == QuantityKind::margin_surplus) {
+        t.fail_here(fmt::format("a {} needs 'operating' = [low, high], the operating speed range", to_string(q.kind)));
       }
       if (const auto s = t.quantity("speed", Quantity::speed)) q.speed = s->si;
       if (const auto* p = t.find("probe")) {

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <feran/analyses/harmonic/api684.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
 #include <feran/spec/parameters.hpp>
@@ -16,7 +17,7 @@ namespace feran {
 
 namespace {
 
-constexpr std::array<std::pair<QuantityKind, std::string_view>, 15> kind_names{{
+constexpr std::array<std::pair<QuantityKind, std::string_view>, 18> kind_names{{
     {QuantityKind::critical_speed, "critical_speed"},
     {QuantityKind::separation_margin, "separation_margin"},
     {QuantityKind::min_damping_ratio, "min_damping_ratio"},
@@ -26,6 +27,9 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 15> kind_names{{
     {QuantityKind::damping_ratio, "damping_ratio"},
     {QuantityKind::log_decrement, "log_decrement"},
     {QuantityKind::peak_response, "peak_response"},
+    {QuantityKind::amplification_factor, "amplification_factor"},
+    {QuantityKind::required_margin, "required_margin"},
+    {QuantityKind::margin_surplus, "margin_surplus"},
     {QuantityKind::peak_spring_force, "peak_spring_force"},
     {QuantityKind::peak_stress, "peak_stress"},
     {QuantityKind::runup_peak, "runup_peak"},
@@ -35,7 +39,8 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 15> kind_names{{
 }};
 
 bool uses_response(QuantityKind k) {
-  return k == QuantityKind::peak_response || k == QuantityKind::peak_spring_force || k == QuantityKind::peak_stress;
+  return k == QuantityKind::peak_response || k == QuantityKind::peak_spring_force || k == QuantityKind::peak_stress ||
+         k == QuantityKind::amplification_factor || k == QuantityKind::required_margin || k == QuantityKind::margin_surplus;
 }
 bool uses_runup(QuantityKind k) { return k == QuantityKind::runup_peak || k == QuantityKind::runup_spring_force; }
 
@@ -182,6 +187,29 @@ Real smallest_damping(const CampbellResult& c, const QuantitySpec& q, Real low, 
   return smallest;
 }
 
+// The amplitude (orbit semi-major axis) at a quantity's probe against speed, within
+// its range.
+struct Curve {
+  std::vector<Real> speeds, amplitude;
+};
+
+Curve probe_curve(Analyses& a, const QuantitySpec& q) {
+  const auto& r = a.response();
+  if (r.probes.empty()) throw Error("the response has no probe: give the quantity a 'probe'");
+  const Index node = q.probe ? node_index(a.model(), *q.probe) : r.probes.front().node;
+  for (const auto& p : r.probes) {
+    if (p.node != node) continue;
+    Curve c;
+    for (std::size_t k = 0; k < p.orbit.size(); ++k) {
+      if ((q.low && r.speeds[k] < *q.low) || (q.high && r.speeds[k] > *q.high)) continue;
+      c.speeds.push_back(r.speeds[k]);
+      c.amplitude.push_back(p.orbit[k].major);
+    }
+    return c;
+  }
+  throw Error("the response has no such probe");
+}
+
 Real evaluate_one(Analyses& a, const QuantitySpec& q) {
   switch (q.kind) {
     case QuantityKind::critical_speed: {
@@ -234,19 +262,28 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
                               rpm(settings.speed), seen));
     }
     case QuantityKind::peak_response: {
-      const auto& r = a.response();
-      if (r.probes.empty()) throw Error("the response has no probe: give the quantity a 'probe'");
-      const Index node = q.probe ? node_index(a.model(), *q.probe) : r.probes.front().node;
-      for (const auto& p : r.probes) {
-        if (p.node != node) continue;
-        Real peak = 0;
-        for (std::size_t k = 0; k < p.orbit.size(); ++k) {
-          if ((q.low && r.speeds[k] < *q.low) || (q.high && r.speeds[k] > *q.high)) continue;
-          peak = std::max(peak, p.orbit[k].major);
-        }
-        return peak;
-      }
-      throw Error("the response has no such probe");
+      const auto curve = probe_curve(a, q);
+      return curve.amplitude.empty() ? 0.0 : *std::max_element(curve.amplitude.begin(), curve.amplitude.end());
+    }
+    case QuantityKind::amplification_factor:
+    case QuantityKind::required_margin:
+    case QuantityKind::margin_surplus: {
+      const auto curve = probe_curve(a, q);
+      std::vector<ResponsePeak> resolved;
+      for (const auto& p : response_peaks(curve.speeds, curve.amplitude))
+        if (p.resolved()) resolved.push_back(p);
+      if (static_cast<int>(resolved.size()) < q.n)
+        throw Error(fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
+                                "the amplitude falls to 1/√2 of it on both sides within the sweep)",
+                                ordinal(q.n), q.low || q.high ? fmt::format(" between {} and {}", rpm(curve.speeds.front()),
+                                                                             rpm(curve.speeds.back()))
+                                                              : std::string(),
+                                resolved.size()));
+      const auto& peak = resolved[static_cast<std::size_t>(q.n - 1)];
+      if (q.kind == QuantityKind::amplification_factor) return peak.amplification_factor;
+      const Real required = required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
+      if (q.kind == QuantityKind::required_margin) return required;
+      return separation_margin(peak.speed, q.operating_low, q.operating_high) - required;
     }
     case QuantityKind::peak_spring_force: {
       const auto& r = a.response();

@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// The API 684 reading of an unbalance response: the resonance peaks of an amplitude
+/// curve, each critical speed's amplification factor by the half-power method, and
+/// the separation margin API 617 requires for it (docs/theory/harmonic_and_static.md,
+/// "Amplification factors and separation margins").
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <feran/core/types.hpp>
+
+namespace feran {
+
+/// A local maximum of a response amplitude against speed.
+struct ResponsePeak {
+  Real speed = 0;      ///< N_c: the peak's speed, refined by a parabola through its three points [rad/s]
+  Real amplitude = 0;  ///< the amplitude there (that parabola's top)
+  /// N_1 < N_c < N_2 where the amplitude has fallen to 1/√2 of the peak's, by linear
+  /// interpolation between the points; none when the curve leaves the sweep, or rises
+  /// above the peak again, before it falls that far.
+  std::optional<Real> lower_half_power, upper_half_power;
+  /// The amplification factor N_c / (N_2 − N_1), by the half-power method of API 684;
+  /// NaN unless both half-power points exist.
+  Real amplification_factor = 0;
+  bool resolved() const { return lower_half_power.has_value() && upper_half_power.has_value(); }
+};
+
+/// The peaks of @p amplitude (at the increasing @p speeds), in order of speed: points
+/// higher than the point before and at least as high as the one after (the first of
+/// a flat top). Throws feran::Error for sizes that differ or speeds not increasing.
+std::vector<ResponsePeak> response_peaks(std::span<const Real> speeds, std::span<const Real> amplitude);
+
+/// The separation margin API 617 (8th ed.) and API 684 (2nd ed.) require of a
+/// critical speed @p critical with amplification factor @p af from the operating range
+/// [@p low, @p high], as a fraction: none (0) for af < 2.5; below the range
+/// min(0.16, 0.17·(1 − 1/(af − 1.5))); above it min(0.26, 0.10 + 0.17·(1 − 1/(af − 1.5)));
+/// inside it, the rule of the nearer end.
+Real required_separation_margin(Real af, Real critical, Real low, Real high);
+
+}  // namespace feran

@@ -1,0 +1,82 @@
+#include <feran/analyses/harmonic/api684.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+namespace {
+
+// The speed where the curve crosses @p level between points k and k + 1.
+Real crossing(std::span<const Real> s, std::span<const Real> a, std::size_t k, Real level) {
+  return s[k] + (level - a[k]) / (a[k + 1] - a[k]) * (s[k + 1] - s[k]);
+}
+
+}  // namespace
+
+std::vector<ResponsePeak> response_peaks(std::span<const Real> speeds, std::span<const Real> amplitude) {
+  if (speeds.size() != amplitude.size())
+    throw Error(fmt::format("{} speeds but {} amplitudes", speeds.size(), amplitude.size()));
+  for (std::size_t k = 1; k < speeds.size(); ++k)
+    if (!(speeds[k] > speeds[k - 1])) throw Error("the speeds of a response curve must increase");
+  const auto& s = speeds;
+  const auto& a = amplitude;
+  const std::size_t n = s.size();
+  std::vector<ResponsePeak> peaks;
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool rises = k == 0 ? false : a[k] > a[k - 1];
+    const bool holds = k + 1 == n ? true : a[k] >= a[k + 1];
+    // The first point of the sweep is a peak only when the curve falls from it; it
+    // has no lower half-power point then.
+    if (!(rises && holds) && !(k == 0 && n > 1 && a[0] > a[1])) continue;
+    ResponsePeak p;
+    p.speed = s[k];
+    p.amplitude = a[k];
+    if (k > 0 && k + 1 < n && a[k] > a[k + 1]) {
+      // The parabola through the three points: its top (a Lagrange form, for
+      // unevenly spaced speeds).
+      const Real x0 = s[k - 1] - s[k], x2 = s[k + 1] - s[k];
+      const Real d0 = a[k - 1] - a[k], d2 = a[k + 1] - a[k];
+      const Real c2 = (d0 / x0 - d2 / x2) / (x0 - x2);  // the quadratic coefficient (< 0 here)
+      const Real c1 = d0 / x0 - c2 * x0;
+      if (c2 < 0) {
+        const Real x = std::clamp(-c1 / (2 * c2), x0, x2);
+        p.speed = s[k] + x;
+        p.amplitude = a[k] + c1 * x + c2 * x * x;
+      }
+    }
+    const Real level = p.amplitude / std::sqrt(Real(2));
+    for (std::size_t j = k; j-- > 0;) {
+      if (a[j] > p.amplitude) break;  // a higher point first: no half-power point on this side
+      if (a[j] <= level) {
+        p.lower_half_power = crossing(s, a, j, level);
+        break;
+      }
+    }
+    for (std::size_t j = k + 1; j < n; ++j) {
+      if (a[j] > p.amplitude) break;
+      if (a[j] <= level) {
+        p.upper_half_power = crossing(s, a, j - 1, level);
+        break;
+      }
+    }
+    p.amplification_factor = p.resolved() ? p.speed / (*p.upper_half_power - *p.lower_half_power)
+                                          : std::numeric_limits<Real>::quiet_NaN();
+    peaks.push_back(p);
+  }
+  return peaks;
+}
+
+Real required_separation_margin(Real af, Real critical, Real low, Real high) {
+  if (!(af >= 2.5)) return 0;
+  const Real base = 0.17 * (1 - 1 / (af - 1.5));
+  const bool above = critical > high || (critical >= low && critical - low > high - critical);
+  return above ? std::min(0.26, 0.10 + base) : std::min(0.16, base);
+}
+
+}  // namespace feran
