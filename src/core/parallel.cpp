@@ -8,7 +8,14 @@
 #include <thread>
 #include <vector>
 
+#include <dlfcn.h>
+
 namespace feran {
+
+void single_threaded_blas() {
+  using SetThreads = void (*)(int);
+  if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
+}
 
 int resolve_threads(int requested) {
   if (requested > 0) return requested;

@@ -8,6 +8,14 @@
 
 namespace feran {
 
+/// Asks a threaded OpenBLAS, when it is the LAPACK in use, for one thread. feran runs
+/// the points of a sweep and the designs of a study on threads of its own; OpenBLAS's
+/// threads inside each small dense solve only compete with them, and spin for a while
+/// after each call (a Campbell study on two cores ran six times slower with them).
+/// Programs linking the library call it once at start (the command line, the Python
+/// module and the tests do). Looked up at run time: other BLAS builds lack it.
+void single_threaded_blas();
+
 /// Number of threads a sweep uses when asked for @p requested: the hardware
 /// concurrency for 0, else @p requested (at least 1).
 int resolve_threads(int requested);
