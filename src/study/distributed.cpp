@@ -27,7 +27,7 @@ class Writer {
   }
   void put_reals(const std::vector<Real>& v) {
     put(static_cast<std::uint64_t>(v.size()));
-    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(Real));
+    if (!v.empty()) out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(Real));
   }
   void put_text(const std::string& s) {
     put(static_cast<std::uint64_t>(s.size()));
@@ -51,7 +51,7 @@ class Reader {
     const auto n = get<std::uint64_t>();
     need_items(n, sizeof(Real));
     std::vector<Real> v(static_cast<std::size_t>(n));
-    std::memcpy(v.data(), bytes_.data() + at_, v.size() * sizeof(Real));
+    if (!v.empty()) std::memcpy(v.data(), bytes_.data() + at_, v.size() * sizeof(Real));  // data() may be null
     at_ += v.size() * sizeof(Real);
     return v;
   }
