@@ -11,6 +11,7 @@ import json
 import math
 import os
 import platform
+import shutil
 import statistics
 import subprocess
 import sys
@@ -81,7 +82,25 @@ def cases():
                        ("example02_modal8", ["modal", ex2, "--speed", "100Hz", "--modes", "8"])]:
         for solver in ["auto", "dense", "sparse"]:
             out.append((f"choice_{base}_{solver}", "solver_choice", None, argv + ["--solver", solver], 1, "run"))
+    # Design studies on one core: evaluations per second per core (per_unit: the
+    # designs), and the Friswell grid on one and on two MPI processes.
+    studies = os.path.join(ROOT, "tests", "models", "studies")
+    scratch = os.path.join(ROOT, "build", "bench-studies")
+    for name, study, designs, extra in [
+            ("study_centrifuge_campbell_1thread", os.path.join(studies, "centrifuge_sobol.toml"), 64, []),
+            ("study_centrifuge_runup_1thread", os.path.join(HERE, "models", "centrifuge_runup_study.toml"), 8, []),
+            ("study_friswell_grid_1thread", os.path.join(studies, "friswell_margin_grid.toml"), 1681, [])]:
+        out.append((name, "study", None, ["study", study, "-o", os.path.join(scratch, name), "--threads", "1"],
+                    designs, "design"))
+    out.append(("study_friswell_grid_2processes", "study_mpi", None,
+                ["study", os.path.join(studies, "friswell_margin_grid.toml"), "-o",
+                 os.path.join(scratch, "study_friswell_grid_2processes"), "--threads", "1"], 1681, "design"))
     return out
+
+
+def mpi_launcher():
+    """mpirun for two processes, allowed as root and on two cores whatever their binding."""
+    return ["mpirun", "--allow-run-as-root", "-np", "2", "--oversubscribe"]
 
 
 def run_once(cmd, allowed_exit=(0,)):
@@ -124,11 +143,22 @@ def main():
         # No output files: the analysis and the program around it are measured, not
         # the writing of results (a 501-element response's JSON is tens of MB).
         cmd = [args.feran] + argv + ["--quiet"]
+        if group == "study_mpi":
+            if shutil.which("mpirun") is None:
+                continue
+            cmd = mpi_launcher() + cmd
+        # A study writes a directory, which must not hold a study already.
+        fresh = argv[argv.index("-o") + 1] if group.startswith("study") else None
         allowed = (0, 3) if name == "example01_runup" else (0,)
-        run_once(cmd, allowed)  # warm-up: file cache, shared libraries
+
+        def once():
+            if fresh:
+                shutil.rmtree(fresh, ignore_errors=True)
+            return run_once(cmd, allowed)
+        once()  # warm-up: file cache, shared libraries
         walls, cpus, mems = [], [], []
-        for _ in range(args.repeats):
-            w, c, m = run_once(cmd, allowed)
+        for _ in range(args.repeats if not group.startswith("study") else min(args.repeats, 3)):
+            w, c, m = once()
             walls.append(w)
             cpus.append(c)
             mems.append(m)
@@ -140,7 +170,7 @@ def main():
             "elements": n,
             "dofs": 6 * (n + 1) if n else None,
             "reduced_dofs": reduced_dofs(n) if n else None,
-            "repeats": args.repeats,
+            "repeats": len(walls),
             "median_s": med,
             "min_s": min(walls),
             "max_s": max(walls),
@@ -213,6 +243,16 @@ def main():
         if single in by_name and multi in by_name:
             speedups[multi] = by_name[single]["median_s"] / by_name[multi]["median_s"]
 
+    # Studies: designs per second per core, and the parallel efficiency of two MPI
+    # processes (one thread each) against one process on one thread.
+    study_rates = {r["case"]: 1e3 / r["median_per_unit_ms"]
+                   for r in results if r["group"] == "study"}
+    mpi = {}
+    one, two = by_name.get("study_friswell_grid_1thread"), by_name.get("study_friswell_grid_2processes")
+    if one and two:
+        mpi = {"one_process_s": one["median_s"], "two_processes_s": two["median_s"],
+               "speedup": one["median_s"] / two["median_s"], "efficiency": one["median_s"] / (2 * two["median_s"])}
+
     python_over_cli = {r["case"]: r["median_s"] / by_name[r["cli_case"]]["median_s"]
                        for r in results if r["group"] == "python" and r["cli_case"] in by_name}
 
@@ -235,6 +275,8 @@ def main():
         "parallel_speedup": speedups,
         "solver_choice": choice,
         "python_over_cli": python_over_cli,
+        "study_designs_per_second_per_core": study_rates,
+        "study_mpi_efficiency": mpi,
     }
     with open(args.out, "w") as f:
         json.dump(doc, f, indent=1)
