@@ -88,7 +88,7 @@ def cases():
     scratch = os.path.join(ROOT, "build", "bench-studies")
     for name, study, designs, extra in [
             ("study_centrifuge_campbell_1thread", os.path.join(studies, "centrifuge_sobol.toml"), 64, []),
-            ("study_centrifuge_runup_1thread", os.path.join(HERE, "models", "centrifuge_runup_study.toml"), 8, []),
+            ("study_centrifuge_runup_1thread", os.path.join(HERE, "studies", "centrifuge_runup_study.toml"), 8, []),
             ("study_friswell_grid_1thread", os.path.join(studies, "friswell_margin_grid.toml"), 1681, [])]:
         out.append((name, "study", None, ["study", study, "-o", os.path.join(scratch, name), "--threads", "1"],
                     designs, "design"))
