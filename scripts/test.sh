@@ -3,9 +3,9 @@
 #  1. the Release build, warnings as errors;
 #  2. a build with clang-14, AddressSanitizer and UndefinedBehaviorSanitizer, without
 #     optimisation (-O0), so that Eigen's and feran's debug assertions and memory
-#     errors are checked too. The full-length example run-ups and the command-line
-#     study test (label long_runup, minutes each when instrumented) run in the Release
-#     pass only; the run-up code itself is covered in both. It is built without debug
+#     errors are checked too. The full-length example run-ups and the long study tests
+#     (the command-line studies, with and without MPI, and the Friswell study; label
+#     long_runup, minutes each when instrumented) run in the Release pass only; the run-up code itself is covered in both. It is built without debug
 #     information (-g0): the sanitizers' reports still name the functions (rebuild
 #     with -DCMAKE_CXX_FLAGS_DEBUG=-g for file and line). clang compiles this
 #     instrumented build in half g++'s time;

@@ -3,7 +3,6 @@
 #include <exception>
 #include <map>
 
-#include <dlfcn.h>
 #include <malloc.h>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <feran/core/error.hpp>
+#include <feran/core/parallel.hpp>
 #include <feran/core/suggestions.hpp>
 #include <feran/core/text.hpp>
 
@@ -39,10 +39,7 @@ void single_threaded_blas() {
   if (openblas_set_num_threads != nullptr) openblas_set_num_threads(1);
   if (blas_thread_shutdown_ != nullptr) blas_thread_shutdown_();
 #else
-  using SetThreads = void (*)(int);
-  if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
-  using Shutdown = int (*)();
-  if (void* f = dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) reinterpret_cast<Shutdown>(f)();
+  feran::single_threaded_blas();
 #endif
 }
 

@@ -1,11 +1,11 @@
 #include "mpi_group.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <system_error>
-#include <thread>
 
 #include <dlfcn.h>
 #include <sched.h>

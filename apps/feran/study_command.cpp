@@ -1,8 +1,8 @@
 #include <csignal>
 #include <cstdio>
-#include <optional>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>

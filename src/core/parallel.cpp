@@ -15,6 +15,10 @@ namespace feran {
 void single_threaded_blas() {
   using SetThreads = void (*)(int);
   if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
+  // The worker threads started when the library loaded spin for about 0.1 s before
+  // they sleep; shutting the thread server down joins them at once.
+  using Shutdown = int (*)();
+  if (void* f = dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) reinterpret_cast<Shutdown>(f)();
 }
 
 int resolve_threads(int requested) {

@@ -275,9 +275,10 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
       if (static_cast<int>(resolved.size()) < q.n)
         throw Error(fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
                                 "the amplitude falls to 1/√2 of it on both sides within the sweep)",
-                                ordinal(q.n), q.low || q.high ? fmt::format(" between {} and {}", rpm(curve.speeds.front()),
-                                                                             rpm(curve.speeds.back()))
-                                                              : std::string(),
+                                ordinal(q.n),
+                                q.low || q.high ? fmt::format(" between {} and {}", rpm(q.low.value_or(0)),
+                                                              q.high ? rpm(*q.high) : std::string("the sweep's end"))
+                                                : std::string(),
                                 resolved.size()));
       const auto& peak = resolved[static_cast<std::size_t>(q.n - 1)];
       if (q.kind == QuantityKind::amplification_factor) return peak.amplification_factor;

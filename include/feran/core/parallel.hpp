@@ -12,8 +12,9 @@ namespace feran {
 /// the points of a sweep and the designs of a study on threads of its own; OpenBLAS's
 /// threads inside each small dense solve only compete with them, and spin for a while
 /// after each call (a Campbell study on two cores ran six times slower with them).
-/// Programs linking the library call it once at start (the command line, the Python
-/// module and the tests do). Looked up at run time: other BLAS builds lack it.
+/// Also shuts OpenBLAS's thread server down, joining the threads it started when it
+/// loaded. Programs linking the library call it once at start (the command line, the
+/// Python module and the tests do). Looked up at run time: other BLAS builds lack it.
 void single_threaded_blas();
 
 /// Number of threads a sweep uses when asked for @p requested: the hardware

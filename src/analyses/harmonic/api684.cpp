@@ -29,11 +29,10 @@ std::vector<ResponsePeak> response_peaks(std::span<const Real> speeds, std::span
   const std::size_t n = s.size();
   std::vector<ResponsePeak> peaks;
   for (std::size_t k = 0; k < n; ++k) {
-    const bool rises = k == 0 ? false : a[k] > a[k - 1];
-    const bool holds = k + 1 == n ? true : a[k] >= a[k + 1];
-    // The first point of the sweep is a peak only when the curve falls from it; it
-    // has no lower half-power point then.
-    if (!(rises && holds) && !(k == 0 && n > 1 && a[0] > a[1])) continue;
+    // The first point is a peak when the curve falls from it, the last when it rose
+    // to it; neither has a half-power point beyond the sweep.
+    const bool peak = k == 0 ? n > 1 && a[0] > a[1] : a[k] > a[k - 1] && (k + 1 == n || a[k] >= a[k + 1]);
+    if (!peak) continue;
     ResponsePeak p;
     p.speed = s[k];
     p.amplitude = a[k];

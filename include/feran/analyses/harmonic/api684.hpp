@@ -29,7 +29,8 @@ struct ResponsePeak {
 
 /// The peaks of @p amplitude (at the increasing @p speeds), in order of speed: points
 /// higher than the point before and at least as high as the one after (the first of
-/// a flat top). Throws feran::Error for sizes that differ or speeds not increasing.
+/// a flat top); the first point when the curve falls from it, the last when it rose
+/// to it. Throws feran::Error for sizes that differ or speeds not increasing.
 std::vector<ResponsePeak> response_peaks(std::span<const Real> speeds, std::span<const Real> amplitude);
 
 /// The separation margin API 617 (8th ed.) and API 684 (2nd ed.) require of a
