@@ -48,3 +48,20 @@ save(feran.plot.forces(feran.response(centrifuge, stop="60 Hz", points=241)), "f
 runup = feran.runup(centrifuge, probe="rotor")
 save(feran.plot.runup_envelope(runup), "runup_envelope")
 save(feran.plot.waterfall(runup, probe="rotor", fmax=150), "waterfall")
+
+# A design study of Friswell et al.'s Example 5.9.1 rotor: bearing span and stiffness
+# against the separation margin of its critical speeds from 2900-3300 rpm.
+friswell = feran.read_model(os.path.join(root, "tests", "models", "studies", "friswell_5_9_1.toml"))
+stiffness = ["springs[bearing 1].ky", "springs[bearing 1].kz", "springs[bearing 2].ky", "springs[bearing 2].kz"]
+study = feran.Study(friswell, variables=[
+    {"name": "span", "path": "shafts[shaft].sections[2].length", "lower": "0.2 m", "upper": "0.4 m"},
+    {"name": "k", "paths": stiffness, "lower": "10 MN/m", "upper": "100 MN/m", "scale": "log"}],
+    quantities=[{"name": "margin", "kind": "separation_margin", "operating": ["2900 rpm", "3300 rpm"]},
+                {"name": "first critical", "kind": "critical_speed", "unit": "rpm"},
+                {"name": "stiffness", "function": lambda m: m["springs[bearing 1].ky"]}],
+    objectives=[{"quantity": "margin", "sense": "maximise"}, {"quantity": "stiffness", "sense": "minimise"}],
+    explore={"method": "sobol", "samples": 128})
+designs = study.run()
+save(feran.plot.pareto_front(designs), "study_pareto_front")
+save(feran.plot.parallel_coordinates(designs), "study_parallel_coordinates")
+save(feran.plot.response_surface(designs, "span", "k", "margin"), "study_response_surface")

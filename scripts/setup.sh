@@ -13,6 +13,7 @@ packages=(
   clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers (scripts/fuzz.sh)
   libpagmo-dev  # the optimisers of design studies (pagmo2, built without NLopt)
   libopenmpi-dev openmpi-bin  # feran study over the processes of an MPI job (apps/feran/mpi/)
+  python3-distributed  # feran.Study on a dask.distributed cluster (python/feran/study.py)
 )
 
 missing=()

@@ -60,7 +60,7 @@ Runner add_study_command(CLI::App& app) {
       "study", "Run a design study: designs from a grid, a Latin hypercube or a Sobol' sequence or an optimiser, "
                "evaluated on all cores, or on the processes of an MPI job (mpirun -np N feran study ...)");
   cmd->footer(
-      "Example:\n  feran study examples/04_design_study/bearing_study.toml -o out/bearing_study\n\n"
+      "Example:\n  feran study examples/04_stiffness_schedule/schedule.study.toml -o out/schedule\n\n"
       "The study file (docs/study-format.md) names a base model, design variables (parameter paths\n"
       "with bounds), quantities, objectives and constraints. Every evaluation is appended to\n"
       "DIR/evaluations.jsonl and DIR/evaluations.csv as it completes; an interrupted study\n"

@@ -9,9 +9,12 @@ import json as _json
 
 import numpy as _np
 
+from ._toml import keys_toml as _keys_toml
+
 from ._feran import (CampbellResult, Error, Interrupted, ModalResult, Model, ModelError, ParameterError,
-                     ResponseResult, RunupResult, StaticResult, campbell, modal, read_model, response,
-                     runup, static)
+                     ResponseResult, RunupResult, StaticResult, StudyResult, campbell, modal, read_model,
+                     response, runup, static)
+from .study import Study, read_study
 
 
 def _to_dict(result):
@@ -54,6 +57,18 @@ def _response_frame(r):
     return _pd().DataFrame(columns)
 
 
+def _study_frame(r):
+    """One row per design: index, the variables' values and the quantities (SI; NaN
+    for a design that failed), evaluated, feasible, message and seconds."""
+    columns = {"index": r.index}
+    for j, name in enumerate(r.variable_names):
+        columns[name] = r.values[:, j]
+    for j, name in enumerate(r.quantity_names):
+        columns[name] = r.quantities[:, j]
+    columns.update(evaluated=r.evaluated, feasible=r.feasible, message=r.messages, seconds=r.seconds)
+    return _pd().DataFrame(columns)
+
+
 def _static_frame(r):
     """One row per node: x and the six displacements."""
     frame = _pd().DataFrame(r.displacement, columns=list(_DOFS))
@@ -87,35 +102,6 @@ _ENTRIES = {"material": "materials", "shaft": "shafts", "node": "nodes", "rigid_
             "rigid_link": "rigid_links", "fixed": "fixed", "unbalance": "unbalances", "force": "forces",
             "static_load": "static_loads"}
 _TABLES = ("options", "modal", "campbell", "response", "static", "runup")
-
-
-def _toml_key(key):
-    key = key[:-1] if key.endswith("_") and key[:-1] in ("from",) else key
-    return key if key and all(c.isalnum() or c in "_-" for c in key) else _json.dumps(key)
-
-
-def _toml_value(value, where):
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, (int, _np.integer)):
-        return str(int(value))
-    if isinstance(value, (float, _np.floating)):
-        x = float(value)
-        return "nan" if x != x else ("inf" if x == float("inf") else "-inf" if x == -float("inf") else repr(x))
-    if isinstance(value, str):
-        return _json.dumps(value)  # JSON's escapes are TOML's
-    if isinstance(value, dict):
-        return "{" + ", ".join(f"{_toml_key(k)} = {_toml_value(v, f'{where}.{k}')}" for k, v in value.items()) + "}"
-    if isinstance(value, (list, tuple, _np.ndarray)):
-        return "[" + ", ".join(_toml_value(v, f"{where}[{i}]") for i, v in enumerate(value)) + "]"
-    raise TypeError(f"{where}: {type(value).__name__} is not a value of a model (a number, text, true/false, "
-                    f"a list or a dict)")
-
-
-def _keys_toml(keys, call):
-    if not all(isinstance(k, str) for k in keys):
-        raise TypeError(f"{call}: keys are text")
-    return "\n".join(f"{_toml_key(k)} = {_toml_value(v, f'{call}: {k}')}" for k, v in keys.items()) + "\n"
 
 
 def _call_name(method, keys):
@@ -182,10 +168,11 @@ def _pd():
 
 for _result, _frame in ((ModalResult, _modal_frame), (CampbellResult, _campbell_frame),
                         (ResponseResult, _response_frame), (StaticResult, _static_frame),
-                        (RunupResult, _runup_frame)):
-    _result.to_dict = _to_dict
+                        (RunupResult, _runup_frame), (StudyResult, _study_frame)):
+    if hasattr(_result, "to_json"):
+        _result.to_dict = _to_dict
     _result.to_pandas = _frame
 
 __all__ = ["CampbellResult", "Error", "Interrupted", "ModalResult", "Model", "ModelError", "ParameterError",
-           "ResponseResult", "RunupResult", "StaticResult", "campbell", "modal", "read_model", "response",
-           "runup", "static"]
+           "ResponseResult", "RunupResult", "StaticResult", "Study", "StudyResult", "campbell", "modal",
+           "read_model", "read_study", "response", "runup", "static"]

@@ -434,3 +434,119 @@ def waterfall(result, probe=0, dof="v", window=None, unit="Hz", orders=(1,), fma
     ax.zaxis.set_major_formatter(EngFormatter(unit="m" if _dof(dof) < 3 else "rad"))
     ax.set_title(f"waterfall at {result.probes[probe] if isinstance(probe, int) else probe}")
     return fig
+
+
+# -- design studies ----------------------------------------------------------------
+
+def _study_column(result, name):
+    """The values of a variable or quantity of a study result by name, its label (name
+    and SI unit) and whether the variable is on a log scale."""
+    study = result._study
+    if name in study.variable_names:
+        j = study.variable_names.index(name)
+        unit = study.variable_units[j]
+        return result.values[:, j], f"{name} [{unit}]" if unit else name, study.variable_log[j]
+    if name in study.quantity_names:
+        j = study.quantity_names.index(name)
+        unit = study.quantity_units[j]
+        return result.quantities[:, j], f"{name} [{unit}]" if unit else name, False
+    raise ValueError(f"{name!r} is neither a variable ({', '.join(study.variable_names)}) nor a quantity "
+                     f"({', '.join(study.quantity_names)}) of the study")
+
+
+def pareto_front(result, x=None, y=None, ax=None):
+    """The designs of a study in the plane of two quantities (default its first two
+    objectives): the feasible ones as dots, the infeasible ones as crosses, and the
+    Pareto set (the study's, in its objectives) joined in order of x."""
+    objectives = [name for name, _ in result._study.objectives]
+    if x is None or y is None:
+        if len(objectives) < 2:
+            raise ValueError("pareto_front: the study has fewer than two objectives; give x= and y=")
+        x, y = x or objectives[0], y or objectives[1]
+    xs, xlabel, _ = _study_column(result, x)
+    ys, ylabel, _ = _study_column(result, y)
+    fig, ax = _axes(ax)
+    ok, bad = result.feasible, result.evaluated & ~result.feasible
+    ax.plot(xs[ok], ys[ok], ".", color="0.6", label="feasible", gid="feasible")
+    if bad.any():
+        ax.plot(xs[bad], ys[bad], "x", color="tab:red", ms=4, label="infeasible", gid="infeasible")
+    front = np.asarray(result.pareto, dtype=int)
+    front = front[np.argsort(xs[front], kind="stable")]
+    ax.plot(xs[front], ys[front], "o-", color="tab:blue", label=f"Pareto set ({len(front)})", gid="pareto")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title("Pareto front")
+    ax.legend()
+    return fig
+
+
+def parallel_coordinates(result, columns=None, colour=None, ax=None):
+    """One line per evaluated design through its variables and quantities (default all
+    of them), each axis scaled from its smallest to its largest value (a log-scaled
+    variable in its decades), coloured by ``colour`` (default the first objective);
+    infeasible designs grey. The axes' ranges are written at their ends."""
+    study = result._study
+    columns = list(columns) if columns else list(study.variable_names) + list(study.quantity_names)
+    if colour is None and study.objectives:
+        colour = study.objectives[0][0]
+    rows = np.flatnonzero(result.evaluated)
+    fig, ax = _axes(ax, size=(max(6, 1.6 * len(columns)), 4.5))
+    scaled = np.empty((len(rows), len(columns)))
+    for k, name in enumerate(columns):
+        v, _, log = _study_column(result, name)
+        v = np.log10(v[rows]) if log else v[rows]
+        lo, hi = (v.min(), v.max()) if len(v) else (0.0, 1.0)
+        scaled[:, k] = (v - lo) / (hi - lo) if hi > lo else 0.5
+        shown = (10 ** lo, 10 ** hi) if log else (lo, hi)
+        ax.text(k, -0.04, f"{shown[0]:.4g}", ha="center", va="top", fontsize=7)
+        ax.text(k, 1.04, f"{shown[1]:.4g}", ha="center", va="bottom", fontsize=7)
+    c = _study_column(result, colour)[0][rows] if colour else np.zeros(len(rows))
+    feasible = result.feasible[rows]
+    ticks = np.arange(len(columns))
+    grey = [np.column_stack([ticks, s]) for s, f in zip(scaled, feasible) if not f]
+    if grey:
+        ax.add_collection(LineCollection(grey, colors="0.8", lw=0.6, gid="infeasible"))
+    good = LineCollection([np.column_stack([ticks, s]) for s, f in zip(scaled, feasible) if f], lw=0.9,
+                          cmap="viridis", gid="feasible")
+    good.set_array(c[feasible])
+    ax.add_collection(good)
+    if colour and feasible.any():
+        fig.colorbar(good, ax=ax, label=_study_column(result, colour)[1])
+    for k in ticks:
+        ax.axvline(k, color="k", lw=0.8)
+    ax.set_xticks(ticks, columns, rotation=20)
+    ax.set_xlim(-0.2, len(columns) - 0.8)
+    ax.set_ylim(-0.12, 1.12)
+    ax.set_yticks([])
+    ax.set_title("parallel coordinates")
+    return fig
+
+
+def response_surface(result, x, y, quantity, levels=15, ax=None):
+    """A quantity over two variables: filled contours over the evaluated designs
+    (linear interpolation on their Delaunay triangulation, in the variables' own
+    scales: any sample or grid), the designs as dots and the best feasible one of a
+    single-objective study as a star."""
+    import matplotlib.tri as mtri
+    xs, xlabel, xlog = _study_column(result, x)
+    ys, ylabel, ylog = _study_column(result, y)
+    zs, zlabel, _ = _study_column(result, quantity)
+    ok = result.evaluated & np.isfinite(zs)
+    if ok.sum() < 3:
+        raise ValueError("response_surface: fewer than three evaluated designs")
+    u = np.log10(xs[ok]) if xlog else xs[ok]
+    v = np.log10(ys[ok]) if ylog else ys[ok]
+    fig, ax = _axes(ax)
+    triangles = mtri.Triangulation(u, v)
+    filled = ax.tricontourf(triangles, zs[ok], levels=levels, cmap="viridis")
+    fig.colorbar(filled, ax=ax, label=zlabel)
+    ax.plot(u, v, ".", color="k", ms=2, gid="designs")
+    best = result.best if len(result._study.objectives) == 1 else None
+    if best is not None:
+        bu = np.log10(xs[best]) if xlog else xs[best]
+        bv = np.log10(ys[best]) if ylog else ys[best]
+        ax.plot([bu], [bv], "*", color="tab:red", ms=12, gid="best")
+    ax.set_xlabel(f"log10 {xlabel}" if xlog else xlabel)
+    ax.set_ylabel(f"log10 {ylabel}" if ylog else ylabel)
+    ax.set_title(f"{quantity} over {x} and {y}")
+    return fig

@@ -16,4 +16,5 @@ PYBIND11_MODULE(_feran, m) {
   feran::python::bind_response(m);
   feran::python::bind_static(m);
   feran::python::bind_runup(m);
+  feran::python::bind_study(m);
 }

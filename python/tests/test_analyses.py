@@ -16,7 +16,8 @@ import feran
 
 SOURCE = os.environ.get("FERAN_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 FERAN = os.environ.get("FERAN_PROGRAM", os.path.join(SOURCE, "build", "feran"))
-EXAMPLES = sorted(glob.glob(os.path.join(SOURCE, "examples", "*", "*.toml")))
+EXAMPLES = sorted(p for p in glob.glob(os.path.join(SOURCE, "examples", "*", "*.toml"))
+                  if not p.endswith(".study.toml"))  # the models, not the design studies
 RTOL = 1e-12
 
 # (analysis, command-line options, the same as Python keywords)

@@ -24,17 +24,6 @@ using nlohmann::json;
 namespace {
 
 const char* scale_name(VariableScale s) { return s == VariableScale::log ? "log" : "linear"; }
-const char* method_name(ExploreMethod m) {
-  switch (m) {
-    case ExploreMethod::grid: return "grid";
-    case ExploreMethod::latin_hypercube: return "latin_hypercube";
-    case ExploreMethod::sobol: return "sobol";
-    case ExploreMethod::optimise: return "optimise";
-    case ExploreMethod::pareto: return "pareto";
-  }
-  return "?";
-}
-
 std::string si_unit_of(const std::optional<Quantity>& q) { return q ? std::string(si_unit(*q)) : std::string(); }
 
 json number(Real x) { return std::isfinite(x) ? json(x) : json(nullptr); }
@@ -81,6 +70,10 @@ std::string study_json(const StudySpec& study) {
   json variables = json::array(), quantities = json::array();
   for (const auto& v : study.variables) {
     json j = {{"name", v.name}, {"paths", v.paths}, {"unit", si_unit_of(v.quantity)}};
+    if (!v.factors.empty()) {
+      j["factors"] = v.factors;
+      j["offsets"] = v.offsets;
+    }
     if (v.discrete()) j["values"] = v.values;
     else j.update({{"lower", v.lower}, {"upper", v.upper}, {"scale", scale_name(v.scale)}});
     variables.push_back(j);
@@ -98,7 +91,7 @@ std::string study_json(const StudySpec& study) {
     constraints.push_back(j);
   }
   const auto& x = study.explore;
-  json explore = {{"method", method_name(x.method)}, {"seed", x.seed}};
+  json explore = {{"method", to_string(x.method)}, {"seed", x.seed}};
   if (x.method == ExploreMethod::grid) explore["levels"] = x.levels;
   else if (x.method == ExploreMethod::latin_hypercube || x.method == ExploreMethod::sobol) explore["samples"] = x.samples;
   else {

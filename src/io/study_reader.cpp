@@ -1,5 +1,7 @@
 #include <feran/io/study_reader.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -19,7 +21,8 @@ using detail::join_list;
 
 class StudyReader {
  public:
-  StudyReader(const toml::table& root, const std::string& path) : root_(root, "", path), path_(path) {}
+  StudyReader(const toml::table& root, const std::string& path, const StudyCode* code)
+      : root_(root, "", path), path_(path), code_(code) {}
 
   StudyFile read() {
     root_.check_keys({"title", "model", "settings", "variables", "quantities", "objectives", "constraints", "explore"});
@@ -27,19 +30,26 @@ class StudyReader {
     file.path = path_;
     auto& study = file.study;
     study.title = root_.string("title").value_or("");
-    const auto& model_node = root_.require("model", "the path of the base model file, a string");
-    const auto model = model_node.value<std::string>();
-    if (!model) root_.fail(model_node, fmt::format("'model' must be a string (a file path), got {}", detail::type_name(model_node)));
-    study.model_path = *model;
-    namespace fs = std::filesystem;
-    fs::path model_path(*model);
-    if (model_path.is_relative()) model_path = fs::path(path_).parent_path() / model_path;
-    try {
-      file.base = read_model_file(model_path.lexically_normal().string());
-    } catch (const ModelError&) {
-      throw;
-    } catch (const Error& e) {
-      root_.fail(model_node, e.what());
+    if (code_ != nullptr) {
+      if (const auto* m = root_.find("model"))
+        root_.fail(*m, "a study built in code is given its base model; it has no 'model' key");
+      study.model_path = code_->model_name;
+      file.base = code_->base;
+    } else {
+      const auto& model_node = root_.require("model", "the path of the base model file, a string");
+      const auto model = model_node.value<std::string>();
+      if (!model) root_.fail(model_node, fmt::format("'model' must be a string (a file path), got {}", detail::type_name(model_node)));
+      study.model_path = *model;
+      namespace fs = std::filesystem;
+      fs::path model_path(*model);
+      if (model_path.is_relative()) model_path = fs::path(path_).parent_path() / model_path;
+      try {
+        file.base = read_model_file(model_path.lexically_normal().string());
+      } catch (const ModelError&) {
+        throw;
+      } catch (const Error& e) {
+        root_.fail(model_node, e.what());
+      }
     }
     study.base = file.base.spec;
     read_settings(study, file.base);
@@ -98,15 +108,30 @@ class StudyReader {
       v.name = t.required_string("name", "the variable's name, a string");
       if (t.has("path") == t.has("paths")) t.fail_here("give either 'path' (one parameter path) or 'paths' (tied ones)");
       std::vector<const toml::node*> path_nodes;
+      std::vector<const toml::table*> maps;  // per path: its { factor, offset } table, or none
       if (t.has("path")) {
         v.paths.push_back(t.required_string("path", "a parameter path"));
         path_nodes.push_back(t.find("path"));
       } else {
         const auto& array = t.required_array("paths", "parameter paths, strings");
+        int k = 0;
         for (const auto& p : array) {
-          if (!p.is_string()) t.fail(p, fmt::format("'paths' must hold strings, got {}", detail::type_name(p)));
-          v.paths.push_back(*p.value<std::string>());
-          path_nodes.push_back(&p);
+          if (p.is_string()) {
+            v.paths.push_back(*p.value<std::string>());
+            path_nodes.push_back(&p);
+            maps.push_back(nullptr);
+          } else if (const auto* map = p.as_table()) {
+            // { path = "...", factor = F, offset = O }: the path is set to O + F·value.
+            TableReader m(*map, fmt::format("{} paths[{}]", t.context(), k), path_);
+            m.check_keys({"path", "factor", "offset"});
+            v.paths.push_back(m.required_string("path", "a parameter path"));
+            path_nodes.push_back(m.find("path"));
+            maps.push_back(map);
+          } else {
+            t.fail(p, fmt::format("'paths' must hold parameter paths (strings) or tables {{ path = \"...\", factor = F, "
+                                  "offset = O }}, got {}", detail::type_name(p)));
+          }
+          ++k;
         }
         if (v.paths.empty()) t.fail(*t.find("paths"), "'paths' needs at least one parameter path");
       }
@@ -124,6 +149,24 @@ class StudyReader {
         } else if (p.quantity != v.quantity) {
           t.fail(*path_nodes[k], fmt::format("'{}' is not of the same kind as '{}': tied paths take one value",
                                              v.paths[k], v.paths[0]));
+        }
+      }
+      if (std::any_of(maps.begin(), maps.end(), [](const toml::table* m) { return m != nullptr; })) {
+        for (std::size_t k = 0; k < maps.size(); ++k) {
+          Real factor = 1.0, offset = 0.0;
+          if (maps[k] != nullptr) {
+            TableReader m(*maps[k], fmt::format("{} paths[{}]", t.context(), k), path_);
+            factor = m.number("factor").value_or(1.0);
+            if (!std::isfinite(factor) || factor == 0.0)
+              m.fail(*m.find("factor"), "'factor' must be a finite number other than 0");
+            if (const auto* o = m.find("offset")) {
+              if (v.quantity) offset = m.quantity_at(*o, "offset", *v.quantity).si;
+              else if (const auto x = o->value<double>(); x && (o->is_integer() || o->is_floating_point())) offset = *x;
+              else m.fail(*o, fmt::format("'offset' must be a number, got {}", detail::type_name(*o)));
+            }
+          }
+          v.factors.push_back(factor);
+          v.offsets.push_back(offset);
         }
       }
       if (const auto unit = t.string("unit")) v.unit = *unit;
@@ -180,6 +223,9 @@ class StudyReader {
         t.fail(kind_node, message);
       }
       q.kind = *kind;
+      if (q.kind == QuantityKind::function && code_ == nullptr)
+        t.fail(kind_node, "a quantity of kind \"function\" is computed by code: it belongs to studies built in code "
+                          "(the Python package's feran.Study), not to study files");
       const bool damping = q.kind == QuantityKind::min_damping_ratio || q.kind == QuantityKind::min_log_decrement ||
                            q.kind == QuantityKind::damping_ratio || q.kind == QuantityKind::log_decrement;
       q.whirl = damping ? WhirlSelection::any : WhirlSelection::forward;
@@ -339,12 +385,15 @@ class StudyReader {
 
   TableReader root_;
   const std::string& path_;
+  const StudyCode* code_;
   const std::vector<QuantitySpec>* quantities_ = nullptr;
 };
 
 }  // namespace
 
-StudyFile read_study_string(std::string_view toml_text, const std::string& path) {
+namespace {
+
+StudyFile read_study(std::string_view toml_text, const std::string& path, const StudyCode* code) {
   toml::table root;
   try {
     root = toml::parse(toml_text, std::string_view{path});
@@ -352,7 +401,17 @@ StudyFile read_study_string(std::string_view toml_text, const std::string& path)
     throw ModelError(SourceLocation{path, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
                      fmt::format("TOML syntax error: {}", e.description()));
   }
-  return StudyReader(root, path).read();
+  return StudyReader(root, path, code).read();
+}
+
+}  // namespace
+
+StudyFile read_study_string(std::string_view toml_text, const std::string& path) {
+  return read_study(toml_text, path, nullptr);
+}
+
+StudyFile read_study_string(std::string_view toml_text, const std::string& path, const StudyCode& code) {
+  return read_study(toml_text, path, &code);
 }
 
 StudyFile read_study_file(const std::string& path) { return read_study_string(read_text_file(path), path); }

@@ -34,7 +34,8 @@ ModelSpec apply_design(const ModelSpec& base, std::span<const DesignVariable> va
                        std::span<const Real> values) {
   ModelSpec spec = base;
   for (std::size_t i = 0; i < variables.size(); ++i)
-    for (const auto& path : variables[i].paths) set_parameter(spec, path, values[i]);
+    for (std::size_t k = 0; k < variables[i].paths.size(); ++k)
+      set_parameter(spec, variables[i].paths[k], variables[i].path_value(k, values[i]));
   return spec;
 }
 
@@ -46,6 +47,9 @@ void check_variables(std::span<const DesignVariable> variables) {
     if (!names.insert(v.name).second)
       throw SpecError(here + ".name", fmt::format("the name '{}' is used by another variable", v.name));
     if (v.paths.empty()) throw SpecError(here + ".paths", "a variable needs at least one parameter path");
+    if ((!v.factors.empty() || !v.offsets.empty()) &&
+        (v.factors.size() != v.paths.size() || v.offsets.size() != v.paths.size()))
+      throw SpecError(here + ".paths", "a factor and an offset for each path, or none");
     if (v.discrete()) {
       if (std::any_of(v.values.begin(), v.values.end(), [](Real x) { return !std::isfinite(x); }))
         throw SpecError(here + ".values", "every value must be finite");

@@ -17,7 +17,7 @@ namespace feran {
 
 namespace {
 
-constexpr std::array<std::pair<QuantityKind, std::string_view>, 18> kind_names{{
+constexpr std::array<std::pair<QuantityKind, std::string_view>, 19> kind_names{{
     {QuantityKind::critical_speed, "critical_speed"},
     {QuantityKind::separation_margin, "separation_margin"},
     {QuantityKind::min_damping_ratio, "min_damping_ratio"},
@@ -36,6 +36,7 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 18> kind_names{{
     {QuantityKind::runup_spring_force, "runup_spring_force"},
     {QuantityKind::rotor_mass, "rotor_mass"},
     {QuantityKind::parameter, "parameter"},
+    {QuantityKind::function, "function"},
 }};
 
 bool uses_response(QuantityKind k) {
@@ -327,6 +328,9 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
     }
     case QuantityKind::rotor_mass: return rotating_mass(a.model());
     case QuantityKind::parameter: return get_parameter(a.spec(), q.path).value;
+    case QuantityKind::function:
+      if (!q.function || !*q.function) throw Error("no function is given for it (a quantity of kind \"function\" is computed by code, e.g. feran.Study's quantities)");
+      return (*q.function)(a.spec(), a.model());
   }
   throw Error("unknown quantity");
 }

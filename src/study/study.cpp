@@ -37,6 +37,17 @@ std::vector<Real> costs(const StudySpec& study, const Evaluation& e) {
 
 }  // namespace
 
+std::string_view to_string(ExploreMethod method) {
+  switch (method) {
+    case ExploreMethod::grid: return "grid";
+    case ExploreMethod::latin_hypercube: return "latin_hypercube";
+    case ExploreMethod::sobol: return "sobol";
+    case ExploreMethod::optimise: return "optimise";
+    case ExploreMethod::pareto: return "pareto";
+  }
+  return "?";
+}
+
 Evaluation evaluate_design(const StudySpec& study, Index index, std::span<const Real> unit, const StopToken& stop) {
   const auto start = std::chrono::steady_clock::now();
   Evaluation e;

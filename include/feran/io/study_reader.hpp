@@ -28,4 +28,16 @@ StudyFile read_study_file(const std::string& path);
 /// paths are taken from its directory.
 StudyFile read_study_string(std::string_view toml_text, const std::string& path);
 
+/// What a study built in code (the Python package's feran.Study) has that a study
+/// file does not: its base model, given instead of the file's 'model' key (which it
+/// must not have), and quantities of kind "function", whose code the caller attaches
+/// to QuantitySpec::function after reading.
+struct StudyCode {
+  ModelFile base;
+  std::string model_name;  ///< how outputs name the base model (StudySpec::model_path)
+};
+
+/// Reads a study built in code from TOML text (@p path names it in messages).
+StudyFile read_study_string(std::string_view toml_text, const std::string& path, const StudyCode& code);
+
 }  // namespace feran

@@ -25,6 +25,10 @@ enum class VariableScale { linear, log };
 struct DesignVariable {
   std::string name;
   std::vector<std::string> paths;  ///< parameter paths, all set to the variable's value
+  /// Per path (both empty: 1 and 0 for all): path k is set to offsets[k] +
+  /// factors[k]·value, for paths tied by a linear relation instead of equal (an
+  /// arctan law's c0 and c1 from one remaining stiffness fraction).
+  std::vector<Real> factors, offsets;
   Real lower = 0.0, upper = 0.0;   ///< bounds in SI units (continuous variables)
   VariableScale scale = VariableScale::linear;
   std::vector<Real> values;        ///< discrete values in SI units; empty: continuous
@@ -32,6 +36,8 @@ struct DesignVariable {
   std::string unit;                ///< the unit values are shown in (e.g. "N/m"); empty: SI
 
   bool discrete() const { return !values.empty(); }
+  /// The value path @p k takes when the variable is @p value.
+  Real path_value(std::size_t k, Real value) const { return factors.empty() ? value : offsets[k] + factors[k] * value; }
   /// Number of distinct values (discrete), 0 for a continuous variable.
   Index levels() const { return static_cast<Index>(values.size()); }
 };
@@ -44,7 +50,7 @@ Real value_at(const DesignVariable& v, Real t);
 /// The values of all variables at unit coordinates @p t (one per variable).
 std::vector<Real> design_values(std::span<const DesignVariable> variables, std::span<const Real> t);
 
-/// @p base with every variable's paths set to its value. Throws ParameterError for a
+/// @p base with every variable's paths set to its value (path_value()). Throws ParameterError for a
 /// path that names nothing settable (checked when the study is read, so that this is
 /// found before any analysis runs).
 ModelSpec apply_design(const ModelSpec& base, std::span<const DesignVariable> variables,

@@ -7,6 +7,8 @@
 /// change them by parameter path, e.g. campbell.stop), each at most once per design
 /// however many quantities use it, on one thread (studies run designs side by side).
 
+#include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -40,7 +42,14 @@ enum class QuantityKind {
   runup_spring_force,   ///< largest lateral force of a spring (or of all) during the run-up [N]
   rotor_mass,           ///< mass of the rotating parts [kg]
   parameter,            ///< a number of the design's model, by its parameter path (its SI unit)
+  function,             ///< a function given in code (the Python package's feran.Study) [its own unit]
 };
+
+/// A quantity computed by the caller's code from the design's model (its
+/// specification and the model built from it). Called on the study's worker threads,
+/// side by side: it must be safe to call concurrently. Throws for a design it cannot
+/// evaluate (the design is recorded as failed with the message).
+using QuantityFunction = std::function<Real(const ModelSpec& spec, const Model& model)>;
 
 /// Which modes a modal quantity looks at.
 enum class WhirlSelection { forward, backward, any };
@@ -59,6 +68,7 @@ struct QuantitySpec {
   std::string path;              ///< parameter: the parameter path
   std::optional<Quantity> value_kind;  ///< parameter: the kind of its value (none: a number)
   std::string unit;              ///< unit the value is shown in ("rpm", "mm"); empty: SI
+  std::shared_ptr<const QuantityFunction> function;  ///< function: the code computing it
 };
 
 /// The kind of @p q's value: quantity_kind_unit(q.kind), or for a parameter its kind.

@@ -14,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -46,6 +47,9 @@ enum class ExploreMethod {
   optimise,         ///< one objective: a global method, then a local polish (pagmo2)
   pareto,           ///< several objectives: NSGA-II's Pareto set (pagmo2)
 };
+
+/// "grid", "latin_hypercube", "sobol", "optimise", "pareto" (as a study file names them).
+std::string_view to_string(ExploreMethod method);
 
 /// The global method of an optimisation.
 enum class GlobalAlgorithm {

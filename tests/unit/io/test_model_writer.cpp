@@ -26,7 +26,8 @@ std::vector<std::string> valid_model_files() {
                                 std::string(FERAN_SOURCE_DIR) + "/bench/models",
                                 std::string(FERAN_TEST_MODELS) + "/valid"})
     for (const auto& entry : fs::recursive_directory_iterator(dir))
-      if (entry.path().extension() == ".toml") files.push_back(entry.path().string());
+      if (entry.path().extension() == ".toml" && !entry.path().string().ends_with(".study.toml"))
+        files.push_back(entry.path().string());  // every model, not the studies
   std::sort(files.begin(), files.end());
   return files;
 }

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <feran/core/error.hpp>
+#include <feran/io/model_reader.hpp>
 #include <feran/io/study_reader.hpp>
+#include <feran/spec/parameters.hpp>
+#include <feran/study/study.hpp>
 
 namespace feran {
 namespace {
@@ -101,6 +104,77 @@ TEST(StudyReader, LocatesEachMistake) {
 TEST(StudyReader, ReportsAMissingModelAtTheModelKey) {
   const auto message = error_at("model = \"no/such/model.toml\"\n" + variable + quantity, 1);
   EXPECT_NE(message.find("no/such/model.toml"), std::string::npos);
+}
+
+TEST(StudyReader, AFunctionQuantityBelongsToStudiesBuiltInCode) {
+  // In a study file it is refused where it is named.
+  EXPECT_NE(error_at(study(variable + "[[quantities]]\nname = \"f\"\nkind = \"function\"\n"), 11)
+                .find("studies built in code"),
+            std::string::npos);
+  // Built in code: the base model is given (a 'model' key is refused), and the
+  // function the caller attaches sees each design's own model.
+  StudyCode code;
+  code.base = read_model_file(model);
+  code.model_name = "centrifuge";
+  const std::string body = variable + "[[quantities]]\nname = \"f\"\nkind = \"function\"\n"
+                           "[explore]\nmethod = \"grid\"\nlevels = 3\n";
+  try {
+    read_study_string("model = \"m.toml\"\n" + body, "<study>", code);
+    ADD_FAILURE() << "a study built in code took a 'model' key";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.where().line, 1);
+    EXPECT_NE(e.message().find("given its base model"), std::string::npos) << e.message();
+  }
+  auto file = read_study_string(body, "<study>", code);
+  EXPECT_EQ(file.study.model_path, "centrifuge");
+  ThreadEvaluator evaluator(2);
+  // Without its function a design fails with the reason.
+  const auto none = run_exploration(file.study, evaluator, {}, {}, 3);
+  ASSERT_EQ(none.size(), 3u);
+  EXPECT_NE(none[0].message.find("no function is given"), std::string::npos) << none[0].message;
+  file.study.quantities[0].function = std::make_shared<const QuantityFunction>(
+      [](const ModelSpec& spec, const Model& built) {
+        EXPECT_EQ(built.name, spec.title);
+        return get_parameter(spec, "springs[bearing k12].kz").value;
+      });
+  const auto all = run_exploration(file.study, evaluator, {}, {}, 3);
+  ASSERT_EQ(all.size(), 3u);
+  for (const auto& e : all) {
+    ASSERT_TRUE(e.evaluated) << e.message;
+    EXPECT_EQ(e.quantities[0], e.values[0]);
+  }
+  EXPECT_EQ(all[0].values[0], 1e6);
+  EXPECT_EQ(all[2].values[0], 1e8);
+}
+
+TEST(StudyReader, PathsTiedByALinearRelation) {
+  // The bearing's ky the variable's value, its kz 0.8 of it plus 1 MN/m.
+  const auto file = read_study_string(
+      study("[[variables]]\nname = \"k\"\npaths = [\"springs[bearing k12].ky\",\n"
+            "  { path = \"springs[bearing k12].kz\", factor = 0.8, offset = \"1 MN/m\" }]\n"
+            "lower = \"1e6 N/m\"\nupper = \"1e8 N/m\"\n" + quantity),
+      "s.toml");
+  const auto& v = file.study.variables.at(0);
+  ASSERT_EQ(v.factors.size(), 2u);
+  const ModelSpec spec = apply_design(file.study.base, file.study.variables, std::vector<Real>{2e7});
+  EXPECT_EQ(get_parameter(spec, "springs[bearing k12].ky").value, 2e7);
+  EXPECT_EQ(get_parameter(spec, "springs[bearing k12].kz").value, 1e6 + 0.8 * 2e7);
+  // Mistakes, where they were written.
+  const std::string head = "[[variables]]\nname = \"k\"\npaths = [\"springs[bearing k12].ky\",\n";
+  EXPECT_NE(error_at(study(head + "  { path = \"springs[bearing k12].kz\", factor = 0 }]\nlower = 1\nupper = 2\n" +
+                           quantity), 6)
+                .find("'factor' must be a finite number other than 0"),
+            std::string::npos);
+  EXPECT_NE(error_at(study(head + "  { path = \"springs[bearing k12].kz\", scale = 2 }]\nlower = 1\nupper = 2\n" +
+                           quantity), 6)
+                .find("unknown key 'scale'"),
+            std::string::npos);
+  EXPECT_NE(error_at(study(head + "  { path = \"springs[bearing k12].kz\", offset = \"1 kg\" }]\nlower = 1\nupper = 2\n" +
+                           quantity), 6)
+                .find("stiffness"),
+            std::string::npos);
+  EXPECT_NE(error_at(study(head + "  3]\nlower = 1\nupper = 2\n" + quantity), 6).find("'paths' must hold"),
+            std::string::npos);
 }
 
 }  // namespace
