@@ -250,7 +250,7 @@ class StudyReader {
         if (!(q.operating_low > 0 && q.operating_low <= q.operating_high))
           t.fail(*t.find("operating"), "'operating' must be [low, high] with 0 < low ≤ high");
       } else if (q.kind == QuantityKind::separation_margin || q.kind == QuantityKind::required_margin ||
-                 q.kind == QuantityKind::margin_surplus) {
+                 q.kind == QuantityKind::margin_surplus || q.kind == QuantityKind::min_margin_surplus) {
         t.fail_here(fmt::format("a {} needs 'operating' = [low, high], the operating speed range", to_string(q.kind)));
       }
       if (const auto s = t.quantity("speed", Quantity::speed)) q.speed = s->si;

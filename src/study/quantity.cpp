@@ -17,7 +17,7 @@ namespace feran {
 
 namespace {
 
-constexpr std::array<std::pair<QuantityKind, std::string_view>, 19> kind_names{{
+constexpr std::array<std::pair<QuantityKind, std::string_view>, 20> kind_names{{
     {QuantityKind::critical_speed, "critical_speed"},
     {QuantityKind::separation_margin, "separation_margin"},
     {QuantityKind::min_damping_ratio, "min_damping_ratio"},
@@ -30,6 +30,7 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 19> kind_names{{
     {QuantityKind::amplification_factor, "amplification_factor"},
     {QuantityKind::required_margin, "required_margin"},
     {QuantityKind::margin_surplus, "margin_surplus"},
+    {QuantityKind::min_margin_surplus, "min_margin_surplus"},
     {QuantityKind::peak_spring_force, "peak_spring_force"},
     {QuantityKind::peak_stress, "peak_stress"},
     {QuantityKind::runup_peak, "runup_peak"},
@@ -41,7 +42,8 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 19> kind_names{{
 
 bool uses_response(QuantityKind k) {
   return k == QuantityKind::peak_response || k == QuantityKind::peak_spring_force || k == QuantityKind::peak_stress ||
-         k == QuantityKind::amplification_factor || k == QuantityKind::required_margin || k == QuantityKind::margin_surplus;
+         k == QuantityKind::amplification_factor || k == QuantityKind::required_margin || k == QuantityKind::margin_surplus ||
+         k == QuantityKind::min_margin_surplus;
 }
 bool uses_runup(QuantityKind k) { return k == QuantityKind::runup_peak || k == QuantityKind::runup_spring_force; }
 
@@ -268,24 +270,35 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
     }
     case QuantityKind::amplification_factor:
     case QuantityKind::required_margin:
-    case QuantityKind::margin_surplus: {
+    case QuantityKind::margin_surplus:
+    case QuantityKind::min_margin_surplus: {
       const auto curve = probe_curve(a, q);
       std::vector<ResponsePeak> resolved;
       for (const auto& p : response_peaks(curve.speeds, curve.amplitude))
         if (p.resolved()) resolved.push_back(p);
-      if (static_cast<int>(resolved.size()) < q.n)
+      const int needed = q.kind == QuantityKind::min_margin_surplus ? 1 : q.n;
+      if (static_cast<int>(resolved.size()) < needed)
         throw Error(fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
                                 "the amplitude falls to 1/√2 of it on both sides within the sweep)",
-                                ordinal(q.n),
+                                ordinal(needed),
                                 q.low || q.high ? fmt::format(" between {} and {}", rpm(q.low.value_or(0)),
                                                               q.high ? rpm(*q.high) : std::string("the sweep's end"))
                                                 : std::string(),
                                 resolved.size()));
+      const auto surplus = [&](const ResponsePeak& peak) {
+        return separation_margin(peak.speed, q.operating_low, q.operating_high) -
+               required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
+      };
+      if (q.kind == QuantityKind::min_margin_surplus) {
+        Real least = surplus(resolved.front());
+        for (const auto& peak : resolved) least = std::min(least, surplus(peak));
+        return least;
+      }
       const auto& peak = resolved[static_cast<std::size_t>(q.n - 1)];
       if (q.kind == QuantityKind::amplification_factor) return peak.amplification_factor;
       const Real required = required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
       if (q.kind == QuantityKind::required_margin) return required;
-      return separation_margin(peak.speed, q.operating_low, q.operating_high) - required;
+      return surplus(peak);
     }
     case QuantityKind::peak_spring_force: {
       const auto& r = a.response();

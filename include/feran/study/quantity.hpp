@@ -36,6 +36,7 @@ enum class QuantityKind {
   amplification_factor, ///< API 684 amplification factor (half-power) of the n-th resonance peak at a probe [-]
   required_margin,      ///< the separation margin API 617 requires of that peak from the operating range [-]
   margin_surplus,       ///< that peak's separation margin less the required one: ≥ 0 passes [-]
+  min_margin_surplus,   ///< the smallest margin_surplus of every resonance peak at the probe: ≥ 0 all pass [-]
   peak_spring_force,    ///< largest lateral force of a spring (or of all) over the response [N]
   peak_stress,          ///< largest equivalent (von Mises) shaft stress over the response [Pa]
   runup_peak,           ///< largest |r| at a probe during the run-up [m]
