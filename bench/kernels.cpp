@@ -1,13 +1,12 @@
 // Google Benchmark kernels: the inner pieces of feran's analyses on the Friswell 5.9.1
 // rotor (bench/models, written by make_models.py) meshed with 6 to 501 elements.
 // See bench/README.md.
-#include <dlfcn.h>
-
 #include <benchmark/benchmark.h>
 
 #include <map>
 #include <string>
 
+#include <feran/core/parallel.hpp>
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/transient/integrator.hpp>
@@ -125,8 +124,7 @@ BENCHMARK_CAPTURE(BM_TimeStep, ros34pw2, std::string("ros34pw2"))->Apply(sizes)-
 // As the feran program does: a threaded OpenBLAS would spin threads of its own inside
 // the small dense solves (seen as half the time in sched_yield), so use one thread.
 int main(int argc, char** argv) {
-  using SetThreads = void (*)(int);
-  if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
+  feran::single_threaded_blas();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
