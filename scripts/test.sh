@@ -12,7 +12,7 @@
 #     information (-g0): the sanitizers' reports still name the functions (rebuild
 #     with -DCMAKE_CXX_FLAGS_DEBUG=-g for file and line). clang compiles this
 #     instrumented build in half g++'s time;
-#  3. the two fuzzing harnesses (libFuzzer) for a minute each from the seed corpus
+#  3. the two fuzzing harnesses (libFuzzer) for 30 s each from the seed corpus
 #     (scripts/fuzz.sh, docs/fuzzing.md), linked against the same instrumented library:
 #     the sanitizer build carries libFuzzer's coverage instrumentation (FERAN_FUZZ).
 set -euo pipefail
@@ -35,5 +35,5 @@ stage "the sanitizer build"
 ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long_runup
 stage "the sanitizer tests"
 
-bash scripts/fuzz.sh 60 build-sanitize
-stage "fuzzing (build and 2 x 60 s)"
+bash scripts/fuzz.sh 30 build-sanitize
+stage "fuzzing (build and 2 x 30 s)"
