@@ -81,6 +81,18 @@ class Study:
                  settings=None, title=""):
         if isinstance(model, str):
             model = read_model(model)
+        where = self._describe(model, variables, quantities, objectives, constraints, explore, settings, title)
+        try:
+            self._core = _Study.from_code(self._text, model, self._model_name, self._functions)
+        except ModelError as e:
+            if e.file != "<study>":
+                raise
+            raise _located(e, where) from None
+
+    def _describe(self, model, variables, quantities, objectives, constraints, explore, settings, title):
+        """Keeps what rebuilds the study elsewhere (a dask worker): the model and the
+        study as TOML text, the Python functions by quantity name. Returns the path of
+        each line of the text, to locate the reader's messages."""
         functions, entries = {}, []
         for i, q in enumerate(quantities):
             q = dict(q)
@@ -93,35 +105,29 @@ class Study:
                     raise Error(f"quantities[{i}]: a quantity needs a 'name'")
                 functions[q["name"]] = f
             entries.append(q)
-        text, where = _study_toml(title, settings, (("variables", variables), ("quantities", entries),
-                                                    ("objectives", objectives), ("constraints", constraints)), explore)
+        self._text, where = _study_toml(title, settings, (("variables", variables), ("quantities", entries),
+                                                          ("objectives", objectives), ("constraints", constraints)),
+                                        explore)
         self._model_text = model.to_toml()
         self._model_name = model.path if model.path not in ("<code>", "<string>") else "<code>"
-        self._text = text
         self._functions = functions
-        try:
-            self._core = _Study.from_code(text, model, self._model_name, functions)
-        except ModelError as e:
-            if e.file != "<study>":
-                raise
-            raise _located(e, where) from None
+        return where
 
     @classmethod
     def read(cls, path):
         """The study of a study file (its model read relative to it): the file's errors
         are located in it as `feran study` locates them."""
-        import os
         import tomllib
-        core = _Study.read(path)  # checks the file, with its locations
+        study = cls.__new__(cls)
+        study._core = _Study.read(path)  # read and checked once, its errors located in the file
         with open(path, "rb") as f:
             data = tomllib.load(f)
-        model_path = os.path.join(os.path.dirname(path), data["model"])
-        model = read_model(model_path)
-        study = cls(model, variables=data.get("variables", ()), quantities=data.get("quantities", ()),
-                    objectives=data.get("objectives", ()), constraints=data.get("constraints", ()),
-                    explore=data.get("explore"), settings=data.get("settings"), title=data.get("title", ""))
+        # The base model as read, its settings applied (applying them again on a worker
+        # sets the same values).
+        study._describe(study._core.base_model(), data.get("variables", ()),
+                        data.get("quantities", ()), data.get("objectives", ()), data.get("constraints", ()),
+                        data.get("explore"), data.get("settings"), data.get("title", ""))
         study._model_name = data["model"]
-        study._core = core
         return study
 
     # -- what it is --------------------------------------------------------------------

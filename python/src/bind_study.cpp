@@ -224,21 +224,11 @@ void bind_study(py::module_& m) {
       .def_static("from_code", &from_code, py::arg("toml"), py::arg("model"), py::arg("model_name"),
                   py::arg("functions"), "A study of a model given in code; functions: quantity name -> f(model)")
       .def_property_readonly("title", [](const PyStudy& s) { return s.study().title; })
-      .def_property_readonly("model_path", [](const PyStudy& s) { return s.study().model_path; })
       .def_property_readonly("variable_names", [](const PyStudy& s) {
         return string_list(s.study().variables.size(), [&](std::size_t i) { return s.study().variables[i].name; });
       })
       .def_property_readonly("variable_units", [](const PyStudy& s) {
         return string_list(s.study().variables.size(), [&](std::size_t i) { return unit_of(s.study().variables[i].quantity); });
-      })
-      .def_property_readonly("variable_bounds", [](const PyStudy& s) {
-        py::list out;
-        for (const auto& v : s.study().variables) {
-          if (v.discrete()) out.append(py::make_tuple(*std::min_element(v.values.begin(), v.values.end()),
-                                                      *std::max_element(v.values.begin(), v.values.end())));
-          else out.append(py::make_tuple(v.lower, v.upper));
-        }
-        return out;
       })
       .def_property_readonly("variable_log", [](const PyStudy& s) {
         py::list out;

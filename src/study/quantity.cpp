@@ -285,9 +285,11 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
                                                               q.high ? rpm(*q.high) : std::string("the sweep's end"))
                                                 : std::string(),
                                 resolved.size()));
+      const auto required = [&](const ResponsePeak& peak) {
+        return required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
+      };
       const auto surplus = [&](const ResponsePeak& peak) {
-        return separation_margin(peak.speed, q.operating_low, q.operating_high) -
-               required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
+        return separation_margin(peak.speed, q.operating_low, q.operating_high) - required(peak);
       };
       if (q.kind == QuantityKind::min_margin_surplus) {
         Real least = surplus(resolved.front());
@@ -296,9 +298,7 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
       }
       const auto& peak = resolved[static_cast<std::size_t>(q.n - 1)];
       if (q.kind == QuantityKind::amplification_factor) return peak.amplification_factor;
-      const Real required = required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
-      if (q.kind == QuantityKind::required_margin) return required;
-      return surplus(peak);
+      return q.kind == QuantityKind::required_margin ? required(peak) : surplus(peak);
     }
     case QuantityKind::peak_spring_force: {
       const auto& r = a.response();
