@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/harmonic/api684.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
@@ -402,27 +403,5 @@ std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
   return values;
 }
 
-Real rotating_mass(const Model& model) {
-  const OperatingPoint rest{};
-  Real mass = 0;
-  for (const auto& element : model.elements) {
-    const auto m = element.local_matrices(rest);
-    if (m.M.size() == 0) continue;
-    Vector r = Vector::Zero(static_cast<Index>(m.dofs.size()));
-    for (std::size_t i = 0; i < m.dofs.size(); ++i) {
-      const Index node = m.dofs[i] / dofs_per_node;
-      if (m.dofs[i] % dofs_per_node == static_cast<Index>(Dof::v) && model.nodes[static_cast<std::size_t>(node)].rotating)
-        r(static_cast<Index>(i)) = 1.0;
-    }
-    mass += r.dot(m.M * r);
-  }
-  return mass;
-}
-
-Real separation_margin(Real critical, Real low, Real high) {
-  if (critical < low) return (low - critical) / low;
-  if (critical > high) return (critical - high) / high;
-  return -std::min((critical - low) / low, (high - critical) / high);
-}
 
 }  // namespace feran

@@ -91,13 +91,4 @@ std::vector<std::string_view> quantity_kind_names();
 std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
                                       std::span<const QuantitySpec> quantities, const StopToken& stop = {});
 
-/// Mass of the rotating parts of @p model [kg]: rᵀ M r for r the unit lateral
-/// translation of every rotating node.
-Real rotating_mass(const Model& model);
-
-/// Relative distance of @p critical from the operating range [low, high]:
-/// (low − c)/low below it, (c − high)/high above it, and minus the smaller of the two
-/// inside it (API 684's separation margin, as a fraction).
-Real separation_margin(Real critical, Real low, Real high);
-
 }  // namespace feran

@@ -78,4 +78,26 @@ Real required_separation_margin(Real af, Real critical, Real low, Real high) {
   return above ? std::min(0.26, 0.10 + base) : std::min(0.16, base);
 }
 
+Real separation_margin(Real critical, Real low, Real high) {
+  if (critical < low) return (low - critical) / low;
+  if (critical > high) return (critical - high) / high;
+  return -std::min((critical - low) / low, (high - critical) / high);
+}
+
+std::vector<SeparationCheck> separation_checks(std::span<const Real> speeds, std::span<const Real> amplitude, Real low,
+                                               Real high) {
+  std::vector<SeparationCheck> out;
+  for (const ResponsePeak& p : response_peaks(speeds, amplitude)) {
+    SeparationCheck c;
+    c.peak = p;
+    c.actual_margin = separation_margin(p.speed, low, high);
+    if (p.resolved()) {
+      c.required_margin = required_separation_margin(p.amplification_factor, p.speed, low, high);
+      c.passes = c.actual_margin >= c.required_margin;
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
 }  // namespace feran

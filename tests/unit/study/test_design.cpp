@@ -1,6 +1,7 @@
 // Design variables: their mapping from the unit cube, and setting tied paths.
 #include <gtest/gtest.h>
 
+#include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/core/error.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/spec/parameters.hpp>

@@ -40,4 +40,24 @@ std::vector<ResponsePeak> response_peaks(std::span<const Real> speeds, std::span
 /// inside it, the rule of the nearer end.
 Real required_separation_margin(Real af, Real critical, Real low, Real high);
 
+/// Relative distance of @p critical from the operating range [low, high]:
+/// (low − c)/low below it, (c − high)/high above it, and minus the smaller of the two
+/// inside it (API 684's separation margin, as a fraction).
+Real separation_margin(Real critical, Real low, Real high);
+
+/// A resonance peak read against the operating range.
+struct SeparationCheck {
+  ResponsePeak peak;
+  Real actual_margin = 0;  ///< separation_margin() of the peak's speed
+  /// required_separation_margin(); none when the peak has no half-power points.
+  std::optional<Real> required_margin;
+  /// actual ≥ required; none for a peak without an amplification factor (a peak the
+  /// sweep cuts or that rides on another's shoulder: it cannot be judged).
+  std::optional<bool> passes;
+};
+
+/// Every peak of @p amplitude over @p speeds with its margins from [@p low, @p high].
+std::vector<SeparationCheck> separation_checks(std::span<const Real> speeds, std::span<const Real> amplitude, Real low,
+                                               Real high);
+
 }  // namespace feran
