@@ -34,6 +34,7 @@ Runner add_static_command(CLI::App& app);
 Runner add_runup_command(CLI::App& app);
 Runner add_params_command(CLI::App& app);
 Runner add_study_command(CLI::App& app);
+Runner add_api684_command(CLI::App& app);
 
 /// The model an analysis reads: its file and the parameters set on the command line.
 struct ModelArgs {

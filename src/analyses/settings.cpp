@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -120,6 +121,105 @@ void check_analysis_tables(const ModelSpec& spec) {
   if (const auto m = detail::closest_match(name, names, 2))
     message += fmt::format("; did you mean \"{}\"?", *m);
   throw SpecError("runup.integrator", message);
+}
+
+namespace {
+
+// The rotating node where the first forward lateral mode at @p speed moves most.
+Index largest_motion_node(const Model& model, Real speed) {
+  ModalOptions mo;
+  mo.oscillatory_only = true;
+  const ModalResult r = run_modal(model, speed, mo);
+  for (const Mode& m : r.modes) {
+    if (m.type != ModeType::lateral || !(m.directivity > 0.05)) continue;
+    Index best = -1;
+    Real largest = -1;
+    for (Index n = 0; n < model.n_nodes(); ++n) {
+      if (!model.nodes[static_cast<std::size_t>(n)].rotating) continue;
+      const Real a = std::norm(m.shape(global_dof(n, Dof::v))) + std::norm(m.shape(global_dof(n, Dof::w)));
+      if (a > largest) largest = a, best = n;
+    }
+    if (best >= 0) return best;
+  }
+  throw Error("the rotor has no forward lateral mode at the maximum continuous speed to place the cross-coupling "
+              "at; give [api684] stability_node");
+}
+
+}  // namespace
+
+Api684Options api684_settings(const Model& model, const ModelSpec& file, const Api684Request& request) {
+  const Api684Spec& f = file.api684;
+  const std::optional<Real> low = request.min_speed ? request.min_speed : f.min_speed;
+  const std::optional<Real> high = request.max_speed ? request.max_speed : f.max_speed;
+  if (!low || !high)
+    throw Error("the API 684 analyses need the operating speed range: give [api684] min_speed and max_speed, or "
+                "--min-speed and --max-speed");
+  checked<Api684Spec>(request.min_speed, "min_speed", "--min-speed");
+  checked<Api684Spec>(request.max_speed, "max_speed", "--max-speed");
+  checked<Api684Spec>(request.stop, "stop", "--stop");
+  checked<Api684Spec>(request.map_low, "map_low", "--map-low");
+  checked<Api684Spec>(request.map_high, "map_high", "--map-high");
+  checked<Api684Spec>(request.anticipated_q, "anticipated_q", "--anticipated-q");
+  checked_count<Api684Spec>(request.points, "points", "--points");
+  checked_count<Api684Spec>(request.modes, "modes", "--modes");
+  checked_count<Api684Spec>(request.map_points, "map_points", "--map-points");
+  checked_count<Api684Spec>(request.map_criticals, "map_criticals", "--map-criticals");
+  if (*high < *low)
+    throw Error(fmt::format("the maximum continuous speed ({:.6g} rpm) is below the minimum operating speed "
+                            "({:.6g} rpm)",
+                            *high * 30 / std::numbers::pi, *low * 30 / std::numbers::pi));
+  Api684Options o;
+  o.low = *low;
+  o.high = *high;
+  const Real stop = request.stop.value_or(f.stop.value_or(2 * *high));
+  const int points = request.points.value_or(f.points.value_or(401));
+  for (int i = 0; i < points; ++i) o.speeds.push_back(stop * i / (points - 1));
+  o.modes = request.modes.value_or(f.modes.value_or(2));
+  o.model_unbalance = request.model_unbalance.value_or(f.unbalance.value_or("4W/N") == "model");
+  o.unbalance_multiple = request.unbalance_multiple.value_or(f.unbalance_multiple.value_or(1.0));
+  checked<Api684Spec>(request.unbalance_multiple, "unbalance_multiple", "--unbalance-multiple");
+  o.probes = request.probes;
+  if (o.probes.empty())
+    for (const NodeRef& p : f.probes) o.probes.push_back(node_index(model, p));
+  o.bearings = request.bearings;
+  if (o.bearings.empty())
+    for (const std::string& name : f.bearings) o.bearings.push_back(spring_element(model, name));
+  if (o.bearings.empty()) o.bearings = support_springs(model);
+  StaticRequest gravity;
+  gravity.loads = true;
+  o.gravity = static_settings(file.static_, gravity);
+  o.n_threads = request.n_threads;
+
+  if (request.map) {
+    CriticalSpeedMapOptions map;
+    map.springs = o.bearings;
+    // Two decades either side of the bearings' mean lateral stiffness at the
+    // maximum continuous speed (geometric mean over bearings and directions).
+    Real log_sum = 0;
+    int count = 0;
+    for (const Index e : o.bearings)
+      if (const auto t = model.elements[static_cast<std::size_t>(e)].transmission(*high))
+        for (const Dof d : {Dof::v, Dof::w})
+          if (const Real k = (*t).K(static_cast<Index>(d), static_cast<Index>(d)); k > 0) log_sum += std::log(k), ++count;
+    const Real centre = count > 0 ? std::exp(log_sum / count) : 1e7;
+    map.k_low = request.map_low.value_or(f.map_low.value_or(centre / 100));
+    map.k_high = request.map_high.value_or(f.map_high.value_or(centre * 100));
+    map.points = request.map_points.value_or(f.map_points.value_or(41));
+    map.criticals = request.map_criticals.value_or(f.map_criticals.value_or(4));
+    map.curve_stop = stop;
+    map.n_threads = request.n_threads;
+    o.map = map;
+  }
+  if (request.stability) {
+    StabilitySweepOptions s;
+    s.speed = *high;
+    s.node = request.stability_node ? *request.stability_node
+             : f.stability_node     ? node_index(model, *f.stability_node)
+                                    : largest_motion_node(model, *high);
+    s.anticipated = request.anticipated_q ? request.anticipated_q : f.anticipated_q;
+    o.stability = s;
+  }
+  return o;
 }
 
 std::vector<std::string> range_warnings(const Model& model, Real low, Real high) {

@@ -130,6 +130,9 @@ class Builder {
   void check_analysis_tables() const;
   void check_static() const;
   void check_runup() const;
+  void check_api684() const;
+  // Each of @p names is the name of one [[springs]] entry, none twice (at @p key[i]).
+  void check_spring_names(const std::vector<std::string>& names, const std::string& key) const;
   void check_structure(BuildInfo* info);
 
   const ModelSpec& spec_;
@@ -936,6 +939,7 @@ void Builder::check_analysis_tables() const {
   distinct_nodes(spec_.response.probes, "response.probes", "probes");
   check_static();
   check_runup();
+  check_api684();
 }
 
 void Builder::check_static() const {
@@ -1020,13 +1024,17 @@ void Builder::check_runup() const {
   }
   distinct_nodes(r.probes, "runup.probes", "probes");
 
+  check_spring_names(r.springs, "runup.springs");
+}
+
+void Builder::check_spring_names(const std::vector<std::string>& names, const std::string& key) const {
   std::vector<std::string> named;
   for (const SpringSpec& s : spec_.springs)
     if (!s.name.empty() && std::find(named.begin(), named.end(), s.name) == named.end())
       named.push_back(s.name);
-  for (std::size_t i = 0; i < r.springs.size(); ++i) {
-    const std::string& name = r.springs[i];
-    const std::string at = element("runup.springs", i);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string& name = names[i];
+    const std::string at = element(key, i);
     const auto count = std::count_if(spec_.springs.begin(), spec_.springs.end(),
                                      [&](const SpringSpec& s) { return s.name == name; });
     if (count > 1)
@@ -1050,10 +1058,25 @@ void Builder::check_runup() const {
         message += fmt::format("; the named springs are {}", join_list(named, "and", '\''));
       fail(at, message);
     }
-    if (std::find(r.springs.begin(), r.springs.begin() + static_cast<std::ptrdiff_t>(i), name) !=
-        r.springs.begin() + static_cast<std::ptrdiff_t>(i))
-      fail(at, fmt::format("spring '{}' appears twice in 'springs'", name));
+    if (std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(i), name) !=
+        names.begin() + static_cast<std::ptrdiff_t>(i))
+      fail(at, fmt::format("spring '{}' appears twice in '{}'", name, key.substr(key.rfind('.') + 1)));
   }
+}
+
+void Builder::check_api684() const {
+  const Api684Spec& a = spec_.api684;
+  check_bounds(a, "api684");
+  if (a.min_speed && a.max_speed && *a.max_speed < *a.min_speed)
+    fail("api684.max_speed", fmt::format("'max_speed' ({}) must not be below 'min_speed' ({})",
+                                         shown("api684.max_speed", *a.max_speed, Quantity::speed, "rpm"),
+                                         shown("api684.min_speed", *a.min_speed, Quantity::speed, "rpm")));
+  if (a.map_low && a.map_high && !(*a.map_high > *a.map_low))
+    fail("api684.map_high", fmt::format("'map_high' ({}) must be above 'map_low' ({})",
+                                        shown("api684.map_high", *a.map_high, Quantity::stiffness),
+                                        shown("api684.map_low", *a.map_low, Quantity::stiffness)));
+  distinct_nodes(a.probes, "api684.probes", "probes");
+  check_spring_names(a.bearings, "api684.bearings");
 }
 
 void Builder::check_structure(BuildInfo* info) {

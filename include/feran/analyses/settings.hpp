@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
@@ -155,6 +156,32 @@ struct RunupRequest {
 /// duration, or a non-positive time.
 TransientOptions runup_settings(const Model& model, const RunupSpec& file,
                                 const RunupRequest& request);
+
+// ---------------------------------------------------------------------------------
+
+struct Api684Request {
+  std::optional<Real> min_speed, max_speed;  ///< [rad/s]; default [api684], required
+  std::optional<Real> stop;                  ///< [rad/s]; default [api684], else 2·max_speed
+  std::optional<int> points;                 ///< default [api684], else 401
+  std::optional<int> modes;                  ///< default [api684], else 2
+  std::optional<bool> model_unbalance;       ///< default [api684] unbalance = "model", else 4W/N
+  std::optional<Real> unbalance_multiple;    ///< default [api684], else 1
+  std::vector<Index> probes;                 ///< empty: [api684] probes, else the default
+  std::vector<Index> bearings;               ///< elements; empty: [api684] bearings, else support_springs()
+  bool map = true;                           ///< the critical speed map
+  std::optional<Real> map_low, map_high;     ///< [N/m]; default [api684], else the bearings' k/100 and ×100
+  std::optional<int> map_points;             ///< default [api684], else 41
+  std::optional<int> map_criticals;          ///< default [api684], else 4
+  bool stability = true;                     ///< the level I stability sweep
+  std::optional<Index> stability_node;       ///< default [api684], else where the first forward mode moves most
+  std::optional<Real> anticipated_q;         ///< [N/m]; default [api684]
+  int n_threads = 1;                         ///< 0: all cores
+};
+
+/// The options of run_api684() from @p request, the file's [api684] and [static]
+/// tables (gravity for the journal loads) and the defaults. Throws Error without an
+/// operating range or with a maximum below the minimum.
+Api684Options api684_settings(const Model& model, const ModelSpec& file, const Api684Request& request);
 
 /// Checks what only the analyses know about a spec's analysis tables — today that
 /// [runup] integrator names an integrator of the registry (make_integrator()) —

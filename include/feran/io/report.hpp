@@ -33,6 +33,10 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
 std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,
                          const ResultSource& source, double wall_seconds = -1);
 
+/// The API 617 / API 684 analyses: journal loads, per unbalance case the peaks with
+/// their amplification factors and margins, the map's intersections, level I stability.
+std::string api684_report(const Api684Result& result, const Model& model, const ResultSource& source);
+
 /// Table of a model's settable parameters: path, value with unit, meaning.
 std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source);
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
@@ -50,6 +51,9 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
 /// CSV text of a static result: one row per shaft station (element end) with the
 /// displacements of its node, the section forces and the stresses.
 std::string static_csv(const StaticResult& result, const Model& model);
+
+/// JSON text of the API 617 / API 684 analyses (feran api684).
+std::string api684_json(const Api684Result& result, const Model& model, const ResultSource& source);
 
 /// JSON text of a model's settable parameters (feran params).
 std::string parameters_json(const std::vector<Parameter>& parameters, const ResultSource& source);

@@ -92,7 +92,7 @@ using FieldTable = std::vector<Field<S>>;
 /// The field table of spec type S. Defined for ModelSpec (top-level keys), OptionsSpec,
 /// MaterialSpec, ShaftSpec, SectionSpec, NodeSpec, RigidBodySpec, SpringSpec,
 /// RotatingDamperSpec, FrictionSpec, RigidLinkSpec, FixedSpec, UnbalanceSpec, ForceSpec,
-/// StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec and RunupSpec.
+/// StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec and Api684Spec.
 template <class S>
 const FieldTable<S>& fields_of();
 
@@ -153,6 +153,7 @@ void visit_tables(Spec& spec, F&& f) {
   f("response", table, "defaults for a steady-state (harmonic) response", spec.response);
   f("static", table, "gravity and defaults for a static analysis", spec.static_);
   f("runup", table, "speed profile and defaults for a run-up (transient) analysis", spec.runup);
+  f("api684", table, "operating range and settings of the API 617 / API 684 analyses", spec.api684);
 }
 
 /// Calls f(key, doc, children) for the arrays of sub-tables of an entry of spec type

@@ -228,6 +228,22 @@ struct RunupSpec {
   bool operator==(const RunupSpec&) const = default;
 };
 
+/// [api684]: the operating range and settings of the API 617 / API 684 analyses.
+struct Api684Spec {
+  std::optional<Real> min_speed, max_speed;  ///< the operating range [rad/s]
+  std::optional<Real> stop;                  ///< last speed of the unbalance responses [rad/s]
+  std::optional<int> points, modes;
+  std::optional<std::string> unbalance;      ///< "4W/N" or "model"
+  std::optional<Real> unbalance_multiple;
+  std::vector<NodeRef> probes;
+  std::vector<std::string> bearings;         ///< names of [[springs]] entries
+  std::optional<Real> map_low, map_high;     ///< [N/m]
+  std::optional<int> map_points, map_criticals;
+  std::optional<NodeRef> stability_node;
+  std::optional<Real> anticipated_q;         ///< [N/m]
+  bool operator==(const Api684Spec&) const = default;
+};
+
 /// A whole model file.
 struct ModelSpec {
   std::string title;
@@ -249,6 +265,7 @@ struct ModelSpec {
   ResponseSpec response;
   StaticSpec static_;  ///< the [static] table ("static" is a C++ keyword)
   RunupSpec runup;
+  Api684Spec api684;
   bool operator==(const ModelSpec&) const = default;
 };
 
