@@ -11,9 +11,9 @@ import numpy as _np
 
 from ._toml import keys_toml as _keys_toml
 
-from ._feran import (CampbellResult, Error, Interrupted, ModalResult, Model, ModelError, ParameterError,
-                     ResponseResult, RunupResult, StaticResult, StudyResult, campbell, modal, read_model,
-                     response, runup, static)
+from ._feran import (Api684Result, CampbellResult, Error, Interrupted, ModalResult, Model, ModelError,
+                     ParameterError, ResponseResult, RunupResult, StaticResult, StudyResult, api684, campbell,
+                     modal, read_model, response, runup, static)
 from .study import Study, read_study
 
 
@@ -101,7 +101,7 @@ _ENTRIES = {"material": "materials", "shaft": "shafts", "node": "nodes", "rigid_
             "spring": "springs", "rotating_damper": "rotating_dampers", "friction": "friction",
             "rigid_link": "rigid_links", "fixed": "fixed", "unbalance": "unbalances", "force": "forces",
             "static_load": "static_loads"}
-_TABLES = ("options", "modal", "campbell", "response", "static", "runup")
+_TABLES = ("options", "modal", "campbell", "response", "static", "runup", "api684")
 
 
 def _call_name(method, keys):
@@ -126,8 +126,8 @@ for _entry, _table in _ENTRIES.items():
 
 
 def _set_table(self, table, **keys):
-    """Sets the single table [options], [modal], [campbell], [response], [static] or
-    [runup] to these keys (those not given take their defaults); returns the model."""
+    """Sets the single table [options], [modal], [campbell], [response], [static],
+    [runup] or [api684] to these keys (those not given take their defaults); returns the model."""
     if table not in _TABLES:
         raise Error(f"set_table({table!r}): expected one of {', '.join(_TABLES)}")
     call = f"set_table({table!r})"

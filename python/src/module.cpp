@@ -15,6 +15,7 @@ PYBIND11_MODULE(_feran, m) {
   feran::python::bind_campbell(m);
   feran::python::bind_response(m);
   feran::python::bind_static(m);
+  feran::python::bind_api684(m);
   feran::python::bind_runup(m);
   feran::python::bind_study(m);
 }

@@ -193,3 +193,36 @@ def test_to_pandas_holds_the_arrays():
     np.testing.assert_array_equal(s.to_pandas()["v"], s.displacement[:, 1])
     u = feran.runup(model, speed="10 Hz", duration="0.02 s", probe="rotor")
     np.testing.assert_array_equal(u.to_pandas()["rotor.r"], u.magnitude[0])
+
+
+API684 = os.path.join(SOURCE, "examples", "05_api684_bearings", "model.toml")
+
+
+def test_api684_equals_the_command_line_and_its_arrays_hold_its_numbers(tmp_path):
+    options = ["--min-speed", "9000rpm", "--max-speed", "11000rpm", "--anticipated-q", "2e6", "--points", "201",
+               "--map-points", "11"]
+    r = feran.api684(feran.read_model(API684), min_speed="9000 rpm", max_speed="11000 rpm",
+                     anticipated_q="2 MN/m", points=201, map_points=11)
+    cli = cli_json(tmp_path, "api684", API684, options)
+    same(json.loads(r.to_json()), cli)
+    rpm = 30 / math.pi
+    np.testing.assert_allclose(r.undamped_criticals * rpm, [c["speed_rpm"] for c in cli["undamped_criticals"]],
+                               rtol=RTOL)
+    for case, jc in zip(r.cases, cli["cases"]):
+        assert case["passes"] == jc["passes"]
+        for i, probe in enumerate(jc["probes"]):
+            np.testing.assert_allclose(case["amplitude"][i], probe["amplitude_m"], rtol=RTOL)
+    np.testing.assert_allclose(r.map["criticals"][:, 0] * rpm, cli["map"]["criticals_rpm"][0], rtol=RTOL)
+    assert r.stability["q_zero"] == pytest.approx(cli["stability"]["q_zero_n_per_m"], rel=RTOL)
+    assert r.passes == cli["separation_margins_pass"]
+
+
+def test_api684_reads_its_table_and_reports_bad_arguments():
+    model = feran.read_model(API684).set_table("api684", min_speed="9000 rpm", max_speed="11000 rpm")
+    r = feran.api684(model, points=51, map=False, stability=False)
+    assert r.map is None and r.stability is None
+    assert r.max_speed == pytest.approx(11000 * math.pi / 30)
+    with pytest.raises(feran.Error, match="unbalance: must be '4W/N' or 'model'"):
+        feran.api684(model, unbalance="5W/N")
+    with pytest.raises(feran.Error, match="operating speed range"):
+        feran.api684(feran.read_model(API684))
