@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages feran needs to build, test and plot.
+# Installs the Debian 12 packages feran needs to build, test and plot, and the
+# front-end packages of its HTML reports from npm (package-lock.json).
 # Idempotent: prints nothing and changes nothing when everything is present.
 set -euo pipefail
 
@@ -14,7 +15,11 @@ packages=(
   libpagmo-dev  # the optimisers of design studies (pagmo2, built without NLopt)
   libopenmpi-dev openmpi-bin  # feran study over the processes of an MPI job (apps/feran/mpi/)
   python3-distributed  # feran.Study on a dask.distributed cluster (python/feran/study.py)
+  chromium  # the browser tests of the HTML reports (tests/browser/)
 )
+# Node.js and npm install the reports' front-end packages; a machine that has them
+# from elsewhere (a newer Node.js) keeps its own.
+command -v npm >/dev/null || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -22,7 +27,22 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# plotly.js (inlined into every report at build time) and playwright-core (which
+# drives Debian's Chromium in the browser tests; it downloads no browser of its own),
+# at the versions of the lock file. Installed again only when the lock file changed.
+install_front_end() {
+  local stamp="$root/node_modules/.package-lock.json"  # written by npm ci
+  if [ ! -f "$stamp" ] || [ "$root/package-lock.json" -nt "$stamp" ]; then
+    echo "setup: installing the front-end packages (npm ci)"
+    (cd "$root" && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null)
+  fi
+}
+
+if [ ${#missing[@]} -eq 0 ]; then
+  install_front_end
+  exit 0
+fi
 
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then
@@ -33,3 +53,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+install_front_end

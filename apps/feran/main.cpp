@@ -75,6 +75,7 @@ int main(int argc, char** argv) {
       "  feran static examples/01_internal_damping/model.toml --gravity -y\n"
       "  feran params examples/02_centrifuge/model.toml\n"
       "  feran api684 examples/05_api684_bearings/model.toml --min-speed 9000rpm --max-speed 11000rpm\n"
+      "  feran report examples/01_internal_damping/model.toml -o report.html\n"
       "  feran modal examples/02_centrifuge/model.toml --set 'springs[bearing k12].ky=2e7 N/m'\n\n"
       "Run 'feran <command> --help' for a command's options.");
   app.set_version_flag("--version", "feran " FERAN_VERSION);
@@ -89,6 +90,7 @@ int main(int argc, char** argv) {
   runners["params"] = feran::app::add_params_command(app);
   runners["study"] = feran::app::add_study_command(app);
   runners["api684"] = feran::app::add_api684_command(app);
+  runners["report"] = feran::app::add_report_command(app, argc, argv);
   // An option given an empty value ('--json ""', '--speed ""') is an error, not the
   // option left out.
   const CLI::Validator non_empty(

@@ -1,0 +1,337 @@
+#include <feran/io/html_report.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <feran/analyses/api684/api684_analysis.hpp>
+#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/analyses/transient/transient_analysis.hpp>
+#include <feran/core/error.hpp>
+#include <feran/elements/rigid_body.hpp>
+#include <feran/io/model_writer.hpp>
+#include <feran/io/result_writer.hpp>
+#include <feran/io/runup_writer.hpp>
+
+#include "report_assets.hpp"
+
+namespace feran {
+
+namespace {
+
+using nlohmann::json;
+
+
+// rᵀ·M·s over the model's elements, r and s given per (node, DOF) of the full model.
+Real mass_form(const Model& model, const std::function<Real(Index, Dof)>& r, const std::function<Real(Index, Dof)>& s) {
+  const OperatingPoint rest{};
+  Real sum = 0;
+  for (const Element& e : model.elements) {
+    const LocalMatrices m = e.local_matrices(rest);
+    if (m.M.size() == 0) continue;
+    const Index n = static_cast<Index>(m.dofs.size());
+    Vector a(n), b(n);
+    for (Index i = 0; i < n; ++i) {
+      const Index node = m.dofs[static_cast<std::size_t>(i)] / dofs_per_node;
+      const Dof d = static_cast<Dof>(m.dofs[static_cast<std::size_t>(i)] % dofs_per_node);
+      const bool rotating = model.nodes[static_cast<std::size_t>(node)].rotating;
+      a(i) = rotating ? r(node, d) : 0.0;
+      b(i) = rotating ? s(node, d) : 0.0;
+    }
+    sum += a.dot(m.M * b);
+  }
+  return sum;
+}
+
+// The rotor's mass, centre of mass and inertias from the mass matrix: m = rᵀMr for
+// r a unit lateral translation; m·x_c from the rotation about the origin (v = x,
+// r_z = 1); the transverse inertia about x_c from v = x − x_c, r_z = 1; the polar
+// inertia from a unit twist r_x = 1 (exact for the consistent mass of every element).
+json rotor_properties(const Model& model) {
+  const auto x = [&](Index n) { return model.nodes[static_cast<std::size_t>(n)].x; };
+  const auto translation = [](Index, Dof d) { return d == Dof::v ? 1.0 : 0.0; };
+  const auto tilt_about = [&](Real xc) {
+    return [&, xc](Index n, Dof d) { return d == Dof::v ? x(n) - xc : d == Dof::rz ? 1.0 : 0.0; };
+  };
+  const Real m = mass_form(model, translation, translation);
+  const Real xc = m > 0 ? mass_form(model, translation, tilt_about(0.0)) / m : 0.0;
+  const auto tilt = tilt_about(xc);
+  const auto twist = [](Index, Dof d) { return d == Dof::rx ? 1.0 : 0.0; };
+  return {{"mass_kg", m},
+          {"centre_of_mass_x_m", xc},
+          {"transverse_inertia_kg_m2", mass_form(model, tilt, tilt)},
+          {"polar_inertia_kg_m2", mass_form(model, twist, twist)}};
+}
+
+// What the drawing and the model table need: nodes, shaft segments, rigid bodies
+// (drawn as the solid disk of the same mass and inertias) and springs.
+json model_summary(const ModelFile& file, Real speed) {
+  const Model& model = file.model;
+  json nodes = json::array();
+  for (const Node& n : model.nodes)
+    nodes.push_back({{"number", n.number}, {"name", n.name}, {"x_m", n.x}, {"rotating", n.rotating}});
+  json shafts = json::array(), bodies = json::array(), springs = json::array();
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& el = model.elements[e];
+    if (const auto seg = el.shaft_segment()) {
+      shafts.push_back({{"node_a", seg->node_a},
+                        {"node_b", seg->node_b},
+                        {"x_a_m", model.nodes[static_cast<std::size_t>(seg->node_a)].x},
+                        {"x_b_m", model.nodes[static_cast<std::size_t>(seg->node_b)].x},
+                        {"outer_diameter_m", seg->section.outer_diameter},
+                        {"inner_diameter_m", seg->section.inner_diameter},
+                        {"rotating", model.nodes[static_cast<std::size_t>(seg->node_a)].rotating},
+                        {"label", el.label()}});
+    } else if (const RigidBody* b = el.target<RigidBody>()) {
+      const RigidBodyProperties& p = b->properties();
+      // A solid cylinder: J_P = m r²/2, J_A = m(3r² + w²)/12.
+      const Real r = p.mass > 0 ? std::sqrt(2 * p.polar_inertia / p.mass) : 0.0;
+      const Real w2 = p.mass > 0 ? 12 * p.transverse_inertia / p.mass - 3 * r * r : 0.0;
+      bodies.push_back({{"label", el.label()},
+                        {"node", b->node()},
+                        {"x_m", model.nodes[static_cast<std::size_t>(b->node())].x + p.offset},
+                        {"mass_kg", p.mass},
+                        {"transverse_inertia_kg_m2", p.transverse_inertia},
+                        {"polar_inertia_kg_m2", p.polar_inertia},
+                        {"rotating", b->rotating()},
+                        {"drawn_radius_m", r},
+                        {"drawn_width_m", w2 > 0 ? std::sqrt(w2) : 0.0}});
+    } else if (const auto t = el.transmission(speed)) {
+      const auto k = [&](Dof d) { return t->K(static_cast<Index>(d), static_cast<Index>(d)); };
+      const auto c = [&](Dof d) { return t->C(static_cast<Index>(d), static_cast<Index>(d)); };
+      springs.push_back({{"label", el.label()},
+                         {"node_a", t->node_a},
+                         {"node_b", t->node_b ? json(*t->node_b) : json(nullptr)},
+                         {"x_m", model.nodes[static_cast<std::size_t>(t->node_a)].x},
+                         {"kyy_n_per_m", k(Dof::v)},
+                         {"kzz_n_per_m", k(Dof::w)},
+                         {"kyz_n_per_m", t->K(1, 2)},
+                         {"kzy_n_per_m", t->K(2, 1)},
+                         {"cyy_n_s_per_m", c(Dof::v)},
+                         {"czz_n_s_per_m", c(Dof::w)}});
+    }
+  }
+  return {{"title", file.title},
+          {"nodes", nodes},
+          {"shafts", shafts},
+          {"bodies", bodies},
+          {"springs", springs},
+          {"springs_at_speed_rpm", speed * 30 / 3.14159265358979323846},
+          {"rotor", rotor_properties(model)},
+          {"n_dofs", model.n_dofs()}};
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(fmt::format("cannot read '{}'", path.string()));
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A design study's output directory: its study, summary and evaluations.
+json study_results(const std::string& directory) {
+  namespace fs = std::filesystem;
+  const fs::path dir(directory);
+  if (!fs::is_directory(dir)) throw Error(fmt::format("study directory '{}' does not exist", directory));
+  for (const char* name : {"study.json", "evaluations.jsonl"})
+    if (!fs::exists(dir / name))
+      throw Error(fmt::format("'{}' holds no study results: '{}' is missing (the output of feran study -o DIR)",
+                              directory, name));
+  json out;
+  try {
+    out["study"] = json::parse(read_text(dir / "study.json"));
+    out["summary"] = fs::exists(dir / "summary.json") ? json::parse(read_text(dir / "summary.json")) : json(nullptr);
+    json evaluations = json::array();
+    std::istringstream lines(read_text(dir / "evaluations.jsonl"));
+    std::string line;
+    while (std::getline(lines, line))
+      if (!line.empty()) evaluations.push_back(json::parse(line));
+    out["evaluations"] = evaluations;
+  } catch (const json::parse_error& e) {
+    throw Error(fmt::format("the study results in '{}' are not valid JSON: {}", directory, e.what()));
+  }
+  return out;
+}
+
+// Records a section's failure instead of the whole report's.
+template <class F>
+void section(json& data, const char* name, F&& make) {
+  try {
+    data[name] = make();
+  } catch (const Error& e) {
+    data[name] = {{"error", e.what()}};
+  }
+}
+
+std::string timestamp() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", &utc);
+  return text;
+}
+
+// JSON text placed in a <script> element: "</" would end the element.
+std::string script_safe(std::string text) {
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.replace(at, 2, "<\\/");
+  return text;
+}
+
+std::string html_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool report_available() { return detail::report_assets_built(); }
+
+std::string html_report(const ModelFile& file, const ReportOptions& options) {
+  if (!report_available())
+    throw Error("this feran was built without plotly.js, which the report inlines: run scripts/setup.sh (it "
+                "installs the front-end packages with npm) and build again");
+  if (options.speed_unit != "rpm" && options.speed_unit != "Hz")
+    throw Error(fmt::format("the report's speed unit must be \"rpm\" or \"Hz\", got \"{}\"", options.speed_unit));
+  const Model& model = file.model;
+  const ModelSpec& spec = file.spec;
+  const ResultSource source{file.path, file.title};
+
+  // The operating range, when the model or the request gives one.
+  const std::optional<Real> low = options.api684_request.min_speed ? options.api684_request.min_speed : spec.api684.min_speed;
+  const std::optional<Real> high = options.api684_request.max_speed ? options.api684_request.max_speed : spec.api684.max_speed;
+
+  json data;
+  data["inputs"] = {{"model_path", file.path},
+                    {"command", options.command},
+                    {"version", options.version},
+                    {"created", timestamp()},
+                    {"model_text", write_toml(spec)}};
+  data["title"] = options.title.empty() ? (file.title.empty() ? std::filesystem::path(file.path).filename().string() : file.title)
+                                        : options.title;
+  data["speed_unit"] = options.speed_unit;
+  data["operating"] = low && high ? json{{"min_rpm", *low * 30 / 3.14159265358979323846}, {"max_rpm", *high * 30 / 3.14159265358979323846}}
+                                  : json(nullptr);
+  data["model"] = model_summary(file, high.value_or(0.0));
+
+  // Campbell diagram and damping.
+  CampbellRequest campbell = options.campbell;
+  campbell.n_threads = options.n_threads;
+  if (!campbell.stop && !spec.campbell.stop && high) campbell.stop = 1.5 * *high;
+  CampbellOptions co = campbell_settings(spec.campbell, campbell);
+  co.stop = options.stop;
+  const CampbellResult cr = run_campbell(model, co, file.assembler);
+  data["campbell"] = json::parse(campbell_json(cr, co, source));
+
+  // Mode shapes at the chosen speeds.
+  std::vector<Real> speeds = options.mode_speeds;
+  if (speeds.empty()) speeds = {0.0, high.value_or(co.speeds.back())};
+  json modes = json::array();
+  for (const Real s : speeds) {
+    ModalOptions mo;
+    mo.oscillatory_only = true;
+    mo.n_modes = options.mode_count;
+    section(modes.emplace_back(), "result", [&] {
+      const ModalResult r = run_modal(model, s, mo, file.assembler);
+      return json::parse(modal_json(r, model, source, true));
+    });
+  }
+  data["modes"] = modes;
+
+  // Unbalance response and the deflected shape.
+  if (model.n_forces("unbalance") > 0 || model.n_forces("harmonic_force") > 0 || !options.response.extra_forces.empty()) {
+    section(data, "response", [&] {
+      ResponseRequest request = options.response;
+      request.n_threads = options.n_threads;
+      if (!request.stations) request.stations = StationOutput::summary;
+      if (!request.stop && !spec.response.stop) request.stop = co.speeds.back();
+      HarmonicOptions ho = response_settings(model, spec.response, request);
+      ho.stop = options.stop;
+      const HarmonicResult hr = run_harmonic_response(model, ho);
+      json j = json::parse(response_json(hr, ho, model, source));
+      // The deflected shape at one speed: every node's orbit, from a response there.
+      Real at = options.deflection_speed.value_or(0.0);
+      if (!options.deflection_speed) {
+        Real best = -1;
+        for (const auto& p : hr.probes)
+          for (std::size_t k = 0; k < p.orbit.size(); ++k)
+            if (p.orbit[k].major > best) best = p.orbit[k].major, at = hr.speeds[k];
+      }
+      ResponseRequest shape = options.response;
+      shape.speed = at;
+      shape.start.reset();
+      shape.stop.reset();
+      shape.points = 1;
+      shape.probes.clear();
+      for (Index n = 0; n < model.n_nodes(); ++n) shape.probes.push_back(n);
+      shape.stations = StationOutput::none;
+      HarmonicOptions so = response_settings(model, spec.response, shape);
+      j["deflected_shape"] = json::parse(response_json(run_harmonic_response(model, so), so, model, source));
+      return j;
+    });
+  }
+
+  if (options.static_analysis)
+    section(data, "static", [&] {
+      const StaticOptions so = static_settings(spec.static_, {});
+      return json::parse(static_json(run_static(model, so), so, model, source));
+    });
+
+  if (options.api684 && low && high)
+    section(data, "api684", [&] {
+      Api684Request request = options.api684_request;
+      request.n_threads = options.n_threads;
+      Api684Options ao = api684_settings(model, spec, request);
+      ao.stop = options.stop;
+      return json::parse(api684_json(run_api684(model, ao), model, source));
+    });
+
+  const RunupSpec& r = spec.runup;
+  if (options.runup && (r.speed || r.to || !r.table.empty()))
+    section(data, "runup", [&] {
+      TransientOptions to = runup_settings(model, r, {});
+      to.stop = options.stop;
+      const TransientResult tr = run_transient(model, to);
+      return json::parse(runup_json(tr, to, model, source));
+    });
+
+  if (!options.study_directory.empty()) data["study"] = study_results(options.study_directory);
+
+  const std::string title = html_escape(data["title"].get<std::string>());
+  std::string html;
+  html.reserve(detail::plotly_js().size() + (1 << 20));
+  html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  html += "<meta name=\"generator\" content=\"feran " + html_escape(options.version) + "\">\n";
+  html += "<title>" + title + " — feran report</title>\n<style>\n";
+  html += detail::report_css();
+  html += "\n</style>\n<script>\n";
+  html += detail::plotly_js();
+  html += "\n</script>\n</head>\n<body>\n<div id=\"report\"><noscript>This report draws its figures with JavaScript.</noscript></div>\n";
+  html += "<script id=\"feran-data\" type=\"application/json\">\n";
+  html += script_safe(data.dump(-1, ' ', false, json::error_handler_t::replace));
+  html += "\n</script>\n<script>\n";
+  html += detail::report_js();
+  html += "\n</script>\n</body>\n</html>\n";
+  return html;
+}
+
+}  // namespace feran

@@ -1,0 +1,132 @@
+#include <feran/io/report_config.hpp>
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/settings.hpp>
+#include <feran/io/model_reader.hpp>
+
+#include "table_reader.hpp"
+
+namespace feran {
+
+namespace {
+
+using detail::TableReader;
+
+// A sub-table of @p root, or nullptr; a key that is not a table is an error.
+const toml::table* sub_table(const TableReader& root, std::string_view key) {
+  const toml::node* n = root.find(key);
+  if (n == nullptr) return nullptr;
+  if (!n->is_table()) root.fail(*n, fmt::format("'{}' must be a table ([{}]), got {}", key, key, detail::type_name(*n)));
+  return n->as_table();
+}
+
+std::optional<Real> speed(const TableReader& t, std::string_view key) {
+  const auto q = t.quantity(key, Quantity::speed);
+  if (!q) return std::nullopt;
+  t.require_non_negative(*q, key);
+  return q->si;
+}
+
+std::vector<Index> nodes(const TableReader& t, std::string_view key, const Model& model) {
+  std::vector<Index> out;
+  const toml::array* a = t.array(key);
+  if (a == nullptr) return out;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& n = *a->get(i);
+    Index found = -1;
+    if (const auto s = n.value<std::string>()) found = model.find_node(*s);
+    else if (const auto k = n.value<std::int64_t>()) found = model.find_node(static_cast<int>(*k));
+    else t.fail(n, fmt::format("'{}[{}]' must be a node name or number, got {}", key, i, detail::type_name(n)));
+    if (found < 0) t.fail(n, fmt::format("'{}[{}]': the model has no such node", key, i));
+    out.push_back(found);
+  }
+  return out;
+}
+
+}  // namespace
+
+void read_report_config(std::string_view toml_text, const std::string& path, const Model& model,
+                        ReportOptions& options) {
+  toml::table root_table;
+  try {
+    root_table = toml::parse(toml_text, std::string_view{path});
+  } catch (const toml::parse_error& e) {
+    throw ModelError(SourceLocation{path, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
+                     fmt::format("TOML syntax error: {}", e.description()));
+  }
+  const TableReader root(root_table, "", path);
+  root.check_keys({"title", "speed_unit", "campbell", "modes", "response", "static", "api684", "runup", "study"});
+  if (const auto t = root.string("title")) options.title = *t;
+  if (const auto u = root.string("speed_unit")) {
+    if (*u != "rpm" && *u != "Hz") root.fail(*root.find("speed_unit"), fmt::format("'speed_unit' must be \"rpm\" or \"Hz\", got \"{}\"", *u));
+    options.speed_unit = *u;
+  }
+  if (const toml::table* c = sub_table(root, "campbell")) {
+    const TableReader t(*c, "[campbell]", path);
+    t.check_keys({"start", "stop", "points", "modes", "orders"});
+    options.campbell.start = speed(t, "start");
+    options.campbell.stop = speed(t, "stop");
+    options.campbell.points = t.integer("points", 2, 100000);
+    options.campbell.modes = t.integer("modes", 1, 1000);
+    if (const toml::array* a = t.array("orders"))
+      for (std::size_t i = 0; i < a->size(); ++i)
+        options.campbell.orders.push_back(t.integer_at(*a->get(i), fmt::format("orders[{}]", i), 1, 1000));
+  }
+  if (const toml::table* m = sub_table(root, "modes")) {
+    const TableReader t(*m, "[modes]", path);
+    t.check_keys({"speeds", "count"});
+    if (const toml::array* a = t.array("speeds")) {
+      options.mode_speeds.clear();
+      for (std::size_t i = 0; i < a->size(); ++i) {
+        const auto q = t.quantity_at(*a->get(i), fmt::format("speeds[{}]", i), Quantity::speed);
+        t.require_non_negative(q, fmt::format("speeds[{}]", i));
+        options.mode_speeds.push_back(q.si);
+      }
+    }
+    if (const auto n = t.integer("count", 1, 100)) options.mode_count = *n;
+  }
+  if (const toml::table* r = sub_table(root, "response")) {
+    const TableReader t(*r, "[response]", path);
+    t.check_keys({"start", "stop", "points", "probes", "deflection_speed"});
+    options.response.start = speed(t, "start");
+    options.response.stop = speed(t, "stop");
+    options.response.points = t.integer("points", 2, 100000);
+    options.response.probes = nodes(t, "probes", model);
+    options.deflection_speed = speed(t, "deflection_speed");
+  }
+  for (const char* name : {"static", "runup"})
+    if (const toml::table* s = sub_table(root, name)) {
+      const TableReader t(*s, fmt::format("[{}]", name), path);
+      t.check_keys({"enabled"});
+      (std::string_view(name) == "static" ? options.static_analysis : options.runup) = t.boolean("enabled").value_or(true);
+    }
+  if (const toml::table* a = sub_table(root, "api684")) {
+    const TableReader t(*a, "[api684]", path);
+    t.check_keys({"enabled", "min_speed", "max_speed", "anticipated_q"});
+    options.api684 = t.boolean("enabled").value_or(true);
+    options.api684_request.min_speed = speed(t, "min_speed");
+    options.api684_request.max_speed = speed(t, "max_speed");
+    if (const auto q = t.quantity("anticipated_q", Quantity::stiffness)) {
+      t.require_positive(*q, "anticipated_q");
+      options.api684_request.anticipated_q = q->si;
+    }
+  }
+  if (const toml::table* s = sub_table(root, "study")) {
+    const TableReader t(*s, "[study]", path);
+    t.check_keys({"directory"});
+    namespace fs = std::filesystem;
+    fs::path dir(t.required_string("directory", "the output directory of feran study -o DIR"));
+    if (dir.is_relative()) dir = fs::path(path).parent_path() / dir;
+    if (!fs::is_directory(dir)) t.fail(*t.find("directory"), fmt::format("study directory '{}' does not exist", dir.string()));
+    options.study_directory = dir.lexically_normal().string();
+  }
+}
+
+void read_report_config_file(const std::string& path, const Model& model, ReportOptions& options) {
+  read_report_config(read_text_file(path), path, model, options);
+}
+
+}  // namespace feran

@@ -1,0 +1,112 @@
+// Opens a feran report in Debian's Chromium (headless, driven by playwright-core)
+// with every network request refused, and checks what a reader would see: no
+// JavaScript error or failed request, every section of the report's data drawn, each
+// figure with the traces and axis titles that section must have (the rules below,
+// from what each analysis's JSON holds), and a screenshot of the whole page.
+//
+// node tests/browser/check_report.mjs REPORT.html SCREENSHOT.png [SECTION ...]
+// SECTION: the sections that must be present (model, campbell, damping, modes,
+// response, static, api684, runup, study, numbers). Exit code 0 when all is well.
+import { chromium } from "playwright-core";
+
+const [report, screenshot, ...required] = process.argv.slice(2);
+if (!report || !screenshot) {
+  console.error("usage: node check_report.mjs REPORT.html SCREENSHOT.png [SECTION ...]");
+  process.exit(2);
+}
+const problems = [];
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
+  args: ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
+});
+try {
+  const context = await browser.newContext({ offline: true, viewport: { width: 1280, height: 900 } });
+  const page = await context.newPage();
+  // Only the report itself may load: anything else is a request to the network.
+  await page.route("**/*", (route) => {
+    if (route.request().url().startsWith("file://")) return route.continue();
+    problems.push(`network request: ${route.request().url()}`);
+    return route.abort();
+  });
+  page.on("pageerror", (e) => problems.push(`JavaScript error: ${e.message}`));
+  page.on("console", (m) => { if (m.type() === "error") problems.push(`console error: ${m.text()}`); });
+  page.on("requestfailed", (r) => { if (!r.url().startsWith("file://")) problems.push(`failed request: ${r.url()}`); });
+  await page.goto(new URL(report, `file://${process.cwd()}/`).href, { waitUntil: "load" });
+  await page.waitForFunction(() => window.feranReport && window.feranReport.ready, null, { timeout: 60000 });
+
+  const found = await page.evaluate(() => {
+    const data = JSON.parse(document.getElementById("feran-data").textContent);
+    const titles = (gd) => {
+      const l = gd._fullLayout;
+      const out = [];
+      for (const k of Object.keys(l)) {
+        if (/^[xy]axis\d*$/.test(k) && l[k].title && l[k].title.text) out.push(l[k].title.text);
+        if (/^scene\d*$/.test(k)) for (const a of ["xaxis", "yaxis", "zaxis"]) if (l[k][a].title && l[k][a].title.text) out.push(l[k][a].title.text);
+        if (/^polar\d*$/.test(k) && l[k].radialaxis.title && l[k].radialaxis.title.text) out.push(l[k].radialaxis.title.text);
+      }
+      return out;
+    };
+    const plots = window.feranReport.plots.map((p) => {
+      const gd = document.getElementById(p.id);
+      return { section: p.section, title: gd.layout.title ? gd.layout.title.text : "", traces: gd.data.length,
+               types: gd.data.map((t) => t.type || "scatter"), axes: titles(gd),
+               drawn: gd.querySelectorAll(".main-svg, canvas").length > 0 };
+    });
+    const sections = [...document.querySelectorAll("section")].map((s) => s.id);
+    const errors = [...document.querySelectorAll(".error")].map((e) => e.textContent);
+    const lateral = data.campbell.modes.filter((m) => m.type !== "axial" && m.type !== "torsional").length;
+    return { plots, sections, errors, lateral, orders: data.campbell.orders.length,
+             probes: data.response && data.response.probes ? data.response.probes.length : 0,
+             cases: data.api684 && data.api684.cases ? data.api684.cases.map((c) => c.probes.length) : [],
+             map: data.api684 && data.api684.map ? data.api684.map.criticals_rpm.length + data.api684.map.curves.length + 1 : 0,
+             modeSpeeds: data.modes.length, numbers: window.feranReport.numbers,
+             runupProbes: data.runup && data.runup.probes ? data.runup.probes.length : 0 };
+  });
+
+  for (const s of required) if (!found.sections.includes(s)) problems.push(`section '${s}' is missing`);
+  for (const e of found.errors) problems.push(`the report shows an error: ${e}`);
+  const inSection = (s) => found.plots.filter((p) => p.section === s);
+  const expect = (cond, what) => { if (!cond) problems.push(what); };
+  for (const p of found.plots) {
+    expect(p.drawn, `${p.section}: '${p.title}' was not drawn`);
+    expect(p.traces > 0, `${p.section}: '${p.title}' has no trace`);
+    expect(p.axes.length >= (p.types.includes("parcoords") || p.types.includes("scatterpolar") ? (p.types.includes("scatterpolar") ? 1 : 0) : 2),
+           `${p.section}: '${p.title}' lacks axis titles (${p.axes.join(", ")})`);
+  }
+  // The rules: what each section's figures must hold.
+  const campbell = inSection("campbell");
+  expect(campbell.length === 1 && campbell[0].traces === found.lateral + found.orders + 1,
+         `campbell: expected one figure with ${found.lateral} modes + ${found.orders} orders + the critical speeds`);
+  const damping = inSection("damping");
+  expect(damping.length === 1 && damping[0].traces === found.lateral, `damping: expected ${found.lateral} traces`);
+  const modes = inSection("modes");
+  expect(modes.length === 2 * found.modeSpeeds, `modes: expected a 3D and a 2D figure at each of ${found.modeSpeeds} speeds`);
+  expect(modes.filter((p) => p.types.includes("scatter3d")).length === found.modeSpeeds, "modes: a 3D figure per speed");
+  if (found.sections.includes("response")) {
+    const r = inSection("response");
+    expect(r.length >= 3 && r[0].traces === found.probes && r[1].traces === found.probes && r[2].traces === found.probes,
+           `response: Bode amplitude, phase and polar figures with ${found.probes} probes each`);
+  }
+  if (found.sections.includes("api684")) {
+    const a = inSection("api684");
+    found.cases.forEach((n, i) => expect(a[i] && a[i].traces === n + 1, `api684: case ${i + 1} with ${n} probes and its peaks`));
+    if (found.map) expect(a.some((p) => p.traces === found.map && p.title.includes("map")), `api684: the critical speed map with ${found.map} traces`);
+  }
+  if (found.sections.includes("runup")) {
+    const r = inSection("runup");
+    expect(r.length === 3 && r[0].traces === found.runupProbes && r[2].types[0] === "heatmap", "runup: envelope, time history and waterfall");
+  }
+  if (found.sections.includes("study")) expect(inSection("study").length >= 1, "study: at least one figure");
+  expect(found.numbers > 0, "numbers: the table is empty");
+
+  await page.screenshot({ path: screenshot, fullPage: true });
+  console.log(`${report}: ${found.sections.length} sections (${found.sections.join(", ")}), ${found.plots.length} figures, ` +
+              `${found.plots.reduce((n, p) => n + p.traces, 0)} traces, ${found.numbers} numbers; screenshot ${screenshot}`);
+} finally {
+  await browser.close();
+}
+if (problems.length) {
+  for (const p of problems) console.error(`problem: ${p}`);
+  process.exit(1);
+}
