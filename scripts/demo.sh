@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up, builds, and runs feran's main job on a shipped example: the Campbell
 # diagram of the paper's internal-damping rotor (examples/01_internal_damping),
-# printed and written to out/ as JSON, CSV and a PNG figure. Then regenerates every
+# printed and written to out/ as JSON, CSV and a PNG figure, and its interactive
+# report (out/report.html: open it in a browser, no network needed). Then regenerates every
 # figure of the paper into out/figures/ (scripts/figures.sh; docs/validation.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,8 +27,10 @@ print('python3: feran', feran.__file__.rsplit('/', 2)[0], '- forward critical sp
       ', '.join(f'{s:.2f} Hz' for s in c.critical_speeds(whirl='forward', order=1, unit='Hz')))
 feran.plot.campbell(c).savefig('$PWD/out/campbell_python.png', dpi=120)
 ")
+./build/feran report examples/01_internal_damping/model.toml -o out/report.html
 echo
-echo "Written: out/campbell.json, out/campbell.csv, out/campbell.png, out/campbell_python.png (from Python)"
+echo "Written: out/campbell.json, out/campbell.csv, out/campbell.png, out/campbell_python.png (from Python),"
+echo "         out/report.html (the interactive report)"
 echo
 echo "Regenerating the paper's figures (Figs. 1, 4-10) ..."
 FERAN=./build/feran bash scripts/figures.sh out/figures

@@ -13,7 +13,7 @@ from ._toml import keys_toml as _keys_toml
 
 from ._feran import (Api684Result, CampbellResult, Error, Interrupted, ModalResult, Model, ModelError,
                      ParameterError, ResponseResult, RunupResult, StaticResult, StudyResult, api684, campbell,
-                     modal, read_model, response, runup, static)
+                     modal, read_model, report, response, runup, static, __version__)
 from .study import Study, read_study
 
 

@@ -64,6 +64,7 @@ void bind_static(py::module_& m);
 void bind_runup(py::module_& m);
 void bind_study(py::module_& m);
 void bind_api684(py::module_& m);
+void bind_report(py::module_& m);
 
 /// A speed given as text with its unit ("30 Hz", "1800 rpm") or as a number in rad/s.
 double speed_argument(const py::handle& value, const char* name);

@@ -18,4 +18,5 @@ PYBIND11_MODULE(_feran, m) {
   feran::python::bind_api684(m);
   feran::python::bind_runup(m);
   feran::python::bind_study(m);
+  feran::python::bind_report(m);
 }

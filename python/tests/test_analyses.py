@@ -218,11 +218,37 @@ def test_api684_equals_the_command_line_and_its_arrays_hold_its_numbers(tmp_path
 
 
 def test_api684_reads_its_table_and_reports_bad_arguments():
-    model = feran.read_model(API684).set_table("api684", min_speed="9000 rpm", max_speed="11000 rpm")
+    model = feran.read_model(EXAMPLE).set_table("api684", min_speed="30 Hz", max_speed="40 Hz")
     r = feran.api684(model, points=51, map=False, stability=False)
     assert r.map is None and r.stability is None
-    assert r.max_speed == pytest.approx(11000 * math.pi / 30)
+    assert r.max_speed == pytest.approx(80 * math.pi)
     with pytest.raises(feran.Error, match="unbalance: must be '4W/N' or 'model'"):
         feran.api684(model, unbalance="5W/N")
     with pytest.raises(feran.Error, match="operating speed range"):
-        feran.api684(feran.read_model(API684))
+        feran.api684(feran.read_model(EXAMPLE))  # a model without [api684]
+
+
+def report_data(html):
+    start = html.index('<script id="feran-data" type="application/json">') + len('<script id="feran-data" type="application/json">')
+    return json.loads(html[start:html.index("</script>", start)])
+
+
+def test_report_holds_the_data_of_the_command_lines_report(tmp_path):
+    out = tmp_path / "cli.html"
+    subprocess.run([FERAN, "report", EXAMPLE, "-o", str(out), "-q"], check=True)
+    cli = report_data(out.read_text())
+    html = feran.report(feran.read_model(EXAMPLE), str(tmp_path / "py.html"))
+    assert (tmp_path / "py.html").read_text() == html
+    py = report_data(html)
+    for d in (cli, py):  # when and how it was made differ; the rest is the same computation
+        del d["inputs"]["created"], d["inputs"]["command"]
+    same(py, cli)
+    assert html.startswith("<!DOCTYPE html>") and "plotly.js v" in html
+    assert py["inputs"]["version"] == feran.__version__
+
+
+def test_report_configuration_errors_name_file_line_and_column(tmp_path):
+    config = tmp_path / "report.toml"
+    config.write_text('[campbell]\nstpo = "50 Hz"\n')
+    with pytest.raises(feran.ModelError, match=r"report.toml:2:1: .*did you mean 'stop'"):
+        feran.report(feran.read_model(EXAMPLE), config=str(config))

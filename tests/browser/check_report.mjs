@@ -4,14 +4,17 @@
 // figure with the traces and axis titles that section must have (the rules below,
 // from what each analysis's JSON holds), and a screenshot of the whole page.
 //
-// node tests/browser/check_report.mjs REPORT.html SCREENSHOT.png [SECTION ...]
+// node tests/browser/check_report.mjs REPORT.html PREFIX [SECTION ...]
+// writes PREFIX.png (the whole page) and, with FERAN_SECTION_SCREENSHOTS=1,
+// PREFIX-SECTION.png (each section).
 // SECTION: the sections that must be present (model, campbell, damping, modes,
 // response, static, api684, runup, study, numbers). Exit code 0 when all is well.
 import { chromium } from "playwright-core";
 
-const [report, screenshot, ...required] = process.argv.slice(2);
-if (!report || !screenshot) {
-  console.error("usage: node check_report.mjs REPORT.html SCREENSHOT.png [SECTION ...]");
+const [report, prefix, ...required] = process.argv.slice(2);
+const screenshot = `${prefix}.png`;
+if (!report || !prefix) {
+  console.error("usage: node check_report.mjs REPORT.html PREFIX [SECTION ...]");
   process.exit(2);
 }
 const problems = [];
@@ -101,6 +104,9 @@ try {
   expect(found.numbers > 0, "numbers: the table is empty");
 
   await page.screenshot({ path: screenshot, fullPage: true });
+  // With FERAN_SECTION_SCREENSHOTS=1 (scripts/report_figures.sh), one per section too.
+  if (process.env.FERAN_SECTION_SCREENSHOTS === "1")
+    for (const id of found.sections) await page.locator(`section#${id}`).screenshot({ path: `${prefix}-${id}.png` });
   console.log(`${report}: ${found.sections.length} sections (${found.sections.join(", ")}), ${found.plots.length} figures, ` +
               `${found.plots.reduce((n, p) => n + p.traces, 0)} traces, ${found.numbers} numbers; screenshot ${screenshot}`);
 } finally {
