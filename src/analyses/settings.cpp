@@ -123,30 +123,6 @@ void check_analysis_tables(const ModelSpec& spec) {
   throw SpecError("runup.integrator", message);
 }
 
-namespace {
-
-// The rotating node where the first forward lateral mode at @p speed moves most.
-Index largest_motion_node(const Model& model, Real speed) {
-  ModalOptions mo;
-  mo.oscillatory_only = true;
-  const ModalResult r = run_modal(model, speed, mo);
-  for (const Mode& m : r.modes) {
-    if (m.type != ModeType::lateral || !(m.directivity > 0.05)) continue;
-    Index best = -1;
-    Real largest = -1;
-    for (Index n = 0; n < model.n_nodes(); ++n) {
-      if (!model.nodes[static_cast<std::size_t>(n)].rotating) continue;
-      const Real a = std::norm(m.shape(global_dof(n, Dof::v))) + std::norm(m.shape(global_dof(n, Dof::w)));
-      if (a > largest) largest = a, best = n;
-    }
-    if (best >= 0) return best;
-  }
-  throw Error("the rotor has no forward lateral mode at the maximum continuous speed to place the cross-coupling "
-              "at; give [api684] stability_node");
-}
-
-}  // namespace
-
 Api684Options api684_settings(const Model& model, const ModelSpec& file, const Api684Request& request) {
   const Api684Spec& f = file.api684;
   const std::optional<Real> low = request.min_speed ? request.min_speed : f.min_speed;
@@ -215,7 +191,7 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
     s.speed = *high;
     s.node = request.stability_node ? *request.stability_node
              : f.stability_node     ? node_index(model, *f.stability_node)
-                                    : largest_motion_node(model, *high);
+                                    : largest_forward_motion_node(model, *high);
     s.anticipated = request.anticipated_q ? request.anticipated_q : f.anticipated_q;
     o.stability = s;
   }

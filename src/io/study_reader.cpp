@@ -254,6 +254,8 @@ class StudyReader {
         t.fail_here(fmt::format("a {} needs 'operating' = [low, high], the operating speed range", to_string(q.kind)));
       }
       if (const auto s = t.quantity("speed", Quantity::speed)) q.speed = s->si;
+      if (q.kind == QuantityKind::level1_q_zero && !(q.speed && *q.speed > 0))
+        t.fail_here("a level1_q_zero needs 'speed' > 0, the maximum continuous speed");
       if (const auto* p = t.find("probe")) {
         if (p->is_string()) q.probe = NodeRef(*p->value<std::string>());
         else if (p->is_integer()) q.probe = NodeRef(*p->value<std::int64_t>());

@@ -18,7 +18,7 @@ namespace feran {
 
 namespace {
 
-constexpr std::array<std::pair<QuantityKind, std::string_view>, 20> kind_names{{
+constexpr std::array<std::pair<QuantityKind, std::string_view>, 22> kind_names{{
     {QuantityKind::critical_speed, "critical_speed"},
     {QuantityKind::separation_margin, "separation_margin"},
     {QuantityKind::min_damping_ratio, "min_damping_ratio"},
@@ -32,6 +32,8 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 20> kind_names{{
     {QuantityKind::required_margin, "required_margin"},
     {QuantityKind::margin_surplus, "margin_surplus"},
     {QuantityKind::min_margin_surplus, "min_margin_surplus"},
+    {QuantityKind::undamped_critical_speed, "undamped_critical_speed"},
+    {QuantityKind::level1_q_zero, "level1_q_zero"},
     {QuantityKind::peak_spring_force, "peak_spring_force"},
     {QuantityKind::peak_stress, "peak_stress"},
     {QuantityKind::runup_peak, "runup_peak"},
@@ -301,6 +303,25 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
       if (q.kind == QuantityKind::amplification_factor) return peak.amplification_factor;
       return q.kind == QuantityKind::required_margin ? required(peak) : surplus(peak);
     }
+    case QuantityKind::undamped_critical_speed: {
+      SolverInfo info;
+      const auto criticals = undamped_critical_speeds(a.model(), q.n, true, &info);
+      check_solver(info, "undamped critical speeds");
+      if (static_cast<int>(criticals.size()) < q.n)
+        throw Error(fmt::format("the rotor has {} forward undamped critical speeds, not {}", criticals.size(), q.n));
+      return criticals[static_cast<std::size_t>(q.n - 1)].speed;
+    }
+    case QuantityKind::level1_q_zero: {
+      StabilitySweepOptions s;
+      s.speed = *q.speed;  // the reader requires it
+      s.node = q.probe ? node_index(a.model(), *q.probe) : largest_forward_motion_node(a.model(), s.speed);
+      s.points = 2;
+      const StabilitySweepResult r = run_stability_sweep(a.model(), s);
+      if (!r.q_zero)
+        throw Error(fmt::format("no Q₀: the first forward mode at {} is {}", rpm(s.speed),
+                                r.log_decrement.front() <= 0 ? "unstable without cross-coupling" : "stable up to 1e13 N/m"));
+      return *r.q_zero;
+    }
     case QuantityKind::peak_spring_force: {
       const auto& r = a.response();
       const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
@@ -354,7 +375,9 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
 std::optional<Quantity> quantity_kind_unit(QuantityKind kind) {
   switch (kind) {
     case QuantityKind::critical_speed:
-    case QuantityKind::stability_threshold: return Quantity::speed;
+    case QuantityKind::stability_threshold:
+    case QuantityKind::undamped_critical_speed: return Quantity::speed;
+    case QuantityKind::level1_q_zero: return Quantity::stiffness;
     case QuantityKind::natural_frequency: return Quantity::frequency;
     case QuantityKind::peak_response:
     case QuantityKind::runup_peak: return Quantity::length;

@@ -124,3 +124,36 @@ TEST(Api684, TheSmallestSurplusIsThatOfTheWorstPeak) {
 
 }  // namespace
 }  // namespace feran
+
+namespace feran {
+namespace {
+
+TEST(Api684, StudiesReadUndampedCriticalSpeedsAndTheLevelOneThresholdOfADampedMass) {
+  // The mass on its support: the undamped critical speed is √(k/M) whatever c, and the
+  // cross-coupling that cancels the forward mode's damping Q₀ = c·√(k/M) (the
+  // threshold s = iω of M s² + c s + k − iQ = 0; docs/theory/api684.md), at any speed.
+  const auto file = read_study_string(
+      "model = \"" FERAN_TEST_MODELS "/studies/damped_mass.toml\"\n"
+      "[[variables]]\nname = \"c\"\npaths = [\"springs[support].cy\", \"springs[support].cz\"]\n"
+      "lower = \"100 N*s/m\"\nupper = \"1000 N*s/m\"\n"
+      "[[quantities]]\nname = \"critical\"\nkind = \"undamped_critical_speed\"\n"
+      "[[quantities]]\nname = \"q0\"\nkind = \"level1_q_zero\"\nspeed = \"3000 rpm\"\nprobe = \"mass\"\n"
+      "[explore]\nmethod = \"grid\"\nlevels = 3\n",
+      "level1.toml");
+  ThreadEvaluator evaluator(1);
+  const auto all = run_exploration(file.study, evaluator, {}, {}, 3);
+  ASSERT_EQ(all.size(), 3u);
+  for (const auto& e : all) {
+    ASSERT_TRUE(e.evaluated) << e.message;
+    EXPECT_NEAR(e.quantities[0] / wn - 1, 0, 1e-12);
+    EXPECT_NEAR(e.quantities[1] / (e.values[0] * wn) - 1, 0, 1e-8) << "c " << e.values[0];
+  }
+  EXPECT_THROW(read_study_string("model = \"" FERAN_TEST_MODELS "/studies/damped_mass.toml\"\n"
+                                 "[[variables]]\nname = \"c\"\npaths = [\"springs[support].cy\"]\nlower = 1\nupper = 2\n"
+                                 "[[quantities]]\nname = \"q0\"\nkind = \"level1_q_zero\"\n",
+                                 "level1.toml"),
+               ModelError);
+}
+
+}  // namespace
+}  // namespace feran

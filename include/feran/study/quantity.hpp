@@ -37,6 +37,8 @@ enum class QuantityKind {
   required_margin,      ///< the separation margin API 617 requires of that peak from the operating range [-]
   margin_surplus,       ///< that peak's separation margin less the required one: ≥ 0 passes [-]
   min_margin_surplus,   ///< the smallest margin_surplus of every resonance peak at the probe: ≥ 0 all pass [-]
+  undamped_critical_speed,  ///< the n-th forward undamped critical speed with the bearings as given [rad/s]
+  level1_q_zero,        ///< API 617 level I: the cross-coupling Q at the probe where the first forward mode's log decrement is 0 at the speed [N/m]
   peak_spring_force,    ///< largest lateral force of a spring (or of all) over the response [N]
   peak_stress,          ///< largest equivalent (von Mises) shaft stress over the response [Pa]
   runup_peak,           ///< largest |r| at a probe during the run-up [m]

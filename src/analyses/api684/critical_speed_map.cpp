@@ -104,11 +104,29 @@ struct LateralSystem {
   // The forward solutions at stiffness K, the lowest first.
   std::vector<UndampedCritical> forward(const Matrix& K, bool gyroscopic) const {
     const Synchronous s = synchronous_whirl(M, gyroscopic ? G : Matrix::Zero(M.rows(), M.cols()), K);
-    std::vector<UndampedCritical> out;
+    const Index n_full = assembler.dof_map().n_full();
+    ComplexMatrix shapes(n_full, static_cast<Index>(s.speeds.size()));
     for (std::size_t i = 0; i < s.speeds.size(); ++i) {
       ComplexVector reduced = ComplexVector::Zero(assembler.dof_map().n_reduced());
       for (std::size_t j = 0; j < dofs.size(); ++j) reduced(dofs[j]) = s.x[i](static_cast<Index>(j));
-      ComplexVector shape = assembler.dof_map().expand(reduced);
+      shapes.col(static_cast<Index>(i)) = assembler.dof_map().expand(reduced);
+    }
+    // A repeated speed (an isotropic rotor without gyroscopic coupling: a point mass,
+    // or any rotor at rest) has a plane of shapes; its forward and backward circles
+    // are the eigenvectors of the whirl form within that plane.
+    for (std::size_t a = 0; a < s.speeds.size();) {
+      std::size_t b = a + 1;
+      while (b < s.speeds.size() && s.speeds[b] - s.speeds[a] <= 1e-9 * s.speeds[b]) ++b;
+      if (b - a > 1) {
+        const auto block = shapes.middleCols(static_cast<Index>(a), static_cast<Index>(b - a));
+        const Eigen::SelfAdjointEigenSolver<ComplexMatrix> w(whirl_form(block));
+        shapes.middleCols(static_cast<Index>(a), static_cast<Index>(b - a)) = ComplexMatrix(block * w.eigenvectors());
+      }
+      a = b;
+    }
+    std::vector<UndampedCritical> out;
+    for (std::size_t i = 0; i < s.speeds.size(); ++i) {
+      ComplexVector shape = shapes.col(static_cast<Index>(i));
       Index at = 0;
       shape.cwiseAbs().maxCoeff(&at);
       shape /= shape(at);

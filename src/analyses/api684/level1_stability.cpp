@@ -39,6 +39,25 @@ std::pair<Real, Real> first_forward_log_decrement(const Model& model, Real speed
   throw Error("the rotor has no forward lateral mode at the maximum continuous speed");
 }
 
+Index largest_forward_motion_node(const Model& model, Real speed) {
+  ModalOptions mo;
+  mo.oscillatory_only = true;
+  const ModalResult r = run_modal(model, speed, mo);
+  for (const Mode& m : r.modes) {
+    if (m.type != ModeType::lateral || !(m.directivity > 0.05)) continue;
+    Index best = -1;
+    Real largest = -1;
+    for (Index n = 0; n < model.n_nodes(); ++n) {
+      if (!model.nodes[static_cast<std::size_t>(n)].rotating) continue;
+      const Real a = std::norm(m.shape(global_dof(n, Dof::v))) + std::norm(m.shape(global_dof(n, Dof::w)));
+      if (a > largest) largest = a, best = n;
+    }
+    if (best >= 0) return best;
+  }
+  throw Error("the rotor has no forward lateral mode at the maximum continuous speed to place the cross-coupling "
+              "at; give the node");
+}
+
 StabilitySweepResult run_stability_sweep(const Model& model, const StabilitySweepOptions& options) {
   if (options.node < 0 || options.node >= model.n_nodes())
     throw Error(fmt::format("no node {} in the model", options.node));

@@ -66,6 +66,12 @@ Model with_cross_coupling(const Model& model, Index node, Real q);
 /// @p speed, and its frequency [Hz]; throws Error when there is no forward mode.
 std::pair<Real, Real> first_forward_log_decrement(const Model& model, Real speed);
 
+/// The rotating node where the first forward lateral mode of @p model at @p speed
+/// moves most: where API 617 puts the cross-coupling of a rotor whose stages are
+/// not given (mid-span of a between-bearing rotor, the overhung impeller otherwise).
+/// Throws Error when there is no forward lateral mode.
+Index largest_forward_motion_node(const Model& model, Real speed);
+
 /// Runs the sweep. Throws Error for a node out of range or not rotating, a speed ≤ 0
 /// or fewer than 2 points.
 StabilitySweepResult run_stability_sweep(const Model& model, const StabilitySweepOptions& options);
