@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -268,6 +269,24 @@ std::string html_report(const ModelFile& file, const ReportOptions& options) {
       ho.stop = options.stop;
       const HarmonicResult hr = run_harmonic_response(model, ho);
       json j = json::parse(response_json(hr, ho, model, source));
+      // With an operating range, each peak's amplification factor and margins (API 684).
+      if (low && high) {
+        json peaks = json::array();
+        for (std::size_t p = 0; p < hr.probes.size(); ++p) {
+          std::vector<Real> amplitude;
+          for (const Orbit& o : hr.probes[p].orbit) amplitude.push_back(o.major);
+          for (const SeparationCheck& c :
+               separation_checks(std::span<const Real>(hr.speeds.data(), amplitude.size()), amplitude, *low, *high))
+            peaks.push_back({{"probe", p},
+                             {"speed_rpm", c.peak.speed * 30 / 3.14159265358979323846},
+                             {"amplitude_m", c.peak.amplitude},
+                             {"amplification_factor", c.peak.resolved() ? json(c.peak.amplification_factor) : json(nullptr)},
+                             {"actual_margin", c.actual_margin},
+                             {"required_margin", c.required_margin ? json(*c.required_margin) : json(nullptr)},
+                             {"passes", c.passes ? json(*c.passes) : json(nullptr)}});
+        }
+        j["peaks"] = peaks;
+      }
       // The deflected shape at one speed: every node's orbit, from a response there.
       Real at = options.deflection_speed.value_or(0.0);
       if (!options.deflection_speed) {

@@ -126,6 +126,9 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
 }
 
 void read_report_config_file(const std::string& path, const Model& model, ReportOptions& options) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(fmt::format("cannot open the report configuration '{}': no such file", path));
   read_report_config(read_text_file(path), path, model, options);
 }
 

@@ -5,7 +5,6 @@
 #include <limits>
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include <feran/analyses/modal/whirl.hpp>
@@ -14,6 +13,8 @@
 #include <feran/core/parallel.hpp>
 #include <feran/core/root_finding.hpp>
 #include <feran/elements/spring_damper.hpp>
+
+#include "../modal/state_eigen.hpp"
 
 namespace feran {
 
@@ -66,23 +67,30 @@ Synchronous synchronous_whirl(const Matrix& M, const Matrix& G, const Matrix& K)
   const Eigen::LLT<Matrix> llt(K);
   if (llt.info() != Eigen::Success)
     throw Error("the lateral stiffness is singular: the rotor is not held laterally (give its bearings stiffness)");
-  const Index n = K.rows();
-  ComplexMatrix B = M.cast<Complex>() - Complex(0, 1) * G.cast<Complex>();
-  const ComplexMatrix L = llt.matrixL().toDenseMatrix().cast<Complex>();
-  const auto Lt = L.triangularView<Eigen::Lower>();
-  ComplexMatrix X = Lt.solve(B);                       // L⁻¹·B
-  ComplexMatrix C = Lt.solve(ComplexMatrix(X.adjoint())).adjoint();  // L⁻¹·B·L⁻ᴴ
-  C = (C + C.adjoint()).eval() * 0.5;
-  const Eigen::SelfAdjointEigenSolver<ComplexMatrix> eig(C);
-  if (eig.info() != Eigen::Success) throw Error("the synchronous whirl eigenproblem did not converge");
+  // L⁻¹(M − iG)L⁻ᵀ = P − iQ with the real P = L⁻¹ M L⁻ᵀ and Q = L⁻¹ G L⁻ᵀ.
+  const auto L = llt.matrixL();
+  const auto congruent = [&](const Matrix& A) {
+    const Matrix X = L.solve(A);
+    return Matrix(L.solve(Matrix(X.transpose())).transpose());
+  };
+  const Matrix P = congruent(M), Q = congruent(G);
+  ComplexMatrix C(P.rows(), P.cols());
+  C.real() = 0.5 * (P + P.transpose());
+  C.imag() = -0.5 * (Q - Q.transpose());
+  Vector mu;
+  ComplexMatrix y;
+  if (!detail::hermitian_eigen(std::move(C), mu, y)) throw Error("the synchronous whirl eigenproblem did not converge");
   Synchronous out;
   // Eigenvalues ascend: the largest μ is the lowest speed.
-  const Real mu_max = eig.eigenvalues().cwiseAbs().maxCoeff();
-  for (Index i = n - 1; i >= 0; --i) {
-    const Real mu = eig.eigenvalues()(i);
-    if (!(mu > 1e-13 * mu_max)) break;
-    out.speeds.push_back(1.0 / std::sqrt(mu));
-    out.x.push_back(L.adjoint().triangularView<Eigen::Upper>().solve(eig.eigenvectors().col(i)));
+  const Real mu_max = mu.cwiseAbs().maxCoeff();
+  const auto Lt = llt.matrixU();
+  for (Index i = mu.size() - 1; i >= 0; --i) {
+    if (!(mu(i) > 1e-13 * mu_max)) break;
+    out.speeds.push_back(1.0 / std::sqrt(mu(i)));
+    ComplexVector x(y.rows());  // x = L⁻ᵀ·y, real and imaginary parts apart
+    x.real() = Lt.solve(Vector(y.col(i).real()));
+    x.imag() = Lt.solve(Vector(y.col(i).imag()));
+    out.x.push_back(std::move(x));
   }
   return out;
 }
@@ -119,8 +127,10 @@ struct LateralSystem {
       while (b < s.speeds.size() && s.speeds[b] - s.speeds[a] <= 1e-9 * s.speeds[b]) ++b;
       if (b - a > 1) {
         const auto block = shapes.middleCols(static_cast<Index>(a), static_cast<Index>(b - a));
-        const Eigen::SelfAdjointEigenSolver<ComplexMatrix> w(whirl_form(block));
-        shapes.middleCols(static_cast<Index>(a), static_cast<Index>(b - a)) = ComplexMatrix(block * w.eigenvectors());
+        Vector values;
+        ComplexMatrix vectors;
+        if (detail::hermitian_eigen(whirl_form(block), values, vectors))
+          shapes.middleCols(static_cast<Index>(a), static_cast<Index>(b - a)) = ComplexMatrix(block * vectors);
       }
       a = b;
     }

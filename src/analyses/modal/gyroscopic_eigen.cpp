@@ -94,4 +94,22 @@ std::optional<StateEigenpairs> dense_gyroscopic_eigen(const ComplexMatrix& M, co
   return out;
 }
 
+bool hermitian_eigen(ComplexMatrix A, Vector& values, ComplexMatrix& vectors) {
+  const int n = static_cast<int>(A.rows());
+  values.resize(n);
+  if (n == 0) {
+    vectors.resize(0, 0);
+    return true;
+  }
+  const int lwork = 2 * n + n * n, lrwork = 1 + 5 * n + 2 * n * n, liwork = 3 + 5 * n;
+  std::vector<Complex> work(static_cast<std::size_t>(lwork));
+  std::vector<Real> rwork(static_cast<std::size_t>(lrwork));
+  std::vector<int> iwork(static_cast<std::size_t>(liwork));
+  int info = 0;
+  zheevd_("V", "L", &n, A.data(), &n, values.data(), work.data(), &lwork, rwork.data(), &lrwork, iwork.data(), &liwork,
+          &info);
+  vectors = std::move(A);
+  return info == 0;
+}
+
 }  // namespace feran::detail

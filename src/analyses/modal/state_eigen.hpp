@@ -87,6 +87,10 @@ StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix&
 StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const ComplexSparseMatrix& D,
                                      const ComplexSparseMatrix& K, Index n_wanted, Real sigma);
 
+/// All eigenvalues (ascending) and orthonormal eigenvectors of the Hermitian matrix
+/// @p A (its lower triangle is used), by LAPACK's zheevd; false when it did not converge.
+bool hermitian_eigen(ComplexMatrix A, Vector& values, ComplexMatrix& vectors);
+
 // A conservative gyroscopic problem — M and K Hermitian positive definite, D
 // skew-Hermitian (gyroscopic terms only: no damping, no circulatory stiffness) — has
 // its eigenvalues on the imaginary axis, p = iω, and with H = iD Hermitian,

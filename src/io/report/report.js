@@ -209,10 +209,22 @@
       const sp = r.speeds_hz.map(fromHz);
       const critShapes = operatingShape().concat(campbell.critical_speeds.filter((c) => c.order === 1 && c.whirl === "forward").map((c) => ({
         type: "line", x0: fromHz(c.speed_hz), x1: fromHz(c.speed_hz), y0: 0, y1: 1, yref: "paper", line: { dash: "dot", color: "#999" } })));
-      figure(s, r.probes.map((p, i) => ({ name: p.name || `node ${p.node}`, x: sp, y: p.amplitude_m.map((a) => a * 1e6), mode: "lines", line: { color: palette[i % palette.length] },
-                                          hovertemplate: `%{x:.5g} ${unit}<br>%{y:.4g} µm<extra>${p.name || p.node}</extra>` })),
-             { title: { text: "amplitude (Bode)" }, xaxis: axis(speedTitle), yaxis: axis("amplitude [µm]"), shapes: critShapes, height: 420 },
-             "Dotted: forward critical speeds of the Campbell diagram.");
+      const bode = r.probes.map((p, i) => ({ name: p.name || `node ${p.node}`, x: sp, y: p.amplitude_m.map((a) => a * 1e6), mode: "lines", line: { color: palette[i % palette.length] },
+                                             hovertemplate: `%{x:.5g} ${unit}<br>%{y:.4g} µm<extra>${p.name || p.node}</extra>` }));
+      const judged = (r.peaks || []).filter((k) => k.amplification_factor !== null);
+      if (r.peaks)
+        bode.push({ name: "peaks (AF, SM)", x: judged.map((k) => fromRpm(k.speed_rpm)), y: judged.map((k) => k.amplitude_m * 1e6), mode: "markers",
+                    marker: { size: 10, symbol: judged.map((k) => (k.passes ? "circle" : "x")), color: judged.map((k) => (k.passes ? "#2ca02c" : "#d62728")) },
+                    text: judged.map((k) => `AF ${fmt(k.amplification_factor, 3)}<br>SM required ${fmt(100 * k.required_margin, 3)} %, actual ${fmt(100 * k.actual_margin, 3)} %`),
+                    hovertemplate: `%{x:.5g} ${unit}<br>%{text}<extra></extra>` });
+      figure(s, bode, { title: { text: "amplitude (Bode)" }, xaxis: axis(speedTitle), yaxis: axis("amplitude [µm]"), shapes: critShapes, height: 420 },
+             "Dotted: forward critical speeds of the Campbell diagram; green band: the operating range" +
+             (r.peaks ? "; markers: resonance peaks with their amplification factor and separation margins (● passes API 617, × fails; hover)." : "."));
+      if (r.peaks)
+        table(s, ["probe", `peak [${unit}]`, "amplitude [µm]", "AF", "SM required", "SM actual", "verdict"],
+              r.peaks.map((k) => [r.probes[k.probe].name || r.probes[k.probe].node, fmt(fromRpm(k.speed_rpm), 6), fmt(k.amplitude_m * 1e6),
+                                  fmt(k.amplification_factor, 3), k.required_margin === null ? "–" : `${fmt(100 * k.required_margin, 3)} %`,
+                                  `${fmt(100 * k.actual_margin, 3)} %`, k.passes === null ? "not judged" : k.passes ? "pass" : "FAIL"]));
       figure(s, r.probes.map((p, i) => ({ name: p.name || `node ${p.node}`, x: sp, y: p.phase_deg, mode: "lines", line: { color: palette[i % palette.length] } })),
              { title: { text: "phase of v (Bode)" }, xaxis: axis(speedTitle), yaxis: axis("phase [deg]"), shapes: critShapes, height: 360 });
       figure(s, r.probes.map((p, i) => ({ type: "scatterpolar", name: p.name || `node ${p.node}`, r: p.dofs.v.amplitude.map((a) => a * 1e6), theta: p.dofs.v.phase_deg,
