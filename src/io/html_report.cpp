@@ -126,7 +126,7 @@ json model_summary(const ModelFile& file, Real speed) {
           {"shafts", shafts},
           {"bodies", bodies},
           {"springs", springs},
-          {"springs_at_speed_rpm", speed * 30 / 3.14159265358979323846},
+          {"springs_at_speed_rpm", rad_to_hz(speed) * 60},
           {"rotor", rotor_properties(model)},
           {"n_dofs", model.n_dofs()}};
 }
@@ -230,7 +230,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options) {
   data["title"] = options.title.empty() ? (file.title.empty() ? std::filesystem::path(file.path).filename().string() : file.title)
                                         : options.title;
   data["speed_unit"] = options.speed_unit;
-  data["operating"] = low && high ? json{{"min_rpm", *low * 30 / 3.14159265358979323846}, {"max_rpm", *high * 30 / 3.14159265358979323846}}
+  data["operating"] = low && high ? json{{"min_rpm", rad_to_hz(*low) * 60}, {"max_rpm", rad_to_hz(*high) * 60}}
                                   : json(nullptr);
   data["model"] = model_summary(file, high.value_or(0.0));
 
@@ -278,7 +278,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options) {
           for (const SeparationCheck& c :
                separation_checks(std::span<const Real>(hr.speeds.data(), amplitude.size()), amplitude, *low, *high))
             peaks.push_back({{"probe", p},
-                             {"speed_rpm", c.peak.speed * 30 / 3.14159265358979323846},
+                             {"speed_rpm", rad_to_hz(c.peak.speed) * 60},
                              {"amplitude_m", c.peak.amplitude},
                              {"amplification_factor", c.peak.resolved() ? json(c.peak.amplification_factor) : json(nullptr)},
                              {"actual_margin", c.actual_margin},

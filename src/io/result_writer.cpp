@@ -499,11 +499,6 @@ json rpms(const std::vector<Real>& speeds) {
 
 json optional_number(const std::optional<Real>& x) { return x ? number(*x) : json(nullptr); }
 
-std::string element_name(const Model& model, Index e) {
-  const std::string& label = model.elements[static_cast<std::size_t>(e)].label();
-  return label.empty() ? fmt::format("element {}", e + 1) : label;
-}
-
 json case_json(const Api684Case& c, const Model& model) {
   json jc = {{"name", c.name}, {"passes", c.passes}, {"solver", solver_json(c.response.info)}};
   jc["mode"] = c.mode ? json{{"frequency_hz", number(c.mode->frequency_hz)},
@@ -548,7 +543,7 @@ json case_json(const Api684Case& c, const Model& model) {
 
 json map_json(const CriticalSpeedMapResult& map, const Model& model) {
   json jm = {{"bearings", json::array()}, {"stiffness_n_per_m", numbers(map.stiffness)}, {"solver", solver_json(map.info)}};
-  for (const Index e : map.springs) jm["bearings"].push_back(element_name(model, e));
+  for (const Index e : map.springs) jm["bearings"].push_back(element_label(model, e));
   const std::size_t nc = map.criticals.empty() ? 0 : map.criticals.front().size();
   json lines = json::array();
   for (std::size_t n = 0; n < nc; ++n) {
@@ -559,14 +554,14 @@ json map_json(const CriticalSpeedMapResult& map, const Model& model) {
   jm["criticals_rpm"] = lines;
   json curves = json::array();
   for (const BearingCurve& c : map.curves)
-    curves.push_back({{"bearing", element_name(model, c.element)},
+    curves.push_back({{"bearing", element_label(model, c.element)},
                       {"direction", c.direction},
                       {"speeds_rpm", rpms(c.speeds)},
                       {"stiffness_n_per_m", numbers(c.stiffness)}});
   jm["curves"] = curves;
   json crossings = json::array();
   for (const MapIntersection& x : map.intersections)
-    crossings.push_back({{"bearing", element_name(model, x.element)},
+    crossings.push_back({{"bearing", element_label(model, x.element)},
                          {"direction", x.direction},
                          {"critical", x.critical},
                          {"speed_rpm", number(rpm_of(x.speed))},
@@ -598,14 +593,14 @@ std::string api684_json(const Api684Result& result, const Model& model, const Re
   json journals = json::array();
   for (const JournalLoad& l : result.journals) {
     json jl = node_json(model, l.node);
-    jl["bearing"] = element_name(model, l.element);
+    jl["bearing"] = element_label(model, l.element);
     jl["force_n"] = l.force;
     jl["mass_kg"] = l.mass;
     journals.push_back(jl);
   }
   j["journal_loads"] = journals;
   j["bearings"] = json::array();
-  for (const Index e : result.bearings) j["bearings"].push_back(element_name(model, e));
+  for (const Index e : result.bearings) j["bearings"].push_back(element_label(model, e));
   json undamped = json::array();
   for (const UndampedCritical& c : result.undamped)
     undamped.push_back({{"speed_rpm", number(rpm_of(c.speed))}, {"directivity", number(c.directivity)}});

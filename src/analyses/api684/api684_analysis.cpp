@@ -15,7 +15,7 @@ namespace feran {
 
 namespace {
 
-constexpr Real rpm_per_rad_s = 30.0 / 3.14159265358979323846;
+constexpr Real rpm_per_rad_s = 30.0 / pi;
 
 // The rotating node of a bearing.
 Index rotating_node(const Model& model, Index element) {
@@ -149,7 +149,7 @@ std::vector<PlacedUnbalance> api684_placement(const Model& model, const ComplexV
     const std::string& label = model.elements[static_cast<std::size_t>(j.element)].label();
     return label.empty() ? fmt::format("bearing at node {}", model.node_label(j.node)) : label;
   };
-  return {placed(positive, jp.mass, 0.0, name(jp)), placed(negative, jn.mass, 3.14159265358979323846, name(jn))};
+  return {placed(positive, jp.mass, 0.0, name(jp)), placed(negative, jn.mass, pi, name(jn))};
 }
 
 Api684Result run_api684(const Model& model, const Api684Options& options) {

@@ -14,7 +14,6 @@
 namespace feran {
 namespace {
 
-constexpr Real pi = 3.14159265358979323846;
 constexpr Real m = 10.0, k = 1e6, c = 200.0;  // ω_n = 316.2 rad/s, ζ = 0.0316
 
 // The Jeffcott rotor's forward root of m s² + c s + k − iQ = 0 (r = v + iw, the

@@ -18,7 +18,6 @@ using test::add_isotropic_bearing;
 using test::add_shaft;
 using test::steel;
 
-constexpr Real pi = 3.14159265358979323846;
 constexpr Real L = 1.0, d = 0.05;
 
 // A uniform steel shaft on isotropic bearings at both ends, axial and torsional

@@ -17,7 +17,6 @@
 namespace feran {
 namespace {
 
-constexpr Real pi = 3.14159265358979323846;
 
 // A uniform steel shaft, 0.8 m × Ø 40 mm, on two bearings.
 std::string shaft_model(const std::string& title, const std::string& extra = "") {
