@@ -29,7 +29,7 @@ stage "the Release tests"
 
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g0 -O1" \
   -DFERAN_SANITIZE=ON -DFERAN_FUZZ=ON -DFERAN_LONG_TESTS=OFF -DFERAN_BUILD_PYTHON=OFF -DFERAN_BROWSER_TESTS=OFF \
-  -DFERAN_WARNINGS_AS_ERRORS=ON >/dev/null
+  -DFERAN_WARNINGS_AS_ERRORS=ON -DFERAN_UNITY_BUILD=ON >/dev/null
 cmake --build build-sanitize -j "$jobs" >/dev/null
 stage "the sanitizer build"
 ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long_runup

@@ -1,8 +1,13 @@
 #pragma once
 // Fields of the CSV files feran writes (RFC 4180).
 
+#include <cmath>
 #include <string>
 #include <string_view>
+
+#include <fmt/format.h>
+
+#include <feran/model/model.hpp>
 
 namespace feran::detail {
 
@@ -28,6 +33,21 @@ inline std::string csv_column(std::string name, std::string_view suffix) {
     if (c == ' ') c = '_';
   name += suffix;
   return csv_field(name);
+}
+
+/// @p x as a CSV number with ten significant digits; an empty field when not finite.
+inline std::string csv_number(Real x) { return std::isfinite(x) ? fmt::format("{:.10g}", x) : ""; }
+
+/// The name a node's columns start with: its name, or node<number> when it has none.
+inline std::string csv_node_tag(const Model& model, Index node) {
+  const Node& n = model.nodes[static_cast<std::size_t>(node)];
+  return n.name.empty() ? fmt::format("node{}", n.number) : n.name;
+}
+
+/// The name an element's columns start with: its label, or element<position from 1>.
+inline std::string csv_element_tag(const Model& model, Index element) {
+  const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
+  return label.empty() ? fmt::format("element{}", element + 1) : label;
 }
 
 }  // namespace feran::detail

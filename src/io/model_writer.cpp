@@ -17,7 +17,7 @@ using spec::Field;
 using spec::FieldKind;
 
 /// A TOML basic string: quotes, backslashes and control characters escaped.
-std::string quoted(std::string_view text) {
+std::string toml_string(std::string_view text) {
   std::string out = "\"";
   for (const char c : text) {
     switch (c) {
@@ -46,12 +46,12 @@ std::string number(Real value) {
 }
 
 std::string quantity(Real si, Quantity kind, std::string_view unit) {
-  return quoted(format_quantity(si, kind, unit));
+  return toml_string(format_quantity(si, kind, unit));
 }
 
 std::string node(const NodeRef& ref) {
   if (const auto* number = std::get_if<std::int64_t>(&ref)) return fmt::format("{}", *number);
-  return quoted(std::get<std::string>(ref));
+  return toml_string(std::get<std::string>(ref));
 }
 
 template <class T, class F>
@@ -120,11 +120,11 @@ std::string value_of(const S& entry, const Field<S>& f) {
                              std::is_same_v<T, std::optional<bool>>) {
           return fmt::format("{}", *v);
         } else if constexpr (std::is_same_v<T, std::string>) {
-          return quoted(v);
+          return toml_string(v);
         } else if constexpr (std::is_same_v<T, std::optional<std::string>>) {
-          return quoted(*v);
+          return toml_string(*v);
         } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
-          return array(v, [](const std::string& s) { return quoted(s); });
+          return array(v, [](const std::string& s) { return toml_string(s); });
         } else if constexpr (std::is_same_v<T, NodeRef>) {
           return node(v);
         } else if constexpr (std::is_same_v<T, std::optional<NodeRef>>) {
@@ -169,7 +169,7 @@ void write_entry(std::string& out, std::string_view key, const S& entry) {
 
 std::string write_toml(const ModelSpec& spec) {
   std::string out;
-  if (!spec.title.empty()) out += fmt::format("title = {}\n", quoted(spec.title));
+  if (!spec.title.empty()) out += fmt::format("title = {}\n", toml_string(spec.title));
   spec::visit_tables(spec, [&](std::string_view key, spec::TableForm, std::string_view,
                                const auto& member) {
     using M = std::remove_cvref_t<decltype(member)>;

@@ -20,7 +20,19 @@ namespace feran {
 
 namespace fs = std::filesystem;
 
+namespace detail {
+// A file's identity (device and inode), in a named namespace because the outputs'
+// state (OutputFiles::Output) holds one.
+struct FileId {
+  dev_t dev = 0;
+  ino_t ino = 0;
+  bool operator==(const FileId& o) const { return dev == o.dev && ino == o.ino; }
+};
+}  // namespace detail
+
 namespace {
+
+using detail::FileId;
 
 // The temporary files not yet renamed, for remove_temporary_outputs(): fixed slots
 // of pointers to names owned by the outputs, so that a signal handler can read them
@@ -81,12 +93,6 @@ int write_all(int fd, std::string_view data) {
   }
   return 0;
 }
-
-struct FileId {
-  dev_t dev = 0;
-  ino_t ino = 0;
-  bool operator==(const FileId& o) const { return dev == o.dev && ino == o.ino; }
-};
 
 std::optional<FileId> file_id(const struct stat& st) { return FileId{st.st_dev, st.st_ino}; }
 

@@ -17,12 +17,13 @@ namespace {
 
 using nlohmann::json;
 
-// NaN and infinities have no JSON spelling: they become null.
-json number(Real x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+using detail::direction_names;
+using detail::dof_names;
+using detail::json_number;
 
 json numbers(const std::vector<Real>& xs) {
   json a = json::array();
-  for (Real x : xs) a.push_back(number(x));
+  for (Real x : xs) a.push_back(json_number(x));
   return a;
 }
 
@@ -44,7 +45,7 @@ json header(const std::string& analysis, const ResultSource& source) {
 }
 
 // CSV field: numbers in full precision, empty for NaN.
-std::string csv_number(Real x) { return std::isfinite(x) ? fmt::format("{:.10g}", x) : ""; }
+using detail::csv_number;
 
 
 json node_json(const Model& model, Index node) {
@@ -70,8 +71,6 @@ json dof_series(const std::vector<NodeAmplitudes>& values, const std::array<bool
   return out;
 }
 
-constexpr const char* dof_names[dofs_per_node] = {"u", "v", "w", "rx", "ry", "rz"};
-constexpr const char* direction_names[dofs_per_node] = {"x", "y", "z", "rx", "ry", "rz"};
 constexpr std::array<bool, dofs_per_node> all_dofs{true, true, true, true, true, true};
 
 std::string element_label(const Model& model, Index element) {
@@ -241,10 +240,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
 
 std::string response_csv(const HarmonicResult& result, const Model& model) {
   std::ostringstream out;
-  auto node_tag = [&](Index node) {
-    const Node& nd = model.nodes[static_cast<std::size_t>(node)];
-    return nd.name.empty() ? fmt::format("node{}", nd.number) : nd.name;
-  };
+  auto node_tag = [&](Index node) { return detail::csv_node_tag(model, node); };
   out << "speed_hz,frequency_hz";
   for (const ProbeResponse& p : result.probes)
     for (const char* suffix : {"_amplitude_m", "_minor_m", "_v_amplitude_m", "_v_phase_deg", "_w_amplitude_m",
@@ -366,12 +362,12 @@ std::string modal_json(const ModalResult& result, const Model& model, const Resu
   int index = 0;
   for (const Mode& m : result.modes) {
     json jm = {{"index", ++index},
-               {"frequency_hz", number(m.frequency_hz)},
-               {"damping_ratio", number(m.damping_ratio)},
-               {"log_decrement", number(m.log_decrement)},
+               {"frequency_hz", json_number(m.frequency_hz)},
+               {"damping_ratio", json_number(m.damping_ratio)},
+               {"log_decrement", json_number(m.log_decrement)},
                {"eigenvalue", {{"real", m.eigenvalue.real()}, {"imag", m.eigenvalue.imag()}}},
                {"whirl", to_string(m.whirl)},
-               {"directivity", number(m.directivity)},
+               {"directivity", json_number(m.directivity)},
                {"type", to_string(m.type)},
                {"rigid_body", m.rigid_body},
                {"oscillatory", m.oscillatory}};
@@ -477,7 +473,7 @@ std::string parameters_json(const std::vector<Parameter>& parameters, const Resu
   json list = json::array();
   for (const Parameter& p : parameters)
     list.push_back({{"path", p.path},
-                    {"value", number(p.value)},
+                    {"value", json_number(p.value)},
                     {"si_unit", p.quantity ? std::string(si_unit(*p.quantity)) : std::string()},
                     {"quantity", p.quantity ? std::string(quantity_name(*p.quantity)) : std::string()},
                     {"integer", p.integer},
@@ -493,17 +489,17 @@ Real rpm_of(Real speed) { return rad_to_hz(speed) * 60.0; }
 
 json rpms(const std::vector<Real>& speeds) {
   json a = json::array();
-  for (const Real s : speeds) a.push_back(number(rpm_of(s)));
+  for (const Real s : speeds) a.push_back(json_number(rpm_of(s)));
   return a;
 }
 
-json optional_number(const std::optional<Real>& x) { return x ? number(*x) : json(nullptr); }
+json optional_number(const std::optional<Real>& x) { return x ? json_number(*x) : json(nullptr); }
 
 json case_json(const Api684Case& c, const Model& model) {
   json jc = {{"name", c.name}, {"passes", c.passes}, {"solver", solver_json(c.response.info)}};
-  jc["mode"] = c.mode ? json{{"frequency_hz", number(c.mode->frequency_hz)},
-                             {"log_decrement", number(c.mode->log_decrement)},
-                             {"damping_ratio", number(c.mode->damping_ratio)}}
+  jc["mode"] = c.mode ? json{{"frequency_hz", json_number(c.mode->frequency_hz)},
+                             {"log_decrement", json_number(c.mode->log_decrement)},
+                             {"damping_ratio", json_number(c.mode->damping_ratio)}}
                       : json(nullptr);
   json unbalances = json::array();
   for (const PlacedUnbalance& u : c.unbalances) {
@@ -522,16 +518,16 @@ json case_json(const Api684Case& c, const Model& model) {
     const ProbeResponse& pr = c.response.probes[p];
     json jp = node_json(model, pr.node);
     json amplitude = json::array();
-    for (const Orbit& o : pr.orbit) amplitude.push_back(number(o.major));
+    for (const Orbit& o : pr.orbit) amplitude.push_back(json_number(o.major));
     jp["amplitude_m"] = amplitude;
     json peaks = json::array();
     for (const SeparationCheck& k : c.checks[p])
-      peaks.push_back({{"speed_rpm", number(rpm_of(k.peak.speed))},
-                       {"amplitude_m", number(k.peak.amplitude)},
-                       {"lower_half_power_rpm", k.peak.lower_half_power ? number(rpm_of(*k.peak.lower_half_power)) : json(nullptr)},
-                       {"upper_half_power_rpm", k.peak.upper_half_power ? number(rpm_of(*k.peak.upper_half_power)) : json(nullptr)},
-                       {"amplification_factor", number(k.peak.amplification_factor)},
-                       {"actual_margin", number(k.actual_margin)},
+      peaks.push_back({{"speed_rpm", json_number(rpm_of(k.peak.speed))},
+                       {"amplitude_m", json_number(k.peak.amplitude)},
+                       {"lower_half_power_rpm", k.peak.lower_half_power ? json_number(rpm_of(*k.peak.lower_half_power)) : json(nullptr)},
+                       {"upper_half_power_rpm", k.peak.upper_half_power ? json_number(rpm_of(*k.peak.upper_half_power)) : json(nullptr)},
+                       {"amplification_factor", json_number(k.peak.amplification_factor)},
+                       {"actual_margin", json_number(k.actual_margin)},
                        {"required_margin", optional_number(k.required_margin)},
                        {"passes", k.passes ? json(*k.passes) : json(nullptr)}});
     jp["peaks"] = peaks;
@@ -548,7 +544,7 @@ json map_json(const CriticalSpeedMapResult& map, const Model& model) {
   json lines = json::array();
   for (std::size_t n = 0; n < nc; ++n) {
     json line = json::array();
-    for (const auto& row : map.criticals) line.push_back(number(rpm_of(row[n])));
+    for (const auto& row : map.criticals) line.push_back(json_number(rpm_of(row[n])));
     lines.push_back(line);
   }
   jm["criticals_rpm"] = lines;
@@ -564,8 +560,8 @@ json map_json(const CriticalSpeedMapResult& map, const Model& model) {
     crossings.push_back({{"bearing", element_label(model, x.element)},
                          {"direction", x.direction},
                          {"critical", x.critical},
-                         {"speed_rpm", number(rpm_of(x.speed))},
-                         {"stiffness_n_per_m", number(x.stiffness)}});
+                         {"speed_rpm", json_number(rpm_of(x.speed))},
+                         {"stiffness_n_per_m", json_number(x.stiffness)}});
   jm["intersections"] = crossings;
   return jm;
 }
@@ -603,7 +599,7 @@ std::string api684_json(const Api684Result& result, const Model& model, const Re
   for (const Index e : result.bearings) j["bearings"].push_back(element_label(model, e));
   json undamped = json::array();
   for (const UndampedCritical& c : result.undamped)
-    undamped.push_back({{"speed_rpm", number(rpm_of(c.speed))}, {"directivity", number(c.directivity)}});
+    undamped.push_back({{"speed_rpm", json_number(rpm_of(c.speed))}, {"directivity", json_number(c.directivity)}});
   j["undamped_criticals"] = undamped;
   json cases = json::array();
   bool passes = true;

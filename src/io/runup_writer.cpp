@@ -15,23 +15,9 @@ namespace feran {
 namespace {
 
 using nlohmann::json;
-
-json number(Real x) { return std::isfinite(x) ? json(x) : json(nullptr); }
-
-std::string node_tag(const Model& model, Index node) {
-  const Node& n = model.nodes[static_cast<std::size_t>(node)];
-  return n.name.empty() ? fmt::format("node{}", n.number) : n.name;
-}
-
-std::string element_tag(const Model& model, Index element) {
-  std::string s = model.elements[static_cast<std::size_t>(element)].label();
-  return s.empty() ? fmt::format("element{}", element + 1) : s;
-}
-
-std::string csv(Real x) { return std::isfinite(x) ? fmt::format("{:.10g}", x) : ""; }
-
-constexpr const char* dof_names[dofs_per_node] = {"u", "v", "w", "rx", "ry", "rz"};
-constexpr const char* direction_names[dofs_per_node] = {"x", "y", "z", "rx", "ry", "rz"};
+using detail::csv_number;
+using detail::direction_names;
+using detail::dof_names;
 
 }  // namespace
 
@@ -39,32 +25,32 @@ RunupCsvWriter::RunupCsvWriter(OutputFiles& files, int output, const Model& mode
     : files_(files), output_(output) {
   std::string header = "time_s,speed_hz";
   for (Index node : options.probes) {
-    const std::string t = node_tag(model, node);
+    const std::string t = detail::csv_node_tag(model, node);
     header += ',' + detail::csv_column(t, "_magnitude_m");
     for (const char* d : dof_names) header += ',' + detail::csv_column(t, std::string("_") + d);
   }
   for (Index e : options.springs)
-    for (const char* d : direction_names) header += ',' + detail::csv_column(element_tag(model, e), std::string("_f") + d);
+    for (const char* d : direction_names) header += ',' + detail::csv_column(detail::csv_element_tag(model, e), std::string("_f") + d);
   header += '\n';
   files_.append(output_, header);
 }
 
 void RunupCsvWriter::write(const TransientSample& s) {
-  row_ = csv(s.t);
+  row_ = csv_number(s.t);
   row_ += ',';
-  row_ += csv(rad_to_hz(s.speed));
+  row_ += csv_number(rad_to_hz(s.speed));
   for (std::size_t p = 0; p < s.probes.size(); ++p) {
     row_ += ',';
-    row_ += csv(s.magnitude[p]);
+    row_ += csv_number(s.magnitude[p]);
     for (Real q : s.probes[p]) {
       row_ += ',';
-      row_ += csv(q);
+      row_ += csv_number(q);
     }
   }
   for (const auto& f : s.springs)
     for (Real c : f) {
       row_ += ',';
-      row_ += csv(c);
+      row_ += csv_number(c);
     }
   row_ += '\n';
   files_.append(output_, row_);
@@ -106,8 +92,8 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
     json dofs = json::object();
     for (const char* d : dof_names) dofs[d] = json::array();
     for (const TransientSample& s : result.samples) {
-      mag.push_back(number(s.magnitude[p]));
-      for (int d = 0; d < dofs_per_node; ++d) dofs[dof_names[d]].push_back(number(s.probes[p][static_cast<std::size_t>(d)]));
+      mag.push_back(detail::json_number(s.magnitude[p]));
+      for (int d = 0; d < dofs_per_node; ++d) dofs[dof_names[d]].push_back(detail::json_number(s.probes[p][static_cast<std::size_t>(d)]));
     }
     jp["magnitude_m"] = mag;
     jp["dofs"] = dofs;
@@ -115,7 +101,7 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
     json es = json::array(), em = json::array();
     for (std::size_t b = 0; b < e.speed.size(); ++b) {
       es.push_back(rad_to_hz(e.speed[b]));
-      em.push_back(number(e.magnitude[b]));
+      em.push_back(detail::json_number(e.magnitude[b]));
     }
     jp["envelope"] = {{"speed_hz", es}, {"magnitude_m", em}};
     jp["peak"] = {{"magnitude_m", e.peak}, {"time_s", e.peak_time}, {"speed_hz", rad_to_hz(e.peak_speed)}};
@@ -128,7 +114,7 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
     json force = json::object();
     for (int d = 0; d < dofs_per_node; ++d) {
       json series = json::array();
-      for (const TransientSample& s : result.samples) series.push_back(number(s.springs[k][static_cast<std::size_t>(d)]));
+      for (const TransientSample& s : result.samples) series.push_back(detail::json_number(s.springs[k][static_cast<std::size_t>(d)]));
       force[direction_names[d]] = series;
     }
     js["force_n"] = force;

@@ -15,6 +15,7 @@
 #include <feran/study/sensitivity.hpp>
 
 #include "csv_text.hpp"
+#include "json_text.hpp"
 
 namespace feran {
 
@@ -26,7 +27,7 @@ namespace {
 const char* scale_name(VariableScale s) { return s == VariableScale::log ? "log" : "linear"; }
 std::string si_unit_of(const std::optional<Quantity>& q) { return q ? std::string(si_unit(*q)) : std::string(); }
 
-json number(Real x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+using detail::json_number;
 
 void write_all(std::FILE* f, const std::string& text, const std::string& path) {
   if (std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fflush(f) != 0 || ::fsync(fileno(f)) != 0)
@@ -111,7 +112,7 @@ std::string evaluation_json(const StudySpec& study, const Evaluation& e) {
   for (std::size_t i = 0; i < study.variables.size(); ++i) values[study.variables[i].name] = e.values[i];
   if (!e.quantities.empty()) {
     quantities = json::object();
-    for (std::size_t i = 0; i < study.quantities.size(); ++i) quantities[study.quantities[i].name] = number(e.quantities[i]);
+    for (std::size_t i = 0; i < study.quantities.size(); ++i) quantities[study.quantities[i].name] = json_number(e.quantities[i]);
   }
   const json j = {{"index", e.index},       {"unit", e.unit},          {"variables", values},
                   {"quantities", quantities}, {"evaluated", e.evaluated}, {"feasible", e.feasible},
@@ -256,11 +257,11 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
       if (x.src.empty()) continue;
       json src = json::object(), srrc = json::object();
       for (std::size_t j = 0; j < study_.variables.size(); ++j) {
-        src[study_.variables[j].name] = number(x.src[j]);
-        srrc[study_.variables[j].name] = number(x.srrc[j]);
+        src[study_.variables[j].name] = json_number(x.src[j]);
+        srrc[study_.variables[j].name] = json_number(x.srrc[j]);
       }
-      table.push_back({{"quantity", x.quantity}, {"src", src}, {"r2", number(x.r2)}, {"srrc", srrc},
-                       {"r2_ranks", number(x.r2_ranks)}, {"samples", x.samples}});
+      table.push_back({{"quantity", x.quantity}, {"src", src}, {"r2", json_number(x.r2)}, {"srrc", srrc},
+                       {"r2_ranks", json_number(x.r2_ranks)}, {"samples", x.samples}});
     }
     summary["sensitivity"] = table;
   }

@@ -14,7 +14,7 @@
 #include <feran/io/study_reader.hpp>
 #include <feran/study/study.hpp>
 
-namespace feran {
+namespace feran::test_api684 {
 namespace {
 
 constexpr Real k = 1e6, M = 10;
@@ -123,9 +123,9 @@ TEST(Api684, TheSmallestSurplusIsThatOfTheWorstPeak) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_api684
 
-namespace feran {
+namespace feran::test_api684 {
 namespace {
 
 TEST(Api684, StudiesReadUndampedCriticalSpeedsAndTheLevelOneThresholdOfADampedMass) {
@@ -156,4 +156,4 @@ TEST(Api684, StudiesReadUndampedCriticalSpeedsAndTheLevelOneThresholdOfADampedMa
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_api684

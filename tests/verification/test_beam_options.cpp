@@ -23,7 +23,7 @@
 #include <feran/spec/build_model.hpp>
 #include <feran/spec/parameters.hpp>
 
-namespace feran {
+namespace feran::test_beam_options {
 namespace {
 
 constexpr Real L = 1.0, d = 0.1, E = 2.1e11, nu = 0.3, rho = 7800;
@@ -152,4 +152,4 @@ TEST(BeamOptions, RayleighDampingIsProportionalAndExternal) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_beam_options

@@ -6,7 +6,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_free_disk {
 namespace {
 
 TEST(FreeDisk, NutatesForwardAtPolarOverTransverseRatio) {
@@ -39,4 +39,4 @@ TEST(FreeDisk, NutatesForwardAtPolarOverTransverseRatio) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_free_disk

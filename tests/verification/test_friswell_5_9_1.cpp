@@ -9,7 +9,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_friswell_5_9_1 {
 namespace {
 
 std::vector<const Mode*> lateral(const ModalResult& r) {
@@ -82,4 +82,4 @@ TEST(Friswell591, SparseSolverAgreesWithDense) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_friswell_5_9_1

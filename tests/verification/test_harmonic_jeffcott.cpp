@@ -11,7 +11,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_harmonic_jeffcott {
 namespace {
 
 constexpr Real m = 9.1, k = 1.6e5, mu = 0.01, e = 0.08;
@@ -97,4 +97,4 @@ TEST(HarmonicJeffcott, LossFactorMakesTheStiffnessComplex) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_harmonic_jeffcott

@@ -8,7 +8,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_harmonic_response {
 namespace {
 
 const Complex I(0, 1);
@@ -195,4 +195,4 @@ TEST(HarmonicResponse, ClampForceBalancesTheRotorInertia) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_harmonic_response

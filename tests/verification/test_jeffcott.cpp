@@ -13,7 +13,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_jeffcott {
 namespace {
 
 constexpr Real m = 9.1, k = 1.6e5, c_a = 250.0, c_i = 638.0;
@@ -76,4 +76,4 @@ TEST(Jeffcott, ExternalDampingAloneStaysStable) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_jeffcott

@@ -10,7 +10,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_material_damping {
 namespace {
 
 TEST(MaterialDamping, ThresholdIsTheFirstForwardCriticalSpeed) {
@@ -39,4 +39,4 @@ TEST(MaterialDamping, ThresholdIsTheFirstForwardCriticalSpeed) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_material_damping

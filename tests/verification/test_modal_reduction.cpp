@@ -14,7 +14,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_modal_reduction {
 namespace {
 
 constexpr Index disk = 4;  // node at 0.5 m with 12 elements
@@ -152,4 +152,4 @@ TEST(ModalReduction, BasisFollowsASpeedScheduledBearing) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_modal_reduction

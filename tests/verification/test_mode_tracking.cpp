@@ -15,7 +15,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_mode_tracking {
 namespace {
 
 CampbellOptions sweep() {
@@ -89,4 +89,4 @@ TEST(ModeTracking, FollowsBranchesThroughAVeering) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_mode_tracking

@@ -11,7 +11,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_newton_convergence {
 namespace {
 
 constexpr Real m = test::runup_mass, k = test::runup_stiffness;
@@ -66,4 +66,4 @@ TEST(TrapezoidalNewton, FrictionWhirlConvergesAsDtSquared) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_newton_convergence

@@ -14,7 +14,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_overhung_disk {
 namespace {
 
 constexpr Real E = 2.1e11, d = 0.012, L = 0.08, m = 3.0, Ja = 0.004, Jp = 0.007;
@@ -77,4 +77,4 @@ TEST(OverhungDisk, WhirlFrequenciesMatchClosedForm) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_overhung_disk

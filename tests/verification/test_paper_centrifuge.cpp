@@ -19,7 +19,7 @@
 
 #include "campbell_lookup.hpp"
 
-namespace feran {
+namespace feran::test_paper_centrifuge {
 namespace {
 
 const std::string& example_dir() {
@@ -293,4 +293,4 @@ TEST(PaperCentrifuge, ArctanLawReducesTheMaximumDeflectionByAbout30Percent) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_paper_centrifuge

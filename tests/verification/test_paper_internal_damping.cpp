@@ -10,7 +10,7 @@
 
 #include "campbell_lookup.hpp"
 
-namespace feran {
+namespace feran::test_paper_internal_damping {
 namespace {
 
 struct Sweep {
@@ -149,4 +149,4 @@ TEST(PaperInternalDamping, DampingAndGrowthOfForwardWhirlOneAsQuoted) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_paper_internal_damping

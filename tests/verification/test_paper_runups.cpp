@@ -20,7 +20,7 @@
 #include <feran/analyses/settings.hpp>
 #include <feran/io/model_reader.hpp>
 
-namespace feran {
+namespace feran::test_paper_runups {
 namespace {
 
 std::string example(const std::string& name) { return std::string(FERAN_SOURCE_DIR) + "/examples/" + name; }
@@ -340,4 +340,4 @@ TEST(PaperRunups, Fig10ArctanLawLowersTheRunUpPeakByAbout30Percent) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_paper_runups

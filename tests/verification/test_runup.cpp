@@ -12,7 +12,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_runup {
 namespace {
 
 constexpr Real m = test::runup_mass, k = test::runup_stiffness;
@@ -186,4 +186,4 @@ TEST(Runup, IntegratorsAgree) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_runup

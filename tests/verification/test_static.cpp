@@ -8,7 +8,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_static {
 namespace {
 
 constexpr Real L = 1.2, d = 0.05, g = 9.81;
@@ -121,9 +121,9 @@ TEST(StaticAnalysis, FreeMotionsAllowedOnlyWhenTheLoadLeavesThemAlone) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_static
 
-namespace feran {
+namespace feran::test_static {
 namespace {
 
 // A model built in code skips the builder's ranges: a load of 1e308 N on a soft
@@ -142,4 +142,4 @@ TEST(Static, NonFiniteDisplacementsAreANumericalFailure) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_static

@@ -15,7 +15,7 @@
 #include <feran/io/study_reader.hpp>
 #include <feran/study/study.hpp>
 
-namespace feran {
+namespace feran::test_study_friswell {
 namespace {
 
 TEST(StudyFriswell591, OptimiserFindsTheGridScansBestSpanAndStiffness) {
@@ -57,4 +57,4 @@ TEST(StudyFriswell591, OptimiserFindsTheGridScansBestSpanAndStiffness) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_study_friswell

@@ -16,7 +16,7 @@
 #include <feran/io/study_reader.hpp>
 #include <feran/study/study.hpp>
 
-namespace feran {
+namespace feran::test_study_optimum {
 namespace {
 
 const std::string study_path = FERAN_TEST_MODELS "/studies/bearing_damping_grid.toml";
@@ -165,4 +165,4 @@ TEST(StudyOptimum, NsgaTwoFindsTheParetoFrontOfDampingAgainstItsCost) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_study_optimum

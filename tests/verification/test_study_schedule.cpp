@@ -15,7 +15,7 @@
 #include <feran/io/study_reader.hpp>
 #include <feran/study/study.hpp>
 
-namespace feran {
+namespace feran::test_study_schedule {
 namespace {
 
 TEST(StudySchedule, TheUnchangedFractionIsTheConstantMountingAndThePapersLawLowersThePeak) {
@@ -48,4 +48,4 @@ TEST(StudySchedule, TheUnchangedFractionIsTheConstantMountingAndThePapersLawLowe
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_study_schedule

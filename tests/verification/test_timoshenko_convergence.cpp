@@ -16,7 +16,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_timoshenko_convergence {
 namespace {
 
 constexpr Real L = 1.0, d = 0.1, E = 2.1e11, nu = 0.3, rho = 7800;
@@ -81,4 +81,4 @@ TEST(TimoshenkoConvergence, SimplySupportedShaftWithShear) { check_rate(true, 2.
 TEST(TimoshenkoConvergence, SimplySupportedShaftWithoutShear) { check_rate(false, 4.0); }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_timoshenko_convergence

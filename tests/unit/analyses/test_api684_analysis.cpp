@@ -11,7 +11,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_api684_analysis {
 namespace {
 
 constexpr Real m = 10.0, k = 1e6, c = 200.0;  // ω_n = 316.2 rad/s, ζ = 0.0316
@@ -204,4 +204,4 @@ TEST(Api684Unbalance, ALightlyDampedSingleModeHasAmplificationFactorOneOverTwoZe
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_api684_analysis

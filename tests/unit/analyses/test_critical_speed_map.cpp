@@ -11,7 +11,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_critical_speed_map {
 namespace {
 
 using test::add_isotropic_bearing;
@@ -162,4 +162,4 @@ TEST(CriticalSpeedMap, RefusesBadRangesAndARotorWithoutBearings) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_critical_speed_map

@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace feran {
+namespace feran::test_settings {
 namespace {
 
 const std::string examples = std::string(FERAN_SOURCE_DIR) + "/examples";
@@ -126,4 +126,4 @@ TEST(Settings, WarningsForTablesEvaluatedBeyondTheirRange) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_settings

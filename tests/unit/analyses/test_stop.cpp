@@ -10,7 +10,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_stop {
 namespace {
 
 std::vector<Real> speeds(int n) {
@@ -95,4 +95,4 @@ TEST(Stop, RunupStopsAtTheNextStep) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_stop

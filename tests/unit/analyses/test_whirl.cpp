@@ -5,7 +5,7 @@
 
 #include <feran/analyses/modal/whirl.hpp>
 
-namespace feran {
+namespace feran::test_whirl {
 namespace {
 
 const Complex I(0, 1);
@@ -80,4 +80,4 @@ TEST(Whirl, FormsMatchTheCircleRadii) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_whirl

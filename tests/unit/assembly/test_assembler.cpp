@@ -11,7 +11,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_assembler {
 namespace {
 
 // Structure of the assembled matrices (M, K symmetric, G and K_i
@@ -226,4 +226,4 @@ TEST(Checks, NamesANodeWithoutMass) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_assembler

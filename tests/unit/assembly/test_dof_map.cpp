@@ -5,7 +5,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_dof_map {
 namespace {
 
 TEST(DofMap, FixedDofsAreRemoved) {
@@ -77,4 +77,4 @@ TEST(DofMap, RejectsContradictoryConstraints) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_dof_map

@@ -6,7 +6,7 @@
 
 #include <feran/core/assignment.hpp>
 
-namespace feran {
+namespace feran::test_assignment {
 namespace {
 
 Real total(const Matrix& c, const std::vector<Index>& a) {
@@ -54,4 +54,4 @@ TEST(Assignment, RejectsMoreRowsThanColumns) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_assignment

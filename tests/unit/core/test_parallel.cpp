@@ -6,7 +6,7 @@
 
 #include <feran/core/parallel.hpp>
 
-namespace feran {
+namespace feran::test_parallel {
 namespace {
 
 TEST(ParallelFor, EveryItemOnceWithAValidWorker) {
@@ -42,4 +42,4 @@ TEST(ParallelFor, ResolvesThreadCount) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_parallel

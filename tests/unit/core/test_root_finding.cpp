@@ -4,7 +4,7 @@
 
 #include <feran/core/root_finding.hpp>
 
-namespace feran {
+namespace feran::test_root_finding {
 namespace {
 
 TEST(BrentRoot, FindsCosineRootToTolerance) {
@@ -37,4 +37,4 @@ TEST(BrentRoot, StopsAtTheEvaluationLimit) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_root_finding

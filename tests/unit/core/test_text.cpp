@@ -3,7 +3,7 @@
 
 #include <feran/core/text.hpp>
 
-namespace feran {
+namespace feran::test_text {
 namespace {
 
 TEST(Printable, ControlCharactersBecomeVisible) {
@@ -23,4 +23,4 @@ TEST(Printable, ControlCharactersBecomeVisible) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_text

@@ -12,7 +12,7 @@
 
 #include <string>
 
-namespace feran {
+namespace feran::test_units {
 namespace {
 
 TEST(Units, LengthInEveryUnit) {
@@ -231,4 +231,4 @@ TEST(Units, DescribesKinds) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_units

@@ -10,7 +10,7 @@
 
 #include <feran/elements/rigid_body.hpp>
 
-namespace feran {
+namespace feran::test_rigid_body {
 namespace {
 
 constexpr Index i_of(Dof d) { return static_cast<Index>(d); }
@@ -122,4 +122,4 @@ TEST(RigidBody, NonRotatingBodyHasNoGyroscopicMatrix) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_rigid_body

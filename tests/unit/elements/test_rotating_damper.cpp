@@ -15,7 +15,7 @@
 
 #include <feran/elements/rotating_damper.hpp>
 
-namespace feran {
+namespace feran::test_rotating_damper {
 namespace {
 
 constexpr Index i_of(Dof d) { return static_cast<Index>(d); }
@@ -137,4 +137,4 @@ TEST(RotatingDamper, NodeToNodeActsOnRelativeMotion) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_rotating_damper

@@ -8,7 +8,7 @@
 
 #include <feran/elements/spring_damper.hpp>
 
-namespace feran {
+namespace feran::test_spring_damper {
 namespace {
 
 constexpr std::size_t at(Dof d) { return static_cast<std::size_t>(d); }
@@ -153,4 +153,4 @@ TEST(SpringDamper, SpeedDependentOnlyWithANonConstantLaw) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_spring_damper

@@ -14,7 +14,7 @@
 
 #include <feran/elements/timoshenko_beam.hpp>
 
-namespace feran {
+namespace feran::test_timoshenko_beam {
 namespace {
 
 // Steel-like material with Poisson ratio nu: the element reads nu back as E/(2G) − 1.
@@ -401,4 +401,4 @@ TEST(TimoshenkoBeam, MaterialDampingIsStiffnessProportional) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_timoshenko_beam

@@ -5,7 +5,7 @@
 
 #include <feran/forces/coulomb_friction.hpp>
 
-namespace feran {
+namespace feran::test_coulomb_friction {
 namespace {
 
 CoulombFriction data(bool two_nodes) {
@@ -86,4 +86,4 @@ TEST(CoulombFriction, ActsOnTheRelativeMotionOfTwoNodes) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_coulomb_friction

@@ -14,7 +14,7 @@
 #include <feran/io/model_reader.hpp>
 #include <feran/io/report_config.hpp>
 
-namespace feran {
+namespace feran::test_html_report {
 namespace {
 
 
@@ -158,4 +158,4 @@ TEST(ReportConfig, ReadsItsKeysAndLocatesMistakes) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_html_report

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-namespace feran {
+namespace feran::test_key_reference {
 namespace {
 
 std::string read(const std::string& path) {
@@ -56,4 +56,4 @@ TEST(KeyReference, EveryDocumentedKeyIsAcceptedAndEveryTableListed) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_key_reference

@@ -29,7 +29,7 @@
 #include <variant>
 #include <vector>
 
-namespace feran {
+namespace feran::test_model_reader {
 namespace {
 
 const std::string models = FERAN_TEST_MODELS;
@@ -1140,4 +1140,4 @@ TEST(ModelReaderOptions, BeamOptionsReachTheShaftElements) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_model_reader

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace feran {
+namespace feran::test_model_reader_errors {
 namespace {
 
 namespace fs = std::filesystem;
@@ -333,4 +333,4 @@ TEST(ModelReaderErrors, SyntaxErrorKeepsTomlPosition) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_model_reader_errors

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace feran {
+namespace feran::test_model_writer {
 namespace {
 
 namespace fs = std::filesystem;
@@ -93,4 +93,4 @@ TEST(ModelWriter, ValuesThatNoUnitWritesExactlyRoundTrip) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_model_writer

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-namespace feran {
+namespace feran::test_node_reference {
 namespace {
 
 /// Nodes only: references do not look at elements. The node named "7" has no node
@@ -125,4 +125,4 @@ TEST(Probe, UnknownNodeIsReportedBeforeTheDof) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_node_reference

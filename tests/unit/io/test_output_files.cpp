@@ -17,10 +17,9 @@
 #include <feran/core/error.hpp>
 #include <feran/io/output_files.hpp>
 
-namespace fs = std::filesystem;
-using namespace feran;
+namespace feran::test_output_files {
 
-namespace {
+namespace fs = std::filesystem;
 
 class OutputFilesTest : public ::testing::Test {
  protected:
@@ -65,8 +64,6 @@ class OutputFilesTest : public ::testing::Test {
   fs::path dir;
   std::string model;
 };
-
-}  // namespace
 
 TEST_F(OutputFilesTest, NothingReachesATargetBeforeCommit) {
   const fs::path old_file = dir / "old.json", new_file = dir / "new.csv";
@@ -277,3 +274,5 @@ TEST_F(OutputFilesTest, SignalSafeRemovalOfTemporaries) {
   remove_temporary_outputs();
   EXPECT_TRUE(others({"model.toml"}).empty());
 }
+
+}  // namespace feran::test_output_files

@@ -10,7 +10,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_result_writer {
 namespace {
 
 // A model path with a byte that is not UTF-8 (any bytes can name a file) made the
@@ -28,4 +28,4 @@ TEST(ResultWriter, PathThatIsNotUtf8GivesValidJson) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_result_writer

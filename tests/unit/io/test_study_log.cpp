@@ -17,7 +17,7 @@
 #include <feran/io/study_log.hpp>
 #include <feran/io/study_reader.hpp>
 
-namespace feran {
+namespace feran::test_study_log {
 namespace {
 
 namespace fs = std::filesystem;
@@ -91,4 +91,4 @@ TEST(StudyLog, AnInterruptedStudyResumesToTheUninterruptedResult) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_study_log

@@ -8,7 +8,7 @@
 #include <feran/spec/parameters.hpp>
 #include <feran/study/study.hpp>
 
-namespace feran {
+namespace feran::test_study_reader {
 namespace {
 
 const std::string model = FERAN_SOURCE_DIR "/examples/02_centrifuge/model.toml";
@@ -178,4 +178,4 @@ TEST(StudyReader, PathsTiedByALinearRelation) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_study_reader

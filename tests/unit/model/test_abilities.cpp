@@ -10,7 +10,7 @@
 
 #include "test_models.hpp"
 
-namespace feran {
+namespace feran::test_abilities {
 namespace {
 
 /// A linear spring from a node to ground along y and z, with only the matrix
@@ -96,4 +96,4 @@ TEST(Abilities, ANewElementAndForceTakePartInTheStaticAnalysis) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_abilities

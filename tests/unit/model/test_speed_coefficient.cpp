@@ -7,7 +7,7 @@
 
 #include <feran/model/speed_coefficient.hpp>
 
-namespace feran {
+namespace feran::test_speed_coefficient {
 namespace {
 
 using SC = SpeedCoefficient;
@@ -115,4 +115,4 @@ TEST(SpeedCoefficient, Equality) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_speed_coefficient

@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace feran {
+namespace feran::test_build_model {
 namespace {
 
 /// The Jeffcott rotor of tests/models/valid/jeffcott.toml, written in code.
@@ -34,8 +34,14 @@ ModelSpec jeffcott() {
   disk.Ja = 0.02;
   disk.Jp = 0.04;
   s.rigid_bodies.push_back(disk);
-  s.fixed.push_back({.node = std::string("left"), .dofs = {}});
-  s.fixed.push_back({.node = std::string("right"), .dofs = {"all"}});
+  // Named, not braced temporaries: GCC 12 at -O3 reports a false
+  // -Wmaybe-uninitialized inside std::variant's move for the braced form.
+  FixedSpec left, right;
+  left.node = std::string("left");
+  right.node = std::string("right");
+  right.dofs = {"all"};
+  s.fixed.push_back(left);
+  s.fixed.push_back(right);
   s.unbalances.push_back({.name = {}, .node = std::string("disk"), .mass = 0.001, .radius = 0.05,
                           .phase = 0.0, .lever = 0.0});
   s.modal.speed = 0.0;
@@ -138,4 +144,4 @@ TEST(BuildModel, MixedRunupFormsWithoutASource) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_build_model

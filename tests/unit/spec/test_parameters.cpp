@@ -15,7 +15,7 @@
 #include <cmath>
 #include <string>
 
-namespace feran {
+namespace feran::test_parameters {
 namespace {
 
 const std::string examples = std::string(FERAN_SOURCE_DIR) + "/examples";
@@ -174,4 +174,4 @@ TEST(Parameters, SetValuesSurviveTheWriter) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_parameters

@@ -8,7 +8,7 @@
 #include <feran/study/design.hpp>
 #include <feran/study/quantity.hpp>
 
-namespace feran {
+namespace feran::test_design {
 namespace {
 
 DesignVariable range(Real lower, Real upper, VariableScale scale = VariableScale::linear,
@@ -83,4 +83,4 @@ TEST(RotatingMass, SumsTheRotatingPartsOnly) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_design

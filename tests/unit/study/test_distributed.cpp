@@ -13,7 +13,7 @@
 #include <feran/io/study_reader.hpp>
 #include <feran/study/distributed.hpp>
 
-namespace feran {
+namespace feran::test_distributed {
 namespace {
 
 // The members of a group of threads: each all_gather and broadcast is a barrier.
@@ -178,4 +178,4 @@ TEST(DistributedStudy, MembersAgreeOrNameTheOneThatFailed) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_distributed

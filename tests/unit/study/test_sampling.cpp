@@ -12,7 +12,7 @@
 #include <feran/core/error.hpp>
 #include <feran/study/sampling.hpp>
 
-namespace feran {
+namespace feran::test_sampling {
 namespace {
 
 TEST(UniformStream, IsTheStandardMersenneTwister) {
@@ -101,4 +101,4 @@ TEST(FullGrid, EveryCombinationOnceFirstDimensionSlowest) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_sampling

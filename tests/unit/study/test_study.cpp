@@ -9,7 +9,7 @@
 #include <feran/study/sensitivity.hpp>
 #include <feran/study/study.hpp>
 
-namespace feran {
+namespace feran::test_study {
 namespace {
 
 const std::string model = "model = \"" FERAN_SOURCE_DIR "/examples/02_centrifuge/model.toml\"\n";
@@ -64,4 +64,4 @@ TEST(Study, SensitivityFindsWhatTheQuantityDependsOn) {
 }
 
 }  // namespace
-}  // namespace feran
+}  // namespace feran::test_study
