@@ -1,0 +1,93 @@
+#pragma once
+/// @file
+/// Plain cylindrical journal bearings on an oil film: the film force from the
+/// journal's position and velocity in its housing, with its Jacobian, and the
+/// closed forms of the short bearing at its static equilibrium.
+/// Theory: docs/theory/fluid_film_bearings.md.
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <feran/core/types.hpp>
+#include <feran/model/force.hpp>
+
+namespace feran {
+
+/// Geometry and oil of a plain journal bearing.
+struct JournalBearingGeometry {
+  Real diameter = 0.0;   ///< journal diameter D [m]
+  Real length = 0.0;     ///< axial length L [m]
+  Real clearance = 0.0;  ///< radial clearance c [m]
+  Real viscosity = 0.0;  ///< dynamic viscosity μ of the oil [Pa s]
+};
+
+/// How the Reynolds equation of the film is solved.
+enum class FilmTheory {
+  /// Ocvirk's short bearing (L/D → 0: the circumferential pressure flow neglected),
+  /// with the π-film (half-Sommerfeld, Gümbel) cavitation condition: the film
+  /// carries pressure only where the closed-form pressure is positive.
+  short_bearing,
+  /// The infinitely long bearing (Sommerfeld: L/D → ∞, no axial flow) with Gümbel's
+  /// cavitation condition: the full-Sommerfeld pressure, zero at the thickest film,
+  /// kept only where positive.
+  long_bearing,
+};
+
+/// The film's force on the journal in the bearing's lateral plane (y, z) and its
+/// Jacobian with respect to the journal's position and velocity relative to the
+/// housing.
+struct FilmForce {
+  Eigen::Vector2d f = Eigen::Vector2d::Zero();      ///< [N]
+  Eigen::Matrix2d dfdx = Eigen::Matrix2d::Zero();   ///< ∂f/∂(y, z) [N/m]
+  Eigen::Matrix2d dfdv = Eigen::Matrix2d::Zero();   ///< ∂f/∂(ẏ, ż) [N s/m]
+};
+
+/// The film force on a journal at @p x = (y, z) from the housing's centre, moving at
+/// @p v = (ẏ, ż), spinning at @p speed [rad/s] about +x relative to the housing.
+/// Throws Error when |x| is not below the clearance.
+FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real speed, const Eigen::Vector2d& x,
+                     const Eigen::Vector2d& v);
+
+/// The steady load W [N] the film carries at eccentricity ratio @p eps, in closed
+/// form (docs/theory/fluid_film_bearings.md): with W₀ = μΩDL³/(8c²) for the short
+/// bearing, W = W₀·ε·√(π²(1 − ε²) + 16ε²)/(1 − ε²)²; with W₀ = 6μΩR³L/c² for the long
+/// one, W = W₀·ε·√(π²(1 − ε²) + 4ε²)/((2 + ε²)(1 − ε²)).
+Real film_load(const JournalBearingGeometry& g, FilmTheory theory, Real speed, Real eps);
+/// The attitude angle φ [rad] between the load line and the journal's displacement:
+/// tan φ = π√(1 − ε²)/(4ε) (short), π√(1 − ε²)/(2ε) (long). The journal moves away
+/// from the load line in the direction of rotation.
+Real film_attitude_angle(FilmTheory theory, Real eps);
+/// The eccentricity ratio at which the film carries @p load [N] at @p speed.
+Real film_eccentricity(const JournalBearingGeometry& g, FilmTheory theory, Real speed, Real load);
+
+/// Linearised stiffness and damping of a bearing: the film force changes by
+/// −K·δx − C·δẋ for small δx, δẋ about the equilibrium.
+struct BearingCoefficients {
+  Eigen::Matrix2d K = Eigen::Matrix2d::Zero();  ///< [N/m]
+  Eigen::Matrix2d C = Eigen::Matrix2d::Zero();  ///< [N s/m]
+};
+
+/// The eight coefficients in closed form at the equilibrium under @p load [N], in
+/// the load frame: the first axis along the load on the journal, the second that
+/// axis turned by +90° (towards the direction of rotation).
+BearingCoefficients film_coefficients(const JournalBearingGeometry& g, FilmTheory theory, Real speed, Real load);
+
+/// A journal bearing between a journal node and the ground or a housing node: a
+/// nonlinear force on v and w of each.
+struct FluidFilmBearing {
+  Index node_a = 0;             ///< the journal
+  std::optional<Index> node_b;  ///< the housing; empty: the ground
+  JournalBearingGeometry geometry;
+  FilmTheory theory = FilmTheory::short_bearing;
+
+  std::string_view kind() const { return "fluid_film_bearing"; }
+  std::vector<Index> nodes() const;
+  /// v, w of the journal, then of the housing when there is one.
+  std::vector<Index> dofs() const;
+  NonlinearForceValue force(const MotionState& s, const Vector& x, const Vector& v) const;
+};
+
+}  // namespace feran
