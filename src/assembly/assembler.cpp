@@ -93,7 +93,7 @@ void Assembler::build_variable_scatter() {
   std::vector<std::vector<Index>> element_dofs;
   Triplets pattern;
   for (const Element& e : speed_dependent_elements_) {
-    element_dofs.push_back(e.local_matrices(OperatingPoint{}).dofs);
+    element_dofs.push_back(e.dofs());
     for (const Index di : element_dofs.back())
       for (const Index dj : element_dofs.back())
         for (const auto& [a, ta] : row(di))

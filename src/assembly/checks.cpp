@@ -187,9 +187,39 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
   }
 }
 
+namespace {
+
+// K at rest with each nonlinear support (a fluid-film bearing, which has no stiffness
+// at rest) replaced by a stiff spring on its DOFs: it holds the rotor when it runs.
+SparseMatrix running_stiffness(const Model& model, const Assembler& assembler, const SystemMatrices& sys) {
+  std::vector<Eigen::Triplet<Real>> holds;
+  Real k = 0.0;
+  for (Index i = 0; i < sys.K.rows(); ++i) k = std::max(k, std::abs(sys.K.coeff(i, i)));
+  if (k == 0.0) k = 1.0;
+  for (const Force& force : model.forces) {
+    if (!force.supports()) continue;
+    const std::vector<Index> dofs = force.dofs();  // the journal's, then as many of the housing's
+    const std::size_t half = dofs.size() == 4 ? 2 : dofs.size();
+    for (std::size_t d = 0; d < half; ++d) {
+      holds.emplace_back(dofs[d], dofs[d], k);
+      if (half == dofs.size()) continue;
+      holds.emplace_back(dofs[d + half], dofs[d + half], k);
+      holds.emplace_back(dofs[d], dofs[d + half], -k);
+      holds.emplace_back(dofs[d + half], dofs[d], -k);
+    }
+  }
+  if (holds.empty()) return sys.K;
+  SparseMatrix H(model.n_dofs(), model.n_dofs());
+  H.setFromTriplets(holds.begin(), holds.end());
+  const SparseMatrix& T = assembler.dof_map().transformation();
+  return sys.K + SparseMatrix(T.transpose() * H * T);
+}
+
+}  // namespace
+
 std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler) {
   const SystemMatrices sys = assembler.at(0.0);
-  const Matrix null_space = stiffness_null_space(sys.K, sys.M);
+  const Matrix null_space = stiffness_null_space(running_stiffness(model, assembler, sys), sys.M);
 
   std::vector<FreeMotionInfo> motions;
   if (null_space.cols() == 0) return motions;

@@ -61,6 +61,8 @@ const std::vector<KindDef>& kinds() {
       {Quantity::inverse_time, "a rate", "rate", "0.5", "0.5 1/s", {{"1/s"}}, {1e9, 1e-15}},
       {Quantity::acceleration, "an acceleration", "acceleration", "9.81", "9.81 m/s^2",
        {{"m/s^2"}, {"mm/s^2", 1.0, 1e3}}, {1e7, 1e-9}},
+      {Quantity::viscosity, "a viscosity", "viscosity", "0.1", "0.1 Pa*s",
+       {{"Pa*s"}, {"mPa*s", 1.0, 1e3}, {"cP", 1.0, 1e3}}, {1e6, 1e-9}},
   };
   return table;
 }

@@ -19,6 +19,7 @@
 #include <feran/elements/spring_damper.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
 #include <feran/forces/coulomb_friction.hpp>
+#include <feran/forces/fluid_film_bearing.hpp>
 #include <feran/forces/harmonic_force.hpp>
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
@@ -117,6 +118,7 @@ class Builder {
   void build_springs();
   void build_rotating_dampers();
   void build_friction();
+  void build_journal_bearings();
   void build_rigid_links();
   void build_fixed();
   void build_unbalances();
@@ -130,6 +132,7 @@ class Builder {
   void check_analysis_tables() const;
   void check_static() const;
   void check_runup() const;
+  void build_gravity();
   void check_api684() const;
   // Each of @p names is the name of one [[springs]] entry, none twice (at @p key[i]).
   void check_spring_names(const std::vector<std::string>& names, const std::string& key) const;
@@ -743,6 +746,30 @@ void Builder::build_friction() {
   }
 }
 
+void Builder::build_journal_bearings() {
+  for (std::size_t i = 0; i < spec_.journal_bearings.size(); ++i) {
+    const JournalBearingSpec& s = spec_.journal_bearings[i];
+    const std::string path = element("journal_bearings", i);
+    const std::string label = entry_label(s.name, "journal bearing", i);
+    FluidFilmBearing b;
+    b.node_a = node(s.node, child(path, "node"), "node");
+    require_rotating(b.node_a, child(path, "node"), "the journal of a journal bearing turns");
+    b.node_b = other_node(s.to, path, ground_word, b.node_a);
+    if (b.node_b && model_.nodes[static_cast<std::size_t>(*b.node_b)].rotating)
+      fail(child(path, "to"), fmt::format("the housing of a journal bearing must not rotate, but node {} does "
+                                          "(a [[nodes]] entry with rotating = false, or the ground)",
+                                          model_.node_label(*b.node_b)));
+    check_bounds(s, path);
+    if (!(s.clearance < 0.5 * s.diameter))
+      fail(child(path, "clearance"), fmt::format("the radial clearance ({} m) must be smaller than the journal's "
+                                                 "radius ({} m); it is usually about a thousandth of it",
+                                                 s.clearance, 0.5 * s.diameter));
+    b.geometry = {.diameter = s.diameter, .length = s.length, .clearance = s.clearance, .viscosity = s.viscosity};
+    b.theory = s.theory == "long" ? FilmTheory::long_bearing : FilmTheory::short_bearing;
+    model_.forces.emplace_back(b, label);
+  }
+}
+
 // ---------------------------------------------------------------------------------
 // Constraints and loads
 
@@ -967,6 +994,16 @@ void Builder::check_static() const {
   check_bounds(s, "static");
 }
 
+// The gravity the machine runs under: [static] gravity and g (checked above), by
+// default 9.81 m/s² along −y, as for a static analysis.
+void Builder::build_gravity() {
+  const StaticSpec& s = spec_.static_;
+  const std::string direction = s.gravity.value_or("-y");
+  model_.gravity.setZero();
+  if (direction == "none") return;
+  model_.gravity(direction.back() - 'x') = (direction.front() == '-' ? -1.0 : 1.0) * s.g.value_or(standard_gravity);
+}
+
 void Builder::check_runup() const {
   const RunupSpec& r = spec_.runup;
   // The speed profile's three forms, each named by its first key given.
@@ -1108,12 +1145,14 @@ Model Builder::build(BuildInfo* info) {
   build_springs();
   build_rotating_dampers();
   build_friction();
+  build_journal_bearings();
   build_rigid_links();
   build_fixed();
   build_unbalances();
   build_forces();
   build_static_loads();
   check_analysis_tables();
+  build_gravity();
   check_structure(info);
   if (info != nullptr) info->node_paths = node_paths_;
   return std::move(model_);

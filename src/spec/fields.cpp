@@ -23,6 +23,7 @@ constexpr std::string_view force_kinds[] = {"fixed", "rotating_force", "rotating
 constexpr std::string_view force_directions[] = {"x", "y", "z", "rx", "ry", "rz"};
 constexpr std::string_view gravity_directions[] = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
 constexpr std::string_view station_outputs[] = {"all", "summary", "none"};
+constexpr std::string_view film_theories[] = {"short", "long"};
 
 constexpr std::string_view default_hint = "leave it out for the analysis's default";
 
@@ -277,6 +278,29 @@ const FieldTable<FrictionSpec>& fields_of<FrictionSpec>() {
       {.key = "epsilon_r", .kind = K::quantity, .member = &S::epsilon_r,
        .doc = "regularisation of the moment",
        .quantity = Q::angular_velocity, .bound = positive},
+  };
+  return table;
+}
+
+template <>
+const FieldTable<JournalBearingSpec>& fields_of<JournalBearingSpec>() {
+  using S = JournalBearingSpec;
+  static const FieldTable<S> table = {
+      name_field<S>("label", "`\"journal bearing <i>\"`"),
+      node_field<S>("the journal; must be a rotating node"),
+      to_field<S>("ground", "the housing: a non-rotating node, or the ground", "`\"ground\"`"),
+      {.key = "diameter", .kind = K::quantity, .member = &S::diameter, .doc = "journal diameter D",
+       .quantity = Q::length, .bound = positive, .required = true},
+      {.key = "length", .kind = K::quantity, .member = &S::length, .doc = "axial length L of the film",
+       .quantity = Q::length, .bound = positive, .required = true},
+      {.key = "clearance", .kind = K::quantity, .member = &S::clearance,
+       .doc = "radial clearance c; below D/2", .quantity = Q::length, .bound = positive, .required = true},
+      {.key = "viscosity", .kind = K::quantity, .member = &S::viscosity,
+       .doc = "dynamic viscosity μ of the oil at its working temperature", .quantity = Q::viscosity,
+       .bound = positive, .required = true},
+      {.key = "theory", .kind = K::choice, .member = &S::theory,
+       .doc = "the film's solution: short = Ocvirk's with the π film, long = Sommerfeld's with Gümbel's condition",
+       .choices = film_theories, .default_text = "`\"short\"`"},
   };
   return table;
 }

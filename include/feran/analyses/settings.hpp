@@ -36,7 +36,7 @@ inline constexpr int campbell_points = 101;
 inline constexpr int campbell_modes = 8;
 inline constexpr int response_points = 201;
 inline constexpr int frequency_points = 201;
-inline constexpr Real gravity = 9.81;          ///< [m/s²], pulling along −y
+inline constexpr Real gravity = standard_gravity;  ///< [m/s²], pulling along −y
 inline constexpr Real runup_dt = 1e-4;         ///< [s]
 inline constexpr Real output_interval = 1e-3;  ///< [s]
 /// The most steps a fixed-step run-up takes (duration / dt), and the most samples it

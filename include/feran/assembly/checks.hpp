@@ -26,7 +26,9 @@ struct FreeMotionInfo {
 /// spectrum is too wide for double precision to tell rigid motion from vibration.
 Matrix stiffness_null_space(const SparseMatrix& K, const SparseMatrix& M);
 
-/// The rigid-body motions of @p model at zero speed (may be empty).
+/// The rigid-body motions of @p model at zero speed (may be empty), counting its
+/// nonlinear supports (fluid-film bearings) as holding their DOFs, as they do when the
+/// rotor runs.
 std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler);
 
 /// What check_model() says of a model whose constraints leave no DOF free.

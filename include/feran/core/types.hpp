@@ -46,6 +46,8 @@ constexpr Index global_dof(Index node, Dof d) {
 const char* dof_name(Dof d);
 
 inline constexpr Real pi = 3.141592653589793238462643383279502884;
+/// The default gravitational acceleration [m/s²] (when a model gives none).
+inline constexpr Real standard_gravity = 9.81;
 /// Converts a speed in Hz (revolutions per second) to rad/s.
 constexpr Real hz_to_rad(Real hz) { return 2.0 * pi * hz; }
 /// Converts a speed in rad/s to Hz.

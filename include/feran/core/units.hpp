@@ -42,6 +42,7 @@ enum class Quantity {
   angular_velocity,      ///< rad/s
   acceleration,          ///< m/s^2; also mm/s^2 (appended: keep the order of the others)
   inverse_time,          ///< 1/s (a rate: the mass-proportional damping α)
+  viscosity,             ///< dynamic viscosity, Pa*s; also mPa*s and cP
 };
 
 /// The magnitudes of a kind that any rotor model can hold, in SI: beyond `largest`

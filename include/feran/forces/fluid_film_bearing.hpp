@@ -88,6 +88,8 @@ struct FluidFilmBearing {
   /// v, w of the journal, then of the housing when there is one.
   std::vector<Index> dofs() const;
   NonlinearForceValue force(const MotionState& s, const Vector& x, const Vector& v) const;
+  /// It carries the rotor (the ability of model/force.hpp).
+  bool supports() const { return true; }
 };
 
 }  // namespace feran

@@ -14,6 +14,9 @@
 ///                                              forces and stresses are reported
 ///   speed_ranges() -> std::vector<SpeedRange>  it has tabulated data over speed
 ///                                              ranges (analyses warn beyond them)
+///   dofs() -> std::vector<Index>               its DOFs without evaluating its matrices
+///                                              (an element whose matrices need work,
+///                                              or exist only at some speeds)
 ///
 /// To add an element: a header and a source in elements/, its spec type and field
 /// table (spec/), its build step, a test, and its matrices in docs/theory/.
@@ -98,6 +101,11 @@ concept HasShaftSegment = requires(const E& e) {
   { e.shaft_segment() } -> std::same_as<ShaftSegment>;
 };
 
+template <class E>
+concept HasDofs = requires(const E& e) {
+  { e.dofs() } -> std::same_as<std::vector<Index>>;
+};
+
 /// A type-erased element with value semantics (copies are deep).
 class Element {
  public:
@@ -121,6 +129,8 @@ class Element {
 
   /// Local matrices at operating point @p op.
   LocalMatrices local_matrices(const OperatingPoint& op) const { return self_->local_matrices(op); }
+  /// Its global DOFs (those of local_matrices()).
+  std::vector<Index> dofs() const { return self_->dofs(); }
   /// Element kind, e.g. "shaft", "rigid_body", "spring_damper".
   std::string_view kind() const { return self_->kind(); }
   /// True when any matrix other than G and K_i's speed factor depends on speed.
@@ -147,6 +157,7 @@ class Element {
     virtual ~Concept() = default;
     virtual std::unique_ptr<Concept> clone() const = 0;
     virtual LocalMatrices local_matrices(const OperatingPoint& op) const = 0;
+    virtual std::vector<Index> dofs() const = 0;
     virtual std::string_view kind() const = 0;
     virtual bool speed_dependent() const = 0;
     virtual std::optional<Transmission> transmission(Real speed) const = 0;
@@ -161,6 +172,10 @@ class Element {
     std::unique_ptr<Concept> clone() const override { return std::make_unique<Holder>(value); }
     LocalMatrices local_matrices(const OperatingPoint& op) const override {
       return value.local_matrices(op);
+    }
+    std::vector<Index> dofs() const override {
+      if constexpr (HasDofs<E>) return value.dofs();
+      else return value.local_matrices({}).dofs;
     }
     std::string_view kind() const override { return value.kind(); }
     bool speed_dependent() const override { return value.speed_dependent(); }

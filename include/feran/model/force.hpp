@@ -14,6 +14,15 @@
 ///   add_static(Vector& f)                                      static analysis
 ///   dofs() and force(const MotionState&, x, v)                 a nonlinear force f(x, v)
 ///                                                              with its Jacobian
+///   supports() (with the above)                                it carries the rotor: the
+///                                                              static analysis finds the
+///                                                              equilibrium with it, the
+///                                                              linear analyses use its
+///                                                              tangent about that
+///                                                              equilibrium and the model
+///                                                              check counts it as holding
+///                                                              its DOFs (fluid-film bearings;
+///                                                              not friction)
 ///
 /// Vectors are over all unconstrained DOFs (global_dof order); add_* add into them.
 /// To add a force: a type in forces/ with kind(), nodes() and its abilities, its
@@ -80,6 +89,11 @@ concept HasNonlinearForce = requires(const F& f, const MotionState& s, const Vec
   { f.force(s, x, x) } -> std::same_as<NonlinearForceValue>;
 };
 
+template <class F>
+concept HasSupport = HasNonlinearForce<F> && requires(const F& f) {
+  { f.supports() } -> std::same_as<bool>;
+};
+
 /// A type-erased force with value semantics (copies are deep).
 class Force {
  public:
@@ -118,6 +132,8 @@ class Force {
   /// Adds the constant load into @p f (nothing without the ability).
   void add_static(Vector& f) const { self_->add_static(f); }
   bool is_nonlinear() const { return self_->is_nonlinear(); }
+  /// True for a nonlinear force that carries the rotor (see the abilities above).
+  bool supports() const { return self_->supports(); }
   /// The global DOFs of a nonlinear force (empty for others).
   std::vector<Index> dofs() const { return self_->dofs(); }
   /// Force and Jacobian of a nonlinear force at local displacements @p x and
@@ -147,6 +163,7 @@ class Force {
     virtual bool has_static() const = 0;
     virtual void add_static(Vector& f) const = 0;
     virtual bool is_nonlinear() const = 0;
+    virtual bool supports() const = 0;
     virtual std::vector<Index> dofs() const = 0;
     virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual const std::type_info& type() const = 0;
@@ -171,6 +188,10 @@ class Force {
       if constexpr (HasStaticLoad<F>) value.add_static(f);
     }
     bool is_nonlinear() const override { return HasNonlinearForce<F>; }
+    bool supports() const override {
+      if constexpr (HasSupport<F>) return value.supports();
+      else return false;
+    }
     std::vector<Index> dofs() const override {
       if constexpr (HasNonlinearForce<F>) return value.dofs();
       else return {};

@@ -55,6 +55,11 @@ struct Model {
   /// What acts on the model: unbalances, harmonic forces, static loads, friction
   /// (forces/), each asked for its abilities by the analyses.
   std::vector<Force> forces;
+  /// The gravitational acceleration the machine runs under [m/s²] ([static] gravity
+  /// and g): with the static loads, the load that the supports (forces with the
+  /// ability supports(): fluid-film bearings) carry in the static equilibrium about
+  /// which the linear analyses linearise them (analyses/static/equilibrium.hpp).
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   /// Rigid-body motions that may remain free (singular stiffness) without an error.
   std::vector<FreeMotion> free_motions;
 

@@ -136,6 +136,19 @@ struct FrictionSpec {
   bool operator==(const FrictionSpec&) const = default;
 };
 
+/// [[journal_bearings]]: a plain journal bearing on an oil film.
+struct JournalBearingSpec {
+  std::string name;
+  NodeRef node;               ///< the journal
+  std::optional<NodeRef> to;  ///< the housing; not given (or "ground"): the ground
+  Real diameter = 0.0;        ///< D [m]
+  Real length = 0.0;          ///< L [m]
+  Real clearance = 0.0;       ///< radial clearance c [m]
+  Real viscosity = 0.0;       ///< μ [Pa s]
+  std::string theory = "short";  ///< "short" (Ocvirk) or "long" (Sommerfeld)
+  bool operator==(const JournalBearingSpec&) const = default;
+};
+
 /// [[rigid_links]]: nodes moving as one rigid body; the first leads.
 struct RigidLinkSpec {
   std::vector<NodeRef> nodes;
@@ -255,6 +268,7 @@ struct ModelSpec {
   std::vector<SpringSpec> springs;
   std::vector<RotatingDamperSpec> rotating_dampers;
   std::vector<FrictionSpec> friction;
+  std::vector<JournalBearingSpec> journal_bearings;
   std::vector<RigidLinkSpec> rigid_links;
   std::vector<FixedSpec> fixed;
   std::vector<UnbalanceSpec> unbalances;

@@ -9,6 +9,7 @@
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
 
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/parallel.hpp>
 
@@ -172,7 +173,12 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   HarmonicResult result;
   result.frequency_sweep = !options.frequencies.empty();
   result.info.method = SolverMethod::sparse_lu;
-  const Assembler assembler(model);
+  // Supports (fluid-film bearings) as their tangent about the equilibrium at each
+  // speed: elements after the model's own, which keep their indices.
+  const Model linear = linearised(model);
+  if (result.frequency_sweep) require_running(model.forces, options.speed);
+  for (const Real speed : options.speeds) require_running(model.forces, speed);
+  const Assembler assembler(linear);
   const DofMap& dofs = assembler.dof_map();
   const ComplexSparse T = dofs.transformation().cast<Complex>();
   const ComplexSparse Tt = T.transpose();
@@ -191,9 +197,9 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     for (int d = 0; d < dofs_per_node; ++d)
       if (f.dofs[static_cast<std::size_t>(d)]) fixed_dof[static_cast<std::size_t>(dofs_per_node * f.node + d)] = true;
   std::vector<Index> reaction_elements;
-  for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const LocalMatrices lm = model.elements[e].local_matrices({});
-    if (std::any_of(lm.dofs.begin(), lm.dofs.end(), [&](Index d) { return fixed_dof[static_cast<std::size_t>(d)]; }))
+  for (std::size_t e = 0; e < linear.elements.size(); ++e) {
+    const std::vector<Index> lm_dofs = linear.elements[e].dofs();
+    if (std::any_of(lm_dofs.begin(), lm_dofs.end(), [&](Index d) { return fixed_dof[static_cast<std::size_t>(d)]; }))
       reaction_elements.push_back(static_cast<Index>(e));
   }
   for (const FixedDofs& f : model.fixed) {
@@ -293,7 +299,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       // load there minus the element forces (dynamic stiffness times motion).
       ComplexVector r = f_full;
       for (Index e : reaction_elements) {
-        const LocalMatrices lm = model.elements[static_cast<std::size_t>(e)].local_matrices({speed});
+        const LocalMatrices lm = linear.elements[static_cast<std::size_t>(e)].local_matrices({speed});
         const auto n = static_cast<Index>(lm.dofs.size());
         ComplexVector q(n);
         for (Index i = 0; i < n; ++i) q(i) = q_full(lm.dofs[static_cast<std::size_t>(i)]);

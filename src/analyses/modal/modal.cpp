@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <feran/analyses/modal/whirl.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
 
 #include "solver_choice.hpp"
 #include "state_eigen.hpp"
@@ -350,8 +351,14 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options)
 
 ModalSolver::ModalSolver(const Model& model, ModalOptions options, std::shared_ptr<const Assembler> assembled)
     : options_(options),
-      assembler_(assembled ? std::move(assembled) : std::make_shared<const Assembler>(model)),
+      // Supports (fluid-film bearings) enter as their tangent about the equilibrium at
+      // each speed, which an assembly of the model itself does not hold.
+      assembler_(has_supports(model) ? std::make_shared<const Assembler>(linearised(model))
+                 : assembled         ? std::move(assembled)
+                                     : std::make_shared<const Assembler>(model)),
       cache_(std::make_shared<BlockCache>()) {
+  for (const Force& f : model.forces)
+    if (f.supports()) supports_.push_back(f);
   const SystemMatrices sys = assembler_->at(0.0);
   lambda_max_ = 0.0;
   for (Index i = 0; i < sys.M.rows(); ++i)
@@ -414,6 +421,7 @@ ModalSolver::Choice ModalSolver::choice() const {
 }
 
 ModalResult ModalSolver::solve(Real speed) const {
+  require_running(supports_, speed);
   // The assembled matrices themselves when no element depends on speed (no copy).
   const SystemMatrices varying = assembler_->speed_dependent() ? assembler_->at(speed) : SystemMatrices{};
   const SystemMatrices& sys = assembler_->speed_dependent() ? varying : assembler_->constant();

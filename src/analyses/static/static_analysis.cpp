@@ -8,34 +8,48 @@
 
 #include <feran/assembly/assembler.hpp>
 #include <feran/assembly/checks.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/error.hpp>
 
 namespace feran {
 
 namespace {
 
-// Load vector over all unconstrained DOFs: gravity as M·(rigid translation by g),
-// which carries the moments of offset masses and consistent shaft masses, plus the
-// static point loads.
-Vector load_vector(const Model& model, const StaticOptions& options) {
-  Vector f = Vector::Zero(model.n_dofs());
-  if (options.gravity.squaredNorm() > 0) {
-    for (const Element& e : model.elements) {
-      const LocalMatrices lm = e.local_matrices({options.speed});
-      if (lm.M.size() == 0) continue;
-      const auto n = static_cast<Index>(lm.dofs.size());
-      Vector g = Vector::Zero(n);
-      for (Index i = 0; i < n; ++i) {
-        const Index local = lm.dofs[static_cast<std::size_t>(i)] % dofs_per_node;
-        if (local < 3) g(i) = options.gravity(local);
-      }
-      const Vector fe = lm.M * g;
-      for (Index i = 0; i < n; ++i) f(lm.dofs[static_cast<std::size_t>(i)]) += fe(i);
-    }
+// K·q = f for a linear model. Free motions (allowed by free_motions) make K singular.
+// The load must leave them alone; then the solution orthogonal to them (in M) is
+// unique, found with the shifted matrix K + μM and one step of iterative refinement.
+Vector solve_linear(const Model& model, const Assembler& assembler, const SystemMatrices& sys, const Vector& f) {
+  const Matrix N = stiffness_null_space(sys.K, sys.M);
+  Vector q;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  if (N.cols() == 0) {
+    lu.compute(sys.K);
+    if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
+    return lu.solve(f);
   }
-  if (options.loads)
-    for (const Force& force : model.forces) force.add_static(f);
-  return f;
+  const Vector work = N.transpose() * f;  // work of the load along each free motion
+  const Real scale = f.norm() * std::sqrt(N.colwise().squaredNorm().maxCoeff());
+  if (work.cwiseAbs().maxCoeff() > 1e-9 * scale) {
+    std::vector<std::string> names;
+    for (const FreeMotionInfo& m : find_free_motions(model, assembler)) names.push_back(m.description);
+    throw Error(fmt::format("static analysis: the load drives a free motion of the model ({}); hold "
+                            "it with a spring or a fixed DOF",
+                            fmt::join(names, "; ")));
+  }
+  Real lambda_max = 0;
+  for (Index i = 0; i < sys.M.rows(); ++i)
+    lambda_max = std::max(lambda_max, sys.K.coeff(i, i) / sys.M.coeff(i, i));
+  lu.compute(SparseMatrix(sys.K + 1e-8 * lambda_max * sys.M));
+  if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
+  auto project = [&](Vector& x) { x -= N * (N.transpose() * (sys.M * x)); };
+  q = lu.solve(f);
+  project(q);
+  for (int it = 0; it < 3; ++it) {
+    Vector dq = lu.solve(Vector(f - sys.K * q));
+    project(dq);
+    q += dq;
+  }
+  return q;
 }
 
 }  // namespace
@@ -45,45 +59,19 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
   result.info.method = SolverMethod::sparse_lu;
   const Assembler assembler(model);
   const SparseMatrix& T = assembler.dof_map().transformation();
-  const SystemMatrices sys = assembler.at(options.speed);
-  const Vector f_full = load_vector(model, options);
-  const Vector f = T.transpose() * f_full;
-
-  // Free motions (allowed by free_motions) make K singular. The load must leave them
-  // alone; then the solution orthogonal to them (in M) is unique, found with the
-  // shifted matrix K + μM and one step of iterative refinement.
-  const Matrix N = stiffness_null_space(sys.K, sys.M);
-  Vector q;
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
-  if (N.cols() == 0) {
-    lu.compute(sys.K);
-    if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
-    q = lu.solve(f);
+  const Vector f_full = static_load_vector(model, options.gravity, options.loads);
+  if (has_supports(model)) {
+    // Nonlinear supports (fluid-film bearings): the equilibrium by Newton's method.
+    Equilibrium e = solve_equilibrium(model, assembler, options.speed,
+                                      {.gravity = options.gravity, .loads = options.loads});
+    result.q = std::move(e.q);
+    if (!e.info.converged()) {
+      result.info = e.info;  // the last iterate is kept
+      return result;
+    }
   } else {
-    const Vector work = N.transpose() * f;  // work of the load along each free motion
-    const Real scale = f.norm() * std::sqrt(N.colwise().squaredNorm().maxCoeff());
-    if (work.cwiseAbs().maxCoeff() > 1e-9 * scale) {
-      std::vector<std::string> names;
-      for (const FreeMotionInfo& m : find_free_motions(model, assembler)) names.push_back(m.description);
-      throw Error(fmt::format("static analysis: the load drives a free motion of the model ({}); hold "
-                              "it with a spring or a fixed DOF",
-                              fmt::join(names, "; ")));
-    }
-    Real lambda_max = 0;
-    for (Index i = 0; i < sys.M.rows(); ++i)
-      lambda_max = std::max(lambda_max, sys.K.coeff(i, i) / sys.M.coeff(i, i));
-    lu.compute(SparseMatrix(sys.K + 1e-8 * lambda_max * sys.M));
-    if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
-    auto project = [&](Vector& x) { x -= N * (N.transpose() * (sys.M * x)); };
-    q = lu.solve(f);
-    project(q);
-    for (int it = 0; it < 3; ++it) {
-      Vector dq = lu.solve(Vector(f - sys.K * q));
-      project(dq);
-      q += dq;
-    }
+    result.q = T * solve_linear(model, assembler, assembler.at(options.speed), T.transpose() * f_full);
   }
-  result.q = T * q;
   if (!result.q.allFinite()) {
     // Overflow (a model built in code, past the builder's physical ranges): nothing
     // derived from the displacements can be trusted.
@@ -103,16 +91,36 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
     for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = force(d);
     result.springs.emplace_back(static_cast<Index>(e), out);
   }
+  // What each support transmits to its housing or the ground: the negative of its
+  // force on the journal, in the journal's DOF directions.
+  Vector support_forces = Vector::Zero(model.n_dofs());
+  for (std::size_t i = 0; i < model.forces.size(); ++i) {
+    const Force& force = model.forces[i];
+    if (!force.supports()) continue;
+    const std::vector<Index> dofs = force.dofs();
+    const auto n = static_cast<Index>(dofs.size());
+    Vector x(n);
+    for (Index k = 0; k < n; ++k) x(k) = result.q(dofs[static_cast<std::size_t>(k)]);
+    const Vector f = force.force({.speed = options.speed}, x, Vector::Zero(n)).f;
+    NodeValues out{};
+    const Index journal = force.nodes().front();
+    for (Index k = 0; k < n; ++k) {
+      support_forces(dofs[static_cast<std::size_t>(k)]) += f(k);
+      if (dofs[static_cast<std::size_t>(k)] / dofs_per_node == journal)
+        out[static_cast<std::size_t>(dofs[static_cast<std::size_t>(k)] % dofs_per_node)] = -f(k);
+    }
+    result.supports.emplace_back(static_cast<Index>(i), out);
+  }
 
   // Force on the supports at the fixed DOFs: the load applied there minus the element
-  // forces K_e·q_e.
+  // forces K_e·q_e, plus the supports' forces there (a fixed bearing housing).
   std::vector<std::array<bool, dofs_per_node>> fixed(static_cast<std::size_t>(model.n_nodes()));
   bool any_fixed = false;
   for (const FixedDofs& fd : model.fixed)
     for (int d = 0; d < dofs_per_node; ++d)
       if (fd.dofs[static_cast<std::size_t>(d)]) fixed[static_cast<std::size_t>(fd.node)][static_cast<std::size_t>(d)] = any_fixed = true;
   if (any_fixed) {
-    Vector r = f_full;
+    Vector r = f_full + support_forces;
     for (const Element& e : model.elements) {
       const LocalMatrices lm = e.local_matrices({options.speed});
       const auto n = static_cast<Index>(lm.dofs.size());

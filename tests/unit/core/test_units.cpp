@@ -91,6 +91,17 @@ TEST(Units, AngleForceMomentTimeVelocity) {
   EXPECT_DOUBLE_EQ(parse_quantity("0.001 rad/s", Quantity::angular_velocity), 0.001);
 }
 
+// 1 cP (centipoise) = 1 mPa·s; an ISO VG 32 oil at 40 °C is about 28 mPa·s.
+TEST(Units, Viscosity) {
+  EXPECT_DOUBLE_EQ(parse_quantity("0.1 Pa*s", Quantity::viscosity), 0.1);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.1 Pa s", Quantity::viscosity), 0.1);
+  EXPECT_DOUBLE_EQ(parse_quantity("28 mPa*s", Quantity::viscosity), 0.028);
+  EXPECT_DOUBLE_EQ(parse_quantity("28 cP", Quantity::viscosity), 0.028);
+  EXPECT_EQ(si_unit(Quantity::viscosity), "Pa*s");
+  EXPECT_EQ(accepted_units_text(Quantity::viscosity), "Pa*s, mPa*s or cP");
+  EXPECT_THROW(parse_quantity("0.1 Pa", Quantity::viscosity), QuantityError);
+}
+
 TEST(Units, Acceleration) {
   EXPECT_DOUBLE_EQ(parse_quantity("9.81 m/s^2", Quantity::acceleration), 9.81);
   EXPECT_DOUBLE_EQ(parse_quantity("9.81 m/s²", Quantity::acceleration), 9.81);

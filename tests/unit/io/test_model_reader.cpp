@@ -13,6 +13,7 @@
 #include <feran/elements/spring_damper.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
 #include <feran/forces/coulomb_friction.hpp>
+#include <feran/forces/fluid_film_bearing.hpp>
 #include <feran/forces/harmonic_force.hpp>
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
@@ -355,6 +356,25 @@ TEST_F(EverythingModel, RotatingDampersAndFriction) {
   EXPECT_DOUBLE_EQ(second_friction.force_amplitude, 1.0);  // "0.001 kN"
   EXPECT_EQ(second_friction.epsilon_t, 1e-4);    // defaults
   EXPECT_EQ(second_friction.epsilon_r, 1e-3);
+}
+
+TEST_F(EverythingModel, JournalBearings) {
+  const auto bearings = forces_of<FluidFilmBearing>(m());
+  ASSERT_EQ(bearings.size(), 2u);
+  const FluidFilmBearing& a = bearings[0].first;
+  EXPECT_EQ(bearings[0].second, "oil film");
+  EXPECT_EQ(a.node_a, m().find_node(std::string("tip")));
+  EXPECT_FALSE(a.node_b);  // the ground
+  EXPECT_DOUBLE_EQ(a.geometry.diameter, 0.05);
+  EXPECT_DOUBLE_EQ(a.geometry.length, 0.02);
+  EXPECT_DOUBLE_EQ(a.geometry.clearance, 5e-5);  // "50 um"
+  EXPECT_DOUBLE_EQ(a.geometry.viscosity, 0.028);  // "28 cP"
+  EXPECT_EQ(a.theory, FilmTheory::short_bearing);
+  const FluidFilmBearing& b = bearings[1].first;
+  EXPECT_EQ(bearings[1].second, "journal bearing 2");
+  EXPECT_EQ(b.node_b, m().find_node(std::string("stator a")));
+  EXPECT_EQ(b.theory, FilmTheory::long_bearing);
+  EXPECT_EQ(b.dofs().size(), 4u);
 }
 
 TEST_F(EverythingModel, ConstraintsAndUnbalances) {

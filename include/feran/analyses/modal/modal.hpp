@@ -107,12 +107,15 @@ struct ModalResult {
 /// an isotropic rotor at rest apart. A group that no speed-dependent term touches
 /// (no gyroscopic or circulatory entry, no speed-dependent element: typically the
 /// axial and torsional motion) is solved once and its modes reused at every speed.
-/// solve() may be called from several threads.
+/// Supports (fluid-film bearings) enter as their tangent stiffness and damping about
+/// the static equilibrium at each speed (linearised(), analyses/static/equilibrium.hpp);
+/// solve() then throws Error at speed 0. solve() may be called from several threads.
 class ModalSolver {
  public:
   explicit ModalSolver(const Model& model, ModalOptions options = {});
   /// The same with @p model already assembled (e.g. ModelFile::assembler, by the
-  /// reader's check): the assembly is reused, not repeated. Null: assembled here.
+  /// reader's check): the assembly is reused, not repeated. Null: assembled here (and
+  /// always for a model with supports, whose linearisation that assembly lacks).
   ModalSolver(const Model& model, ModalOptions options, std::shared_ptr<const Assembler> assembled);
   /// Modes at speed @p speed [rad/s].
   ModalResult solve(Real speed) const;
@@ -129,6 +132,7 @@ class ModalSolver {
 
   ModalOptions options_;
   std::shared_ptr<const Assembler> assembler_;
+  std::vector<Force> supports_;  // the model's supports (solve() refuses speed 0 with them)
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
   std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it
   // Per reduced DOF: the reduced DOF it pairs with in complex coordinates (v with w,

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Static analysis: deflection, spring and support forces, shaft internal forces and
-/// stresses under gravity and static point loads: K·q = f.
+/// stresses under gravity and static point loads: K·q = f, or with nonlinear supports
+/// (fluid-film bearings) the equilibrium of analyses/static/equilibrium.hpp.
 
 #include <vector>
 
@@ -17,7 +18,8 @@ namespace feran {
 struct StaticOptions {
   /// Gravitational acceleration vector (x, y, z) [m/s²]; zero for none.
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
-  /// Speed at which speed-dependent spring coefficients are evaluated [rad/s].
+  /// Speed at which speed-dependent spring coefficients and nonlinear supports are
+  /// evaluated [rad/s] (with supports, the equilibrium includes the circulatory Ω·K_i).
   Real speed = 0.0;
   bool loads = true;  ///< include Model::static_loads
 };
@@ -29,6 +31,9 @@ struct StaticResult {
   Vector q;  ///< displacements of all unconstrained DOFs (global_dof order)
   /// Force each spring–damper transmits to its second node or ground: K·(q_a − q_b).
   std::vector<std::pair<Index, NodeValues>> springs;  ///< (element, force)
+  /// Force each nonlinear support (fluid-film bearing) transmits to its housing or the
+  /// ground at the equilibrium, in the journal's DOF directions.
+  std::vector<std::pair<Index, NodeValues>> supports;  ///< (force, force)
   /// Force transmitted to the supports at fixed DOFs, per node with fixed DOFs.
   std::vector<std::pair<Index, NodeValues>> reactions;  ///< (node, force)
   std::vector<ShaftStation> stations;
@@ -39,7 +44,9 @@ struct StaticResult {
 };
 
 /// Runs the static analysis. Throws feran::Error when the load drives a free motion
-/// (a rigid-body motion allowed by free_motions that the load does not leave alone).
+/// (a rigid-body motion allowed by free_motions that the load does not leave alone),
+/// or when the model has nonlinear supports and @p options.speed is not above 0.
+/// An equilibrium not found is reported in info with the last iterate in q.
 StaticResult run_static(const Model& model, const StaticOptions& options);
 
 }  // namespace feran

@@ -1,0 +1,290 @@
+#include <feran/analyses/static/equilibrium.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <Eigen/SparseLU>
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+Vector static_load_vector(const Model& model, const Eigen::Vector3d& gravity, bool loads) {
+  Vector f = Vector::Zero(model.n_dofs());
+  if (gravity.squaredNorm() > 0) {
+    for (const Element& e : model.elements) {
+      const LocalMatrices lm = e.local_matrices({});
+      if (lm.M.size() == 0) continue;
+      const auto n = static_cast<Index>(lm.dofs.size());
+      Vector g = Vector::Zero(n);
+      for (Index i = 0; i < n; ++i) {
+        const Index local = lm.dofs[static_cast<std::size_t>(i)] % dofs_per_node;
+        if (local < 3) g(i) = gravity(local);
+      }
+      const Vector fe = lm.M * g;
+      for (Index i = 0; i < n; ++i) f(lm.dofs[static_cast<std::size_t>(i)]) += fe(i);
+    }
+  }
+  if (loads)
+    for (const Force& force : model.forces) force.add_static(f);
+  return f;
+}
+
+bool has_supports(const Model& model) {
+  return std::any_of(model.forces.begin(), model.forces.end(), [](const Force& f) { return f.supports(); });
+}
+
+namespace {
+
+std::string force_name(const Force& force) {
+  std::string kind(force.kind());
+  std::replace(kind.begin(), kind.end(), '_', ' ');
+  return force.label().empty() ? kind : fmt::format("{} '{}'", kind, force.label());
+}
+
+// The residual r = f + Tᵀ·f_s(T·q) − K·q of the equilibrium and, when asked, its
+// negative Jacobian J = K − Tᵀ·(∂f_s/∂x)·T; empty when a support cannot be
+// evaluated there (a journal at or beyond its wall).
+class Residual {
+ public:
+  Residual(const Model& model, const Assembler& assembler, Real speed, const EquilibriumOptions& options)
+      : model_(model), T_(assembler.dof_map().transformation()),
+        K_(assembler.at(speed).stiffness(speed)), state_{.speed = speed} {
+    f_ = T_.transpose() * static_load_vector(model, options.gravity, options.loads);
+    for (std::size_t i = 0; i < model.forces.size(); ++i)
+      if (model.forces[i].supports()) supports_.push_back(i);
+  }
+
+  const Vector& load() const { return f_; }
+  Index size() const { return K_.rows(); }
+
+  std::optional<Vector> operator()(const Vector& q, Real load_scale, SparseMatrix* jacobian) const {
+    const Vector q_full = T_ * q;
+    Vector fs = Vector::Zero(q_full.size());
+    std::vector<Eigen::Triplet<Real>> triplets;
+    for (const std::size_t i : supports_) {
+      const Force& force = model_.forces[i];
+      const std::vector<Index> dofs = force.dofs();
+      const auto n = static_cast<Index>(dofs.size());
+      Vector x(n);
+      for (Index k = 0; k < n; ++k) x(k) = q_full(dofs[static_cast<std::size_t>(k)]);
+      NonlinearForceValue value;
+      try {
+        value = force.force(state_, x, Vector::Zero(n));
+      } catch (const Error&) {
+        return std::nullopt;
+      }
+      for (Index a = 0; a < n; ++a) {
+        fs(dofs[static_cast<std::size_t>(a)]) += value.f(a);
+        if (jacobian)
+          for (Index b = 0; b < n; ++b)
+            if (value.dfdx(a, b) != 0.0)
+              triplets.emplace_back(dofs[static_cast<std::size_t>(a)], dofs[static_cast<std::size_t>(b)], value.dfdx(a, b));
+      }
+    }
+    if (jacobian) {
+      SparseMatrix D(q_full.size(), q_full.size());
+      D.setFromTriplets(triplets.begin(), triplets.end());
+      *jacobian = K_ - SparseMatrix(T_.transpose() * D * T_);
+    }
+    return Vector(load_scale * f_ + T_.transpose() * fs - K_ * q);
+  }
+
+ private:
+  const Model& model_;
+  const SparseMatrix& T_;
+  SparseMatrix K_;
+  MotionState state_;
+  Vector f_;
+  std::vector<std::size_t> supports_;
+};
+
+// Newton's method from @p q for the load scaled by @p load_scale, each step cut back
+// (halved, down to 2⁻²⁰) until the residual norm decreases. Returns whether it met
+// the tolerance; @p q holds the last iterate.
+bool newton(const Residual& residual, Real load_scale, Real scale, const EquilibriumOptions& options, Vector& q,
+            Equilibrium& out) {
+  SparseMatrix J;
+  std::optional<Vector> r = residual(q, load_scale, &J);
+  if (!r) return false;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  for (int it = 0; it < options.max_iterations; ++it) {
+    out.residual = r->norm() / scale;
+    if (out.residual <= options.tolerance) return true;
+    ++out.iterations;
+    lu.compute(J);
+    if (lu.info() != Eigen::Success) return false;
+    const Vector dq = lu.solve(*r);
+    if (!dq.allFinite()) return false;
+    bool stepped = false;
+    for (Real t = 1.0; t >= 0x1p-20; t *= 0.5) {
+      const Vector trial = q + t * dq;
+      SparseMatrix J_trial;
+      std::optional<Vector> r_trial = residual(trial, load_scale, &J_trial);
+      if (!r_trial || r_trial->norm() >= (1.0 - 1e-4 * t) * r->norm()) continue;
+      q = trial;
+      r = std::move(r_trial);
+      J = std::move(J_trial);
+      stepped = true;
+      break;
+    }
+    if (!stepped) {
+      out.residual = r->norm() / scale;
+      return out.residual <= options.tolerance;
+    }
+  }
+  out.residual = r->norm() / scale;
+  return out.residual <= options.tolerance;
+}
+
+}  // namespace
+
+void require_running(const std::vector<Force>& forces, Real speed) {
+  for (const Force& force : forces)
+    if (force.supports() && !(speed > 0))
+      throw Error(fmt::format("the {} carries no load at rest (an oil film has no stiffness at speed 0): the "
+                              "equilibrium and the linear analyses need a speed above 0 (start a sweep above "
+                              "0), got {:.6g} rad/s",
+                              force_name(force), speed));
+}
+
+Equilibrium solve_equilibrium(const Model& model, const Assembler& assembler, Real speed,
+                              const EquilibriumOptions& options) {
+  require_running(model.forces, speed);
+  Equilibrium out;
+  out.info.method = SolverMethod::sparse_lu;
+  const Residual residual(model, assembler, speed, options);
+  const Vector& f = residual.load();
+  Vector q = Vector::Zero(residual.size());
+  const Real scale = f.norm();
+  if (scale == 0.0) {  // no load: the journals stay centred, where the supports' force is zero
+    out.q = assembler.dof_map().transformation() * q;
+    out.info.n_converged = 1;
+    return out;
+  }
+  // Newton on the full load; when it stalls (a heavy load pushing a journal far out
+  // from the centre), continuation: the load grows in steps, each solved from the
+  // last, the step halved where Newton fails and doubled where it succeeds.
+  bool done = newton(residual, 1.0, scale, options, q, out);
+  if (!done) {
+    q.setZero();
+    Real reached = 0.0, step = 0.125;
+    while (reached < 1.0 && step > 1e-6) {
+      const Real next = std::min(1.0, reached + step);
+      Vector trial = q;
+      Equilibrium part;
+      if (newton(residual, next, scale * next, options, trial, part)) {
+        q = std::move(trial);
+        reached = next;
+        out.iterations += part.iterations;
+        out.residual = part.residual;
+        step *= 2.0;
+      } else {
+        out.iterations += part.iterations;
+        step *= 0.5;
+      }
+    }
+    done = reached == 1.0;
+    if (!done)
+      out.info.fail(SolverStatus::not_converged,
+                    fmt::format("the static equilibrium at {:.6g} rad/s was not found: Newton's method with load "
+                                "continuation carried {:.3g} % of the load (a bearing too weak for its load, or a "
+                                "journal pressed to its wall)",
+                                speed, 100.0 * reached));
+  }
+  out.q = assembler.dof_map().transformation() * q;
+  if (done) out.info.n_converged = 1;
+  return out;
+}
+
+EquilibriumPath::EquilibriumPath(Model model, EquilibriumOptions options)
+    : model_(std::move(model)), options_(std::move(options)), assembler_(model_) {}
+
+const Vector& EquilibriumPath::at(Real speed) const {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto it = solved_.find(speed); it != solved_.end()) return it->second;
+  }
+  Equilibrium e = solve_equilibrium(model_, assembler_, speed, options_);
+  if (!e.info.converged()) throw Error(e.info.message);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return solved_.try_emplace(speed, std::move(e.q)).first->second;
+}
+
+namespace {
+
+// A support replaced by its tangent about the equilibrium at each speed.
+class LinearisedSupport {
+ public:
+  LinearisedSupport(std::shared_ptr<const EquilibriumPath> path, std::size_t force)
+      : path_(std::move(path)), force_(force) {}
+
+  std::string_view kind() const { return "linearised_support"; }
+  bool speed_dependent() const { return true; }
+  std::vector<Index> dofs() const { return path_->model().forces[force_].dofs(); }
+
+  // Zero at rest, where the film has no stiffness (the analyses refuse speed 0 with
+  // require_running(); the assembly asks at rest only for the pattern).
+  LocalMatrices local_matrices(const OperatingPoint& op) const {
+    const Force& force = path_->model().forces[force_];
+    LocalMatrices lm;
+    lm.dofs = force.dofs();
+    const auto n = static_cast<Index>(lm.dofs.size());
+    if (!(op.speed > 0)) {
+      lm.K = lm.C = Matrix::Zero(n, n);
+      return lm;
+    }
+    const Vector& q = path_->at(op.speed);
+    Vector x(n);
+    for (Index k = 0; k < n; ++k) x(k) = q(lm.dofs[static_cast<std::size_t>(k)]);
+    const NonlinearForceValue value = force.force({.speed = op.speed}, x, Vector::Zero(n));
+    lm.K = -value.dfdx;
+    lm.C = -value.dfdv;
+    return lm;
+  }
+
+  // The block of the tangent on the first node's own DOFs, as 6×6 matrices of the
+  // relative motion (the force depends on the journal's motion relative to its housing).
+  Transmission transmission(Real speed) const {
+    const Force& force = path_->model().forces[force_];
+    const std::vector<Index> nodes = force.nodes();
+    const LocalMatrices lm = local_matrices({speed});
+    Transmission t{.node_a = nodes.front(), .node_b = {}, .K = Matrix::Zero(dofs_per_node, dofs_per_node),
+                   .C = Matrix::Zero(dofs_per_node, dofs_per_node)};
+    if (nodes.size() > 1) t.node_b = nodes[1];
+    for (std::size_t i = 0; i < lm.dofs.size(); ++i)
+      for (std::size_t j = 0; j < lm.dofs.size(); ++j) {
+        if (lm.dofs[i] / dofs_per_node != t.node_a || lm.dofs[j] / dofs_per_node != t.node_a) continue;
+        const auto a = static_cast<Index>(lm.dofs[i] % dofs_per_node), b = static_cast<Index>(lm.dofs[j] % dofs_per_node);
+        t.K(a, b) = lm.K(static_cast<Index>(i), static_cast<Index>(j));
+        t.C(a, b) = lm.C(static_cast<Index>(i), static_cast<Index>(j));
+      }
+    return t;
+  }
+
+ private:
+  std::shared_ptr<const EquilibriumPath> path_;
+  std::size_t force_;
+};
+
+}  // namespace
+
+Model linearised(const Model& model) {
+  if (!has_supports(model)) return model;
+  auto path = std::make_shared<const EquilibriumPath>(
+      model, EquilibriumOptions{.gravity = model.gravity, .loads = true});
+  Model out = model;
+  out.forces.clear();
+  for (std::size_t i = 0; i < model.forces.size(); ++i) {
+    const Force& force = model.forces[i];
+    if (force.supports()) out.elements.emplace_back(LinearisedSupport(path, i), force.label());
+    else out.forces.push_back(force);
+  }
+  return out;
+}
+
+}  // namespace feran
