@@ -187,14 +187,10 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
   }
 }
 
-namespace {
-
-// K at rest with each nonlinear support (a fluid-film bearing, which has no stiffness
-// at rest) replaced by a stiff spring on its DOFs: it holds the rotor when it runs.
-SparseMatrix running_stiffness(const Model& model, const Assembler& assembler, const SystemMatrices& sys) {
+SparseMatrix held_stiffness(const Model& model, const Assembler& assembler, const SparseMatrix& K) {
   std::vector<Eigen::Triplet<Real>> holds;
   Real k = 0.0;
-  for (Index i = 0; i < sys.K.rows(); ++i) k = std::max(k, std::abs(sys.K.coeff(i, i)));
+  for (Index i = 0; i < K.rows(); ++i) k = std::max(k, std::abs(K.coeff(i, i)));
   if (k == 0.0) k = 1.0;
   for (const Force& force : model.forces) {
     if (!force.supports()) continue;
@@ -208,18 +204,16 @@ SparseMatrix running_stiffness(const Model& model, const Assembler& assembler, c
       holds.emplace_back(dofs[d + half], dofs[d], -k);
     }
   }
-  if (holds.empty()) return sys.K;
+  if (holds.empty()) return K;
   SparseMatrix H(model.n_dofs(), model.n_dofs());
   H.setFromTriplets(holds.begin(), holds.end());
   const SparseMatrix& T = assembler.dof_map().transformation();
-  return sys.K + SparseMatrix(T.transpose() * H * T);
+  return K + SparseMatrix(T.transpose() * H * T);
 }
-
-}  // namespace
 
 std::vector<FreeMotionInfo> find_free_motions(const Model& model, const Assembler& assembler) {
   const SystemMatrices sys = assembler.at(0.0);
-  const Matrix null_space = stiffness_null_space(running_stiffness(model, assembler, sys), sys.M);
+  const Matrix null_space = stiffness_null_space(held_stiffness(model, assembler, sys.K), sys.M);
 
   std::vector<FreeMotionInfo> motions;
   if (null_space.cols() == 0) return motions;

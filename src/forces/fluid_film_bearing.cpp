@@ -54,9 +54,13 @@ Real alpha_of_gamma(Real gamma, Real k) {
 // G = A sin θ + B cos θ is negative on one half-turn, (π − β, 2π − β) with
 // β = atan2(B, A). The Jacobian is the integral of the integrand's derivatives:
 // the integrand vanishes at both ends (G = 0), so the moving ends add nothing.
-FilmForce short_bearing_force(const JournalBearingGeometry& g, Real speed, const Vec2& x, const Vec2& v) {
+FilmForce short_bearing_force(const JournalBearingGeometry& g, Real speed, Vec2 x, const Vec2& v) {
   FilmForce out;
   const Real c = g.clearance;
+  // A journal at rest at the very centre has G ≡ 0: no film half to integrate over,
+  // though the Jacobian has a limit (a pure cross-coupled stiffness). It is taken at a
+  // displacement of 1e-9 c, which changes it by that fraction.
+  if (x.norm() < 1e-9 * c && v.norm() == 0.0) x = Vec2(1e-9 * c, 0.0);
   const Real A = 0.5 * speed * x(0) - v(1), B = -0.5 * speed * x(1) - v(0);
   if (A == 0.0 && B == 0.0) return out;
   const Real e = x.norm(), eps = e / c;

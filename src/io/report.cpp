@@ -208,6 +208,13 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
     out += fmt::format("\nForces on the spring-dampers' second node or ground\n{:>30}{}\n", "", head);
     for (const auto& [e, f] : result.springs) out += fmt::format("{:>30}{}\n", element_name(model, e), forces(f));
   }
+  if (!result.supports.empty()) {
+    out += fmt::format("\nForces the bearings transmit to their housing or ground\n{:>30}{}\n", "", head);
+    for (const auto& [i, f] : result.supports) {
+      const std::string& label = model.forces[static_cast<std::size_t>(i)].label();
+      out += fmt::format("{:>30}{}\n", label.empty() ? fmt::format("force {}", i + 1) : printable(label), forces(f));
+    }
+  }
   if (!result.reactions.empty()) {
     out += fmt::format("\nForces on the supports (fixed DOFs)\n{:>30}{}\n", "", head);
     for (const auto& [node, f] : result.reactions) out += fmt::format("{:>30}{}\n", "node " + node_name(model, node), forces(f));

@@ -78,6 +78,11 @@ std::string element_label(const Model& model, Index element) {
   return label.empty() ? fmt::format("element {}", element + 1) : label;
 }
 
+std::string force_label(const Model& model, Index force) {
+  const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
+  return label.empty() ? fmt::format("force {}", force + 1) : label;
+}
+
 json station_json(const Model& model, const ShaftStation& st) {
   json j = node_json(model, st.node);
   j["element"] = element_label(model, st.element);
@@ -300,6 +305,18 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
     springs.push_back(js);
   }
   j["springs"] = springs;
+  json supports = json::array();
+  for (const auto& [i, f] : result.supports) {
+    const Force& force = model.forces[static_cast<std::size_t>(i)];
+    const std::vector<Index> at = force.nodes();
+    json js = {{"label", force_label(model, i)},
+               {"kind", force.kind()},
+               {"node", model.nodes[static_cast<std::size_t>(at.front())].number},
+               {"force", {{"y", f[static_cast<std::size_t>(Dof::v)]}, {"z", f[static_cast<std::size_t>(Dof::w)]}}}};
+    js["to"] = at.size() > 1 ? json(model.nodes[static_cast<std::size_t>(at[1])].number) : json("ground");
+    supports.push_back(js);
+  }
+  j["supports"] = supports;
   json reactions = json::array();
   for (const auto& [node, f] : result.reactions) {
     std::array<bool, dofs_per_node> mask{};

@@ -26,6 +26,11 @@ struct FreeMotionInfo {
 /// spectrum is too wide for double precision to tell rigid motion from vibration.
 Matrix stiffness_null_space(const SparseMatrix& K, const SparseMatrix& M);
 
+/// @p K (reduced) with each nonlinear support of @p model (a fluid-film bearing, which
+/// has no stiffness at rest) added as a stiff spring on its DOFs (max K_ii): the
+/// stiffness whose null space is the motions that stay free when the rotor runs.
+SparseMatrix held_stiffness(const Model& model, const Assembler& assembler, const SparseMatrix& K);
+
 /// The rigid-body motions of @p model at zero speed (may be empty), counting its
 /// nonlinear supports (fluid-film bearings) as holding their DOFs, as they do when the
 /// rotor runs.

@@ -8,7 +8,9 @@
 
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <feran/assembly/checks.hpp>
 #include <feran/core/error.hpp>
 
 namespace feran {
@@ -34,6 +36,18 @@ Vector static_load_vector(const Model& model, const Eigen::Vector3d& gravity, bo
   return f;
 }
 
+void require_unloaded_free_motions(const Model& model, const Assembler& assembler, const Matrix& free,
+                                   const Vector& f) {
+  if (free.cols() == 0) return;
+  const Vector work = free.transpose() * f;  // work of the load along each free motion
+  if (work.cwiseAbs().maxCoeff() <= 1e-9 * f.norm() * std::sqrt(free.colwise().squaredNorm().maxCoeff())) return;
+  std::vector<std::string> names;
+  for (const FreeMotionInfo& m : find_free_motions(model, assembler)) names.push_back(m.description);
+  throw Error(fmt::format("static analysis: the load drives a free motion of the model ({}); hold it with a "
+                          "spring or a fixed DOF",
+                          fmt::join(names, "; ")));
+}
+
 bool has_supports(const Model& model) {
   return std::any_of(model.forces.begin(), model.forces.end(), [](const Force& f) { return f.supports(); });
 }
@@ -52,15 +66,33 @@ std::string force_name(const Force& force) {
 class Residual {
  public:
   Residual(const Model& model, const Assembler& assembler, Real speed, const EquilibriumOptions& options)
-      : model_(model), T_(assembler.dof_map().transformation()),
-        K_(assembler.at(speed).stiffness(speed)), state_{.speed = speed} {
+      : model_(model), T_(assembler.dof_map().transformation()), state_{.speed = speed} {
+    const SystemMatrices sys = assembler.at(speed);
+    K_ = sys.stiffness(speed);
     f_ = T_.transpose() * static_load_vector(model, options.gravity, options.loads);
     for (std::size_t i = 0; i < model.forces.size(); ++i)
       if (model.forces[i].supports()) supports_.push_back(i);
+    // Motions free even with the supports holding (allowed by free_motions, e.g.
+    // torsion): the load must leave them alone, and the Newton steps are kept
+    // orthogonal to them (in M), with J shifted by 1e-8·max(K_ii/M_ii)·M to stay regular.
+    M_ = sys.M;
+    free_ = stiffness_null_space(held_stiffness(model, assembler, K_), M_);
+    if (free_.cols() > 0) {
+      require_unloaded_free_motions(model, assembler, free_, f_);
+      Real lambda_max = 0;
+      for (Index i = 0; i < M_.rows(); ++i) lambda_max = std::max(lambda_max, std::abs(K_.coeff(i, i)) / M_.coeff(i, i));
+      shift_ = 1e-8 * lambda_max;
+    }
   }
 
   const Vector& load() const { return f_; }
   Index size() const { return K_.rows(); }
+  // The Newton step J⁻¹·r from a factorisation of J (shifted where there are free
+  // motions), with the free motions projected out.
+  SparseMatrix regular(const SparseMatrix& J) const { return shift_ > 0 ? SparseMatrix(J + shift_ * M_) : J; }
+  void project(Vector& dq) const {
+    if (free_.cols() > 0) dq -= free_ * (free_.transpose() * (M_ * dq));
+  }
 
   std::optional<Vector> operator()(const Vector& q, Real load_scale, SparseMatrix* jacobian) const {
     const Vector q_full = T_ * q;
@@ -97,10 +129,12 @@ class Residual {
  private:
   const Model& model_;
   const SparseMatrix& T_;
-  SparseMatrix K_;
+  SparseMatrix K_, M_;
   MotionState state_;
   Vector f_;
   std::vector<std::size_t> supports_;
+  Matrix free_;  // M-orthonormal basis of the motions the supports do not hold
+  Real shift_ = 0.0;
 };
 
 // Newton's method from @p q for the load scaled by @p load_scale, each step cut back
@@ -116,9 +150,10 @@ bool newton(const Residual& residual, Real load_scale, Real scale, const Equilib
     out.residual = r->norm() / scale;
     if (out.residual <= options.tolerance) return true;
     ++out.iterations;
-    lu.compute(J);
+    lu.compute(residual.regular(J));
     if (lu.info() != Eigen::Success) return false;
-    const Vector dq = lu.solve(*r);
+    Vector dq = lu.solve(*r);
+    residual.project(dq);
     if (!dq.allFinite()) return false;
     bool stepped = false;
     for (Real t = 1.0; t >= 0x1p-20; t *= 0.5) {

@@ -27,15 +27,7 @@ Vector solve_linear(const Model& model, const Assembler& assembler, const System
     if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
     return lu.solve(f);
   }
-  const Vector work = N.transpose() * f;  // work of the load along each free motion
-  const Real scale = f.norm() * std::sqrt(N.colwise().squaredNorm().maxCoeff());
-  if (work.cwiseAbs().maxCoeff() > 1e-9 * scale) {
-    std::vector<std::string> names;
-    for (const FreeMotionInfo& m : find_free_motions(model, assembler)) names.push_back(m.description);
-    throw Error(fmt::format("static analysis: the load drives a free motion of the model ({}); hold "
-                            "it with a spring or a fixed DOF",
-                            fmt::join(names, "; ")));
-  }
+  require_unloaded_free_motions(model, assembler, N, f);
   Real lambda_max = 0;
   for (Index i = 0; i < sys.M.rows(); ++i)
     lambda_max = std::max(lambda_max, sys.K.coeff(i, i) / sys.M.coeff(i, i));

@@ -29,6 +29,12 @@ namespace feran {
 /// masses and consistent shaft masses, plus the static loads when @p loads.
 Vector static_load_vector(const Model& model, const Eigen::Vector3d& gravity, bool loads);
 
+/// Throws Error, naming the motions, when the load @p f (reduced) does work along the
+/// free motions @p free (an M-orthonormal basis, stiffness_null_space()): a static
+/// solution exists only when the load leaves them alone.
+void require_unloaded_free_motions(const Model& model, const Assembler& assembler, const Matrix& free,
+                                   const Vector& f);
+
 /// True when some force of @p model carries the rotor (supports()).
 bool has_supports(const Model& model);
 

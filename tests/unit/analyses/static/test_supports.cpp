@@ -1,0 +1,216 @@
+// Rotors on fluid-film bearings in the linear analyses: the static equilibrium by
+// Newton's method, the tangent about it in modal analysis, and the stability
+// threshold of a rigid rotor in two short bearings against its closed form.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/assembly/checks.hpp>
+#include <feran/core/error.hpp>
+#include <feran/core/root_finding.hpp>
+#include <feran/elements/rigid_body.hpp>
+#include <feran/forces/fluid_film_bearing.hpp>
+
+namespace feran::test_supports {
+namespace {
+
+// Friswell et al. (2010), Example 5.5.1: D = 100 mm, L = 30 mm, c = 0.1 mm, μ = 0.1 Pa s.
+constexpr JournalBearingGeometry friswell{.diameter = 0.1, .length = 0.03, .clearance = 1e-4, .viscosity = 0.1};
+constexpr Real g = 9.81;
+
+// A rigid rotor of mass 2m on two identical bearings at x = ±a: node 0 at the centre
+// carries the body and leads nodes 1 and 2 (the journals) by a rigid link; its axial
+// and torsional DOFs are fixed. The cylindrical motion (v, w of node 0) has mass m per
+// bearing; the conical motion is made much stiffer (J_A small) so that it stays
+// stable well beyond the cylindrical threshold.
+Model rigid_rotor(Real m_per_bearing, FilmTheory theory, const JournalBearingGeometry& geometry = friswell) {
+  constexpr Real a = 0.2;
+  Model model;
+  model.nodes = {{1, "centre", 0.0, true}, {2, "left", -a, true}, {3, "right", a, true}};
+  const Real mass = 2 * m_per_bearing;
+  model.elements.emplace_back(RigidBody(0, {.mass = mass, .transverse_inertia = 0.05 * mass * a * a,
+                                            .polar_inertia = 0.02 * mass * a * a},
+                                        true),
+                              "rotor");
+  model.links.push_back({0, {1, 2}});
+  FixedDofs fixed{.node = 0, .dofs = {}};
+  fixed.dofs[static_cast<std::size_t>(Dof::u)] = fixed.dofs[static_cast<std::size_t>(Dof::rx)] = true;
+  model.fixed.push_back(fixed);
+  model.forces.emplace_back(FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = geometry, .theory = theory}, "left");
+  model.forces.emplace_back(FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = geometry, .theory = theory}, "right");
+  model.gravity = Eigen::Vector3d(0, -g, 0);
+  return model;
+}
+
+// The 2×2 eigenvalue problem (m·λ² + C·λ + K)·x = 0 of one bearing carrying mass m,
+// from the closed-form coefficients (load frame; the eigenvalues do not depend on the
+// frame), as the four roots of its characteristic polynomial via the companion matrix.
+std::vector<Complex> closed_form_eigenvalues(Real m, const BearingCoefficients& b) {
+  Matrix A = Matrix::Zero(4, 4);
+  A.topRightCorner(2, 2) = Matrix::Identity(2, 2);
+  A.bottomLeftCorner(2, 2) = -b.K / m;
+  A.bottomRightCorner(2, 2) = -b.C / m;
+  const Eigen::VectorXcd ev = Eigen::EigenSolver<Matrix>(A).eigenvalues();
+  return {ev.data(), ev.data() + ev.size()};
+}
+
+// The largest real part among the lateral eigenvalues of the model at Ω.
+Real largest_real_part(const Model& model, Real speed) {
+  ModalOptions options;
+  options.shapes = false;
+  const ModalResult r = run_modal(model, speed, options);
+  EXPECT_TRUE(r.info.converged()) << r.info.message;
+  Real most = -std::numeric_limits<Real>::infinity();
+  for (const Mode& mode : r.modes) most = std::max(most, mode.eigenvalue.real());
+  return most;
+}
+
+// The threshold of a mass m on one linearised bearing: with λ = iν on the boundary,
+// det(K − mν² + iνC) = 0 splits into K_eq = mν² =
+// (k11 c22 + k22 c11 − k12 c21 − k21 c12)/(c11 + c22) and
+// ν² = ((k11 − K_eq)(k22 − K_eq) − k12 k21)/(c11 c22 − c12 c21); the film is stable
+// for m < K_eq/ν², and for any mass where ν² ≤ 0 (a heavily loaded short bearing,
+// ε above about 0.75). Returns m_crit(Ω) − m, or m where any mass is stable.
+Real threshold_margin(const JournalBearingGeometry& geometry, FilmTheory theory, Real m, Real speed) {
+  const BearingCoefficients b = film_coefficients(geometry, theory, speed, m * g);
+  const Matrix& K = b.K;
+  const Matrix& C = b.C;
+  const Real k_eq = (K(0, 0) * C(1, 1) + K(1, 1) * C(0, 0) - K(0, 1) * C(1, 0) - K(1, 0) * C(0, 1)) /
+                    (C(0, 0) + C(1, 1));
+  const Real nu2 = ((K(0, 0) - k_eq) * (K(1, 1) - k_eq) - K(0, 1) * K(1, 0)) /
+                   (C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0));
+  return nu2 > 0 ? k_eq / nu2 - m : m;
+}
+
+TEST(Supports, EquilibriumOfRigidRotorMatchesClosedFormEccentricityAndAttitude) {
+  // Each bearing carries half the weight: the journal sits at the eccentricity of
+  // the closed-form load–eccentricity relation, turned from the load line by the
+  // attitude angle in the direction of rotation. Newton's tolerance is 1e-10 of the
+  // load; the quadrature of the film force agrees with the closed form to 1e-12
+  // (test_fluid_film_bearing), so 1e-8 relative leaves room for conditioning.
+  const Real m = 525.0 / g;
+  for (const FilmTheory theory : {FilmTheory::short_bearing, FilmTheory::long_bearing})
+    for (const Real rpm : {1500.0, 2000.0, 6000.0}) {
+      const Real speed = rpm * 2 * pi / 60;
+      const Model model = rigid_rotor(m, theory);
+      StaticOptions options;
+      options.gravity = model.gravity;
+      options.speed = speed;
+      const StaticResult r = run_static(model, options);
+      ASSERT_TRUE(r.info.converged()) << r.info.message;
+      const Real eps = film_eccentricity(friswell, theory, speed, 525.0);
+      const Real phi = film_attitude_angle(theory, eps);
+      for (const Index journal : {1, 2}) {
+        const Real v = r.q(global_dof(journal, Dof::v)), w = r.q(global_dof(journal, Dof::w));
+        EXPECT_NEAR(std::hypot(v, w) / friswell.clearance, eps, 1e-8 * eps) << rpm;
+        // The displacement lies at the attitude angle from the load line (−y), turned
+        // in the direction of rotation (about +x, y towards z): (−cos φ, −sin φ)·e.
+        EXPECT_NEAR(std::atan2(-w, -v), phi, 1e-8) << rpm;
+      }
+      // Each support transmits the half weight to the ground.
+      ASSERT_EQ(r.supports.size(), 2U);
+      for (const auto& [force, f] : r.supports) {
+        EXPECT_NEAR(f[static_cast<std::size_t>(Dof::v)], -525.0, 1e-8 * 525.0);
+        EXPECT_NEAR(f[static_cast<std::size_t>(Dof::w)], 0.0, 1e-8 * 525.0);
+      }
+    }
+}
+
+TEST(Supports, ModesOfRigidRotorAreThoseOfTheClosedFormCoefficients) {
+  // The cylindrical modes of the symmetric rotor are those of mass m on one bearing
+  // with the closed-form eight coefficients at the half weight; the modal analysis
+  // uses the Jacobian of the film force at Newton's equilibrium instead. Agreement to
+  // 1e-7 relative: the Jacobian at the equilibrium matches the closed form to 1e-9.
+  const Real m = 525.0 / g;
+  for (const Real rpm : {1500.0, 2000.0}) {
+    const Real speed = rpm * 2 * pi / 60;
+    const Model model = rigid_rotor(m, FilmTheory::short_bearing);
+    ModalOptions options;
+    options.shapes = false;
+    const ModalResult r = run_modal(model, speed, options);
+    ASSERT_TRUE(r.info.converged()) << r.info.message;
+    const std::vector<Complex> expected =
+        closed_form_eigenvalues(m, film_coefficients(friswell, FilmTheory::short_bearing, speed, 525.0));
+    for (const Complex& p : expected) {
+      if (p.imag() < 0) continue;
+      Real closest = std::numeric_limits<Real>::infinity();
+      for (const Mode& mode : r.modes) closest = std::min(closest, std::abs(mode.eigenvalue - p));
+      EXPECT_LT(closest, 1e-7 * std::abs(p)) << rpm << " rpm, p = " << p;
+    }
+  }
+}
+
+TEST(Supports, StabilityThresholdOfRigidRotorInShortBearingsMatchesDerivation) {
+  // The speed at which the least damped mode crosses into the right half-plane, by
+  // bisection on the modal analysis, against the root of the closed-form threshold
+  // condition (threshold_margin above). The bisection stops at 1e-9 relative and
+  // the root at 1e-12; they must agree to 1e-8 (measured: 5e-11 at both loads,
+  // 863.345 rad/s at 525 N and 838.955 rad/s at 2000 N).
+  for (const Real load : {525.0, 2000.0}) {
+    const Real m = load / g;
+    const Model model = rigid_rotor(m, FilmTheory::short_bearing);
+    const auto margin = [&](Real s) { return threshold_margin(friswell, FilmTheory::short_bearing, m, s); };
+    const RootResult root = brent_root(margin, 20.0, 20000.0, margin(20.0), margin(20000.0), 1e-12);
+    ASSERT_TRUE(root.converged);
+    const Real* derived = &root.x;
+    Real lo = 0.7 * *derived, hi = 1.4 * *derived;
+    ASSERT_LT(largest_real_part(model, lo), 0.0);
+    ASSERT_GT(largest_real_part(model, hi), 0.0);
+    while (hi - lo > 1e-9 * hi) {
+      const Real mid = 0.5 * (lo + hi);
+      (largest_real_part(model, mid) < 0 ? lo : hi) = mid;
+    }
+    EXPECT_NEAR(0.5 * (lo + hi), *derived, 1e-8 * *derived) << load << " N";
+  }
+}
+
+TEST(Supports, SpeedZeroIsRefusedWithTheBearingsName) {
+  const Model model = rigid_rotor(525.0 / g, FilmTheory::short_bearing);
+  StaticOptions options;
+  options.gravity = model.gravity;
+  try {
+    (void)run_static(model, options);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("fluid film bearing 'left' carries no load at rest"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW((void)run_modal(model, 0.0, {}), Error);
+}
+
+TEST(Supports, FreeMotionCheckCountsBearingsAsHoldingTheRotor) {
+  // The rotor is held only by its bearings: without them counted, the check would
+  // find the lateral rigid-body motions free.
+  const Model model = rigid_rotor(525.0 / g, FilmTheory::short_bearing);
+  const Assembler assembler(model);
+  EXPECT_NO_THROW(check_model(model, assembler));
+  Model without = model;
+  without.forces.clear();
+  EXPECT_THROW(check_model(without, Assembler(without)), ModelStructureError);
+}
+
+TEST(Supports, EquilibriumNotFoundIsReportedWithTheSpeed) {
+  // Newton's method cut off after one step at a heavy load: not-converged, naming
+  // the speed, with the last iterate kept.
+  const Model model = rigid_rotor(2e5 / g, FilmTheory::short_bearing);
+  EquilibriumOptions options{.gravity = model.gravity, .loads = true, .tolerance = 1e-10, .max_iterations = 1};
+  const Equilibrium e = solve_equilibrium(model, Assembler(model), 10.0, options);
+  EXPECT_EQ(e.info.status, SolverStatus::not_converged);
+  EXPECT_NE(e.info.message.find("at 10 rad/s"), std::string::npos) << e.info.message;
+  EXPECT_EQ(e.q.size(), model.n_dofs());
+  EXPECT_TRUE(e.q.allFinite());
+  // With the default iterations it is found (a film carries any load as ε → 1).
+  options.max_iterations = EquilibriumOptions{}.max_iterations;
+  EXPECT_TRUE(solve_equilibrium(model, Assembler(model), 10.0, options).info.converged());
+}
+
+}  // namespace
+}  // namespace feran::test_supports
