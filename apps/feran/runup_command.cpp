@@ -41,6 +41,8 @@ struct RunupArgs {
   std::string blowup;
   int modes = 0;
   bool static_loads = false;
+  bool gravity = false;
+  std::string start;
   OutputOptions out;
 };
 
@@ -88,7 +90,13 @@ Runner add_runup_command(CLI::App& app) {
                   "Integrate in a basis of the N lowest undamped modes (at 5 speeds of the run) instead of the "
                   "full model; lets rk3 take long steps (default: [runup] modes, else the full model)")
       ->check(positive_number());
-  cmd->add_flag("--static-loads", args->static_loads, "Apply the model's [[static_loads]] as constant forces");
+  cmd->add_flag("--static-loads", args->static_loads,
+                "Apply the model's [[static_loads]] as constant forces (default: [runup] static_loads)");
+  cmd->add_flag("--gravity", args->gravity,
+                "Apply the gravity of [static] as a constant force (default: [runup] gravity)");
+  cmd->add_option("--start", args->start,
+                  "The state at t = 0: rest, equilibrium (static, at the first speed) or steady (with the "
+                  "steady unbalance response) (default: [runup] start, else rest)");
   add_output_options(*cmd, args->out);
 
   return [args]() {
@@ -119,6 +127,8 @@ Runner add_runup_command(CLI::App& app) {
     request.output_interval = time(args->output_interval, "--output-interval");
     if (!args->blowup.empty()) request.blowup_limit = parse_quantity(args->blowup, Quantity::length);
     request.static_loads = args->static_loads;
+    request.gravity = args->gravity;
+    if (!args->start.empty()) request.start = args->start;
     for (const std::string& p : args->probes) request.probes.push_back(find_node_reference(model, p, "--probe"));
     for (const std::string& name : args->springs) {
       try {

@@ -459,7 +459,13 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
     if (!(*request.blowup_limit > 0)) throw Error("--blowup must be positive");
     options.blowup_limit = *request.blowup_limit;
   }
-  options.static_loads = request.static_loads;
+  options.static_loads = request.static_loads || file.static_loads.value_or(false);
+  if (request.gravity || file.gravity.value_or(false)) options.gravity = model.gravity;
+  const std::string start = request.start.value_or(file.start.value_or("rest"));
+  if (start == "rest") options.start = RunupStart::rest;
+  else if (start == "equilibrium") options.start = RunupStart::equilibrium;
+  else if (start == "steady") options.start = RunupStart::steady_state;
+  else throw Error(fmt::format("--start must be rest, equilibrium or steady, got '{}'", start));
   options.probes = !request.probes.empty() ? request.probes
                    : !file.probes.empty()  ? node_indices(model, file.probes)
                                            : default_probes(model);

@@ -1006,6 +1006,7 @@ void Builder::build_gravity() {
 
 void Builder::check_runup() const {
   const RunupSpec& r = spec_.runup;
+  if (r.start) check_choice(*r.start, "runup.start", "start", spec::choices_of<RunupSpec>("start"));
   // The speed profile's three forms, each named by its first key given.
   std::vector<std::string> forms;
   for (const auto& keys : {std::vector<std::pair<std::string, bool>>{{"speed", r.speed.has_value()}},

@@ -22,6 +22,7 @@ constexpr std::string_view dof_names[] = {"u", "v", "w", "rx", "ry", "rz", "all"
 constexpr std::string_view force_kinds[] = {"fixed", "rotating_force", "rotating_moment"};
 constexpr std::string_view force_directions[] = {"x", "y", "z", "rx", "ry", "rz"};
 constexpr std::string_view gravity_directions[] = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
+constexpr std::string_view runup_starts[] = {"rest", "equilibrium", "steady"};
 constexpr std::string_view station_outputs[] = {"all", "summary", "none"};
 constexpr std::string_view film_theories[] = {"short", "long"};
 
@@ -505,6 +506,14 @@ const FieldTable<RunupSpec>& fields_of<RunupSpec>() {
        .doc = "non-empty, no spring twice: the spring–dampers whose forces are recorded, each the `name` of a `[[springs]]` entry", .if_empty = default_hint},
       {.key = "modes", .kind = K::integer, .member = &S::modes,
        .doc = "integrate in a basis of this many undamped modes (at 5 speeds of the run) plus static corrections instead of the full model, as `feran runup --modes` (docs/theory/time_integration.md, \"Modal reduction\")", .bound = at_least(1), .default_text = "— (full model)"},
+      {.key = "gravity", .kind = K::flag, .member = &S::gravity,
+       .doc = "apply the gravity of `[static]` (its `gravity` and `g`; 9.81 m/s² along −y when not given) as a constant force M·g, as `feran runup --gravity`",
+       .default_text = "`false`"},
+      {.key = "static_loads", .kind = K::flag, .member = &S::static_loads,
+       .doc = "apply the `[[static_loads]]` as constant forces, as `feran runup --static-loads`", .default_text = "`false`"},
+      {.key = "start", .kind = K::choice, .member = &S::start,
+       .doc = "the state at t = 0: at rest; at the static equilibrium at the first speed under the run's gravity and static loads (with journal bearings the first speed must be above 0); or steady, that equilibrium plus the steady unbalance response at the first speed (linearised about it)",
+       .choices = runup_starts, .default_text = "`\"rest\"`"},
   };
   return table;
 }

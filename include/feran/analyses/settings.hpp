@@ -149,7 +149,10 @@ struct RunupRequest {
   bool exact_jacobian = true;
   std::optional<int> jacobian_interval;
   std::optional<Real> blowup_limit;        ///< [m]; default 1 m
-  bool static_loads = false;
+  bool static_loads = false;               ///< true, or else [runup] static_loads
+  bool gravity = false;                    ///< true (Model::gravity), or else [runup] gravity
+  /// "rest", "equilibrium" or "steady"; default [runup] start, else "rest".
+  std::optional<std::string> start;
 };
 
 /// Throws Error for two profile forms, an incomplete ramp, no profile anywhere, no

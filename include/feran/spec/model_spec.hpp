@@ -238,6 +238,9 @@ struct RunupSpec {
   std::optional<int> modes;
   std::vector<NodeRef> probes;
   std::vector<std::string> springs;  ///< names of [[springs]] entries
+  std::optional<bool> gravity;       ///< apply [static] gravity as a constant force
+  std::optional<bool> static_loads;  ///< apply the [[static_loads]] as constant forces
+  std::optional<std::string> start;  ///< "rest", "equilibrium" or "steady"
   bool operator==(const RunupSpec&) const = default;
 };
 

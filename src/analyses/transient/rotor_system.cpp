@@ -7,11 +7,11 @@
 
 namespace feran {
 
-RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, bool static_loads)
+RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load)
     : model_(model),
       assembler_(model),
       profile_(std::move(profile)),
-      static_loads_(static_loads),
+      constant_load_(std::move(constant_load)),
       cached_speed_(std::numeric_limits<Real>::quiet_NaN()),
       jacobian_speed_(std::numeric_limits<Real>::quiet_NaN()) {
   const SystemMatrices& c = assembler_.constant();
@@ -47,10 +47,8 @@ void RotorSystem::update_speed(Real speed) {
 void RotorSystem::external_forces(Real t, Vector& f) const {
   f.setZero();
   const MotionState state{t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)};
-  for (const Force& force : model_.forces) {
-    force.add_transient(state, f);
-    if (static_loads_) force.add_static(f);
-  }
+  for (const Force& force : model_.forces) force.add_transient(state, f);
+  if (constant_load_.size() > 0) f += constant_load_;
 }
 
 void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {

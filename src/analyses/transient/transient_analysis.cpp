@@ -7,6 +7,9 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/SparseLU>
+
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/transient/modal_basis.hpp>
 #include <feran/analyses/transient/projected_system.hpp>
 #include <feran/analyses/transient/rotor_system.hpp>
@@ -17,6 +20,7 @@ namespace feran {
 namespace {
 
 constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+using ComplexSparse = Eigen::SparseMatrix<Complex>;
 
 // Cubic Hermite interpolation between two states (x, v at both ends): fourth-order
 // accurate, so sampling adds no error beyond the integrators' own.
@@ -32,7 +36,9 @@ void interpolate(const State& a, const State& b, Real t, Vector& x, Vector& v) {
 // Unit forces and moments (v, w, ry, rz) at every node where a force of the run
 // acts — its external and nonlinear forces, and its static loads when applied — in
 // reduced coordinates: the static correction vectors of a reduced run.
-Matrix load_vectors(const Model& model, const DofMap& dofs, const TransientOptions& options) {
+// Gravity spreads over every node: its load vector is one more column.
+Matrix load_vectors(const Model& model, const DofMap& dofs, const TransientOptions& options,
+                    const Vector& constant_load) {
   std::vector<Index> nodes;
   for (const Force& f : model.forces)
     if (f.has_transient() || f.is_nonlinear() || (options.static_loads && f.has_static()))
@@ -40,11 +46,55 @@ Matrix load_vectors(const Model& model, const DofMap& dofs, const TransientOptio
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   const SparseMatrix Tt = dofs.transformation().transpose();
-  Matrix loads(dofs.n_reduced(), 4 * static_cast<Index>(nodes.size()));
+  const bool gravity = options.gravity.squaredNorm() > 0;
+  Matrix loads(dofs.n_reduced(), 4 * static_cast<Index>(nodes.size()) + (gravity ? 1 : 0));
   Index c = 0;
   for (const Index node : nodes)
     for (const Dof d : {Dof::v, Dof::w, Dof::ry, Dof::rz}) loads.col(c++) = Vector(Tt.col(global_dof(node, d)));
+  if (gravity) loads.col(c) = Tt * constant_load;
   return loads;
+}
+
+// The steady unbalance response at the first speed about the equilibrium @p q0 (all
+// unconstrained DOFs): x(t) = Re(X·e^{iΩt}) of (K(Ω) + ΩK_i + iΩ(C + C_i + ΩG) − Ω²M)·X = F
+// with the supports' tangents, F the forces that act in the run-up at ω = Ω.
+std::pair<Vector, Vector> steady_unbalance_response(const Model& model, Real speed) {
+  const Model linear = linearised(model);
+  const Assembler assembler(linear);
+  const SystemMatrices sys = assembler.at(speed);
+  const ComplexSparse Z = (sys.stiffness(speed) - speed * speed * sys.M).cast<Complex>() +
+                          Complex(0, speed) * sys.damping(speed).cast<Complex>();
+  ComplexVector f = ComplexVector::Zero(model.n_dofs());
+  const HarmonicExcitation excitation{speed, speed, true, true};
+  for (const Force& force : model.forces)
+    if (force.has_transient()) force.add_harmonic(excitation, f);
+  const ComplexSparse T = assembler.dof_map().transformation().cast<Complex>();
+  Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> lu(Z);
+  if (lu.info() != Eigen::Success)
+    throw Error(fmt::format("runup: the steady state at {:.6g} rad/s cannot be found: the dynamic stiffness is "
+                            "singular there (an undamped resonance)",
+                            speed));
+  const ComplexVector X = T * ComplexVector(lu.solve(ComplexVector(T.transpose() * f)));
+  return {X.real(), Vector((Complex(0, speed) * X).real())};
+}
+
+// The initial displacements and velocities (all unconstrained DOFs) of options.start.
+std::pair<Vector, Vector> start_state(const Model& model, const TransientOptions& options) {
+  if (options.start == RunupStart::rest) return {options.initial_displacement, options.initial_velocity};
+  const Real speed = options.profile.speed(0.0);
+  const Equilibrium e = solve_equilibrium(model, Assembler(model), speed,
+                                          {.gravity = options.gravity, .loads = options.static_loads});
+  if (!e.info.converged()) throw Error("runup: no start at the equilibrium: " + e.info.message);
+  Vector x = e.q, v = Vector::Zero(model.n_dofs());
+  if (options.start == RunupStart::steady_state) {
+    const auto [xs, vs] = steady_unbalance_response(model, speed);
+    x += xs;
+    v += vs;
+  }
+  // A disturbance given with the start is added to it.
+  if (options.initial_displacement.size() == model.n_dofs()) x += options.initial_displacement;
+  if (options.initial_velocity.size() == model.n_dofs()) v += options.initial_velocity;
+  return {x, v};
 }
 
 }  // namespace
@@ -59,7 +109,11 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
       throw Error("transient: a recorded element transmits no force (it is not a spring-damper)");
 
   TransientResult result;
-  RotorSystem rotor(model, options.profile, options.static_loads);
+  const Vector constant_load = options.gravity.squaredNorm() > 0 || options.static_loads
+                                  ? static_load_vector(model, options.gravity, options.static_loads)
+                                  : Vector();
+  const auto [x_start, v_start] = start_state(model, options);
+  RotorSystem rotor(model, options.profile, constant_load);
   std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
   result.info.method = SolverMethod::time_integration;
   const DofMap& dofs = rotor.dof_map();
@@ -69,7 +123,7 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     for (int i = 0; i < modal_basis_speeds; ++i)
       speeds.push_back(options.profile.speed(options.duration * i / (modal_basis_speeds - 1)));
     projected = std::make_unique<ProjectedSystem>(
-        rotor, undamped_mode_basis(rotor.assembler(), speeds, options.reduced_modes, load_vectors(model, dofs, options)));
+        rotor, undamped_mode_basis(rotor.assembler(), speeds, options.reduced_modes, load_vectors(model, dofs, options, constant_load)));
     result.basis_size = projected->size();
   }
   SecondOrderSystem& sys = projected ? static_cast<SecondOrderSystem&>(*projected) : rotor;
@@ -141,8 +195,8 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   const Index n_model = rotor.size();
   Vector x0 = Vector::Zero(n_model), v0 = Vector::Zero(n_model);
   for (Index i = 0; i < n_model; ++i) {
-    if (options.initial_displacement.size() == model.n_dofs()) x0(i) = options.initial_displacement(dofs.full_dof(i));
-    if (options.initial_velocity.size() == model.n_dofs()) v0(i) = options.initial_velocity(dofs.full_dof(i));
+    if (x_start.size() == model.n_dofs()) x0(i) = x_start(dofs.full_dof(i));
+    if (v_start.size() == model.n_dofs()) v0(i) = v_start(dofs.full_dof(i));
   }
   State s{0.0, Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
   if (projected) {

@@ -18,12 +18,13 @@ namespace feran {
 /// M q'' = f(t) + f_nl(t, q, q', Ω) − (C(Ω) + C_i + Ω G) q' − (K(Ω) + Ω K_i) q in
 /// reduced coordinates, with Ω = Ω(t) from a speed profile. f(t) holds the
 /// unbalances, m·r·(Ω² − jΩ')·e^{j(φ + phase)} with φ = ∫Ω dt (plus their lever
-/// moments), the model's harmonic forces at the angle φ, and optionally the static
-/// loads. Speed-dependent coefficients follow Ω(t).
+/// moments), the model's harmonic forces at the angle φ, and optionally a constant
+/// load (gravity, the static loads). Speed-dependent coefficients follow Ω(t).
 class RotorSystem final : public SecondOrderSystem {
  public:
-  /// @p model must outlive the system.
-  RotorSystem(const Model& model, SpeedProfile profile, bool static_loads = false);
+  /// @p model must outlive the system. @p constant_load: over all unconstrained DOFs
+  /// (global_dof order), or empty.
+  RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load = {});
 
   Index size() const override { return M_.rows(); }
   void rhs(Real t, const Vector& x, const Vector& v, Vector& r) override;
@@ -54,7 +55,7 @@ class RotorSystem final : public SecondOrderSystem {
   const Model& model_;
   Assembler assembler_;
   SpeedProfile profile_;
-  bool static_loads_;
+  Vector constant_load_;  // over all unconstrained DOFs; empty: none
   SparseMatrix M_, C_, K_, G_, Ci_, Ki_;  // speed-independent parts
   SparseMatrix Cc_;                       // C_ + Ci_
   Vector work_;                           // rhs() scratch

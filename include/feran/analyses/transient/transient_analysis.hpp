@@ -15,6 +15,13 @@
 
 namespace feran {
 
+/// Where a run-up starts.
+enum class RunupStart {
+  rest,          ///< at rest (or from initial_displacement and initial_velocity)
+  equilibrium,   ///< at the static equilibrium at the first speed under the run's constant load
+  steady_state,  ///< the equilibrium plus the steady unbalance response at the first speed
+};
+
 struct TransientOptions {
   SpeedProfile profile = SpeedProfile::constant(0.0);
   Real duration = 1.0;                     ///< [s]
@@ -23,7 +30,12 @@ struct TransientOptions {
   Real output_interval = 1e-3;             ///< sampling interval of the output [s]
   std::vector<Index> probes;               ///< nodes whose motion is recorded
   std::vector<Index> springs;              ///< spring–damper elements whose force is recorded
-  bool static_loads = false;               ///< apply Model::static_loads as constant forces
+  bool static_loads = false;               ///< apply the model's static loads as constant forces
+  /// Gravitational acceleration applied as a constant force (M·g) [m/s²]; zero: none.
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  /// With equilibrium and steady_state, initial_displacement and initial_velocity are
+  /// a disturbance added to that state.
+  RunupStart start = RunupStart::rest;
   /// The run stops when a displacement exceeds this [m] or a rotation this [rad].
   Real blowup_limit = 1.0;
   Index envelope_bins = 400;               ///< speed bins of the |r| envelope
