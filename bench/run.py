@@ -68,6 +68,10 @@ def cases():
                 ["runup", os.path.join(ex, "02_centrifuge", "model_arctan.toml")], 1, "run"))
     out.append(("example03_runup_20_8N", "examples", None,
                 ["runup", os.path.join(ex, "03_coulomb_friction", "model_20_8N.toml")], 1, "run"))
+    # The oil-whip run-up: the nonlinear film force of two journal bearings at every
+    # Newton iteration, 4 s of rotor time at 50 µs.
+    out.append(("example06_runup_oil_whip", "examples", None,
+                ["runup", os.path.join(ex, "06_oil_whip", "model.toml")], 1, "run"))
     # The automatic eigen-solver choice against both solvers (docs/performance.md):
     # auto should never be much slower than the faster of the two.
     pump = os.path.join(HERE, "models", "pump_130.toml")
