@@ -99,6 +99,15 @@ void bind_response(py::module_& m) {
       .def_property_readonly("spring_peak", [](const PyResponseResult& r) {
              return array_2d(r.result.springs.size(), r.points(), [&](std::size_t i, std::size_t k) { return r.result.springs[i].peak_lateral[k]; });
            }, "largest lateral spring force over a period [N], shape (springs, points)")
+      .def_property_readonly("bearings", [](const PyResponseResult& r) {
+             return string_list(r.result.supports.size(), [&](std::size_t i) { return r.model().forces[static_cast<std::size_t>(r.result.supports[i].force)].label(); });
+           }, "journal bearings ([[journal_bearings]] names)")
+      .def_property_readonly("bearing_force", [](const PyResponseResult& r) {
+             return amplitudes(r, r.result.supports, [](const SupportForceResponse& s) -> const std::vector<NodeAmplitudes>& { return s.amplitude; });
+           }, "complex dynamic force each journal bearing transmits [N], shape (bearings, points, 6)")
+      .def_property_readonly("bearing_peak", [](const PyResponseResult& r) {
+             return array_2d(r.result.supports.size(), r.points(), [&](std::size_t i, std::size_t k) { return r.result.supports[i].peak_lateral[k]; });
+           }, "largest lateral journal-bearing force over a period [N], shape (bearings, points)")
       .def_property_readonly("reactions", [](const PyResponseResult& r) {
              return string_list(r.result.reactions.size(), [&](std::size_t i) { return node_name(r.model(), r.result.reactions[i].node); });
            }, "nodes with fixed DOFs")

@@ -47,6 +47,12 @@ void bind_static(py::module_& m) {
              return array_2d(r.result.springs.size(), dofs_per_node, [&](std::size_t i, std::size_t d) { return r.result.springs[i].second[d]; });
            }, "force each spring-damper transmits to its second node or ground, K (q_a - q_b) [N, N m],\n"
                              "shape (springs, 6)")
+      .def_property_readonly("bearings", [](const PyStaticResult& r) {
+             return string_list(r.result.supports.size(), [&](std::size_t i) { return r.model().forces[static_cast<std::size_t>(r.result.supports[i].first)].label(); });
+           }, "journal bearings ([[journal_bearings]] names)")
+      .def_property_readonly("bearing_force", [](const PyStaticResult& r) {
+             return array_2d(r.result.supports.size(), dofs_per_node, [&](std::size_t i, std::size_t d) { return r.result.supports[i].second[d]; });
+           }, "force each journal bearing transmits to its housing or ground at the equilibrium [N], shape (bearings, 6)")
       .def_property_readonly("reactions", [](const PyStaticResult& r) {
              return string_list(r.result.reactions.size(), [&](std::size_t i) { return node_name(r.model(), r.result.reactions[i].first); });
            })

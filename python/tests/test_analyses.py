@@ -252,3 +252,27 @@ def test_report_configuration_errors_name_file_line_and_column(tmp_path):
     config.write_text('[campbell]\nstpo = "50 Hz"\n')
     with pytest.raises(feran.ModelError, match=r"report.toml:2:1: .*did you mean 'stop'"):
         feran.report(feran.read_model(EXAMPLE), config=str(config))
+
+
+def test_journal_bearings_carry_the_weight_and_report_their_forces(tmp_path):
+    """Example 06: at the static equilibrium the two journal bearings carry the
+    rotor's weight (their forces sum to the total load, to Newton's tolerance); the
+    response's bearing arrays hold the JSON's numbers; a run-up started at the
+    equilibrium under gravity starts there."""
+    path = os.path.join(SOURCE, "examples", "06_oil_whip", "model.toml")
+    model = feran.read_model(path)
+    st = feran.static(model)
+    assert st.bearings == ["bearing A", "bearing B"]
+    assert st.bearing_force.shape == (2, 6)
+    np.testing.assert_allclose(st.bearing_force[:, 1].sum(), st.total_load[1], rtol=1e-9)
+    resp = feran.response(model, stop="60 Hz", points=5)
+    out = tmp_path / "r.json"
+    subprocess.run([FERAN, "response", path, "--stop", "60Hz", "--points", "5", "--json", str(out)], check=True,
+                   capture_output=True)
+    peaks = [b["peak_lateral_force_n"] for b in json.loads(out.read_text())["supports"]]
+    np.testing.assert_allclose(resp.bearing_peak, peaks, rtol=RTOL)
+    run = feran.runup(model, speed="3000 rpm", duration="2 ms", gravity=True, start="equilibrium")
+    journal = list(run.probes).index("journal A")  # [runup] probes
+    np.testing.assert_allclose(run.displacement[journal, 0, 1:3], st.displacement[0, 1:3], rtol=1e-9)
+    with pytest.raises(feran.Error, match="start"):
+        feran.runup(model, speed="3000 rpm", duration="2 ms", start="moving")

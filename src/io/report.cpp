@@ -114,6 +114,11 @@ std::string element_name(const Model& model, Index element) {
   return label.empty() ? fmt::format("element {}", element + 1) : printable(label);
 }
 
+std::string force_name(const Model& model, Index force) {
+  const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
+  return label.empty() ? fmt::format("force {}", force + 1) : printable(label);
+}
+
 std::string point_text(const HarmonicResult& r, Index k) {
   const auto i = static_cast<std::size_t>(k);
   if (r.frequency_sweep) return fmt::format("{:.4g} Hz excitation", rad_to_hz(r.frequencies[i]));
@@ -169,6 +174,10 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
     out += fmt::format("  largest spring-damper force: {} {:.5g} N at {}\n",
                        element_name(model, result.springs[static_cast<std::size_t>(sum.spring_force.item)].element),
                        sum.spring_force.value, point_text(result, sum.spring_force.point));
+  if (sum.support_force.point >= 0)
+    out += fmt::format("  largest bearing force: {} {:.5g} N at {}\n",
+                       force_name(model, result.supports[static_cast<std::size_t>(sum.support_force.item)].force),
+                       sum.support_force.value, point_text(result, sum.support_force.point));
   if (sum.reaction_force.point >= 0)
     out += fmt::format("  largest support force: node {} {:.5g} N at {}\n",
                        node_name(model, result.reactions[static_cast<std::size_t>(sum.reaction_force.item)].node),
@@ -210,10 +219,7 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   }
   if (!result.supports.empty()) {
     out += fmt::format("\nForces the bearings transmit to their housing or ground\n{:>30}{}\n", "", head);
-    for (const auto& [i, f] : result.supports) {
-      const std::string& label = model.forces[static_cast<std::size_t>(i)].label();
-      out += fmt::format("{:>30}{}\n", label.empty() ? fmt::format("force {}", i + 1) : printable(label), forces(f));
-    }
+    for (const auto& [i, f] : result.supports) out += fmt::format("{:>30}{}\n", force_name(model, i), forces(f));
   }
   if (!result.reactions.empty()) {
     out += fmt::format("\nForces on the supports (fixed DOFs)\n{:>30}{}\n", "", head);

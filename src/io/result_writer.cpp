@@ -72,6 +72,7 @@ json dof_series(const std::vector<NodeAmplitudes>& values, const std::array<bool
 }
 
 constexpr std::array<bool, dofs_per_node> all_dofs{true, true, true, true, true, true};
+constexpr std::array<bool, dofs_per_node> lateral_dofs{false, true, true, false, false, false};
 
 std::string element_label(const Model& model, Index element) {
   const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
@@ -145,6 +146,18 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
     springs.push_back(js);
   }
   j["springs"] = springs;
+
+  json supports = json::array();
+  for (const SupportForceResponse& s : result.supports) {
+    const std::vector<Index> at = model.forces[static_cast<std::size_t>(s.force)].nodes();
+    json js = {{"label", force_label(model, s.force)},
+               {"node", model.nodes[static_cast<std::size_t>(at.front())].number},
+               {"peak_lateral_force_n", numbers(s.peak_lateral)},
+               {"force", dof_series(s.amplitude, lateral_dofs, direction_names)}};
+    js["to"] = at.size() > 1 ? json(model.nodes[static_cast<std::size_t>(at[1])].number) : json("ground");
+    supports.push_back(js);
+  }
+  j["supports"] = supports;
 
   json reactions = json::array();
   for (const ReactionResponse& r : result.reactions) {
@@ -225,6 +238,13 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
     js.update(at(sum.spring_force.point));
     summary["largest_spring_force"] = js;
   }
+  summary["largest_bearing_force"] = nullptr;
+  if (sum.support_force.point >= 0) {
+    json js = {{"label", force_label(model, result.supports[static_cast<std::size_t>(sum.support_force.item)].force)},
+               {"peak_lateral_force_n", sum.support_force.value}};
+    js.update(at(sum.support_force.point));
+    summary["largest_bearing_force"] = js;
+  }
   summary["largest_reaction"] = nullptr;
   if (sum.reaction_force.point >= 0) {
     json jr = node_json(model, result.reactions[static_cast<std::size_t>(sum.reaction_force.item)].node);
@@ -253,6 +273,8 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
       out << ',' << detail::csv_column(node_tag(p.node), suffix);
   for (const SpringForceResponse& s : result.springs)
     out << ',' << detail::csv_column(element_label(model, s.element), "_peak_lateral_force_n");
+  for (const SupportForceResponse& s : result.supports)
+    out << ',' << detail::csv_column(force_label(model, s.force), "_peak_lateral_force_n");
   for (const ReactionResponse& r : result.reactions)
     out << ',' << detail::csv_column(node_tag(r.node), "_support_peak_lateral_force_n");
   const bool peaks = !result.shaft_stations.empty();
@@ -265,6 +287,7 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
           << ',' << csv_number(degrees(v)) << ',' << csv_number(std::abs(w)) << ',' << csv_number(degrees(w));
     }
     for (const SpringForceResponse& s : result.springs) out << ',' << csv_number(s.peak_lateral[k]);
+    for (const SupportForceResponse& s : result.supports) out << ',' << csv_number(s.peak_lateral[k]);
     for (const ReactionResponse& r : result.reactions) out << ',' << csv_number(r.peak_lateral[k]);
     if (peaks) {
       const StationPeak& vm = result.station_peaks[k].von_mises;

@@ -149,7 +149,7 @@ struct PointResult {
   bool solved = false;
   bool skipped = false;  // not started: a stop was asked for
   bool finite = true;    // false: the solve gave non-finite amplitudes
-  std::vector<NodeAmplitudes> probes, springs, reactions;
+  std::vector<NodeAmplitudes> probes, springs, supports, reactions;
   std::vector<SectionForces> forces;  // every station (StationOutput::all)
   std::vector<SectionStress> stress;
   StationPeaks peaks;
@@ -214,6 +214,14 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
 
   for (Index node : options.probes) result.probes.push_back({node, {}, {}});
   for (const Index e : springs) result.springs.push_back({e, {}, {}});
+  // The supports' tangents: the elements linearised() appended, in the order of the
+  // supporting forces.
+  std::vector<Index> support_elements;
+  for (std::size_t i = 0, e = model.elements.size(); i < model.forces.size(); ++i)
+    if (model.forces[i].supports()) {
+      result.supports.push_back({static_cast<Index>(i), {}, {}});
+      support_elements.push_back(static_cast<Index>(e++));
+    }
   if (options.stations != StationOutput::none) result.shaft_stations = shaft_stations(model);
   if (options.stations == StationOutput::all)
     for (const ShaftStation& st : result.shaft_stations) result.stations.push_back({st, {}, {}});
@@ -279,8 +287,9 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     }
 
     for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));
-    for (const Index e : springs) {
-      const Transmission link = *model.elements[static_cast<std::size_t>(e)].transmission(speed);
+    // What a connecting element transmits: (K(1 + jη) + jωC)·(q_a − q_b).
+    auto transmitted = [&](const Element& element) {
+      const Transmission link = *element.transmission(speed);
       NodeAmplitudes dq = node_values(q_full, link.node_a);
       if (link.node_b) {
         const NodeAmplitudes qb = node_values(q_full, *link.node_b);
@@ -292,8 +301,10 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
            I * omega * link.C.cast<Complex>()) * delta;
       NodeAmplitudes f;
       for (int d = 0; d < dofs_per_node; ++d) f[static_cast<std::size_t>(d)] = force(d);
-      out.springs.push_back(f);
-    }
+      return f;
+    };
+    for (const Index e : springs) out.springs.push_back(transmitted(model.elements[static_cast<std::size_t>(e)]));
+    for (const Index e : support_elements) out.supports.push_back(transmitted(linear.elements[static_cast<std::size_t>(e)]));
     if (!result.reactions.empty()) {
       // The force the structure puts on its supports at the fixed DOFs: the applied
       // load there minus the element forces (dynamic stiffness times motion).
@@ -379,6 +390,10 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       result.springs[s].force.push_back(pt.springs[s]);
       result.springs[s].peak_lateral.push_back(peak_lateral(pt.springs[s]));
     }
+    for (std::size_t s = 0; s < result.supports.size(); ++s) {
+      result.supports[s].amplitude.push_back(pt.supports[s]);
+      result.supports[s].peak_lateral.push_back(peak_lateral(pt.supports[s]));
+    }
     for (std::size_t r = 0; r < result.reactions.size(); ++r) {
       result.reactions[r].force.push_back(pt.reactions[r]);
       result.reactions[r].peak_lateral.push_back(peak_lateral(pt.reactions[r]));
@@ -407,6 +422,9 @@ ResponseSummary summarize(const HarmonicResult& r) {
   for (std::size_t i = 0; i < r.springs.size(); ++i)
     for (std::size_t k = 0; k < r.springs[i].peak_lateral.size(); ++k)
       consider(s.spring_force, r.springs[i].peak_lateral[k], static_cast<Index>(k), static_cast<Index>(i));
+  for (std::size_t i = 0; i < r.supports.size(); ++i)
+    for (std::size_t k = 0; k < r.supports[i].peak_lateral.size(); ++k)
+      consider(s.support_force, r.supports[i].peak_lateral[k], static_cast<Index>(k), static_cast<Index>(i));
   for (std::size_t i = 0; i < r.reactions.size(); ++i)
     for (std::size_t k = 0; k < r.reactions[i].peak_lateral.size(); ++k)
       consider(s.reaction_force, r.reactions[i].peak_lateral[k], static_cast<Index>(k), static_cast<Index>(i));

@@ -70,6 +70,15 @@ struct SpringForceResponse {
   std::vector<Real> peak_lateral;  ///< largest |(F_y, F_z)| over a period [N]
 };
 
+/// Force a nonlinear support (a journal bearing) transmits to its housing or the
+/// ground, per point, from its coefficients about the equilibrium at each speed:
+/// (K_b + jωC_b)·(q_a − q_b), six components indexed by Dof (lateral ones nonzero).
+struct SupportForceResponse {
+  Index force = 0;  ///< index into Model::forces
+  std::vector<NodeAmplitudes> amplitude;
+  std::vector<Real> peak_lateral;  ///< largest |(F_y, F_z)| over a period [N]
+};
+
 /// Force transmitted to the supports at the fixed DOFs of a node, per point.
 struct ReactionResponse {
   Index node = 0;
@@ -105,6 +114,7 @@ struct HarmonicResult {
   std::vector<Real> frequencies;  ///< excitation frequency per point [rad/s]
   std::vector<ProbeResponse> probes;
   std::vector<SpringForceResponse> springs;
+  std::vector<SupportForceResponse> supports;  ///< journal bearings, in Model::forces order
   std::vector<ReactionResponse> reactions;
   /// Both ends of every shaft element (empty with StationOutput::none).
   std::vector<ShaftStation> shaft_stations;
@@ -127,6 +137,7 @@ struct ResponseSummary {
   };
   std::vector<Peak> probe_peaks;  ///< per probe: largest major semi-axis of the (v, w) orbit
   Peak spring_force;              ///< largest peak lateral spring force
+  Peak support_force;             ///< largest peak lateral journal-bearing force (item: index into supports)
   Peak reaction_force;            ///< largest peak lateral support reaction
   Peak stress;                    ///< largest equivalent stress (item: index into shaft_stations)
 };

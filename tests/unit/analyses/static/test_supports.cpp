@@ -19,6 +19,7 @@
 #include <feran/core/root_finding.hpp>
 #include <feran/elements/rigid_body.hpp>
 #include <feran/forces/fluid_film_bearing.hpp>
+#include <feran/forces/unbalance.hpp>
 
 namespace feran::test_supports {
 namespace {
@@ -222,6 +223,37 @@ TEST(Supports, RunupGrowthRateAboutTheEquilibriumIsTheEigenvaluesRealPart) {
     const Real expected = largest_real_part(model, speed);
     EXPECT_EQ(expected > 0, factor > 1);
     EXPECT_NEAR(whirl_growth_rate(model, speed), expected, 1e-4 * std::abs(expected)) << factor;
+  }
+}
+
+TEST(Supports, ResponseBearingForcesBalanceTheUnbalanceAndTheRotorsInertia) {
+  // An unbalance at the centre of the rigid rotor: the rotor translates by X, and the
+  // forces the two bearings transmit to the ground (from their coefficients about the
+  // equilibrium) must carry the unbalance force and the rotor's inertia,
+  // ΣT = F_u + 2m·Ω²·X, to round-off (1e-9 of F_u).
+  const Real m = 525.0 / g;
+  Model model = rigid_rotor(m, FilmTheory::short_bearing);
+  constexpr Real mu = 1e-3, radius = 0.1;
+  model.forces.emplace_back(Unbalance{.node = 0, .mass = mu, .radius = radius, .phase = 0.0, .lever = 0.0}, "u");
+  HarmonicOptions options;
+  options.speeds = {300.0, 800.0, 1200.0};
+  options.probes = {0};
+  options.stations = StationOutput::none;
+  const HarmonicResult r = run_harmonic_response(model, options);
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  ASSERT_EQ(r.supports.size(), 2U);
+  EXPECT_EQ(r.supports[0].force, 0);
+  EXPECT_EQ(r.supports[1].force, 1);
+  for (std::size_t k = 0; k < options.speeds.size(); ++k) {
+    const Real speed = options.speeds[k];
+    const Complex fu = mu * radius * speed * speed;  // along y; along z −i·fu
+    for (const Dof d : {Dof::v, Dof::w}) {
+      const auto i = static_cast<std::size_t>(d);
+      const Complex total = r.supports[0].amplitude[k][i] + r.supports[1].amplitude[k][i];
+      const Complex expected = (d == Dof::v ? fu : Complex(0, -1) * fu) + 2 * m * speed * speed * r.probes[0].q[k][i];
+      EXPECT_LT(std::abs(total - expected), 1e-9 * std::abs(fu)) << speed << " rad/s";
+    }
+    EXPECT_GT(r.supports[0].peak_lateral[k], 0.0);
   }
 }
 
