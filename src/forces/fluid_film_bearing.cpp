@@ -212,8 +212,10 @@ SteadyForce steady_force(FilmTheory theory, Real e) {
       return {2.0 * e2 / D, pi * e / (q * std::sqrt(s)), (8.0 * e + 4.0 * e2 * e2 * e) / (D * D),
               pi * (2.0 - e2 + 2.0 * e2 * e2) / (q * q * std::pow(s, 1.5))};
     }
+    case FilmTheory::finite_length: break;
   }
-  return {};
+  throw Error("the finite-length bearing has no closed form: its load and coefficients come from the numerical "
+              "film force (film_force) at an equilibrium");
 }
 
 Real load_scale(const JournalBearingGeometry& g, FilmTheory theory, Real speed) {
@@ -221,13 +223,15 @@ Real load_scale(const JournalBearingGeometry& g, FilmTheory theory, Real speed) 
   switch (theory) {
     case FilmTheory::short_bearing: return g.viscosity * speed * g.diameter * std::pow(g.length, 3) / (8.0 * c2);
     case FilmTheory::long_bearing: return 6.0 * g.viscosity * speed * std::pow(0.5 * g.diameter, 3) * g.length / c2;
+    case FilmTheory::finite_length: break;
   }
-  return 0.0;
+  throw Error("the finite-length bearing has no closed form");
 }
 
 }  // namespace
 
-FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real speed, const Vec2& x, const Vec2& v) {
+FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real speed, const Vec2& x, const Vec2& v,
+                     const FiniteBearingGrid& grid) {
   const Real eps = x.norm() / g.clearance;
   if (!(eps < 1.0))
     throw Error(fmt::format("the journal has reached the bearing: eccentricity ratio {:.4g} (it must stay below 1)",
@@ -235,6 +239,7 @@ FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real sp
   switch (theory) {
     case FilmTheory::short_bearing: return short_bearing_force(g, speed, x, v);
     case FilmTheory::long_bearing: return long_bearing_force(g, speed, x, v);
+    case FilmTheory::finite_length: return finite_bearing_force(g, grid, speed, x, v);
   }
   return {};
 }
@@ -292,6 +297,7 @@ BearingCoefficients film_coefficients(const JournalBearingGeometry& g, FilmTheor
       C(1, 0) = -24.0 * q / ((1.0 + e) * (1.0 + e) * (1.0 - e));
       break;
     }
+    case FilmTheory::finite_length: break;  // steady_force() has thrown
   }
   // The displacement lies at the attitude angle φ from the load: polar → load frame.
   const Real phi = std::atan2(f.ft, f.fr);
@@ -321,7 +327,7 @@ NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& 
     dx -= x.tail<2>();
     dv -= v.tail<2>();
   }
-  const FilmForce F = film_force(geometry, theory, s.speed, dx, dv);
+  const FilmForce F = film_force(geometry, theory, s.speed, dx, dv, grid);
   NonlinearForceValue out{Vector::Zero(n), Matrix::Zero(n, n), Matrix::Zero(n, n)};
   out.f.head<2>() = F.f;
   out.dfdx.topLeftCorner<2, 2>() = F.dfdx;

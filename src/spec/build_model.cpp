@@ -765,7 +765,26 @@ void Builder::build_journal_bearings() {
                                                  "radius ({} m); it is usually about a thousandth of it",
                                                  s.clearance, 0.5 * s.diameter));
     b.geometry = {.diameter = s.diameter, .length = s.length, .clearance = s.clearance, .viscosity = s.viscosity};
-    b.theory = s.theory == "long" ? FilmTheory::long_bearing : FilmTheory::short_bearing;
+    check_choice(s.theory, child(path, "theory"), "theory", spec::choices_of<JournalBearingSpec>("theory"));
+    b.theory = s.theory == "long"     ? FilmTheory::long_bearing
+               : s.theory == "finite" ? FilmTheory::finite_length
+                                      : FilmTheory::short_bearing;
+    if (b.theory != FilmTheory::finite_length) {
+      for (const auto& [key, given] : {std::pair{"cavitation", s.cavitation.has_value()},
+                                       std::pair{"circumferential_cells", s.circumferential_cells.has_value()},
+                                       std::pair{"axial_cells", s.axial_cells.has_value()}})
+        if (given)
+          fail(child(path, key), fmt::format("'{}' applies only to theory = \"finite\" (the {} bearing's closed "
+                                             "form has its own cavitation condition and no grid)",
+                                             key, s.theory));
+    }
+    if (s.cavitation) {
+      check_choice(*s.cavitation, child(path, "cavitation"), "cavitation",
+                   spec::choices_of<JournalBearingSpec>("cavitation"));
+      b.grid.cavitation = *s.cavitation == "gumbel" ? Cavitation::gumbel : Cavitation::reynolds;
+    }
+    if (s.circumferential_cells) b.grid.circumferential = *s.circumferential_cells;
+    if (s.axial_cells) b.grid.axial = *s.axial_cells;
     model_.forces.emplace_back(b, label);
   }
 }

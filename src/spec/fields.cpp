@@ -24,7 +24,8 @@ constexpr std::string_view force_directions[] = {"x", "y", "z", "rx", "ry", "rz"
 constexpr std::string_view gravity_directions[] = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
 constexpr std::string_view runup_starts[] = {"rest", "equilibrium", "steady"};
 constexpr std::string_view station_outputs[] = {"all", "summary", "none"};
-constexpr std::string_view film_theories[] = {"short", "long"};
+constexpr std::string_view film_theories[] = {"short", "long", "finite"};
+constexpr std::string_view cavitation_conditions[] = {"reynolds", "gumbel"};
 
 constexpr std::string_view default_hint = "leave it out for the analysis's default";
 
@@ -300,8 +301,17 @@ const FieldTable<JournalBearingSpec>& fields_of<JournalBearingSpec>() {
        .doc = "dynamic viscosity μ of the oil at its working temperature", .quantity = Q::viscosity,
        .bound = positive, .required = true},
       {.key = "theory", .kind = K::choice, .member = &S::theory,
-       .doc = "the film's solution: short = Ocvirk's with the π film, long = Sommerfeld's with Gümbel's condition",
+       .doc = "the film's solution: short = Ocvirk's with the π film, long = Sommerfeld's with Gümbel's condition, finite = the Reynolds equation solved by finite differences over the bearing",
        .choices = film_theories, .default_text = "`\"short\"`"},
+      {.key = "cavitation", .kind = K::choice, .member = &S::cavitation,
+       .doc = "only with `theory = \"finite\"`: where the film cavitates — Reynolds' (Swift–Stieber) condition, or Gümbel's (the uncavitated pressure kept where positive)",
+       .choices = cavitation_conditions, .default_text = "`\"reynolds\"`"},
+      {.key = "circumferential_cells", .kind = K::integer, .member = &S::circumferential_cells,
+       .doc = "only with `theory = \"finite\"`: grid cells around the circumference", .bound = at_least(8, 100000),
+       .default_text = "`72`"},
+      {.key = "axial_cells", .kind = K::integer, .member = &S::axial_cells,
+       .doc = "only with `theory = \"finite\"`: grid cells from the bearing's mid-plane to one end", .bound = at_least(1, 10000),
+       .default_text = "`8`"},
   };
   return table;
 }

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <feran/core/types.hpp>
+#include <feran/forces/finite_bearing.hpp>
 #include <feran/model/force.hpp>
 
 namespace feran {
@@ -34,6 +35,10 @@ enum class FilmTheory {
   /// cavitation condition: the full-Sommerfeld pressure, zero at the thickest film,
   /// kept only where positive.
   long_bearing,
+  /// The bearing of finite length: the Reynolds equation solved numerically over the
+  /// bearing surface (finite_bearing.hpp) with Reynolds' or Gümbel's cavitation
+  /// condition. No closed forms: film_load() and the others throw for it.
+  finite_length,
 };
 
 /// The film's force on the journal in the bearing's lateral plane (y, z) and its
@@ -47,9 +52,10 @@ struct FilmForce {
 
 /// The film force on a journal at @p x = (y, z) from the housing's centre, moving at
 /// @p v = (ẏ, ż), spinning at @p speed [rad/s] about +x relative to the housing.
-/// Throws Error when |x| is not below the clearance.
+/// Throws Error when |x| is not below the clearance. @p grid: the finite-length
+/// bearing's grid and cavitation condition (ignored by the closed forms).
 FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real speed, const Eigen::Vector2d& x,
-                     const Eigen::Vector2d& v);
+                     const Eigen::Vector2d& v, const FiniteBearingGrid& grid = {});
 
 /// The steady load W [N] the film carries at eccentricity ratio @p eps, in closed
 /// form (docs/theory/fluid_film_bearings.md): with W₀ = μΩDL³/(8c²) for the short
@@ -82,6 +88,7 @@ struct FluidFilmBearing {
   std::optional<Index> node_b;  ///< the housing; empty: the ground
   JournalBearingGeometry geometry;
   FilmTheory theory = FilmTheory::short_bearing;
+  FiniteBearingGrid grid;  ///< for FilmTheory::finite_length
 
   std::string_view kind() const { return "fluid_film_bearing"; }
   std::vector<Index> nodes() const;

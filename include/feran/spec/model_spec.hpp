@@ -145,7 +145,9 @@ struct JournalBearingSpec {
   Real length = 0.0;          ///< L [m]
   Real clearance = 0.0;       ///< radial clearance c [m]
   Real viscosity = 0.0;       ///< μ [Pa s]
-  std::string theory = "short";  ///< "short" (Ocvirk) or "long" (Sommerfeld)
+  std::string theory = "short";  ///< "short" (Ocvirk), "long" (Sommerfeld) or "finite"
+  std::optional<std::string> cavitation;  ///< "reynolds" or "gumbel" (finite only)
+  std::optional<int> circumferential_cells, axial_cells;  ///< the finite bearing's grid
   bool operator==(const JournalBearingSpec&) const = default;
 };
 

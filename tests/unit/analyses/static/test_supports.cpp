@@ -33,7 +33,8 @@ constexpr Real g = 9.81;
 // and torsional DOFs are fixed. The cylindrical motion (v, w of node 0) has mass m per
 // bearing; the conical motion is made much stiffer (J_A small) so that it stays
 // stable well beyond the cylindrical threshold.
-Model rigid_rotor(Real m_per_bearing, FilmTheory theory, const JournalBearingGeometry& geometry = friswell) {
+Model rigid_rotor(Real m_per_bearing, FilmTheory theory, const JournalBearingGeometry& geometry = friswell,
+                  const FiniteBearingGrid& grid = {}) {
   constexpr Real a = 0.2;
   Model model;
   model.nodes = {{1, "centre", 0.0, true}, {2, "left", -a, true}, {3, "right", a, true}};
@@ -46,15 +47,14 @@ Model rigid_rotor(Real m_per_bearing, FilmTheory theory, const JournalBearingGeo
   FixedDofs fixed{.node = 0, .dofs = {}};
   fixed.dofs[static_cast<std::size_t>(Dof::u)] = fixed.dofs[static_cast<std::size_t>(Dof::rx)] = true;
   model.fixed.push_back(fixed);
-  model.forces.emplace_back(FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = geometry, .theory = theory}, "left");
-  model.forces.emplace_back(FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = geometry, .theory = theory}, "right");
+  model.forces.emplace_back(FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "left");
+  model.forces.emplace_back(FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "right");
   model.gravity = Eigen::Vector3d(0, -g, 0);
   return model;
 }
 
-// The 2×2 eigenvalue problem (m·λ² + C·λ + K)·x = 0 of one bearing carrying mass m,
-// from the closed-form coefficients (load frame; the eigenvalues do not depend on the
-// frame), as the four roots of its characteristic polynomial via the companion matrix.
+// The 2×2 eigenvalue problem (m·λ² + C·λ + K)·x = 0 of one bearing carrying mass m
+// with coefficients @p b (in any frame: the eigenvalues do not depend on it), as the four roots of its characteristic polynomial via the companion matrix.
 std::vector<Complex> closed_form_eigenvalues(Real m, const BearingCoefficients& b) {
   Matrix A = Matrix::Zero(4, 4);
   A.topRightCorner(2, 2) = Matrix::Identity(2, 2);
@@ -254,6 +254,46 @@ TEST(Supports, ResponseBearingForcesBalanceTheUnbalanceAndTheRotorsInertia) {
       EXPECT_LT(std::abs(total - expected), 1e-9 * std::abs(fu)) << speed << " rad/s";
     }
     EXPECT_GT(r.supports[0].peak_lateral[k], 0.0);
+  }
+}
+
+TEST(Supports, FiniteLengthBearingsCarryTheRotorAndLineariseToTheirForcesDifferences) {
+  // The rigid rotor on two finite-length bearings (Example 5.5.1's, Reynolds'
+  // condition, 48 × 6 cells): each carries 525 N at the equilibrium, and its modes
+  // are those of mass m on one bearing whose eight coefficients are central
+  // differences of the numerical film force there (steps 1e-7 c and 1e-7 cΩ) — an
+  // independent path to the exact Jacobian the analyses use: 1e-5 of |p|.
+  const Real m = 525.0 / g, speed = 1500.0 * 2 * pi / 60;
+  const FiniteBearingGrid grid{.circumferential = 48, .axial = 6, .cavitation = Cavitation::reynolds};
+  const Model model = rigid_rotor(m, FilmTheory::finite_length, friswell, grid);
+  StaticOptions so;
+  so.gravity = model.gravity;
+  so.speed = speed;
+  const StaticResult st = run_static(model, so);
+  ASSERT_TRUE(st.info.converged()) << st.info.message;
+  for (const auto& [force, f] : st.supports) EXPECT_NEAR(f[static_cast<std::size_t>(Dof::v)], -525.0, 1e-7 * 525.0);
+  const Eigen::Vector2d x(st.q(global_dof(1, Dof::v)), st.q(global_dof(1, Dof::w)));
+  const Real h = 1e-7 * friswell.clearance, hv = h * speed;
+  BearingCoefficients b;
+  for (int k = 0; k < 2; ++k) {
+    Eigen::Vector2d e = Eigen::Vector2d::Zero();
+    e(k) = h;
+    const auto force = [&](const Eigen::Vector2d& xx, const Eigen::Vector2d& vv) {
+      return finite_bearing_force(friswell, grid, speed, xx, vv).f;
+    };
+    b.K.col(k) = -(force(x + e, Eigen::Vector2d::Zero()) - force(x - e, Eigen::Vector2d::Zero())) / (2 * h);
+    e(k) = hv;
+    b.C.col(k) = -(force(x, e) - force(x, -e)) / (2 * hv);
+  }
+  ModalOptions options;
+  options.shapes = false;
+  const ModalResult r = run_modal(model, speed, options);
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  for (const Complex& p : closed_form_eigenvalues(m, b)) {
+    if (p.imag() < 0) continue;
+    Real closest = std::numeric_limits<Real>::infinity();
+    for (const Mode& mode : r.modes) closest = std::min(closest, std::abs(mode.eigenvalue - p));
+    EXPECT_LT(closest, 1e-5 * std::abs(p)) << p;
   }
 }
 
