@@ -99,7 +99,7 @@ def _runup_frame(r):
 
 _ENTRIES = {"material": "materials", "shaft": "shafts", "node": "nodes", "rigid_body": "rigid_bodies",
             "spring": "springs", "rotating_damper": "rotating_dampers", "friction": "friction",
-            "journal_bearing": "journal_bearings",
+            "journal_bearing": "journal_bearings", "rolling_bearing": "rolling_bearings",
             "rigid_link": "rigid_links", "fixed": "fixed", "unbalance": "unbalances", "force": "forces",
             "static_load": "static_loads"}
 _TABLES = ("options", "modal", "campbell", "response", "static", "runup", "api684")

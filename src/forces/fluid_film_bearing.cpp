@@ -11,6 +11,7 @@
 #include <feran/core/root_finding.hpp>
 
 #include "dual.hpp"
+#include "lateral_pair.hpp"
 
 namespace feran {
 
@@ -306,43 +307,14 @@ BearingCoefficients film_coefficients(const JournalBearingGeometry& g, FilmTheor
   return {T * K * T.transpose(), T * C * T.transpose()};
 }
 
-std::vector<Index> FluidFilmBearing::nodes() const {
-  if (node_b) return {node_a, *node_b};
-  return {node_a};
-}
+std::vector<Index> FluidFilmBearing::nodes() const { return detail::lateral_nodes(node_a, node_b); }
 
-std::vector<Index> FluidFilmBearing::dofs() const {
-  std::vector<Index> d{global_dof(node_a, Dof::v), global_dof(node_a, Dof::w)};
-  if (node_b) {
-    d.push_back(global_dof(*node_b, Dof::v));
-    d.push_back(global_dof(*node_b, Dof::w));
-  }
-  return d;
-}
+std::vector<Index> FluidFilmBearing::dofs() const { return detail::lateral_dofs(node_a, node_b); }
 
 NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& x, const Vector& v) const {
-  const Index n = node_b ? 4 : 2;
-  Vec2 dx = x.head<2>(), dv = v.head<2>();
-  if (node_b) {
-    dx -= x.tail<2>();
-    dv -= v.tail<2>();
-  }
-  const FilmForce F = film_force(geometry, theory, s.speed, dx, dv, grid);
-  NonlinearForceValue out{Vector::Zero(n), Matrix::Zero(n, n), Matrix::Zero(n, n)};
-  out.f.head<2>() = F.f;
-  out.dfdx.topLeftCorner<2, 2>() = F.dfdx;
-  out.dfdv.topLeftCorner<2, 2>() = F.dfdv;
-  if (node_b) {
-    // The housing carries the opposite force; its motion enters with the opposite sign.
-    out.f.tail<2>() = -F.f;
-    out.dfdx.topRightCorner<2, 2>() = -F.dfdx;
-    out.dfdx.bottomLeftCorner<2, 2>() = -F.dfdx;
-    out.dfdx.bottomRightCorner<2, 2>() = F.dfdx;
-    out.dfdv.topRightCorner<2, 2>() = -F.dfdv;
-    out.dfdv.bottomLeftCorner<2, 2>() = -F.dfdv;
-    out.dfdv.bottomRightCorner<2, 2>() = F.dfdv;
-  }
-  return out;
+  const bool housing = node_b.has_value();
+  const FilmForce F = film_force(geometry, theory, s.speed, detail::relative(x, housing), detail::relative(v, housing), grid);
+  return detail::pair_force(F.f, F.dfdx, F.dfdv, housing);
 }
 
 }  // namespace feran

@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 #include <unordered_map>
+#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -21,6 +22,7 @@
 #include <feran/forces/coulomb_friction.hpp>
 #include <feran/forces/fluid_film_bearing.hpp>
 #include <feran/forces/harmonic_force.hpp>
+#include <feran/forces/rolling_bearing.hpp>
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
 #include <feran/spec/fields.hpp>
@@ -119,6 +121,9 @@ class Builder {
   void build_rotating_dampers();
   void build_friction();
   void build_journal_bearings();
+  void build_rolling_bearings();
+  std::pair<Index, std::optional<Index>> bearing_nodes(const NodeRef& journal, const std::optional<NodeRef>& to,
+                                                       const std::string& path, std::string_view what) const;
   void build_rigid_links();
   void build_fixed();
   void build_unbalances();
@@ -746,19 +751,50 @@ void Builder::build_friction() {
   }
 }
 
+// The journal (a rotating node) and the housing (a non-rotating node, or the ground)
+// of a bearing's entry at @p path.
+std::pair<Index, std::optional<Index>> Builder::bearing_nodes(const NodeRef& journal, const std::optional<NodeRef>& to,
+                                                              const std::string& path, std::string_view what) const {
+  const Index a = node(journal, child(path, "node"), "node");
+  require_rotating(a, child(path, "node"), fmt::format("the journal of a {} turns", what));
+  const std::optional<Index> b = other_node(to, path, ground_word, a);
+  if (b && model_.nodes[static_cast<std::size_t>(*b)].rotating)
+    fail(child(path, "to"), fmt::format("the housing of a {} must not rotate, but node {} does (a [[nodes]] entry "
+                                        "with rotating = false, or the ground)",
+                                        what, model_.node_label(*b)));
+  return {a, b};
+}
+
+void Builder::build_rolling_bearings() {
+  for (std::size_t i = 0; i < spec_.rolling_bearings.size(); ++i) {
+    const RollingBearingSpec& s = spec_.rolling_bearings[i];
+    const std::string path = element("rolling_bearings", i);
+    const std::string label = entry_label(s.name, "rolling bearing", i);
+    RollingBearing b;
+    std::tie(b.node_a, b.node_b) = bearing_nodes(s.node, s.to, path, "rolling bearing");
+    check_bounds(s, path);
+    check_choice(s.type, child(path, "type"), "type", spec::choices_of<RollingBearingSpec>("type"));
+    if (!(s.element_diameter < s.pitch_diameter))
+      fail(child(path, "element_diameter"),
+           fmt::format("the elements' diameter ({} m) must be smaller than the pitch diameter ({} m)",
+                       s.element_diameter, s.pitch_diameter));
+    if (!(s.contact_angle < 0.5 * pi))
+      fail(child(path, "contact_angle"),
+           fmt::format("the contact angle must be below 90°, got {:.6g}°", s.contact_angle * 180.0 / pi));
+    b.geometry = {.elements = s.elements, .element_diameter = s.element_diameter, .pitch_diameter = s.pitch_diameter,
+                  .contact_angle = s.contact_angle, .clearance = s.clearance, .hertz_constant = s.hertz_constant,
+                  .roller = s.type == "roller"};
+    model_.forces.emplace_back(b, label);
+  }
+}
+
 void Builder::build_journal_bearings() {
   for (std::size_t i = 0; i < spec_.journal_bearings.size(); ++i) {
     const JournalBearingSpec& s = spec_.journal_bearings[i];
     const std::string path = element("journal_bearings", i);
     const std::string label = entry_label(s.name, "journal bearing", i);
     FluidFilmBearing b;
-    b.node_a = node(s.node, child(path, "node"), "node");
-    require_rotating(b.node_a, child(path, "node"), "the journal of a journal bearing turns");
-    b.node_b = other_node(s.to, path, ground_word, b.node_a);
-    if (b.node_b && model_.nodes[static_cast<std::size_t>(*b.node_b)].rotating)
-      fail(child(path, "to"), fmt::format("the housing of a journal bearing must not rotate, but node {} does "
-                                          "(a [[nodes]] entry with rotating = false, or the ground)",
-                                          model_.node_label(*b.node_b)));
+    std::tie(b.node_a, b.node_b) = bearing_nodes(s.node, s.to, path, "journal bearing");
     check_bounds(s, path);
     if (!(s.clearance < 0.5 * s.diameter))
       fail(child(path, "clearance"), fmt::format("the radial clearance ({} m) must be smaller than the journal's "
@@ -1166,6 +1202,7 @@ Model Builder::build(BuildInfo* info) {
   build_rotating_dampers();
   build_friction();
   build_journal_bearings();
+  build_rolling_bearings();
   build_rigid_links();
   build_fixed();
   build_unbalances();

@@ -316,6 +316,40 @@ const FieldTable<JournalBearingSpec>& fields_of<JournalBearingSpec>() {
   return table;
 }
 
+namespace {
+constexpr std::string_view rolling_types[] = {"ball", "roller"};
+}  // namespace
+
+template <>
+const FieldTable<RollingBearingSpec>& fields_of<RollingBearingSpec>() {
+  using S = RollingBearingSpec;
+  static const FieldTable<S> table = {
+      name_field<S>("label", "`\"rolling bearing <i>\"`"),
+      node_field<S>("the journal (inner race); must be a rotating node"),
+      to_field<S>("ground", "the housing (outer race, at rest): a non-rotating node, or the ground", "`\"ground\"`"),
+      {.key = "elements", .kind = K::integer, .member = &S::elements, .doc = "number Z of balls or rollers",
+       .bound = at_least(1, 10000), .required = true},
+      {.key = "element_diameter", .kind = K::quantity, .member = &S::element_diameter,
+       .doc = "diameter d of a ball or roller; below `pitch_diameter`", .quantity = Q::length, .bound = positive,
+       .required = true},
+      {.key = "pitch_diameter", .kind = K::quantity, .member = &S::pitch_diameter,
+       .doc = "diameter D_p of the circle through the elements' centres", .quantity = Q::length, .bound = positive,
+       .required = true},
+      {.key = "contact_angle", .kind = K::quantity, .member = &S::contact_angle,
+       .doc = "contact angle α; below 90°", .quantity = Q::angle, .bound = non_negative, .default_text = "`0`"},
+      {.key = "clearance", .kind = K::quantity, .member = &S::clearance,
+       .doc = "radial clearance c_r between the elements and the races", .quantity = Q::length,
+       .bound = non_negative, .default_text = "`0`"},
+      {.key = "hertz_constant", .kind = K::number, .member = &S::hertz_constant,
+       .doc = "K of one element's load–deflection law Q = K·δⁿ, in SI units: N/m^1.5 for balls, N/m^(10/9) for rollers",
+       .bound = positive, .required = true},
+      {.key = "type", .kind = K::choice, .member = &S::type,
+       .doc = "point contact (n = 3/2) or line contact (n = 10/9)", .choices = rolling_types,
+       .default_text = "`\"ball\"`"},
+  };
+  return table;
+}
+
 template <>
 const FieldTable<RigidLinkSpec>& fields_of<RigidLinkSpec>() {
   using S = RigidLinkSpec;

@@ -91,7 +91,7 @@ using FieldTable = std::vector<Field<S>>;
 
 /// The field table of spec type S. Defined for ModelSpec (top-level keys), OptionsSpec,
 /// MaterialSpec, ShaftSpec, SectionSpec, NodeSpec, RigidBodySpec, SpringSpec,
-/// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RigidLinkSpec, FixedSpec, UnbalanceSpec, ForceSpec,
+/// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RollingBearingSpec, RigidLinkSpec, FixedSpec, UnbalanceSpec, ForceSpec,
 /// StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec and Api684Spec.
 template <class S>
 const FieldTable<S>& fields_of();
@@ -143,6 +143,8 @@ void visit_tables(Spec& spec, F&& f) {
   f("friction", array_of_tables, "Coulomb friction between rotating parts", spec.friction);
   f("journal_bearings", array_of_tables, "plain journal bearings on an oil film (nonlinear)",
     spec.journal_bearings);
+  f("rolling_bearings", array_of_tables, "ball and roller bearings in Hertzian contact (nonlinear)",
+    spec.rolling_bearings);
   f("rigid_links", array_of_tables, "nodes moving together as one rigid body", spec.rigid_links);
   f("fixed", array_of_tables, "DOFs held at zero", spec.fixed);
   f("unbalances", array_of_tables, "point unbalances", spec.unbalances);

@@ -151,6 +151,20 @@ struct JournalBearingSpec {
   bool operator==(const JournalBearingSpec&) const = default;
 };
 
+/// [[rolling_bearings]]: a ball or roller bearing, its elements in Hertzian contact.
+struct RollingBearingSpec {
+  std::string name;
+  NodeRef node;               ///< the journal (inner race)
+  std::optional<NodeRef> to;  ///< the housing (outer race); not given (or "ground"): the ground
+  int elements = 0;           ///< Z
+  Real element_diameter = 0.0, pitch_diameter = 0.0;  ///< d, D_p [m]
+  Real contact_angle = 0.0;   ///< α [rad]
+  Real clearance = 0.0;       ///< radial clearance [m]
+  Real hertz_constant = 0.0;  ///< K [N/mⁿ]
+  std::string type = "ball";  ///< "ball" or "roller"
+  bool operator==(const RollingBearingSpec&) const = default;
+};
+
 /// [[rigid_links]]: nodes moving as one rigid body; the first leads.
 struct RigidLinkSpec {
   std::vector<NodeRef> nodes;
@@ -274,6 +288,7 @@ struct ModelSpec {
   std::vector<RotatingDamperSpec> rotating_dampers;
   std::vector<FrictionSpec> friction;
   std::vector<JournalBearingSpec> journal_bearings;
+  std::vector<RollingBearingSpec> rolling_bearings;
   std::vector<RigidLinkSpec> rigid_links;
   std::vector<FixedSpec> fixed;
   std::vector<UnbalanceSpec> unbalances;

@@ -72,6 +72,14 @@ class Residual {
     f_ = T_.transpose() * static_load_vector(model, options.gravity, options.loads);
     for (std::size_t i = 0; i < model.forces.size(); ++i)
       if (model.forces[i].supports()) supports_.push_back(i);
+    std::vector<Eigen::Triplet<Real>> diagonal;
+    for (const std::size_t i : supports_)
+      for (const Index d : model.forces[i].dofs()) diagonal.emplace_back(d, d, 1.0);
+    SparseMatrix D(model.n_dofs(), model.n_dofs());
+    D.setFromTriplets(diagonal.begin(), diagonal.end());
+    for (Index k = 0; k < D.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator e(D, k); e; ++e) e.valueRef() = 1.0;  // a DOF two supports share: still 1
+    S_ = T_.transpose() * D * T_;
     // Motions free even with the supports holding (allowed by free_motions, e.g.
     // torsion): the load must leave them alone, and the Newton steps are kept
     // orthogonal to them (in M), with J shifted by 1e-8·max(K_ii/M_ii)·M to stay regular.
@@ -93,6 +101,8 @@ class Residual {
   void project(Vector& dq) const {
     if (free_.cols() > 0) dq -= free_ * (free_.transpose() * (M_ * dq));
   }
+  // The identity on the supports' DOFs, in reduced coordinates.
+  const SparseMatrix& support_identity() const { return S_; }
 
   std::optional<Vector> operator()(const Vector& q, Real load_scale, SparseMatrix* jacobian) const {
     const Vector q_full = T_ * q;
@@ -135,42 +145,58 @@ class Residual {
   std::vector<std::size_t> supports_;
   Matrix free_;  // M-orthonormal basis of the motions the supports do not hold
   Real shift_ = 0.0;
+  SparseMatrix S_;
 };
 
 // Newton's method from @p q for the load scaled by @p load_scale, each step cut back
-// (halved, down to 2⁻²⁰) until the residual norm decreases. Returns whether it met
-// the tolerance; @p q holds the last iterate.
+// (halved, down to 2⁻²⁰) until the residual norm decreases. Where the Jacobian is
+// singular or no cut-back step decreases the residual (a contact support without
+// contact, whose stiffness is zero, or a Hertzian contact at zero deflection), the step
+// is regularised as Levenberg and Marquardt's: J + μ·S, S the identity on the
+// supports' DOFs, μ from ‖r‖/(1 mm) (a first step of a millimetre, larger than any
+// bearing clearance, which the line search halves) up tenfold until a step succeeds and down tenfold
+// after each success (to plain Newton below 1e-12 of its start). Returns whether it
+// met the tolerance; @p q holds the last iterate.
 bool newton(const Residual& residual, Real load_scale, Real scale, const EquilibriumOptions& options, Vector& q,
             Equilibrium& out) {
   SparseMatrix J;
   std::optional<Vector> r = residual(q, load_scale, &J);
   if (!r) return false;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  Real mu = 0.0, mu_start = 0.0;
   for (int it = 0; it < options.max_iterations; ++it) {
     out.residual = r->norm() / scale;
     if (out.residual <= options.tolerance) return true;
     ++out.iterations;
-    lu.compute(residual.regular(J));
-    if (lu.info() != Eigen::Success) return false;
-    Vector dq = lu.solve(*r);
-    residual.project(dq);
-    if (!dq.allFinite()) return false;
     bool stepped = false;
-    for (Real t = 1.0; t >= 0x1p-20; t *= 0.5) {
-      const Vector trial = q + t * dq;
-      SparseMatrix J_trial;
-      std::optional<Vector> r_trial = residual(trial, load_scale, &J_trial);
-      if (!r_trial || r_trial->norm() >= (1.0 - 1e-4 * t) * r->norm()) continue;
-      q = trial;
-      r = std::move(r_trial);
-      J = std::move(J_trial);
-      stepped = true;
-      break;
+    for (int attempt = 0; attempt < 40 && !stepped; ++attempt) {
+      lu.compute(mu > 0 ? SparseMatrix(residual.regular(J) + mu * residual.support_identity()) : residual.regular(J));
+      Vector dq;
+      if (lu.info() == Eigen::Success) {
+        dq = lu.solve(*r);
+        residual.project(dq);
+      }
+      if (lu.info() == Eigen::Success && dq.allFinite()) {
+        for (Real t = 1.0; t >= 0x1p-20; t *= 0.5) {
+          const Vector trial = q + t * dq;
+          SparseMatrix J_trial;
+          std::optional<Vector> r_trial = residual(trial, load_scale, &J_trial);
+          if (!r_trial || r_trial->norm() >= (1.0 - 1e-4 * t) * r->norm()) continue;
+          q = trial;
+          r = std::move(r_trial);
+          J = std::move(J_trial);
+          stepped = true;
+          break;
+        }
+      }
+      if (stepped) {
+        mu = mu * 0.1 < 1e-12 * mu_start ? 0.0 : mu * 0.1;
+      } else {
+        if (mu_start == 0.0) mu_start = r->norm() / 1e-3;
+        mu = mu > 0 ? 10.0 * mu : mu_start;
+      }
     }
-    if (!stepped) {
-      out.residual = r->norm() / scale;
-      return out.residual <= options.tolerance;
-    }
+    if (!stepped) break;
   }
   out.residual = r->norm() / scale;
   return out.residual <= options.tolerance;

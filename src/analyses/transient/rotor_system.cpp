@@ -66,7 +66,7 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
     r.noalias() -= variable_.C * v;
     r.noalias() -= variable_.K * x;
   }
-  const MotionState state{t, W};
+  const MotionState state{t, W, profile_.acceleration(t), profile_.angle(t)};
   for (std::size_t i = 0; i < forces_.size(); ++i) {
     const NonlinearForceValue f = forces_[i].force(state, selectors_[i] * x, selectors_[i] * v);
     r += selectors_[i].transpose() * f.f;
@@ -83,7 +83,7 @@ void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool ex
     DT_ += variable_.C;
     KT_ += variable_.K;
   }
-  const MotionState state{t, W};
+  const MotionState state{t, W, profile_.acceleration(t), profile_.angle(t)};
   for (std::size_t i = 0; i < forces_.size(); ++i) {
     const SparseMatrix& S = selectors_[i];
     NonlinearForceValue f = forces_[i].force(state, S * x, S * v);

@@ -18,7 +18,9 @@
 #include <feran/core/error.hpp>
 #include <feran/core/root_finding.hpp>
 #include <feran/elements/rigid_body.hpp>
+#include <feran/elements/spring_damper.hpp>
 #include <feran/forces/fluid_film_bearing.hpp>
+#include <feran/forces/rolling_bearing.hpp>
 #include <feran/forces/unbalance.hpp>
 
 namespace feran::test_supports {
@@ -73,6 +75,21 @@ Real largest_real_part(const Model& model, Real speed) {
   Real most = -std::numeric_limits<Real>::infinity();
   for (const Mode& mode : r.modes) most = std::max(most, mode.eigenvalue.real());
   return most;
+}
+
+// The cylindrical modes of the model at Ω are those of mass m on one bearing with
+// coefficients @p b: each eigenvalue with Im p ≥ 0 found among the model's to @p tol·|p|.
+void expect_modes_of_one_bearing(const Model& model, Real speed, Real m, const BearingCoefficients& b, Real tol) {
+  ModalOptions options;
+  options.shapes = false;
+  const ModalResult r = run_modal(model, speed, options);
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  for (const Complex& p : closed_form_eigenvalues(m, b)) {
+    if (p.imag() < 0) continue;
+    Real closest = std::numeric_limits<Real>::infinity();
+    for (const Mode& mode : r.modes) closest = std::min(closest, std::abs(mode.eigenvalue - p));
+    EXPECT_LT(closest, tol * std::abs(p)) << speed << " rad/s, p = " << p;
+  }
 }
 
 // The threshold of a mass m on one linearised bearing: with λ = iν on the boundary,
@@ -135,18 +152,8 @@ TEST(Supports, ModesOfRigidRotorAreThoseOfTheClosedFormCoefficients) {
   for (const Real rpm : {1500.0, 2000.0}) {
     const Real speed = rpm * 2 * pi / 60;
     const Model model = rigid_rotor(m, FilmTheory::short_bearing);
-    ModalOptions options;
-    options.shapes = false;
-    const ModalResult r = run_modal(model, speed, options);
-    ASSERT_TRUE(r.info.converged()) << r.info.message;
-    const std::vector<Complex> expected =
-        closed_form_eigenvalues(m, film_coefficients(friswell, FilmTheory::short_bearing, speed, 525.0));
-    for (const Complex& p : expected) {
-      if (p.imag() < 0) continue;
-      Real closest = std::numeric_limits<Real>::infinity();
-      for (const Mode& mode : r.modes) closest = std::min(closest, std::abs(mode.eigenvalue - p));
-      EXPECT_LT(closest, 1e-7 * std::abs(p)) << rpm << " rpm, p = " << p;
-    }
+    expect_modes_of_one_bearing(model, speed, m, film_coefficients(friswell, FilmTheory::short_bearing, speed, 525.0),
+                                1e-7);
   }
 }
 
@@ -174,20 +181,27 @@ TEST(Supports, StabilityThresholdOfRigidRotorInShortBearingsMatchesDerivation) {
   }
 }
 
+// A run at constant @p speed from the equilibrium under the model's gravity,
+// recording @p probe every 0.1 ms, with the trapezoidal rule at @p dt.
+TransientOptions constant_run_from_equilibrium(const Model& model, Real speed, Real duration, Real dt, Index probe) {
+  TransientOptions options;
+  options.profile = SpeedProfile::constant(speed);
+  options.duration = duration;
+  options.integrator = "trapezoidal";
+  options.settings.dt = dt;
+  options.output_interval = 1e-4;
+  options.probes = {probe};
+  options.gravity = model.gravity;
+  options.start = RunupStart::equilibrium;
+  return options;
+}
+
 // The exponential growth (or decay) rate of the journal's whirl about its
 // equilibrium in a run at constant speed, disturbed at t = 0: a least-squares line
 // through log |δ| at the local maxima of |δ| from t = 0.1 s on, δ the journal's
 // displacement from the equilibrium.
 Real whirl_growth_rate(const Model& model, Real speed) {
-  TransientOptions options;
-  options.profile = SpeedProfile::constant(speed);
-  options.duration = 0.6;
-  options.integrator = "trapezoidal";
-  options.settings.dt = 1e-5;
-  options.output_interval = 1e-4;
-  options.probes = {1};
-  options.gravity = model.gravity;
-  options.start = RunupStart::equilibrium;
+  TransientOptions options = constant_run_from_equilibrium(model, speed, 0.6, 1e-5, 1);
   options.initial_velocity = Vector::Zero(model.n_dofs());
   options.initial_velocity(global_dof(0, Dof::v)) = 1e-6;  // m/s, the leader's: a disturbance of nanometres
   const TransientResult r = run_transient(model, options);
@@ -285,16 +299,73 @@ TEST(Supports, FiniteLengthBearingsCarryTheRotorAndLineariseToTheirForcesDiffere
     e(k) = hv;
     b.C.col(k) = -(force(x, e) - force(x, -e)) / (2 * hv);
   }
-  ModalOptions options;
-  options.shapes = false;
-  const ModalResult r = run_modal(model, speed, options);
-  ASSERT_TRUE(r.info.converged()) << r.info.message;
-  for (const Complex& p : closed_form_eigenvalues(m, b)) {
-    if (p.imag() < 0) continue;
-    Real closest = std::numeric_limits<Real>::infinity();
-    for (const Mode& mode : r.modes) closest = std::min(closest, std::abs(mode.eigenvalue - p));
-    EXPECT_LT(closest, 1e-5 * std::abs(p)) << p;
+  expect_modes_of_one_bearing(model, speed, m, b, 1e-5);
+}
+
+// The rigid rotor of rigid_rotor() on two ball bearings instead.
+Model rigid_rotor_on_ball_bearings(Real m_per_bearing, const RollingBearingGeometry& bearing) {
+  Model model = rigid_rotor(m_per_bearing, FilmTheory::short_bearing);
+  model.forces.clear();
+  model.forces.emplace_back(RollingBearing{.node_a = 1, .node_b = {}, .geometry = bearing}, "left");
+  model.forces.emplace_back(RollingBearing{.node_a = 2, .node_b = {}, .geometry = bearing}, "right");
+  return model;
+}
+
+constexpr RollingBearingGeometry ball_bearing{.elements = 9, .element_diameter = 0.012, .pitch_diameter = 0.06,
+                                              .contact_angle = 0.0, .clearance = 5e-6, .hertz_constant = 1e10,
+                                              .roller = false};
+
+TEST(Supports, RotorOnBallBearingsCarriesItsWeightWithTheirDifferencesAsStiffness) {
+  // From q = 0, inside the clearance, the equilibrium needs the regularised Newton
+  // steps; each bearing then carries 525 N, and the modes of the rotor's cylindrical
+  // motion are those of mass m on the bearing's central-difference stiffness there
+  // (no damping: purely imaginary pairs), 1e-6 of |p|.
+  const Real m = 525.0 / g, speed = 300.0;
+  const Model model = rigid_rotor_on_ball_bearings(m, ball_bearing);
+  StaticOptions so;
+  so.gravity = model.gravity;
+  so.speed = speed;
+  const StaticResult st = run_static(model, so);
+  ASSERT_TRUE(st.info.converged()) << st.info.message;
+  for (const auto& [force, f] : st.supports) EXPECT_NEAR(f[static_cast<std::size_t>(Dof::v)], -525.0, 1e-8 * 525.0);
+  Vector x(2);
+  x << st.q(global_dof(1, Dof::v)), st.q(global_dof(1, Dof::w));
+  const RollingBearing b{.node_a = 0, .node_b = {}, .geometry = ball_bearing};
+  BearingCoefficients k;
+  for (int j = 0; j < 2; ++j) {
+    Vector e = Vector::Zero(2);
+    e(j) = 1e-10;
+    k.K.col(j) = -(b.force({}, x + e, Vector::Zero(2)).f - b.force({}, x - e, Vector::Zero(2)).f) / 2e-10;
   }
+  expect_modes_of_one_bearing(model, speed, m, k, 1e-6);
+}
+
+TEST(Supports, RunupOnBallBearingsVibratesAtTheBallPassFrequency) {
+  // Started at the equilibrium at a constant 300 rad/s, the rotor's vertical motion is
+  // driven by the varying compliance alone. A damper on the rotor (ζ ≈ 0.1 at the
+  // bounce mode's 206 Hz) removes the start's free vibration within 0.1 s; after it the
+  // strongest frequency is the outer race's ball-pass frequency
+  // Z·κ·Ω = 9 × 0.4 × 300 rad/s = 171.9 Hz (a 0.5 Hz grid).
+  const Real speed = 300.0;
+  Model model = rigid_rotor_on_ball_bearings(525.0 / g, ball_bearing);
+  SpringDamperCoefficients damper;
+  damper.c[static_cast<std::size_t>(Dof::v)] = damper.c[static_cast<std::size_t>(Dof::w)] = 2.8e4;
+  model.elements.emplace_back(SpringDamper(0, std::nullopt, damper), "damper");
+  const TransientResult r = run_transient(model, constant_run_from_equilibrium(model, speed, 0.4, 2e-5, 0));
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  Real mean = 0;
+  int n = 0;
+  for (const TransientSample& s : r.samples)
+    if (s.t >= 0.15) mean += s.probes[0][1], ++n;
+  mean /= n;
+  Real best = 0, best_hz = 0;
+  for (Real f = 20.0; f < 1000.0; f += 0.5) {
+    Complex c = 0;
+    for (const TransientSample& s : r.samples)
+      if (s.t >= 0.15) c += (s.probes[0][1] - mean) * std::exp(Complex(0, -2 * pi * f * s.t));
+    if (std::abs(c) > best) best = std::abs(c), best_hz = f;
+  }
+  EXPECT_NEAR(best_hz, rad_to_hz(ball_bearing.ball_pass_ratio() * speed), 0.5);
 }
 
 TEST(Supports, SpeedZeroIsRefusedWithTheBearingsName) {
