@@ -18,12 +18,12 @@ using detail::join_list;
 /// At most this many node names are listed in a message.
 constexpr std::size_t max_listed_names = 8;
 
-constexpr std::array<Dof, dofs_per_node> all_dofs = {Dof::u, Dof::v, Dof::w,
+constexpr std::array<Dof, dofs_per_node> node_dof_order = {Dof::u, Dof::v, Dof::w,
                                                      Dof::rx, Dof::ry, Dof::rz};
 
-std::vector<std::string> dof_names() {
+std::vector<std::string> node_dof_names() {
   std::vector<std::string> names;
-  for (const Dof d : all_dofs) names.emplace_back(dof_name(d));
+  for (const Dof d : node_dof_order) names.emplace_back(dof_name(d));
   return names;
 }
 
@@ -52,7 +52,7 @@ std::string dof_hint(const std::string& text) {
     if (text == a.lower || text == a.upper)
       return fmt::format(" (did you mean '{}', the displacement along {}?)", a.dof, a.lower);
   // Distance 0: only a match ignoring case; one edit away from "r" lie u, v, w, rx, …
-  if (const auto match = detail::closest_match(text, dof_names(), 0))
+  if (const auto match = detail::closest_match(text, node_dof_names(), 0))
     return fmt::format(" (did you mean '{}'?)", *match);
   return {};
 }
@@ -85,13 +85,13 @@ std::pair<Index, std::optional<Dof>> parse_probe(const Model& model, const std::
 
   const Index node = find_node_reference(model, text.substr(0, colon), what);
   const std::string dof = text.substr(colon + 1);
-  for (const Dof d : all_dofs)
+  for (const Dof d : node_dof_order)
     if (dof == dof_name(d)) return {node, d};
   if (dof.empty())
     throw Error(fmt::format("probe '{}': no DOF after ':'; the DOFs are {}", text,
-                            join_list(dof_names(), "and")));
+                            join_list(node_dof_names(), "and")));
   throw Error(fmt::format("probe '{}': unknown DOF '{}'; the DOFs are {}{}", text, dof,
-                          join_list(dof_names(), "and"), dof_hint(dof)));
+                          join_list(node_dof_names(), "and"), dof_hint(dof)));
 }
 
 }  // namespace feran
