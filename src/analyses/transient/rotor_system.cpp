@@ -1,7 +1,10 @@
 #include <feran/analyses/transient/rotor_system.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include <fmt/format.h>
 
 #include <feran/core/error.hpp>
 
@@ -67,9 +70,19 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
     r.noalias() -= variable_.K * x;
   }
   const MotionState state{t, W, profile_.acceleration(t), profile_.angle(t)};
-  for (std::size_t i = 0; i < forces_.size(); ++i) {
-    const NonlinearForceValue f = forces_[i].force(state, selectors_[i] * x, selectors_[i] * v);
-    r += selectors_[i].transpose() * f.f;
+  for (std::size_t i = 0; i < forces_.size(); ++i) r += selectors_[i].transpose() * evaluate(i, state, x, v).f;
+}
+
+NonlinearForceValue RotorSystem::evaluate(std::size_t i, const MotionState& state, const Vector& x,
+                                          const Vector& v) const {
+  try {
+    return forces_[i].force(state, selectors_[i] * x, selectors_[i] * v);
+  } catch (const Error& e) {
+    // Name the force: "journal bearing 'A': the journal has reached the bearing: …".
+    std::string kind(forces_[i].kind());
+    std::replace(kind.begin(), kind.end(), '_', ' ');
+    const std::string& label = forces_[i].label();
+    throw Error(label.empty() ? fmt::format("{}: {}", kind, e.what()) : fmt::format("{} '{}': {}", kind, label, e.what()));
   }
 }
 
@@ -86,7 +99,7 @@ void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool ex
   const MotionState state{t, W, profile_.acceleration(t), profile_.angle(t)};
   for (std::size_t i = 0; i < forces_.size(); ++i) {
     const SparseMatrix& S = selectors_[i];
-    NonlinearForceValue f = forces_[i].force(state, S * x, S * v);
+    NonlinearForceValue f = evaluate(i, state, x, v);
     if (!exact) f.dfdx.setZero(), f.dfdv.setZero();  // keep the pattern, drop the values
     DT_ -= SparseMatrix(S.transpose() * f.dfdv.sparseView(0.0, 0.0) * S);
     KT_ -= SparseMatrix(S.transpose() * f.dfdx.sparseView(0.0, 0.0) * S);

@@ -238,7 +238,16 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     }
     const Real h = std::min(dt, t_end - s.t);
     previous = s;
-    const StepReport rep = integrator->step(sys, s, h);
+    StepReport rep;
+    try {
+      rep = integrator->step(sys, s, h);
+    } catch (const Error& e) {
+      // A force that cannot be evaluated in the step's state (a journal at its
+      // bearing's wall): the run ends there, its samples so far kept.
+      s = previous;
+      fail(e.what());
+      break;
+    }
     ++result.steps;
     result.rejected += rep.rejected;
     result.factorizations += rep.factorizations;

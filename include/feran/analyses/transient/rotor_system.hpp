@@ -49,6 +49,8 @@ class RotorSystem final : public SecondOrderSystem {
   Vector expand(const Vector& reduced) const { return assembler_.dof_map().expand(reduced); }
 
  private:
+  /// Nonlinear force @p i at the state; an Error it throws is rethrown naming the force.
+  NonlinearForceValue evaluate(std::size_t i, const MotionState& state, const Vector& x, const Vector& v) const;
   void update_speed(Real speed);
   void external_forces(Real t, Vector& f_full) const;
 

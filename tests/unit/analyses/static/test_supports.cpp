@@ -368,6 +368,27 @@ TEST(Supports, RunupOnBallBearingsVibratesAtTheBallPassFrequency) {
   EXPECT_NEAR(best_hz, rad_to_hz(ball_bearing.ball_pass_ratio() * speed), 0.5);
 }
 
+TEST(Supports, JournalDrivenIntoItsWallEndsTheRunPlainlyWithItsSamplesKept) {
+  // The journal started at 0.95 c moving towards the wall at 1 m/s: the first step
+  // carries it past the clearance, where the film force cannot be evaluated. The run
+  // ends as a numerical failure naming the bearing and the time, with the sample at
+  // t = 0 kept (no exception escapes).
+  const Model model = rigid_rotor(525.0 / g, FilmTheory::short_bearing);
+  TransientOptions options = constant_run_from_equilibrium(model, 500.0, 0.01, 1e-4, 1);
+  options.start = RunupStart::rest;
+  options.initial_displacement = Vector::Zero(model.n_dofs());
+  options.initial_velocity = Vector::Zero(model.n_dofs());
+  options.initial_displacement(global_dof(0, Dof::v)) = -0.95 * friswell.clearance;
+  options.initial_velocity(global_dof(0, Dof::v)) = -1.0;
+  const TransientResult r = run_transient(model, options);
+  EXPECT_EQ(r.info.status, SolverStatus::numerical_failure);
+  EXPECT_NE(r.info.message.find("fluid film bearing 'left': the journal has reached the bearing"), std::string::npos)
+      << r.info.message;
+  EXPECT_NE(r.info.message.find("stopped at t = 0 s"), std::string::npos) << r.info.message;
+  ASSERT_FALSE(r.samples.empty());
+  EXPECT_EQ(r.samples.front().t, 0.0);
+}
+
 TEST(Supports, SpeedZeroIsRefusedWithTheBearingsName) {
   const Model model = rigid_rotor(525.0 / g, FilmTheory::short_bearing);
   StaticOptions options;
