@@ -5,6 +5,7 @@
 namespace feran {
 
 void HarmonicForce::add_harmonic(const HarmonicExcitation&, ComplexVector& f) const {
+  if (frequency) return;  // its own frequency: not a steady state of the sweep's
   const Complex I(0.0, 1.0);
   const Complex a = amplitude * std::polar(1.0, phase);
   switch (type) {
@@ -21,7 +22,7 @@ void HarmonicForce::add_harmonic(const HarmonicExcitation&, ComplexVector& f) co
 }
 
 void HarmonicForce::add_transient(const MotionState& s, Vector& f) const {
-  const Complex a = amplitude * std::polar(1.0, s.angle + phase);
+  const Complex a = amplitude * std::polar(1.0, (frequency ? *frequency * s.t : s.angle) + phase);
   switch (type) {
     case Kind::fixed: f(global_dof(node, direction)) += a.real(); break;
     case Kind::rotating_force:

@@ -965,8 +965,13 @@ void Builder::build_forces() {
                        fmt::format("a force of kind \"{}\" turns with the shaft", s.kind));
     }
     check_bounds(s, path);
+    if (s.frequency && f.type != Kind::fixed)
+      fail(at("frequency"), fmt::format("'frequency' is only for a force of kind \"fixed\"; a {} turns with the "
+                                        "shaft, at its speed",
+                                        f.type == Kind::rotating_force ? "rotating force" : "rotating moment"));
     f.amplitude = s.amplitude;
     f.phase = s.phase;
+    if (s.frequency) f.frequency = hz_to_rad(*s.frequency);
     model_.forces.emplace_back(f, label);
   }
 }

@@ -420,6 +420,9 @@ const FieldTable<ForceSpec>& fields_of<ForceSpec>() {
        .quantity = Q::force, .bound = positive, .required = true},
       {.key = "phase", .kind = K::quantity, .member = &S::phase, .doc = "φ",
        .quantity = Q::angle, .unit = "deg"},
+      {.key = "frequency", .kind = K::quantity, .member = &S::frequency,
+       .doc = "only for `\"fixed\"`: a frequency of its own, at which the force acts in run-ups, A·cos(ωt + φ), whatever the speed; such a force takes no part in the steady-state response", .quantity = Q::frequency,
+       .bound = positive, .unit = "Hz", .default_text = "— (synchronous)"},
   };
   return table;
 }

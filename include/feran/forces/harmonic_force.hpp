@@ -2,6 +2,7 @@
 /// @file
 /// A harmonic force or moment at a node.
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -12,6 +13,8 @@ namespace feran {
 
 /// In a speed sweep it acts at the rotor speed (synchronous); in a frequency sweep at
 /// the swept frequency; in a run-up at the rotation angle φ (as a synchronous force).
+/// A fixed force with a frequency of its own acts at that frequency, in run-ups only:
+/// F(t) = A·cos(ωt + phase), whatever the rotor's speed.
 struct HarmonicForce {
   enum class Kind {
     fixed,            ///< along a fixed DOF direction: F(t) = A·cos(ωt + phase)
@@ -23,6 +26,9 @@ struct HarmonicForce {
   Dof direction = Dof::v;  ///< for Kind::fixed
   Real amplitude = 0.0;    ///< [N] or [N m]
   Real phase = 0.0;        ///< [rad]
+  /// ω [rad/s] of a fixed force acting at its own frequency (run-ups only); empty:
+  /// synchronous or swept.
+  std::optional<Real> frequency;
 
   std::string_view kind() const { return "harmonic_force"; }
   std::vector<Index> nodes() const { return {node}; }

@@ -199,6 +199,7 @@ struct ForceSpec {
   std::string direction;       ///< "x", "y", "z", "rx", "ry", "rz" (kind "fixed")
   Real amplitude = 0.0;        ///< [N] or [N m]
   Real phase = 0.0;            ///< [rad]
+  std::optional<Real> frequency;  ///< [Hz]: a fixed force at its own frequency (run-ups)
   bool operator==(const ForceSpec&) const = default;
 };
 
