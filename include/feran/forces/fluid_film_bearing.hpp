@@ -95,8 +95,9 @@ struct FluidFilmBearing {
   /// v, w of the journal, then of the housing when there is one.
   std::vector<Index> dofs() const;
   NonlinearForceValue force(const MotionState& s, const Vector& x, const Vector& v) const;
-  /// It carries the rotor (the ability of model/force.hpp).
+  /// It carries the rotor (the ability of model/force.hpp), only while it turns.
   bool supports() const { return true; }
+  bool needs_speed() const { return true; }
 };
 
 }  // namespace feran

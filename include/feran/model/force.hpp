@@ -23,6 +23,9 @@
 ///                                                              check counts it as holding
 ///                                                              its DOFs (fluid-film bearings;
 ///                                                              not friction)
+///   needs_speed() (with supports())                            it carries load only while
+///                                                              the rotor turns (an oil film):
+///                                                              analyses refuse speed 0
 ///
 /// Vectors are over all unconstrained DOFs (global_dof order); add_* add into them.
 /// To add a force: a type in forces/ with kind(), nodes() and its abilities, its
@@ -93,6 +96,11 @@ template <class F>
 concept HasSupport = HasNonlinearForce<F> && requires(const F& f) {
   { f.supports() } -> std::same_as<bool>;
 };
+/// A support that carries load only while the rotor turns (an oil film).
+template <class F>
+concept NeedsSpeed = requires(const F& f) {
+  { f.needs_speed() } -> std::same_as<bool>;
+};
 
 /// A type-erased force with value semantics (copies are deep).
 class Force {
@@ -134,6 +142,8 @@ class Force {
   bool is_nonlinear() const { return self_->is_nonlinear(); }
   /// True for a nonlinear force that carries the rotor (see the abilities above).
   bool supports() const { return self_->supports(); }
+  /// True for a support that carries load only while the rotor turns (an oil film).
+  bool needs_speed() const { return self_->needs_speed(); }
   /// The global DOFs of a nonlinear force (empty for others).
   std::vector<Index> dofs() const { return self_->dofs(); }
   /// Force and Jacobian of a nonlinear force at local displacements @p x and
@@ -164,6 +174,7 @@ class Force {
     virtual void add_static(Vector& f) const = 0;
     virtual bool is_nonlinear() const = 0;
     virtual bool supports() const = 0;
+    virtual bool needs_speed() const = 0;
     virtual std::vector<Index> dofs() const = 0;
     virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual const std::type_info& type() const = 0;
@@ -190,6 +201,10 @@ class Force {
     bool is_nonlinear() const override { return HasNonlinearForce<F>; }
     bool supports() const override {
       if constexpr (HasSupport<F>) return value.supports();
+      else return false;
+    }
+    bool needs_speed() const override {
+      if constexpr (NeedsSpeed<F>) return value.needs_speed();
       else return false;
     }
     std::vector<Index> dofs() const override {

@@ -206,7 +206,7 @@ bool newton(const Residual& residual, Real load_scale, Real scale, const Equilib
 
 void require_running(const std::vector<Force>& forces, Real speed) {
   for (const Force& force : forces)
-    if (force.supports() && !(speed > 0))
+    if (force.supports() && force.needs_speed() && !(speed > 0))
       throw Error(fmt::format("the {} carries no load at rest (an oil film has no stiffness at speed 0): the "
                               "equilibrium and the linear analyses need a speed above 0 (start a sweep above "
                               "0), got {:.6g} rad/s",
@@ -288,14 +288,14 @@ class LinearisedSupport {
   bool speed_dependent() const { return true; }
   std::vector<Index> dofs() const { return path_->model().forces[force_].dofs(); }
 
-  // Zero at rest, where the film has no stiffness (the analyses refuse speed 0 with
-  // require_running(); the assembly asks at rest only for the pattern).
+  // Zero at rest for a film, which has no stiffness then (the analyses refuse speed 0
+  // with require_running(); the assembly asks at rest only for the pattern).
   LocalMatrices local_matrices(const OperatingPoint& op) const {
     const Force& force = path_->model().forces[force_];
     LocalMatrices lm;
     lm.dofs = force.dofs();
     const auto n = static_cast<Index>(lm.dofs.size());
-    if (!(op.speed > 0)) {
+    if (!(op.speed > 0) && force.needs_speed()) {
       lm.K = lm.C = Matrix::Zero(n, n);
       return lm;
     }

@@ -328,6 +328,11 @@ TEST(Supports, RotorOnBallBearingsCarriesItsWeightWithTheirDifferencesAsStiffnes
   const StaticResult st = run_static(model, so);
   ASSERT_TRUE(st.info.converged()) << st.info.message;
   for (const auto& [force, f] : st.supports) EXPECT_NEAR(f[static_cast<std::size_t>(Dof::v)], -525.0, 1e-8 * 525.0);
+  // A rolling bearing carries load at rest too: the same equilibrium at speed 0.
+  so.speed = 0.0;
+  const StaticResult at_rest = run_static(model, so);
+  ASSERT_TRUE(at_rest.info.converged()) << at_rest.info.message;
+  EXPECT_LT((at_rest.q - st.q).norm(), 1e-12 * st.q.norm());
   Vector x(2);
   x << st.q(global_dof(1, Dof::v)), st.q(global_dof(1, Dof::w));
   const RollingBearing b{.node_a = 0, .node_b = {}, .geometry = ball_bearing};
