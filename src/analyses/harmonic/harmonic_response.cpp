@@ -175,7 +175,10 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   result.info.method = SolverMethod::sparse_lu;
   // Supports (fluid-film bearings) as their tangent about the equilibrium at each
   // speed: elements after the model's own, which keep their indices.
-  const Model linear = linearised(model);
+  // (A copy only when there are supports to replace.)
+  const bool supported = has_supports(model);
+  const Model linear_copy = supported ? linearised(model) : Model{};
+  const Model& linear = supported ? linear_copy : model;
   if (result.frequency_sweep) require_running(model.forces, options.speed);
   for (const Real speed : options.speeds) require_running(model.forces, speed);
   const Assembler assembler(linear);
