@@ -19,7 +19,7 @@ import numpy as np
 import matplotlib
 import matplotlib.pyplot as plt
 from matplotlib.collections import LineCollection
-from matplotlib.patches import Rectangle
+from matplotlib.patches import Polygon, Rectangle
 from matplotlib.ticker import EngFormatter
 
 DOFS = ("u", "v", "w", "rx", "ry", "rz")
@@ -56,14 +56,19 @@ def rotor(model, ax=None, names=True):
     g = model.geometry()
     owned = ax is None
     fig, ax = _axes(ax, size=(9, 3.5))
-    for x0, x1, d, di, rot in zip(g["segment_x0"], g["segment_x1"], g["segment_outer"], g["segment_inner"],
-                                  g["segment_rotating"]):
+    for x0, x1, d, di, d1, di1, rot in zip(g["segment_x0"], g["segment_x1"], g["segment_outer"],
+                                           g["segment_inner"], g["segment_outer_end"], g["segment_inner_end"],
+                                           g["segment_rotating"]):
         colour = "0.55" if rot else "tab:brown"
         for sign in (1, -1):
-            y0 = di / 2 if sign > 0 else -d / 2
-            ax.add_patch(Rectangle((x0, y0), x1 - x0, (d - di) / 2, facecolor=colour, edgecolor="k", lw=0.5,
-                                   gid="section"))
-    radius = float(np.max(g["segment_outer"], initial=0.0)) / 2
+            if d1 == d and di1 == di:
+                y0 = di / 2 if sign > 0 else -d / 2
+                ax.add_patch(Rectangle((x0, y0), x1 - x0, (d - di) / 2, facecolor=colour, edgecolor="k", lw=0.5,
+                                       gid="section"))
+            else:  # a tapered section: a trapezoid between the bore and the outer surface
+                corners = [(x0, sign * di / 2), (x1, sign * di1 / 2), (x1, sign * d1 / 2), (x0, sign * d / 2)]
+                ax.add_patch(Polygon(corners, closed=True, facecolor=colour, edgecolor="k", lw=0.5, gid="section"))
+    radius = float(np.max(np.concatenate([g["segment_outer"], g["segment_outer_end"]]), initial=0.0)) / 2
     extent = (float(np.min(g["node_x"])), float(np.max(g["node_x"])))
     for name, x, m, jp, rot in zip(g["body_names"], g["body_x"], g["body_mass"], g["body_Jp"], g["body_rotating"]):
         d = math.sqrt(8 * jp / m) if m > 0 and jp > 0 else 2 * max(radius, 1e-3) * 2

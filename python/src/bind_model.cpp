@@ -114,6 +114,10 @@ py::dict geometry(const PyModel& self) {
   g["segment_x1"] = array_1d(segments.size(), [&](std::size_t i) { return x(segment(i).node_b); });
   g["segment_outer"] = array_1d(segments.size(), [&](std::size_t i) { return segment(i).section.outer_diameter; });
   g["segment_inner"] = array_1d(segments.size(), [&](std::size_t i) { return segment(i).section.inner_diameter; });
+  g["segment_outer_end"] =
+      array_1d(segments.size(), [&](std::size_t i) { return segment(i).section_b.outer_diameter; });
+  g["segment_inner_end"] =
+      array_1d(segments.size(), [&](std::size_t i) { return segment(i).section_b.inner_diameter; });
   g["segment_rotating"] = array_1d<bool>(segments.size(), [&](std::size_t i) {
     return model.nodes[static_cast<std::size_t>(segment(i).node_a)].rotating;
   });
@@ -227,7 +231,7 @@ void bind_model(py::module_& m) {
       .def("geometry", &geometry,
            "What a drawing of the rotor needs, as numpy arrays (all lengths in m): nodes (names),\n"
            "node_x, node_rotating; shaft segments (segment_x0, segment_x1, segment_outer,\n"
-           "segment_inner, segment_rotating); rigid bodies (body_names, body_x, body_mass, body_Jp,\n"
+           "segment_inner at x0, segment_outer_end, segment_inner_end at x1, segment_rotating); rigid bodies (body_names, body_x, body_mass, body_Jp,\n"
            "body_rotating); spring-dampers (spring_names, spring_x, spring_to_x, NaN to ground).")
       .def("check", [](const PyModel& self) { (void)self.built(); },
            "Builds and checks the model (raises ModelError as reading does)");

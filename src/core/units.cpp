@@ -93,6 +93,7 @@ bool iequal(std::string_view a, std::string_view b) {
 }  // namespace
 
 std::string_view quantity_name(Quantity kind) { return kind_def(kind).article_name; }
+std::string_view quantity_noun(Quantity kind) { return kind_def(kind).noun; }
 
 PhysicalRange physical_range(Quantity kind) { return kind_def(kind).range; }
 

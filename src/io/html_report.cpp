@@ -90,6 +90,8 @@ json model_summary(const ModelFile& file, Real speed) {
                         {"x_b_m", model.nodes[static_cast<std::size_t>(seg->node_b)].x},
                         {"outer_diameter_m", seg->section.outer_diameter},
                         {"inner_diameter_m", seg->section.inner_diameter},
+                        {"outer_diameter_b_m", seg->section_b.outer_diameter},
+                        {"inner_diameter_b_m", seg->section_b.inner_diameter},
                         {"rotating", model.nodes[static_cast<std::size_t>(seg->node_a)].rotating},
                         {"label", el.label()}});
     } else if (const RigidBody* b = el.target<RigidBody>()) {

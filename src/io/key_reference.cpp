@@ -53,7 +53,9 @@ std::string kind_of(const Field<S>& f) {
     case FieldKind::node_list: return "array of node references";
     case FieldKind::integer_list: return "array of integers";
     case FieldKind::coefficient: return noun(f.quantity) + " or law";
-    case FieldKind::speed_table: return "array of `[time, speed]` pairs";
+    case FieldKind::time_table:
+      if constexpr (std::is_same_v<S, ForceSpec>) return "array of `[time, force or moment]` pairs";
+      return fmt::format("array of `[time, {}]` pairs", noun(f.quantity));
   }
   return {};
 }

@@ -72,8 +72,8 @@ class SpecReader {
                                     const std::string& at);
   Real read_speed(const TableReader& t, const toml::node& n, const std::string& name,
                   const std::string& speed_unit, const std::string& at);
-  std::vector<std::pair<Real, Real>> read_speed_table(const TableReader& t, const toml::node& n,
-                                                      const std::string& at);
+  std::vector<std::pair<Real, Real>> read_time_table(const TableReader& t, const toml::node& n, std::string_view key,
+                                                     Quantity kind, const std::string& at);
   std::vector<std::string> read_words(const TableReader& t, const spec::FieldKind kind,
                                       const toml::node& n, std::string_view key,
                                       std::span<const std::string_view> choices,
@@ -166,10 +166,7 @@ void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const
         T& value = out.*member;
         if constexpr (std::is_same_v<T, Real> || std::is_same_v<T, std::optional<Real>>) {
           if (f.kind == FieldKind::quantity) {
-            Quantity kind = f.quantity;
-            if constexpr (std::is_same_v<S, ForceSpec>)
-              if (f.key == "amplitude") kind = spec::amplitude_quantity(out);
-            const QuantityValue q = t.quantity_at(n, f.key, kind);
+            const QuantityValue q = t.quantity_at(n, f.key, spec::value_quantity(out, f));
             record_quantity(at, q);
             value = q.si;
           } else {
@@ -214,7 +211,7 @@ void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const
         } else if constexpr (std::is_same_v<T, std::optional<SpeedCoefficient>>) {
           value = read_coefficient(t, n, std::string(f.key), f.quantity, at);
         } else if constexpr (std::is_same_v<T, std::vector<std::pair<Real, Real>>>) {
-          value = read_speed_table(t, n, at);
+          value = read_time_table(t, n, f.key, spec::value_quantity(out, f), at);
         }
       },
       f.member);
@@ -384,31 +381,31 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
   return SpeedCoefficient(SpeedCoefficient::Law{a});
 }
 
-std::vector<std::pair<Real, Real>> SpecReader::read_speed_table(const TableReader& t,
-                                                                const toml::node& n,
-                                                                const std::string& at) {
+std::vector<std::pair<Real, Real>> SpecReader::read_time_table(const TableReader& t, const toml::node& n,
+                                                               std::string_view key, Quantity kind,
+                                                               const std::string& at) {
+  const std::string_view noun = quantity_noun(kind);
+  const std::string example = kind == Quantity::speed ? R"(["2 s", "50 Hz"])" : R"(["2 ms", "500 N"])";
   const toml::array* table = n.as_array();
-  if (table == nullptr) t.fail(n, fmt::format("'table' must be an array, got {}", type_name(n)));
+  if (table == nullptr) t.fail(n, fmt::format("'{}' must be an array, got {}", key, type_name(n)));
   if (table->empty())
-    t.fail(*table, "'table' needs at least one [time, speed] pair, e.g. "
-                   "[[\"0 s\", \"0 Hz\"], [\"5 s\", \"80 Hz\"]]");
+    t.fail(*table, fmt::format("'{}' needs at least one [time, {}] pair, e.g. [{}]", key, noun,
+                               kind == Quantity::speed ? R"(["0 s", "0 Hz"], ["5 s", "80 Hz"])"
+                                                       : R"(["0 s", "0 N"], ["2 ms", "500 N"], ["4 ms", "0 N"])"));
   std::vector<std::pair<Real, Real>> points;
   for (std::size_t i = 0; i < table->size(); ++i) {
     const toml::node& entry = *table->get(i);
     const toml::array* pair = entry.as_array();
     if (pair == nullptr || pair->size() != 2)
-      t.fail(entry, fmt::format("each entry of 'table' must be a [time, speed] pair such as "
-                                "[\"2 s\", \"50 Hz\"], got {}",
+      t.fail(entry, fmt::format("each entry of '{}' must be a [time, {}] pair such as {}, got {}", key, noun, example,
                                 pair != nullptr ? fmt::format("an array of {} values", pair->size())
                                                 : type_name(entry)));
     record(element(at, i), entry);
-    const QuantityValue time =
-        t.quantity_at(*pair->get(0), fmt::format("table[{}][0]", i), Quantity::time);
-    const QuantityValue speed =
-        t.quantity_at(*pair->get(1), fmt::format("table[{}][1]", i), Quantity::speed);
+    const QuantityValue time = t.quantity_at(*pair->get(0), fmt::format("{}[{}][0]", key, i), Quantity::time);
+    const QuantityValue value = t.quantity_at(*pair->get(1), fmt::format("{}[{}][1]", key, i), kind);
     record_quantity(element(element(at, i), 0), time);
-    record_quantity(element(element(at, i), 1), speed);
-    points.emplace_back(time.si, speed.si);
+    record_quantity(element(element(at, i), 1), value);
+    points.emplace_back(time.si, value.si);
   }
   return points;
 }

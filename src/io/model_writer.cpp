@@ -109,10 +109,7 @@ std::string value_of(const S& entry, const Field<S>& f) {
             else return *v;
           }();
           if (f.kind != FieldKind::quantity) return number(x);
-          Quantity kind = f.quantity;
-          if constexpr (std::is_same_v<S, ForceSpec>)
-            if (f.key == "amplitude") kind = spec::amplitude_quantity(entry);
-          return quantity(x, kind, f.unit);
+          return quantity(x, spec::value_quantity(entry, f), f.unit);
         } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, bool>) {
           return fmt::format("{}", v);
         } else if constexpr (std::is_same_v<T, std::optional<int>> ||
@@ -136,9 +133,9 @@ std::string value_of(const S& entry, const Field<S>& f) {
         } else if constexpr (std::is_same_v<T, std::optional<SpeedCoefficient>>) {
           return coefficient(*v, f.quantity);
         } else {
-          return array(v, [](const std::pair<Real, Real>& p) {
-            return fmt::format("[{}, {}]", quantity(p.first, Quantity::time, {}),
-                               quantity(p.second, Quantity::speed, "Hz"));
+          const Quantity kind = spec::value_quantity(entry, f);
+          return array(v, [&f, kind](const std::pair<Real, Real>& p) {
+            return fmt::format("[{}, {}]", quantity(p.first, Quantity::time, {}), quantity(p.second, kind, f.unit));
           });
         }
       },

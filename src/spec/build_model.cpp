@@ -475,7 +475,21 @@ void Builder::build_shafts() {
       BeamOptions options = beam_options;
       options.loss_factor = m->loss_factor;
       if (!s.end_node.empty()) check_node_name(s.end_node, child(section_path, "end_node"));
-      const CircularSection section{s.outer_diameter, s.inner_diameter};
+      const Real outer_end = s.outer_diameter_end.value_or(s.outer_diameter);
+      const Real inner_end = s.inner_diameter_end.value_or(s.inner_diameter);
+      if (!(inner_end < outer_end))
+        fail(child(section_path, s.inner_diameter_end ? "inner_diameter_end" : "outer_diameter_end"),
+             fmt::format("the bore at the section's end ({}) must be smaller than its outer diameter there ({})",
+                         shown(child(section_path, "inner_diameter_end"), inner_end, Quantity::length, "mm"),
+                         shown(child(section_path, "outer_diameter_end"), outer_end, Quantity::length, "mm")));
+      options.axial_force = s.axial_force;
+      // Element e spans ξ ∈ [(e − 1)/n, e/n] of the section; diameters are linear in ξ.
+      const auto section_at = [&](int e) {
+        const Real xi = static_cast<Real>(e) / static_cast<Real>(s.elements);
+        return CircularSection{s.outer_diameter + xi * (outer_end - s.outer_diameter),
+                               s.inner_diameter + xi * (inner_end - s.inner_diameter)};
+      };
+      const bool tapered = outer_end != s.outer_diameter || inner_end != s.inner_diameter;
       for (int e = 1; e <= s.elements; ++e) {
         Node node;
         node.number = next_number++;
@@ -486,8 +500,10 @@ void Builder::build_shafts() {
         const Index node_b = add_node(
             node, section_path,
             last && !s.end_node.empty() ? child(section_path, "end_node") : section_path);
+        const CircularSection section_a = tapered ? section_at(e - 1) : CircularSection{s.outer_diameter, s.inner_diameter};
+        const CircularSection section_b = tapered ? section_at(e) : section_a;
         model_.elements.emplace_back(
-            TimoshenkoBeam(node_a, node_b, s.length / static_cast<Real>(s.elements), section, *m,
+            TimoshenkoBeam(node_a, node_b, s.length / static_cast<Real>(s.elements), section_a, section_b, *m,
                            options),
             fmt::format("shaft {} section {} element {}", shaft_label, j + 1, e));
         node_a = node_b;
@@ -969,7 +985,36 @@ void Builder::build_forces() {
       fail(at("frequency"), fmt::format("'frequency' is only for a force of kind \"fixed\"; a {} turns with the "
                                         "shaft, at its speed",
                                         f.type == Kind::rotating_force ? "rotating force" : "rotating moment"));
-    f.amplitude = s.amplitude;
+    if (!s.time_table.empty()) {
+      const char* other = s.amplitude ? "amplitude" : s.frequency ? "frequency" : s.phase != 0.0 ? "phase" : nullptr;
+      if (other != nullptr)
+        fail(at(other), fmt::format("'{}' and 'time_table' exclude each other: a force given in time has its "
+                                    "values in the table",
+                                    other));
+      if (f.type != Kind::fixed)
+        fail(at("time_table"), fmt::format("'time_table' is only for a force of kind \"fixed\"; a {} turns with "
+                                           "the shaft, at its speed",
+                                           f.type == Kind::rotating_force ? "rotating force" : "rotating moment"));
+      const Quantity q = spec::amplitude_quantity(s);
+      for (std::size_t k = 0; k < s.time_table.size(); ++k) {
+        const auto [time, value] = s.time_table[k];
+        const std::string point = element(at("time_table"), k);
+        check_range(time, element(point, 0), "time_table", Quantity::time, "", false);
+        check_range(value, element(point, 1), "time_table", q, "", false);
+        if (k > 0 && !(time > s.time_table[k - 1].first))
+          fail(element(point, 0), fmt::format("the times of 'time_table' must strictly increase: {} follows {}",
+                                              shown(element(point, 0), time, Quantity::time, ""),
+                                              shown(element(element(at("time_table"), k - 1), 0), s.time_table[k - 1].first,
+                                                    Quantity::time, "")));
+      }
+      f.time_table = s.time_table;
+    } else {
+      if (!s.amplitude)
+        fail(path, missing_key("amplitude", "[[forces]]",
+                               fmt::format("{}; or a 'time_table' for a force given in time",
+                                           expected_quantity(spec::amplitude_quantity(s)))));
+      f.amplitude = *s.amplitude;
+    }
     f.phase = s.phase;
     if (s.frequency) f.frequency = hz_to_rad(*s.frequency);
     model_.forces.emplace_back(f, label);

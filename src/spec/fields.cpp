@@ -150,6 +150,16 @@ const FieldTable<SectionSpec>& fields_of<SectionSpec>() {
       {.key = "inner_diameter", .kind = K::quantity, .member = &S::inner_diameter,
        .doc = "bore diameter, < `outer_diameter`",
        .bound = non_negative, .unit = "mm"},
+      {.key = "outer_diameter_end", .kind = K::quantity, .member = &S::outer_diameter_end,
+       .doc = "outer diameter at the section's end: a tapered (conical) section, both diameters linear along it",
+       .bound = positive, .unit = "mm", .default_text = "`outer_diameter`"},
+      {.key = "inner_diameter_end", .kind = K::quantity, .member = &S::inner_diameter_end,
+       .doc = "bore diameter at the section's end, < `outer_diameter_end`", .bound = non_negative, .unit = "mm",
+       .default_text = "`inner_diameter`"},
+      {.key = "axial_force", .kind = K::quantity, .member = &S::axial_force,
+       .doc = "constant axial force in the section, tension positive: geometric stiffness of its elements "
+              "(tension stiffens, compression softens)",
+       .quantity = Q::force},
       {.key = "material", .kind = K::text, .member = &S::material,
        .doc = "name of a material; required if the shaft gives none", .default_text = "the shaft's `material`"},
       {.key = "elements", .kind = K::integer, .member = &S::elements,
@@ -417,12 +427,17 @@ const FieldTable<ForceSpec>& fields_of<ForceSpec>() {
        .doc = "forces along the axes x, y, z (DOF u, v, w) or moments about them rx, ry, rz; not allowed for the rotating kinds", .choices = force_directions, .default_text = "required for `\"fixed\"`"},
       {.key = "amplitude", .kind = K::quantity, .member = &S::amplitude,
        .doc = "A; a force for `\"x\"`, `\"y\"`, `\"z\"` and `\"rotating_force\"`, a moment for `\"rx\"`, `\"ry\"`, `\"rz\"` and `\"rotating_moment\"`",
-       .quantity = Q::force, .bound = positive, .required = true},
+       .quantity = Q::force, .bound = positive, .default_text = "required unless `time_table`"},
       {.key = "phase", .kind = K::quantity, .member = &S::phase, .doc = "φ",
        .quantity = Q::angle, .unit = "deg"},
       {.key = "frequency", .kind = K::quantity, .member = &S::frequency,
        .doc = "only for `\"fixed\"`: a frequency of its own, at which the force acts in run-ups, A·cos(ωt + φ), whatever the speed; such a force takes no part in the steady-state response", .quantity = Q::frequency,
        .bound = positive, .unit = "Hz", .default_text = "— (synchronous)"},
+      {.key = "time_table", .kind = K::time_table, .member = &S::time_table,
+       .doc = "only for `\"fixed\"`, instead of `amplitude`, `phase` and `frequency`: the force (or moment) as a "
+              "function of time in run-ups, linear between the pairs and held beyond the first and last; times "
+              "strictly increase; such a force takes no part in the steady-state response",
+       .quantity = Q::force},
   };
   return table;
 }
@@ -532,8 +547,9 @@ const FieldTable<RunupSpec>& fields_of<RunupSpec>() {
        .quantity = Q::speed, .bound = non_negative, .unit = "Hz", .default_text = "required for a ramp"},
       {.key = "ramp_time", .kind = K::quantity, .member = &S::ramp_time,
        .doc = "time the ramp takes", .quantity = Q::time, .bound = positive, .default_text = "required for a ramp"},
-      {.key = "table", .kind = K::speed_table, .member = &S::table,
-       .doc = "at least one pair; the first time is 0 and the times strictly increase; speeds ≥ 0"},
+      {.key = "table", .kind = K::time_table, .member = &S::table,
+       .doc = "at least one pair; the first time is 0 and the times strictly increase; speeds ≥ 0",
+       .quantity = Q::speed, .unit = "Hz"},
       {.key = "duration", .kind = K::quantity, .member = &S::duration,
        .doc = "length of the run; longer than the profile, the last speed is held",
        .quantity = Q::time, .bound = positive, .default_text = "the ramp time, or the last time of `table` (when > 0)"},

@@ -197,7 +197,7 @@ Slot Resolver::entry(S& e, std::size_t i, const std::string& path) {
   std::vector<std::string> numeric;
   for (const spec::Field<S>& f : spec::fields_of<S>()) {
     const bool is_number = f.kind == FieldKind::quantity || f.kind == FieldKind::number ||
-                           f.kind == FieldKind::coefficient || f.kind == FieldKind::speed_table ||
+                           f.kind == FieldKind::coefficient || f.kind == FieldKind::time_table ||
                            f.kind == FieldKind::integer_list ||
                            (f.kind == FieldKind::integer && f.key != "number");
     if (is_number) numeric.emplace_back(f.key);
@@ -225,11 +225,7 @@ Slot Resolver::field(S& e, const spec::Field<S>& f, std::size_t i, const std::st
   slot.path = path;
   slot.doc = std::string(f.doc);
   slot.unit = std::string(f.unit);
-  if (f.kind == FieldKind::quantity) {
-    slot.quantity = f.quantity;
-    if constexpr (std::is_same_v<S, ForceSpec>)
-      if (f.key == "amplitude") slot.quantity = spec::amplitude_quantity(e);
-  }
+  if (f.kind == FieldKind::quantity) slot.quantity = spec::value_quantity(e, f);
   std::visit(
       [&](auto member) {
         using T = std::remove_cvref_t<decltype(e.*member)>;
@@ -266,14 +262,14 @@ Slot Resolver::field(S& e, const spec::Field<S>& f, std::size_t i, const std::st
           last(i, s);
           if (s.selectors.size() != 2 || !detail::all_digits(s.selectors[1]) ||
               std::stoul(s.selectors[1]) > 1)
-            fail(fmt::format("'{0}' is a list of [time, speed] points: name one number, e.g. "
-                             "{0}[1][0] for the second point's time or {0}[1][1] for its speed",
-                             s.key));
+            fail(fmt::format("'{0}' is a list of [time, {1}] points: name one number, e.g. "
+                             "{0}[1][0] for the second point's time or {0}[1][1] for its {1}",
+                             s.key, quantity_noun(spec::value_quantity(e, f))));
           const std::size_t index = find_entry(v, s);
-          const bool speed = s.selectors[1] == "1";
+          const bool speed = s.selectors[1] == "1";  // the value column
           slot.path = spec::element(spec::element(path, index), speed ? 1 : 0);
-          slot.quantity = speed ? Quantity::speed : Quantity::time;
-          slot.unit = speed ? "Hz" : "";
+          slot.quantity = speed ? spec::value_quantity(e, f) : Quantity::time;
+          slot.unit = speed ? std::string(f.unit) : "";
           slot.get = [&v, index, speed] {
             return std::optional<Real>(speed ? v[index].second : v[index].first);
           };

@@ -35,7 +35,7 @@ ModelSpec shaft() {
   ShaftSpec shaft;
   shaft.material = "steel";
   shaft.start_node = "a";
-  shaft.sections.push_back({.length = L, .outer_diameter = d, .inner_diameter = 0.0,
+  shaft.sections.push_back({.length = L, .outer_diameter = d, .inner_diameter = 0.0, .outer_diameter_end = {}, .inner_diameter_end = {}, .axial_force = 0.0,
                             .material = {}, .elements = n_el, .end_node = "b"});
   s.shafts.push_back(shaft);
   s.fixed.push_back({.node = std::string("a"), .dofs = {"u", "v", "w", "rx"}});

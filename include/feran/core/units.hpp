@@ -58,6 +58,8 @@ PhysicalRange physical_range(Quantity kind);
 
 /// Name of the kind with its article, for messages: "a length", "an angle".
 std::string_view quantity_name(Quantity kind);
+/// Name of the kind without article: "length", "speed".
+std::string_view quantity_noun(Quantity kind);
 /// The unit a bare number of this kind is in: "m", "rad/s", "Hz" (frequency).
 std::string_view si_unit(Quantity kind);
 /// The units accepted for @p kind, SI unit first, in their normalised spelling.

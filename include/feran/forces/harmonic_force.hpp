@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <feran/core/types.hpp>
@@ -14,7 +15,8 @@ namespace feran {
 /// In a speed sweep it acts at the rotor speed (synchronous); in a frequency sweep at
 /// the swept frequency; in a run-up at the rotation angle φ (as a synchronous force).
 /// A fixed force with a frequency of its own acts at that frequency, in run-ups only:
-/// F(t) = A·cos(ωt + phase), whatever the rotor's speed.
+/// F(t) = A·cos(ωt + phase), whatever the rotor's speed. A fixed force with a time
+/// table acts in run-ups only, with the table's value at t.
 struct HarmonicForce {
   enum class Kind {
     fixed,            ///< along a fixed DOF direction: F(t) = A·cos(ωt + phase)
@@ -29,6 +31,9 @@ struct HarmonicForce {
   /// ω [rad/s] of a fixed force acting at its own frequency (run-ups only); empty:
   /// synchronous or swept.
   std::optional<Real> frequency;
+  /// (t [s], value [N or N m]) of a fixed force given in time (run-ups only): linear
+  /// between the points, held beyond the first and the last; empty: harmonic.
+  std::vector<std::pair<Real, Real>> time_table;
 
   std::string_view kind() const { return "harmonic_force"; }
   std::vector<Index> nodes() const { return {node}; }

@@ -69,7 +69,10 @@ struct Transmission {
 struct ShaftSegment {
   Index node_a = 0;  ///< at the smaller x
   Index node_b = 0;
-  CircularSection section;
+  CircularSection section;    ///< at node a
+  CircularSection section_b;  ///< at node b (equal to section unless tapered)
+  /// The section at end @p end (0: node a, 1: node b).
+  const CircularSection& section_at_end(int end) const { return end == 0 ? section : section_b; }
 };
 
 /// A speed range over which an element has data (a tabulated coefficient): outside

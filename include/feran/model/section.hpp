@@ -20,6 +20,7 @@ struct CircularSection {
   /// @p nu: 6(a² + b²)²(1 + ν)² / [7a⁴ + 34a²b² + 7b⁴ + ν(12a⁴ + 48a²b² + 12b⁴)
   /// + ν²(4a⁴ + 16a²b² + 4b⁴)], a and b the outer and inner radii.
   Real hutchinson_shear_coefficient(Real nu) const;
+  bool operator==(const CircularSection&) const = default;
 };
 
 }  // namespace feran

@@ -39,7 +39,7 @@ enum class FieldKind {
   node_list,     ///< an array of node references
   integer_list,  ///< an array of integers
   coefficient,   ///< a speed-dependent coefficient: a quantity or a law table
-  speed_table,   ///< an array of [time, speed] pairs
+  time_table,    ///< an array of [time, value] pairs, the value of the field's quantity
 };
 
 /// Bounds on a number (quantities, numbers, integers and coefficient values).
@@ -172,6 +172,14 @@ void visit_children(S& entry, F&& f) {
 /// The quantity of a force's amplitude: a moment for kind "rotating_moment" and the
 /// directions rx, ry, rz, else a force.
 Quantity amplitude_quantity(const ForceSpec& force);
+/// The quantity of field @p f's values in @p entry: the field's own, except for the
+/// amplitude and time table of a force, which are moments for the moment directions.
+template <class S>
+Quantity value_quantity(const S& entry, const Field<S>& f) {
+  if constexpr (std::is_same_v<S, ForceSpec>)
+    if (f.key == "amplitude" || f.key == "time_table") return amplitude_quantity(entry);
+  return f.quantity;
+}
 
 /// The keys of a coefficient's law table ({ law = "step", below = …, … }).
 struct CoefficientLaw {

@@ -51,11 +51,15 @@ struct MaterialSpec {
   bool operator==(const MaterialSpec&) const = default;
 };
 
-/// [[shafts.sections]]: a length of uniform circular section, meshed into elements.
+/// [[shafts.sections]]: a length of circular section, uniform or tapered (diameters
+/// linear from the start to the end), meshed into elements.
 struct SectionSpec {
   Real length = 0.0;          ///< [m]
-  Real outer_diameter = 0.0;  ///< [m]
+  Real outer_diameter = 0.0;  ///< [m], at the start
   Real inner_diameter = 0.0;  ///< [m], 0 for a solid section
+  std::optional<Real> outer_diameter_end;  ///< [m] at the end; default outer_diameter
+  std::optional<Real> inner_diameter_end;  ///< [m] at the end; default inner_diameter
+  Real axial_force = 0.0;     ///< constant axial force [N], tension positive
   std::string material;       ///< empty: the shaft's material
   int elements = 1;           ///< number of shaft elements
   std::string end_node;       ///< name of the section's last node (may be empty)
@@ -197,9 +201,11 @@ struct ForceSpec {
   NodeRef node;
   std::string kind = "fixed";  ///< "fixed", "rotating_force" or "rotating_moment"
   std::string direction;       ///< "x", "y", "z", "rx", "ry", "rz" (kind "fixed")
-  Real amplitude = 0.0;        ///< [N] or [N m]
+  std::optional<Real> amplitude;  ///< [N] or [N m]; required unless time_table
   Real phase = 0.0;            ///< [rad]
   std::optional<Real> frequency;  ///< [Hz]: a fixed force at its own frequency (run-ups)
+  /// (time [s], force [N] or moment [N m]): a fixed force given in time (run-ups)
+  std::vector<std::pair<Real, Real>> time_table;
   bool operator==(const ForceSpec&) const = default;
 };
 

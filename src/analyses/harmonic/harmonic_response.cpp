@@ -340,7 +340,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
                                     element_values(beams[b].segment, q_full));
       }
       const SectionForces forces = section_forces(end_forces, st.end);
-      const SectionStress stress = section_stress(beams[b].segment.section, forces);
+      const SectionStress stress = section_stress(beams[b].segment.section_at_end(st.end), forces);
       const auto station = static_cast<Index>(i);
       consider(out.peaks.von_mises, stress.von_mises, station);
       consider(out.peaks.bending_moment, orbit(forces.My, forces.Mz).major, station);

@@ -154,7 +154,7 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
     }
     const SectionForces sf = section_forces(end_forces, st.end);
     result.section_forces.push_back(sf);
-    result.stresses.push_back(section_stress(segment.section, sf));
+    result.stresses.push_back(section_stress(segment.section_at_end(st.end), sf));
   }
 
   for (Index node = 0; node < model.n_nodes(); ++node) {

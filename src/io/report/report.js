@@ -75,12 +75,15 @@
     const shapes = [];
     for (const sh of m.shafts) {
       const ro = sh.outer_diameter_m / 2, ri = sh.inner_diameter_m / 2;
+      const rob = sh.outer_diameter_b_m / 2, rib = sh.inner_diameter_b_m / 2;
       const colour = sh.rotating ? "rgba(120,120,140,0.8)" : "rgba(180,150,100,0.8)";
-      shapes.push({ type: "rect", x0: sh.x_a_m, x1: sh.x_b_m, y0: -ro, y1: ro, fillcolor: colour, line: { width: 0.5, color: "#333" } });
-      if (ri > 0) shapes.push({ type: "rect", x0: sh.x_a_m, x1: sh.x_b_m, y0: -ri, y1: ri, fillcolor: "white", line: { width: 0 } });
+      // A trapezoid from end a to end b (a rectangle for a uniform element).
+      const quad = (ya, yb) => `M ${sh.x_a_m} ${-ya} L ${sh.x_b_m} ${-yb} L ${sh.x_b_m} ${yb} L ${sh.x_a_m} ${ya} Z`;
+      shapes.push({ type: "path", path: quad(ro, rob), fillcolor: colour, line: { width: 0.5, color: "#333" } });
+      if (ri > 0 || rib > 0) shapes.push({ type: "path", path: quad(ri, rib), fillcolor: "white", line: { width: 0 } });
     }
     traces.push({ name: "shaft", x: m.shafts.flatMap((sh) => [sh.x_a_m, sh.x_b_m, null]),
-                  y: m.shafts.flatMap((sh) => [sh.outer_diameter_m / 2, sh.outer_diameter_m / 2, null]), mode: "lines",
+                  y: m.shafts.flatMap((sh) => [sh.outer_diameter_m / 2, sh.outer_diameter_b_m / 2, null]), mode: "lines",
                   line: { color: "#555", width: 1 }, hovertemplate: "x %{x:.4f} m<br>radius %{y:.4f} m<extra>shaft</extra>" });
     for (const b of m.bodies) {
       const r = b.drawn_radius_m, w = Math.max(b.drawn_width_m, 0.004);
@@ -89,7 +92,7 @@
     traces.push({ name: "rigid bodies", x: m.bodies.map((b) => b.x_m), y: m.bodies.map((b) => b.drawn_radius_m), mode: "markers",
                   marker: { size: 6, color: "#1f77b4" }, text: m.bodies.map((b) => `${b.label}<br>m ${fmt(b.mass_kg)} kg<br>J_A ${fmt(b.transverse_inertia_kg_m2)} kg m²<br>J_P ${fmt(b.polar_inertia_kg_m2)} kg m²`),
                   hovertemplate: "%{text}<extra></extra>" });
-    const ymax = Math.max(0.01, ...m.shafts.map((x) => x.outer_diameter_m / 2), ...m.bodies.map((b) => b.drawn_radius_m));
+    const ymax = Math.max(0.01, ...m.shafts.map((x) => Math.max(x.outer_diameter_m, x.outer_diameter_b_m) / 2), ...m.bodies.map((b) => b.drawn_radius_m));
     traces.push({ name: "bearings", x: m.springs.map((b) => b.x_m), y: m.springs.map(() => -1.15 * ymax), mode: "markers",
                   marker: { symbol: "triangle-up", size: 14, color: "#d62728" },
                   text: m.springs.map((b) => `${b.label}<br>k_yy ${fmt(b.kyy_n_per_m)} N/m, k_zz ${fmt(b.kzz_n_per_m)} N/m<br>c_yy ${fmt(b.cyy_n_s_per_m)} N s/m`),

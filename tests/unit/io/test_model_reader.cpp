@@ -785,7 +785,7 @@ points = 2
 )");
   ResponseRequest request;
   request.stop = 10.0;
-  request.extra_forces = {HarmonicForce{1, HarmonicForce::Kind::fixed, Dof::v, 1.0, 0.0, std::nullopt}};
+  request.extra_forces = {HarmonicForce{1, HarmonicForce::Kind::fixed, Dof::v, 1.0, 0.0, std::nullopt, {}}};
   const HarmonicOptions r = response_of(file, request);
   EXPECT_EQ(r.probes, (std::vector<Index>{2, 0}));
   EXPECT_EQ(r.speeds, (std::vector<Real>{0.0, 10.0}));  // 2 points from 0

@@ -69,8 +69,9 @@ TEST(ModelWriter, ValuesThatNoUnitWritesExactlyRoundTrip) {
   ShaftSpec shaft;
   shaft.material = "steel";
   shaft.start_node = "a";
-  shaft.sections.push_back({.length = 0.1 + 0.2, .outer_diameter = 1.0 / 3.0,
-                            .inner_diameter = 0.0, .material = {}, .elements = 3, .end_node = "b"});
+  shaft.sections.push_back({.length = 0.1 + 0.2, .outer_diameter = 1.0 / 3.0, .inner_diameter = 0.0,
+                            .outer_diameter_end = 0.2 / 3.0, .inner_diameter_end = 0.01 / 3.0,
+                            .axial_force = -1e3 / 3.0, .material = {}, .elements = 3, .end_node = "b"});
   spec.shafts.push_back(shaft);
   SpringSpec bearing;
   bearing.name = "bearing";

@@ -22,9 +22,9 @@ ModelSpec jeffcott() {
   ShaftSpec shaft;
   shaft.material = "massless steel";
   shaft.start_node = "left";
-  shaft.sections.push_back({.length = 0.25, .outer_diameter = 0.012, .inner_diameter = 0.0,
+  shaft.sections.push_back({.length = 0.25, .outer_diameter = 0.012, .inner_diameter = 0.0, .outer_diameter_end = {}, .inner_diameter_end = {}, .axial_force = 0.0,
                             .material = {}, .elements = 1, .end_node = "disk"});
-  shaft.sections.push_back({.length = 0.25, .outer_diameter = 0.012, .inner_diameter = 0.0,
+  shaft.sections.push_back({.length = 0.25, .outer_diameter = 0.012, .inner_diameter = 0.0, .outer_diameter_end = {}, .inner_diameter_end = {}, .axial_force = 0.0,
                             .material = {}, .elements = 1, .end_node = "right"});
   s.shafts.push_back(shaft);
   RigidBodySpec disk;

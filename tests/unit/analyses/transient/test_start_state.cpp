@@ -99,7 +99,7 @@ TEST(StartState, ForceAtItsOwnFrequencyDrivesTheRunAtThatFrequency) {
   model.forces.clear();
   constexpr Real A = 100.0, omega = 450.0;
   model.forces.emplace_back(HarmonicForce{.node = 0, .type = HarmonicForce::Kind::fixed, .direction = Dof::v,
-                                          .amplitude = A, .phase = 0.0, .frequency = omega},
+                                          .amplitude = A, .phase = 0.0, .frequency = omega, .time_table = {}},
                             "shaker");
   TransientOptions options = constant_run(300.0, RunupStart::rest);
   options.gravity.setZero();
@@ -111,6 +111,49 @@ TEST(StartState, ForceAtItsOwnFrequencyDrivesTheRunAtThatFrequency) {
   for (const TransientSample& s : r.samples)
     if (s.t >= 0.35) worst = std::max(worst, std::abs(s.probes[0][1] - (Y * std::exp(Complex(0, omega * s.t))).real()));
   EXPECT_LT(worst, 1e-6 * std::abs(Y));
+}
+
+TEST(StartState, ForceGivenInTimeFollowsTheClosedFormRampResponse) {
+  // A fixed force along y given as a time table: a ramp from 0 to F0 over t1, then
+  // held. For t ≤ t1, m y'' + c y' + k y = a t (a = F0/t1) from rest has
+  // y = (a/k)(t − c/k) + e^{−ζω_n t}(A cos ω_d t + B sin ω_d t), A = ac/k²,
+  // B = (ζω_n A − a/k)/ω_d; after the transient (ζω_n = 40 1/s, 0.4 s: e^{−15}) the
+  // disk rests at F0/k. Tolerance 1e-6 of F0/k: the trapezoidal rule's error with
+  // dt = 1 µs (frequency 100 Hz) is ~1e-9 of it.
+  Model model = disk_on_support();
+  model.forces.clear();
+  constexpr Real F0 = 500.0, t1 = 0.02;
+  HarmonicForce push;
+  push.node = 0;
+  push.type = HarmonicForce::Kind::fixed;
+  push.direction = Dof::v;
+  push.time_table = {{0.0, 0.0}, {t1, F0}};
+  model.forces.emplace_back(push, "push");
+  TransientOptions options = constant_run(300.0, RunupStart::rest);
+  options.gravity.setZero();
+  options.duration = 0.4;
+  const TransientResult r = run_transient(model, options);
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  const Real a = F0 / t1, wn = std::sqrt(ky / mass), zeta = cy / (2 * std::sqrt(ky * mass));
+  const Real wd = wn * std::sqrt(1 - zeta * zeta);
+  const Real A = a * cy / (ky * ky), B = (zeta * wn * A - a / ky) / wd;
+  Real worst_ramp = 0.0, worst_end = 0.0, largest = 0.0;
+  for (const TransientSample& s : r.samples) {
+    largest = std::max(largest, std::abs(s.probes[0][1]));
+    if (s.t <= t1) {
+      const Real y = a / ky * (s.t - cy / ky) + std::exp(-zeta * wn * s.t) * (A * std::cos(wd * s.t) + B * std::sin(wd * s.t));
+      worst_ramp = std::max(worst_ramp, std::abs(s.probes[0][1] - y));
+    } else if (s.t >= 0.38) {
+      worst_end = std::max(worst_end, std::abs(s.probes[0][1] - F0 / ky));
+    }
+  }
+  EXPECT_LT(worst_ramp, 1e-6 * F0 / ky);
+  EXPECT_LT(worst_end, 1e-6 * F0 / ky);
+  EXPECT_GT(largest, 0.9 * F0 / ky);  // it did move
+  // The force takes no part in the steady-state (harmonic) load.
+  ComplexVector f = ComplexVector::Zero(6);
+  push.add_harmonic({}, f);
+  EXPECT_EQ(f.norm(), 0.0);
 }
 
 }  // namespace
