@@ -43,6 +43,7 @@ struct RunupArgs {
   bool static_loads = false;
   bool gravity = false;
   std::string start;
+  bool drive = false;
   OutputOptions out;
 };
 
@@ -94,6 +95,9 @@ Runner add_runup_command(CLI::App& app) {
                 "Apply the model's [[static_loads]] as constant forces (default: [runup] static_loads)");
   cmd->add_flag("--gravity", args->gravity,
                 "Apply the gravity of [static] as a constant force (default: [runup] gravity)");
+  cmd->add_flag("--drive", args->drive,
+                "Torque-driven: the speed follows the model's [drive] from the profile's first speed "
+                "(default: [runup] drive)");
   cmd->add_option("--start", args->start,
                   "The state at t = 0: rest, equilibrium (static, at the first speed) or steady (with the "
                   "steady unbalance response) (default: [runup] start, else rest)");
@@ -129,6 +133,7 @@ Runner add_runup_command(CLI::App& app) {
     request.static_loads = args->static_loads;
     request.gravity = args->gravity;
     if (!args->start.empty()) request.start = args->start;
+    if (args->drive) request.drive = true;
     for (const std::string& p : args->probes) request.probes.push_back(find_node_reference(model, p, "--probe"));
     for (const std::string& name : args->springs) {
       try {
@@ -139,7 +144,7 @@ Runner add_runup_command(CLI::App& app) {
     }
     TransientOptions options = runup_settings(model, file.spec.runup, request);
     options.stop = interrupt_token();
-    const auto [low, high] = speed_span(options);
+    const auto [low, high] = speed_span(model, options);
     const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high)};
 
     std::optional<RunupCsvWriter> csv;

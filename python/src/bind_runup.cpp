@@ -116,7 +116,7 @@ void bind_runup(py::module_& m) {
          const py::object& springs, std::optional<double> newton_tol, std::optional<int> newton_max_iter,
          bool allow_unstable, const std::string& jacobian, std::optional<int> jacobian_interval,
          const py::object& blowup, std::optional<int> modes, bool static_loads, bool gravity,
-         std::optional<std::string> start) {
+         std::optional<std::string> start, std::optional<bool> drive) {
         auto file = std::make_shared<const ModelFile>(model.built());
         const Model& built = file->model;
         RunupRequest request;
@@ -153,8 +153,9 @@ void bind_runup(py::module_& m) {
         request.static_loads = static_loads;
         request.gravity = gravity;
         request.start = std::move(start);
+        request.drive = drive;
         PyRunupResult out{{}, runup_settings(built, file->spec.runup, request), {}};
-        const auto [low, high] = speed_span(out.options);
+        const auto [low, high] = speed_span(built, out.options);
         out.context = result_context(file, low, high);
         std::atomic<bool> flag{false};
         out.options.stop = StopToken(flag);
@@ -174,11 +175,12 @@ void bind_runup(py::module_& m) {
       py::arg("newton_max_iter") = py::none(), py::arg("allow_unstable") = false, py::arg("jacobian") = "exact",
       py::arg("jacobian_interval") = py::none(), py::arg("blowup") = py::none(), py::arg("modes") = py::none(),
       py::arg("static_loads") = false, py::arg("gravity") = false, py::arg("start") = py::none(),
+      py::arg("drive") = py::none(),
       "A run-up, as feran runup. The speed profile is one of: speed (constant); from_, to,\n"
       "ramp_time (a ramp, then held); table [(time, speed), …] or 'TIME:SPEED,…'. Speeds as\n"
       "'80 Hz' or rad/s, times as '5 s' or s. The other keywords are the CLI's options\n"
       "(--rtol → rtol, --newton-max-iter → newton_max_iter, --static-loads → static_loads,\n"
-      "--gravity → gravity, --start → start);\n"
+      "--gravity → gravity, --start → start, --drive → drive);\n"
       "unset ones come from the model's [runup] table. A run that stops early (blow-up,\n"
       "failure) returns its samples so far with complete False; Ctrl-C raises\n"
       "feran.Interrupted with them.");

@@ -218,8 +218,12 @@ std::vector<std::string> range_warnings(const Model& model, Real low, Real high)
   return out;
 }
 
-std::pair<Real, Real> speed_span(const TransientOptions& options) {
+std::pair<Real, Real> speed_span(const Model& model, const TransientOptions& options) {
   Real low = options.profile.speed(0.0), high = low;
+  if (options.driven && model.drive) {
+    const Real top = model.drive->motor.free_speed();
+    return {std::min(low, top), std::max(low, top)};
+  }
   for (const auto& [t, w] : options.profile.points())
     if (t <= options.duration) low = std::min(low, w), high = std::max(high, w);
   low = std::min(low, options.profile.speed(options.duration));
@@ -466,6 +470,9 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
   else if (start == "equilibrium") options.start = RunupStart::equilibrium;
   else if (start == "steady") options.start = RunupStart::steady_state;
   else throw Error(fmt::format("--start must be rest, equilibrium or steady, got '{}'", start));
+  options.driven = request.drive.value_or(file.drive.value_or(false));
+  if (options.driven && !model.drive)
+    throw Error("runup: a torque-driven run needs a [drive] table in the model (its motor and load torques)");
   options.probes = !request.probes.empty() ? request.probes
                    : !file.probes.empty()  ? node_indices(model, file.probes)
                                            : default_probes(model);

@@ -311,6 +311,16 @@ std::vector<Index> FluidFilmBearing::nodes() const { return detail::lateral_node
 
 std::vector<Index> FluidFilmBearing::dofs() const { return detail::lateral_dofs(node_a, node_b); }
 
+Real FluidFilmBearing::drag_torque(const MotionState& s, const Vector& x, const Vector& v) const {
+  const bool housing = node_b.has_value();
+  const Eigen::Vector2d e = detail::relative(x, housing);
+  const FilmForce F = film_force(geometry, theory, s.speed, e, detail::relative(v, housing), grid);
+  const Real R = geometry.diameter / 2, eps = e.norm() / geometry.clearance;
+  const Real couette =
+      2 * pi * geometry.viscosity * R * R * R * geometry.length * s.speed / (geometry.clearance * std::sqrt(1 - eps * eps));
+  return couette + 0.5 * (e(0) * F.f(1) - e(1) * F.f(0));
+}
+
 NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& x, const Vector& v) const {
   const bool housing = node_b.has_value();
   const FilmForce F = film_force(geometry, theory, s.speed, detail::relative(x, housing), detail::relative(v, housing), grid);

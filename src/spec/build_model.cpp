@@ -129,6 +129,7 @@ class Builder {
   void build_unbalances();
   void build_forces();
   void build_static_loads();
+  void build_drive();
   void check_sweep(std::optional<Real> start, std::optional<Real> stop,
                    const std::string& table) const;
   /// The nodes of a list of references at @p path (key @p key), none twice.
@@ -1239,6 +1240,60 @@ void Builder::check_structure(BuildInfo* info) {
   }
 }
 
+void Builder::build_drive() {
+  const DriveSpec& s = spec_.drive;
+  if (s.motor.empty()) {
+    if (!(s == DriveSpec{}))
+      fail("drive", missing_key("motor", "[drive]", "\"dc\", \"induction\" or \"table\""));
+    return;
+  }
+  check_bounds(s, "drive");
+  const auto at = [](std::string_view key) { return child("drive", key); };
+  Drive d;
+  d.inertia = s.inertia;
+  d.friction_torque = s.friction_torque;
+  d.viscous_torque = s.viscous_torque;
+  d.quadratic_torque = s.quadratic_torque;
+  // The keys of each law, and those that belong to another.
+  const std::vector<std::pair<std::string_view, bool>> keys = {
+      {"stall_torque", s.stall_torque.has_value()},           {"no_load_speed", s.no_load_speed.has_value()},
+      {"synchronous_speed", s.synchronous_speed.has_value()}, {"breakdown_torque", s.breakdown_torque.has_value()},
+      {"breakdown_slip", s.breakdown_slip.has_value()},       {"torque", s.torque.has_value()}};
+  const auto own = [&](std::string_view key) {
+    if (s.motor == "dc") return key == "stall_torque" || key == "no_load_speed";
+    if (s.motor == "induction") return key == "synchronous_speed" || key == "breakdown_torque" || key == "breakdown_slip";
+    return key == "torque";
+  };
+  for (const auto& [key, given] : keys) {
+    if (given && !own(key))
+      fail(at(key), fmt::format("'{}' is not a key of motor = \"{}\"", key, s.motor));
+    if (!given && own(key))
+      fail("drive", missing_key(key, "[drive]", fmt::format("a value of motor = \"{}\"", s.motor)));
+  }
+  if (s.motor == "dc") {
+    d.motor.kind = MotorLaw::Kind::dc;
+    d.motor.stall_torque = *s.stall_torque;
+    d.motor.no_load_speed = *s.no_load_speed;
+  } else if (s.motor == "induction") {
+    d.motor.kind = MotorLaw::Kind::induction;
+    if (!(*s.breakdown_slip < 1.0))
+      fail(at("breakdown_slip"), fmt::format("'breakdown_slip' must be below 1 (a slip of 1 is standstill), got {}",
+                                             *s.breakdown_slip));
+    d.motor.synchronous_speed = *s.synchronous_speed;
+    d.motor.breakdown_torque = *s.breakdown_torque;
+    d.motor.breakdown_slip = *s.breakdown_slip;
+  } else {
+    d.motor.kind = MotorLaw::Kind::table;
+    const auto* table = std::get_if<SpeedCoefficient::Table>(&s.torque->law());
+    if (table == nullptr || table->speeds.size() < 2)
+      fail(at("torque"), "'torque' of motor = \"table\" must be a table law of at least two points, e.g. "
+                         "{ law = \"table\", speeds = [0, \"50 Hz\"], values = [\"20 N*m\", 0] }");
+    check_coefficient(*s.torque, "drive", "torque", Quantity::moment, false);
+    for (std::size_t i = 0; i < table->speeds.size(); ++i) d.motor.table.emplace_back(table->speeds[i], table->values[i]);
+  }
+  model_.drive = d;
+}
+
 Model Builder::build(BuildInfo* info) {
   model_.name = spec_.title;
   build_options();
@@ -1258,6 +1313,7 @@ Model Builder::build(BuildInfo* info) {
   build_unbalances();
   build_forces();
   build_static_loads();
+  build_drive();
   check_analysis_tables();
   build_gravity();
   check_structure(info);

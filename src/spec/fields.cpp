@@ -23,6 +23,7 @@ constexpr std::string_view force_kinds[] = {"fixed", "rotating_force", "rotating
 constexpr std::string_view force_directions[] = {"x", "y", "z", "rx", "ry", "rz"};
 constexpr std::string_view gravity_directions[] = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
 constexpr std::string_view runup_starts[] = {"rest", "equilibrium", "steady"};
+constexpr std::string_view motor_kinds[] = {"dc", "induction", "table"};
 constexpr std::string_view station_outputs[] = {"all", "summary", "none"};
 constexpr std::string_view film_theories[] = {"short", "long", "finite"};
 constexpr std::string_view cavitation_conditions[] = {"reynolds", "gumbel"};
@@ -577,6 +578,10 @@ const FieldTable<RunupSpec>& fields_of<RunupSpec>() {
       {.key = "start", .kind = K::choice, .member = &S::start,
        .doc = "the state at t = 0: at rest; at the static equilibrium at the first speed under the run's gravity and static loads (with journal bearings the first speed must be above 0); or steady, that equilibrium plus the steady unbalance response at the first speed (linearised about it)",
        .choices = runup_starts, .default_text = "`\"rest\"`"},
+      {.key = "drive", .kind = K::flag, .member = &S::drive,
+       .doc = "torque-driven: the speed is a state, driven by the model's `[drive]` from the profile's first speed "
+              "(`speed` or `from`; the rest of the profile is not used; needs `duration`)",
+       .default_text = "`false`"},
   };
   return table;
 }
@@ -584,6 +589,45 @@ const FieldTable<RunupSpec>& fields_of<RunupSpec>() {
 namespace {
 constexpr std::string_view unbalance_sources[] = {"4W/N", "model"};
 }  // namespace
+
+template <>
+const FieldTable<DriveSpec>& fields_of<DriveSpec>() {
+  using S = DriveSpec;
+  static const FieldTable<S> table = {
+      {.key = "motor", .kind = K::choice, .member = &S::motor,
+       .doc = "the motor's torque law (below)", .choices = motor_kinds, .default_text = "required in `[drive]`"},
+      {.key = "inertia", .kind = K::quantity, .member = &S::inertia,
+       .doc = "polar inertia the drive adds to the rotor's (motor rotor, couplings)", .quantity = Q::inertia,
+       .bound = non_negative},
+      {.key = "stall_torque", .kind = K::quantity, .member = &S::stall_torque,
+       .doc = "`\"dc\"`: T_s, the torque at rest", .quantity = Q::moment, .bound = positive,
+       .default_text = "required for `\"dc\"`"},
+      {.key = "no_load_speed", .kind = K::quantity, .member = &S::no_load_speed,
+       .doc = "`\"dc\"`: Ω₀, where the torque falls to 0", .quantity = Q::speed, .bound = positive, .unit = "Hz",
+       .default_text = "required for `\"dc\"`"},
+      {.key = "synchronous_speed", .kind = K::quantity, .member = &S::synchronous_speed,
+       .doc = "`\"induction\"`: Ω_s, the field's speed (2π·f_supply/pole pairs)", .quantity = Q::speed,
+       .bound = positive, .unit = "Hz", .default_text = "required for `\"induction\"`"},
+      {.key = "breakdown_torque", .kind = K::quantity, .member = &S::breakdown_torque,
+       .doc = "`\"induction\"`: T_b, the largest torque", .quantity = Q::moment, .bound = positive,
+       .default_text = "required for `\"induction\"`"},
+      {.key = "breakdown_slip", .kind = K::number, .member = &S::breakdown_slip,
+       .doc = "`\"induction\"`: s_b, the slip of the breakdown torque, 0 < s_b < 1", .bound = positive,
+       .default_text = "required for `\"induction\"`"},
+      {.key = "torque", .kind = K::coefficient, .member = &S::torque,
+       .doc = "`\"table\"`: the motor torque over speed, a `table` law", .quantity = Q::moment,
+       .default_text = "required for `\"table\"`"},
+      {.key = "friction_torque", .kind = K::quantity, .member = &S::friction_torque,
+       .doc = "T_f: a constant torque resisting the rotation (seals, brushes)", .quantity = Q::moment,
+       .bound = non_negative},
+      {.key = "viscous_torque", .kind = K::quantity, .member = &S::viscous_torque,
+       .doc = "c₁: a resisting torque c₁Ω (windage, viscous drag)", .quantity = Q::rotational_damping,
+       .bound = non_negative},
+      {.key = "quadratic_torque", .kind = K::number, .member = &S::quadratic_torque,
+       .doc = "c₂ [N m s²/rad²]: a resisting torque c₂Ω² (fan, pump)", .bound = non_negative},
+  };
+  return table;
+}
 
 template <>
 const FieldTable<Api684Spec>& fields_of<Api684Spec>() {

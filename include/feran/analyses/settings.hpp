@@ -153,6 +153,8 @@ struct RunupRequest {
   bool gravity = false;                    ///< true (Model::gravity), or else [runup] gravity
   /// "rest", "equilibrium" or "steady"; default [runup] start, else "rest".
   std::optional<std::string> start;
+  /// Torque-driven by the model's [drive]; default [runup] drive, else false.
+  std::optional<bool> drive;
 };
 
 /// Throws Error for two profile forms, an incomplete ramp, no profile anywhere, no
@@ -198,8 +200,9 @@ void check_analysis_tables(const ModelSpec& spec);
 /// 150 Hz, where its last value is held".
 std::vector<std::string> range_warnings(const Model& model, Real low, Real high);
 
-/// The speeds a run-up visits: the lowest and highest of its profile up to its end.
-std::pair<Real, Real> speed_span(const TransientOptions& options);
+/// The speeds a run-up visits: the lowest and highest of its profile up to its end; for
+/// a torque-driven run, from its first speed to its motor's free speed.
+std::pair<Real, Real> speed_span(const Model& model, const TransientOptions& options);
 
 /// The spring–damper element labelled @p name; throws Error when there is none.
 Index spring_element(const Model& model, const std::string& name);

@@ -98,6 +98,10 @@ struct FluidFilmBearing {
   /// It carries the rotor (the ability of model/force.hpp), only while it turns.
   bool supports() const { return true; }
   bool needs_speed() const { return true; }
+  /// The film's friction torque on the journal [N m], resisting its rotation:
+  /// 2πμR³LΩ/(c√(1 − ε²)) + ½(e × F)_x (Couette shear over the whole film, and the
+  /// pressure's share; docs/theory/fluid_film_bearings.md).
+  Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const;
 };
 
 }  // namespace feran

@@ -26,6 +26,10 @@
 ///   needs_speed() (with supports())                            it carries load only while
 ///                                                              the rotor turns (an oil film):
 ///                                                              analyses refuse speed 0
+///   drag_torque(const MotionState&, x, v) (with force())       it resists the rotation with a
+///                                                              torque [N m] (an oil film's
+///                                                              friction): torque-driven
+///                                                              run-ups load the drive with it
 ///
 /// Vectors are over all unconstrained DOFs (global_dof order); add_* add into them.
 /// To add a force: a type in forces/ with kind(), nodes() and its abilities, its
@@ -102,6 +106,12 @@ concept NeedsSpeed = requires(const F& f) {
   { f.needs_speed() } -> std::same_as<bool>;
 };
 
+/// A force that resists the shaft's rotation with a torque (an oil film's friction).
+template <class F>
+concept HasDragTorque = requires(const F& f, const MotionState& s, const Vector& x) {
+  { f.drag_torque(s, x, x) } -> std::same_as<Real>;
+};
+
 /// A type-erased force with value semantics (copies are deep).
 class Force {
  public:
@@ -144,6 +154,12 @@ class Force {
   bool supports() const { return self_->supports(); }
   /// True for a support that carries load only while the rotor turns (an oil film).
   bool needs_speed() const { return self_->needs_speed(); }
+  bool has_drag_torque() const { return self_->has_drag_torque(); }
+  /// The torque [N m] with which it resists the rotation at local displacements @p x
+  /// and velocities @p v (on dofs()); 0 without the ability.
+  Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const {
+    return self_->drag_torque(s, x, v);
+  }
   /// The global DOFs of a nonlinear force (empty for others).
   std::vector<Index> dofs() const { return self_->dofs(); }
   /// Force and Jacobian of a nonlinear force at local displacements @p x and
@@ -175,6 +191,8 @@ class Force {
     virtual bool is_nonlinear() const = 0;
     virtual bool supports() const = 0;
     virtual bool needs_speed() const = 0;
+    virtual bool has_drag_torque() const = 0;
+    virtual Real drag_torque(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual std::vector<Index> dofs() const = 0;
     virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual const std::type_info& type() const = 0;
@@ -206,6 +224,11 @@ class Force {
     bool needs_speed() const override {
       if constexpr (NeedsSpeed<F>) return value.needs_speed();
       else return false;
+    }
+    bool has_drag_torque() const override { return HasDragTorque<F>; }
+    Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const override {
+      if constexpr (HasDragTorque<F>) return value.drag_torque(s, x, v);
+      else return 0.0;
     }
     std::vector<Index> dofs() const override {
       if constexpr (HasNonlinearForce<F>) return value.dofs();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <feran/core/types.hpp>
+#include <feran/model/drive.hpp>
 #include <feran/model/element.hpp>
 #include <feran/model/force.hpp>
 #include <feran/model/material.hpp>
@@ -60,6 +61,8 @@ struct Model {
   /// ability supports(): fluid-film bearings) carry in the static equilibrium about
   /// which the linear analyses linearise them (analyses/static/equilibrium.hpp).
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  /// The motor and load torques of torque-driven run-ups ([drive]); empty: none.
+  std::optional<Drive> drive;
   /// Rigid-body motions that may remain free (singular stiffness) without an error.
   std::vector<FreeMotion> free_motions;
 

@@ -92,7 +92,7 @@ using FieldTable = std::vector<Field<S>>;
 /// The field table of spec type S. Defined for ModelSpec (top-level keys), OptionsSpec,
 /// MaterialSpec, ShaftSpec, SectionSpec, NodeSpec, RigidBodySpec, SpringSpec,
 /// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RollingBearingSpec, RigidLinkSpec, FixedSpec, UnbalanceSpec, ForceSpec,
-/// StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec and Api684Spec.
+/// StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec, Api684Spec and DriveSpec.
 template <class S>
 const FieldTable<S>& fields_of();
 
@@ -148,7 +148,7 @@ void visit_tables(Spec& spec, F&& f) {
   f("rigid_links", array_of_tables, "nodes moving together as one rigid body", spec.rigid_links);
   f("fixed", array_of_tables, "DOFs held at zero", spec.fixed);
   f("unbalances", array_of_tables, "point unbalances", spec.unbalances);
-  f("forces", array_of_tables, "harmonic forces and moments (steady-state response)",
+  f("forces", array_of_tables, "harmonic forces and moments, or forces given in time (run-ups)",
     spec.forces);
   f("static_loads", array_of_tables, "constant forces and moments (static analysis)",
     spec.static_loads);
@@ -158,6 +158,7 @@ void visit_tables(Spec& spec, F&& f) {
   f("static", table, "gravity and defaults for a static analysis", spec.static_);
   f("runup", table, "speed profile and defaults for a run-up (transient) analysis", spec.runup);
   f("api684", table, "operating range and settings of the API 617 / API 684 analyses", spec.api684);
+  f("drive", table, "the motor and load torques of torque-driven run-ups", spec.drive);
 }
 
 /// Calls f(key, doc, children) for the arrays of sub-tables of an entry of spec type

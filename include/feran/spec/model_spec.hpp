@@ -264,6 +264,7 @@ struct RunupSpec {
   std::optional<bool> gravity;       ///< apply [static] gravity as a constant force
   std::optional<bool> static_loads;  ///< apply the [[static_loads]] as constant forces
   std::optional<std::string> start;  ///< "rest", "equilibrium" or "steady"
+  std::optional<bool> drive;         ///< torque-driven by [drive] from the profile's first speed
   bool operator==(const RunupSpec&) const = default;
 };
 
@@ -281,6 +282,22 @@ struct Api684Spec {
   std::optional<NodeRef> stability_node;
   std::optional<Real> anticipated_q;         ///< [N/m]
   bool operator==(const Api684Spec&) const = default;
+};
+
+/// [drive]: the motor and load torques of torque-driven run-ups; no motor: none.
+struct DriveSpec {
+  std::string motor;                     ///< "dc", "induction" or "table"; empty: no drive
+  Real inertia = 0.0;                    ///< [kg m²]
+  std::optional<Real> stall_torque;      ///< [N m] (dc)
+  std::optional<Real> no_load_speed;     ///< [rad/s] (dc)
+  std::optional<Real> synchronous_speed; ///< [rad/s] (induction)
+  std::optional<Real> breakdown_torque;  ///< [N m] (induction)
+  std::optional<Real> breakdown_slip;    ///< (induction)
+  std::optional<SpeedCoefficient> torque;  ///< a table over speed [N m] (table)
+  Real friction_torque = 0.0;            ///< [N m]
+  Real viscous_torque = 0.0;             ///< [N m s/rad]
+  Real quadratic_torque = 0.0;           ///< [N m s²/rad²]
+  bool operator==(const DriveSpec&) const = default;
 };
 
 /// A whole model file.
@@ -307,6 +324,7 @@ struct ModelSpec {
   StaticSpec static_;  ///< the [static] table ("static" is a C++ keyword)
   RunupSpec runup;
   Api684Spec api684;
+  DriveSpec drive;
   bool operator==(const ModelSpec&) const = default;
 };
 

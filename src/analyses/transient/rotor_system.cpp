@@ -7,10 +7,11 @@
 #include <fmt/format.h>
 
 #include <feran/core/error.hpp>
+#include <feran/forces/unbalance.hpp>
 
 namespace feran {
 
-RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load)
+RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load, const Drive* drive)
     : model_(model),
       assembler_(model),
       profile_(std::move(profile)),
@@ -38,7 +39,88 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector consta
     forces_.push_back(f);
   }
   f_full_.resize(model.n_dofs());
+  n_ = M_.rows();
   update_speed(profile_.speed(0.0));
+  if (drive != nullptr) set_up_drive(*drive);
+}
+
+void RotorSystem::set_up_drive(const Drive& drive) {
+  driven_ = true;
+  drive_ = drive;
+  const SparseMatrix Tt = assembler_.dof_map().transformation().transpose();
+  // The unbalances' coupling: their force is Ω²·c(φ) + Ω'·s(φ), each a combination of
+  // its values at φ = 0 and φ = 90° (the force turns with e^{iφ}).
+  Real unbalance_inertia = 0.0;
+  const auto unbalance_part = [&](Real speed, Real acceleration, Real angle) {
+    Vector f = Vector::Zero(model_.n_dofs());
+    for (const Force& force : model_.forces)
+      if (const Unbalance* u = force.target<Unbalance>()) u->add_transient({0.0, speed, acceleration, angle}, f);
+    return Vector(Tt * f);
+  };
+  for (const Force& force : model_.forces)
+    if (const Unbalance* u = force.target<Unbalance>()) unbalance_inertia += u->mass * u->radius * u->radius;
+  S0_ = unbalance_part(0.0, 1.0, 0.0);
+  S90_ = unbalance_part(0.0, 1.0, pi / 2);
+  C0_ = unbalance_part(1.0, 0.0, 0.0);
+  C90_ = unbalance_part(1.0, 0.0, pi / 2);
+  Z0_ = mass_.solve(S0_);
+  Z90_ = mass_.solve(S90_);
+  // The rotating parts' polar inertia: each element's mass on the torsion DOFs (rx) of
+  // rotating nodes, summed (1ᵀM_rx·1: a rigid rotation of them all).
+  Real rotor_inertia = 0.0;
+  for (const Element& e : model_.elements) {
+    const LocalMatrices lm = e.local_matrices(OperatingPoint{});
+    if (lm.M.size() == 0) continue;
+    std::vector<Index> rx;
+    for (std::size_t i = 0; i < lm.dofs.size(); ++i) {
+      const Index node = lm.dofs[i] / dofs_per_node;
+      if (lm.dofs[i] % dofs_per_node == static_cast<Index>(Dof::rx) && model_.nodes[static_cast<std::size_t>(node)].rotating)
+        rx.push_back(static_cast<Index>(i));
+    }
+    for (const Index a : rx)
+      for (const Index b : rx) rotor_inertia += lm.M(a, b);
+  }
+  inertia_ = drive.inertia + rotor_inertia + unbalance_inertia;
+  if (!(inertia_ > 0))
+    throw Error("runup: a driven run needs a polar inertia to accelerate: give the drive an 'inertia' or the rotor "
+                "rotating parts with mass");
+  for (std::size_t i = 0; i < forces_.size(); ++i)
+    if (forces_[i].has_drag_torque()) drag_.push_back(i);
+  // The speed column of the tangent: rows where G, K_i or the unbalances act.
+  std::vector<bool> row(static_cast<std::size_t>(n_), false);
+  for (const SparseMatrix* m : {&G_, &Ki_})
+    for (Index k = 0; k < m->outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(*m, k); it; ++it) row[static_cast<std::size_t>(it.row())] = true;
+  for (Index i = 0; i < n_; ++i)
+    if (C0_(i) != 0 || C90_(i) != 0) row[static_cast<std::size_t>(i)] = true;
+  for (Index i = 0; i < n_; ++i)
+    if (row[static_cast<std::size_t>(i)]) border_rows_.push_back(i);
+  std::vector<Eigen::Triplet<Real>> trip;
+  for (Index k = 0; k < M_.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(M_, k); it; ++it) trip.emplace_back(it.row(), it.col(), it.value());
+  trip.emplace_back(n_, n_, inertia_);
+  mass_ext_.resize(n_ + 1, n_ + 1);
+  mass_ext_.setFromTriplets(trip.begin(), trip.end());
+}
+
+void RotorSystem::mass_times(const Vector& u, Vector& y) const {
+  if (!driven_) {
+    y.noalias() = M_ * u;
+    return;
+  }
+  y.resize(n_ + 1);
+  y.head(n_).noalias() = M_ * u.head(n_);
+  y(n_) = inertia_ * u(n_);
+}
+
+void RotorSystem::solve_mass(const Vector& r, Vector& a) {
+  if (!driven_) {
+    a = mass_.solve(r);
+    return;
+  }
+  a.resize(n_ + 1);
+  a.head(n_) = mass_.solve(Vector(r.head(n_)));
+  a(n_) = r(n_) / inertia_;
 }
 
 void RotorSystem::update_speed(Real speed) {
@@ -47,17 +129,42 @@ void RotorSystem::update_speed(Real speed) {
   cached_speed_ = speed;
 }
 
-void RotorSystem::external_forces(Real t, Vector& f) const {
+void RotorSystem::external_forces(const MotionState& state, Vector& f) const {
   f.setZero();
-  const MotionState state{t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)};
   for (const Force& force : model_.forces) force.add_transient(state, f);
   if (constant_load_.size() > 0) f += constant_load_;
 }
 
 void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
-  const Real W = profile_.speed(t);
+  if (!driven_) {
+    const MotionState state{t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)};
+    model_rhs(state, state, x, v, r);
+    return;
+  }
+  const Real W = v(n_), phi = x(n_);
+  xq_ = x.head(n_);
+  vq_ = v.head(n_);
+  // The unbalances' Ω' part is the border below: the external forces see Ω' = 0.
+  const MotionState nonlinear{t, W, acceleration_, phi};
+  model_rhs({t, W, 0.0, phi}, nonlinear, xq_, vq_, rq_);
+  Real torque = drive_.net_torque(W);
+  for (const std::size_t i : drag_)
+    torque -= forces_[i].drag_torque(nonlinear, selectors_[i] * xq_, selectors_[i] * vq_);
+  const Real c = std::cos(phi), s = std::sin(phi);
+  // (J − sᵀz)·Ω' = T + zᵀr_q, then M q'' = r_q + s·Ω'.
+  const Real szz = c * c * S0_.dot(Z0_) + c * s * (S0_.dot(Z90_) + S90_.dot(Z0_)) + s * s * S90_.dot(Z90_);
+  const Real a = (torque + c * Z0_.dot(rq_) + s * Z90_.dot(rq_)) / (inertia_ - szz);
+  acceleration_ = a;
+  r.resize(n_ + 1);
+  r.head(n_) = rq_ + (a * c) * S0_ + (a * s) * S90_;
+  r(n_) = inertia_ * a;
+}
+
+void RotorSystem::model_rhs(const MotionState& external, const MotionState& nonlinear, const Vector& x,
+                            const Vector& v, Vector& r) {
+  const Real W = external.speed;
   update_speed(W);
-  external_forces(t, f_full_);
+  external_forces(external, f_full_);
   // Products accumulate in place (noalias): no temporaries in the step loop.
   r.noalias() = assembler_.dof_map().transformation().transpose() * f_full_;
   r.noalias() -= K_ * x;
@@ -69,8 +176,7 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
     r.noalias() -= variable_.C * v;
     r.noalias() -= variable_.K * x;
   }
-  const MotionState state{t, W, profile_.acceleration(t), profile_.angle(t)};
-  for (std::size_t i = 0; i < forces_.size(); ++i) r += selectors_[i].transpose() * evaluate(i, state, x, v).f;
+  for (std::size_t i = 0; i < forces_.size(); ++i) r += selectors_[i].transpose() * evaluate(i, nonlinear, x, v).f;
 }
 
 NonlinearForceValue RotorSystem::evaluate(std::size_t i, const MotionState& state, const Vector& x,
@@ -87,7 +193,36 @@ NonlinearForceValue RotorSystem::evaluate(std::size_t i, const MotionState& stat
 }
 
 void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) {
-  const Real W = profile_.speed(t);
+  if (!driven_) {
+    model_jacobian({t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)}, x, v, exact);
+    return;
+  }
+  const Real W = v(n_), phi = x(n_);
+  xq_ = x.head(n_);
+  vq_ = v.head(n_);
+  model_jacobian({t, W, acceleration_, phi}, xq_, vq_, exact);
+  // Bordered by the speed: −∂r_q/∂Ω = G q' + K_i q − 2Ω c(φ) (the speed-dependent
+  // coefficients' and the forces' own dependence on Ω left out: an approximation the
+  // W-methods and Newton's iteration accept), and −∂T/∂Ω on the diagonal.
+  const Vector column = G_ * vq_ + Ki_ * xq_ - (2 * W) * (std::cos(phi) * C0_ + std::sin(phi) * C90_);
+  std::vector<Eigen::Triplet<Real>> trip;
+  const auto extend = [&](SparseMatrix& m, bool with_border) {
+    trip.clear();
+    for (Index k = 0; k < m.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(m, k); it; ++it) trip.emplace_back(it.row(), it.col(), it.value());
+    if (with_border) {
+      for (const Index i : border_rows_) trip.emplace_back(i, n_, column(i));
+      trip.emplace_back(n_, n_, -drive_.net_slope(W));
+    }
+    m.resize(n_ + 1, n_ + 1);  // (resize empties m; its entries are in trip)
+    m.setFromTriplets(trip.begin(), trip.end());
+  };
+  extend(DT_, true);
+  extend(KT_, false);
+}
+
+void RotorSystem::model_jacobian(const MotionState& state, const Vector& x, const Vector& v, bool exact) {
+  const Real W = state.speed;
   update_speed(W);
   jacobian_speed_ = W;
   DT_ = C_ + Ci_ + W * G_;
@@ -96,7 +231,6 @@ void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool ex
     DT_ += variable_.C;
     KT_ += variable_.K;
   }
-  const MotionState state{t, W, profile_.acceleration(t), profile_.angle(t)};
   for (std::size_t i = 0; i < forces_.size(); ++i) {
     const SparseMatrix& S = selectors_[i];
     NonlinearForceValue f = evaluate(i, state, x, v);
@@ -107,7 +241,7 @@ void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool ex
 }
 
 bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
-  SparseMatrix S = c_a * M_ + c_v * DT_ + c_x * KT_;
+  SparseMatrix S = c_a * (driven_ ? mass_ext_ : M_) + c_v * DT_ + c_x * KT_;
   S.makeCompressed();
   if (S.nonZeros() != pattern_nonzeros_) {
     lu_.analyzePattern(S);
@@ -124,7 +258,7 @@ Real RotorSystem::highest_frequency() {
   SparseMatrix K = K_;
   if (assembler_.speed_dependent()) K += variable_.K;
   const SparseMatrix Ks = 0.5 * (K + SparseMatrix(K.transpose()));
-  Vector u = Vector::LinSpaced(size(), 1.0, 2.0);
+  Vector u = Vector::LinSpaced(n_, 1.0, 2.0);
   Real lambda = 0.0;
   for (int it = 0; it < 60; ++it) {
     Vector w = mass_.solve(Ks * u);

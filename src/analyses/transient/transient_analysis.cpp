@@ -112,8 +112,12 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   const Vector constant_load = options.gravity.squaredNorm() > 0 || options.static_loads
                                   ? static_load_vector(model, options.gravity, options.static_loads)
                                   : Vector();
+  if (options.driven && !model.drive)
+    throw Error("runup: a torque-driven run needs the model's [drive] (its motor and load torques)");
+  if (options.driven && options.reduced_modes > 0)
+    throw Error("runup: a torque-driven run integrates the full model: leave out reduced_modes");
   const auto [x_start, v_start] = start_state(model, options);
-  RotorSystem rotor(model, options.profile, constant_load);
+  RotorSystem rotor(model, options.profile, constant_load, options.driven ? &*model.drive : nullptr);
   std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
   result.info.method = SolverMethod::time_integration;
   const DofMap& dofs = rotor.dof_map();
@@ -136,12 +140,18 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     return out;
   };
 
-  // Envelope bins over the speeds the profile visits within the run.
+  // Envelope bins over the speeds the profile visits within the run (a driven run:
+  // from its first speed to the motor's free speed).
   Real w_lo = options.profile.speed(0.0), w_hi = w_lo;
-  for (const auto& [t, w] : options.profile.points())
-    if (t <= options.duration) w_lo = std::min(w_lo, w), w_hi = std::max(w_hi, w);
-  w_lo = std::min(w_lo, options.profile.speed(options.duration));
-  w_hi = std::max(w_hi, options.profile.speed(options.duration));
+  if (options.driven) {
+    w_lo = std::min(w_lo, model.drive->motor.free_speed());
+    w_hi = std::max(w_hi, model.drive->motor.free_speed());
+  } else {
+    for (const auto& [t, w] : options.profile.points())
+      if (t <= options.duration) w_lo = std::min(w_lo, w), w_hi = std::max(w_hi, w);
+    w_lo = std::min(w_lo, options.profile.speed(options.duration));
+    w_hi = std::max(w_hi, options.profile.speed(options.duration));
+  }
   const Index bins = w_hi > w_lo ? std::max<Index>(options.envelope_bins, 1) : 1;
   for (std::size_t p = 0; p < options.probes.size(); ++p) {
     Envelope e;
@@ -151,7 +161,7 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   }
   auto update_envelopes = [&](const State& s) {
     const Vector x = rotor.expand(model_coordinates(s.x, x_model));
-    const Real w = options.profile.speed(s.t);
+    const Real w = rotor.speed(s.t, s.v);
     const Index b = bins == 1 ? 0 : std::clamp<Index>(static_cast<Index>((w - w_lo) / (w_hi - w_lo) * static_cast<Real>(bins)), 0, bins - 1);
     for (std::size_t p = 0; p < options.probes.size(); ++p) {
       const Real r = std::hypot(x(global_dof(options.probes[p], Dof::v)), x(global_dof(options.probes[p], Dof::w)));
@@ -166,7 +176,7 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   auto emit = [&](Real t, const Vector& x, const Vector& v) {
     TransientSample sample;
     sample.t = t;
-    sample.speed = options.profile.speed(t);
+    sample.speed = rotor.speed(t, v);
     x_full = rotor.expand(model_coordinates(x, x_model));
     v_full = rotor.expand(model_coordinates(v, v_model));
     for (Index node : options.probes) {
@@ -192,12 +202,13 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     if (options.keep_samples) result.samples.push_back(std::move(sample));
   };
 
-  const Index n_model = rotor.size();
-  Vector x0 = Vector::Zero(n_model), v0 = Vector::Zero(n_model);
+  const Index n_model = rotor.model_size();
+  Vector x0 = Vector::Zero(rotor.size()), v0 = Vector::Zero(rotor.size());
   for (Index i = 0; i < n_model; ++i) {
     if (x_start.size() == model.n_dofs()) x0(i) = x_start(dofs.full_dof(i));
     if (v_start.size() == model.n_dofs()) v0(i) = v_start(dofs.full_dof(i));
   }
+  if (rotor.driven()) v0(n_model) = options.profile.speed(0.0);  // the angle starts at 0
   State s{0.0, Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
   if (projected) {
     // The M-orthogonal projection onto the basis (ΦᵀMΦ = I): η = Φᵀ·M·x.
@@ -227,13 +238,13 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   auto fail = [&](const std::string& why) {
     result.info.fail(SolverStatus::numerical_failure,
                      fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
-                                 rad_to_hz(options.profile.speed(s.t)), why));
+                                 rad_to_hz(rotor.speed(s.t, s.v)), why));
   };
   while (s.t < t_end * (1 - 1e-12)) {
     if (options.stop.requested()) {
       result.info.fail(SolverStatus::interrupted,
                        fmt::format("stopped on request at t = {:.6g} s (speed {:.4g} Hz)", s.t,
-                                   rad_to_hz(options.profile.speed(s.t))));
+                                   rad_to_hz(rotor.speed(s.t, s.v))));
       break;
     }
     const Real h = std::min(dt, t_end - s.t);

@@ -20,16 +20,32 @@ namespace feran {
 /// unbalances, m·r·(Ω² − jΩ')·e^{j(φ + phase)} with φ = ∫Ω dt (plus their lever
 /// moments), the model's harmonic forces at the angle φ, and optionally a constant
 /// load (gravity, the static loads). Speed-dependent coefficients follow Ω(t).
+///
+/// Driven by a Drive instead, the rotation angle φ and the speed Ω = φ' are one more
+/// unknown (the last): (J_drive + J_rotor + Σm r²)·Ω' − sᵀq'' = T(Ω) − T_resisting(Ω) −
+/// Σ T_bearings, with s(φ) = ∂f_unbalance/∂Ω' the unbalances' coupling (exact for a
+/// point mass: the kinetic energy of m at the eccentricity r), and the lateral
+/// equations gain s·Ω'. The coupled accelerations are found exactly in rhs() by a
+/// bordered solve with M (z = M⁻¹s is a combination of two fixed vectors), so that the
+/// integrators see the constant mass diag(M, J) (docs/theory/time_integration.md).
 class RotorSystem final : public SecondOrderSystem {
  public:
   /// @p model must outlive the system. @p constant_load: over all unconstrained DOFs
-  /// (global_dof order), or empty.
-  RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load = {});
+  /// (global_dof order), or empty. With @p drive (copied) the speed is a state and
+  /// @p profile is not used.
+  RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load = {}, const Drive* drive = nullptr);
 
-  Index size() const override { return M_.rows(); }
+  Index size() const override { return driven_ ? n_ + 1 : n_; }
+  /// The model's reduced unknowns (size() without the drive's angle).
+  Index model_size() const { return n_; }
+  bool driven() const { return driven_; }
+  /// The polar inertia the drive accelerates: drive + rotating parts + Σ m r² [kg m²].
+  Real driven_inertia() const { return inertia_; }
+  /// The speed at (t, v): the profile's, or the drive's state v(n).
+  Real speed(Real t, const Vector& v) const { return driven_ ? v(n_) : profile_.speed(t); }
   void rhs(Real t, const Vector& x, const Vector& v, Vector& r) override;
-  void mass_times(const Vector& u, Vector& y) const override { y.noalias() = M_ * u; }
-  void solve_mass(const Vector& r, Vector& a) override { a = mass_.solve(r); }
+  void mass_times(const Vector& u, Vector& y) const override;
+  void solve_mass(const Vector& r, Vector& a) override;
   void set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) override;
   void stiffness_times(const Vector& u, Vector& y) const override { y.noalias() = KT_ * u; }
   void damping_times(const Vector& u, Vector& y) const override { y.noalias() = DT_ * u; }
@@ -38,21 +54,31 @@ class RotorSystem final : public SecondOrderSystem {
   /// Without nonlinear forces the system is linear in (x, v), and the Jacobian is
   /// exact at every time whose speed equals the speed it was set at.
   bool tangent_exact_at(Real t) const override {
-    return forces_.empty() && profile_.speed(t) == jacobian_speed_;
+    return !driven_ && forces_.empty() && profile_.speed(t) == jacobian_speed_;
   }
   Real highest_frequency() override;
 
   const DofMap& dof_map() const { return assembler_.dof_map(); }
   const Assembler& assembler() const { return assembler_; }
   const SpeedProfile& profile() const { return profile_; }
-  /// Displacements (or velocities) of all unconstrained DOFs.
-  Vector expand(const Vector& reduced) const { return assembler_.dof_map().expand(reduced); }
+  /// Displacements (or velocities) of all unconstrained DOFs (of the model's part of a
+  /// driven state).
+  Vector expand(const Vector& reduced) const {
+    return assembler_.dof_map().expand(reduced.size() == n_ ? reduced : Vector(reduced.head(n_)));
+  }
 
  private:
   /// Nonlinear force @p i at the state; an Error it throws is rethrown naming the force.
   NonlinearForceValue evaluate(std::size_t i, const MotionState& state, const Vector& x, const Vector& v) const;
   void update_speed(Real speed);
-  void external_forces(Real t, Vector& f_full) const;
+  void external_forces(const MotionState& state, Vector& f_full) const;
+  /// r of the model's equations at displacements @p x, velocities @p v (model size):
+  /// external forces at @p external, nonlinear ones at @p nonlinear.
+  void model_rhs(const MotionState& external, const MotionState& nonlinear, const Vector& x, const Vector& v,
+                 Vector& r);
+  /// The model's damping and stiffness tangents at @p state into DT_, KT_.
+  void model_jacobian(const MotionState& state, const Vector& x, const Vector& v, bool exact);
+  void set_up_drive(const Drive& drive);
 
   const Model& model_;
   Assembler assembler_;
@@ -71,6 +97,18 @@ class RotorSystem final : public SecondOrderSystem {
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
   Index pattern_nonzeros_ = -1;
   Vector f_full_;
+  Index n_ = 0;  // the model's reduced unknowns
+
+  // A driven run (see the class comment).
+  bool driven_ = false;
+  Drive drive_;
+  Real inertia_ = 0.0;                     // J_drive + J_rotor + Σ m r²
+  Vector S0_, S90_, Z0_, Z90_, C0_, C90_;  // s(φ) = cos φ S0 + sin φ S90, z = M⁻¹s; c: the Ω² part
+  std::vector<std::size_t> drag_;          // indices in forces_ with a drag torque
+  std::vector<Index> border_rows_;         // rows of the speed column of the tangent
+  Real acceleration_ = 0.0;                // the last Ω' (for nonlinear forces' MotionState)
+  SparseMatrix mass_ext_;                  // diag(M, J) of the tangent
+  Vector xq_, vq_, rq_;                    // scratch of the model part
 };
 
 }  // namespace feran

@@ -36,6 +36,10 @@ struct TransientOptions {
   /// With equilibrium and steady_state, initial_displacement and initial_velocity are
   /// a disturbance added to that state.
   RunupStart start = RunupStart::rest;
+  /// Torque-driven: the speed is a state driven by the model's drive (Model::drive,
+  /// required), starting at profile.speed(0); the rest of the profile is not used.
+  /// The full model is integrated (reduced_modes must be 0).
+  bool driven = false;
   /// The run stops when a displacement exceeds this [m] or a rotation this [rad].
   Real blowup_limit = 1.0;
   Index envelope_bins = 400;               ///< speed bins of the |r| envelope
