@@ -161,9 +161,13 @@ Runner add_runup_command(CLI::App& app) {
           if (now - t0 < std::chrono::seconds(1) || now - last_print < std::chrono::milliseconds(500)) return;
           last_print = now;
           printed = true;
-          std::fprintf(stderr, "\r  %s: t = %.4g / %.4g s (%3.0f %%), speed %.4g Hz, step %.3g s   ",
-                       options.integrator.c_str(), t, options.duration, 100 * t / options.duration,
-                       rad_to_hz(options.profile.speed(t)), dt);
+          if (options.driven)
+            std::fprintf(stderr, "\r  %s: t = %.4g / %.4g s (%3.0f %%), step %.3g s   ", options.integrator.c_str(), t,
+                         options.duration, 100 * t / options.duration, dt);
+          else
+            std::fprintf(stderr, "\r  %s: t = %.4g / %.4g s (%3.0f %%), speed %.4g Hz, step %.3g s   ",
+                         options.integrator.c_str(), t, options.duration, 100 * t / options.duration,
+                         rad_to_hz(options.profile.speed(t)), dt);
         });
     if (printed) std::fputs("\n", stderr);
     // Refused before the first step (e.g. rk3 above its stability limit): a bad

@@ -248,10 +248,10 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
 std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,
                          const ResultSource& source, double wall_seconds) {
   std::string out = source_line("runup", source);
-  out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz; {} steps ({} rejected), {} "
+  out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz{}; {} steps ({} rejected), {} "
                      "factorizations, {} Newton iterations",
                      options.integrator, 0.0, result.t_end, rad_to_hz(options.profile.speed(0.0)),
-                     rad_to_hz(options.profile.speed(result.t_end)), result.steps, result.rejected,
+                     rad_to_hz(result.speed_end), options.driven ? " (torque-driven)" : "", result.steps, result.rejected,
                      result.factorizations, result.newton_iterations);
   out += wall_seconds >= 0 ? fmt::format("; {:.3g} s wall\n", wall_seconds) : std::string("\n");
   if (result.basis_size > 0)

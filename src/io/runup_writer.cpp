@@ -77,6 +77,7 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
   json profile = json::array();
   for (const auto& [t, w] : options.profile.points()) profile.push_back({{"time_s", t}, {"speed_hz", rad_to_hz(w)}});
   j["profile"] = profile;
+  j["driven"] = options.driven;
   json time = json::array(), speed = json::array();
   for (const TransientSample& s : result.samples) {
     time.push_back(s.t);

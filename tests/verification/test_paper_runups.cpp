@@ -339,5 +339,33 @@ TEST(PaperRunups, Fig10ArctanLawLowersTheRunUpPeakByAbout30Percent) {
   EXPECT_NEAR(*std::max_element(steady.radius.begin(), steady.radius.end()), 0.116e-3, 0.0005e-3);
 }
 
+
+// The centrifuge driven by a DC motor instead of the prescribed ramp
+// (model_motor.toml): T = T_s(1 − Ω/Ω₀) − c_v Ω accelerates the polar inertia J of
+// everything that turns, so the speed follows Ω_eq(1 − e^{−bt/J}) with b = T_s/Ω₀ + c_v
+// and Ω_eq = T_s/b, as long as the unbalance's drag is small. J is summed here from
+// the model's parts by hand: the rotor's J_P, the motor's own inertia, the unbalance
+// m e² and the shaft's ρ(π/32)d⁴L over its three sections. The roller bearings are
+// springs (no friction torque); the unbalance whirls 0.1-0.2 mm on damped foot
+// springs, and the torque it takes, m e r Ω² sin(phase) ≈ 1e-4 N m at most against
+// the motor's 4 N m, bounds the deviation: 1e-4 of Ω_eq (observed 1.4e-5).
+TEST(PaperRunups, CentrifugeOnADcMotorFollowsTheMotorsExponentialRise) {
+  const RunUp r = runup("02_centrifuge/model_motor.toml", 2.0);
+  const Real pi = std::acos(-1.0);
+  const Real shaft = 7850.0 * pi / 32.0 *
+                     (std::pow(0.017, 4) * 0.068 + std::pow(0.01105, 4) * 0.025 + std::pow(0.0187, 4) * 0.005);
+  const Real J = 0.0104 + 5e-4 + 0.003 * 0.08 * 0.08 + shaft;
+  const Real stall = 4.0, no_load = hz_to_rad(105.0), viscous = 2e-4;
+  const Real b = stall / no_load + viscous;
+  const Real top = stall / b;
+  Real worst = 0;
+  for (const TransientSample& s : r.result.samples)
+    worst = std::max(worst, std::abs(s.speed - top * (1 - std::exp(-b * s.t / J))) / top);
+  EXPECT_LT(worst, 1e-4);
+  // The run passes the forward-whirl resonance near 21.5 Hz on its way (Fig. 10).
+  EXPECT_GT(rad_to_hz(r.result.samples.back().speed), 60.0);
+  EXPECT_GT(band(r.result, 15, 30).max, 0.15e-3);
+}
+
 }  // namespace
 }  // namespace feran::test_paper_runups

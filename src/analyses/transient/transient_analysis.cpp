@@ -305,6 +305,7 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     if (progress && result.steps % 200 == 0) progress(s.t, rep.dt);
   }
   result.t_end = s.t;
+  result.speed_end = rotor.speed(s.t, s.v);
   return result;
 }
 

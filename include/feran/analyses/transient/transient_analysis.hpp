@@ -86,6 +86,7 @@ struct TransientResult {
   SolverInfo info;
   std::string warning;  ///< e.g. rk3 run above its stability limit on request
   Real t_end = 0;       ///< time reached [s]
+  Real speed_end = 0;   ///< speed at t_end [rad/s] (the profile's, or a torque-driven run's result)
   Index steps = 0, rejected = 0, factorizations = 0, newton_iterations = 0;
   Index basis_size = 0;  ///< columns of the modal basis of a reduced run (0: full model)
 };
