@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -50,7 +51,12 @@ ModelFile read_model(const ModelArgs& model);
 
 /// The warnings of an analysis over speeds [low, high] (rad/s) of @p model
 /// (range_warnings()), each printed once to standard error; for ResultSource.
-std::vector<std::string> speed_range_warnings(const Model& model, double low, double high);
+/// @p frequencies: the frequencies of the motion [rad/s] (empty: synchronous).
+std::vector<std::string> speed_range_warnings(const Model& model, double low, double high,
+                                              std::optional<std::pair<double, double>> frequencies = std::nullopt);
+/// The span [rad/s] of the given frequencies [Hz] (empty when there are none), for
+/// speed_range_warnings().
+std::optional<std::pair<double, double>> frequency_span_hz(const std::vector<double>& frequencies_hz);
 
 /// Options every analysis shares.
 struct OutputOptions {

@@ -3,8 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <exception>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <feran/analyses/settings.hpp>
 #include <feran/core/error.hpp>
@@ -32,8 +35,19 @@ void add_model_argument(CLI::App& cmd, ModelArgs& model) {
 
 ModelFile read_model(const ModelArgs& model) { return read_model_file(model.path, model.assignments); }
 
-std::vector<std::string> speed_range_warnings(const Model& model, double low, double high) {
-  std::vector<std::string> warnings = range_warnings(model, low, high);
+std::optional<std::pair<double, double>> frequency_span_hz(const std::vector<double>& frequencies_hz) {
+  std::optional<std::pair<double, double>> span;
+  for (const double f : frequencies_hz) {
+    if (!std::isfinite(f)) continue;
+    const double w = 2.0 * pi * std::abs(f);
+    span = span ? std::pair{std::min(span->first, w), std::max(span->second, w)} : std::pair{w, w};
+  }
+  return span;
+}
+
+std::vector<std::string> speed_range_warnings(const Model& model, double low, double high,
+                                              std::optional<std::pair<double, double>> frequencies) {
+  std::vector<std::string> warnings = range_warnings(model, low, high, frequencies);
   for (const std::string& w : warnings) std::fprintf(stderr, "feran: warning: %s\n", printable(w, true).c_str());
   return warnings;
 }

@@ -57,8 +57,11 @@ Runner add_modal_command(CLI::App& app) {
     request.shapes = args->shapes;
     const ModalSettings settings = modal_settings(file.spec.modal, request);
     const ModalResult result = run_modal(file.model, settings.speed, settings.options, file.assembler);
+    std::vector<double> frequencies;
+    for (const Mode& m : result.modes) frequencies.push_back(m.frequency_hz);
     const ResultSource source{file.path, file.title,
-                              speed_range_warnings(file.model, settings.speed, settings.speed)};
+                              speed_range_warnings(file.model, settings.speed, settings.speed,
+                                                   frequency_span_hz(frequencies))};
     if (const auto stopped = stopped_single_solve()) return *stopped;
     outputs.set_json([&] { return modal_json(result, file.model, source, args->shapes); });
     outputs.set_csv([&] { return modal_csv(result); });

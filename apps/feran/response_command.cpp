@@ -100,7 +100,11 @@ Runner add_response_command(CLI::App& app) {
     const HarmonicResult result = run_harmonic_response(model, options);
     const Real low = options.frequencies.empty() ? options.speeds.front() : options.speed;
     const Real high = options.frequencies.empty() ? options.speeds.back() : options.speed;
-    const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high)};
+    std::optional<std::pair<double, double>> frequencies;  // a speed sweep's are synchronous
+    if (!options.frequencies.empty())
+      frequencies = std::pair{*std::min_element(options.frequencies.begin(), options.frequencies.end()),
+                              *std::max_element(options.frequencies.begin(), options.frequencies.end())};
+    const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high, frequencies)};
     outputs.set_json([&] { return response_json(result, options, model, source); });
     outputs.set_csv([&] { return response_csv(result, model); });
     outputs.files.commit();

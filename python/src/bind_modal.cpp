@@ -47,6 +47,10 @@ void bind_modal(py::module_& m) {
       .def_property_readonly("complete", [](const PyModalResult& r) { return r.result.info.converged(); },
                              "whether every mode asked for was computed")
       .def_property_readonly("message", [](const PyModalResult& r) { return r.result.info.message; })
+      .def_property_readonly(
+          "frequency_iterations", [](const PyModalResult& r) { return r.result.frequency_iterations; },
+          "the most eigen solves one mode needed to settle on its own frequency (0 unless a coefficient "
+          "depends on the frequency of the motion)")
       .def_property_readonly("frequency_hz",
                              [](const PyModalResult& r) { return per_mode(r, [](const Mode& x) { return x.frequency_hz; }); })
       .def_property_readonly("damping_ratio",

@@ -198,23 +198,28 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
   return o;
 }
 
-std::vector<std::string> range_warnings(const Model& model, Real low, Real high) {
+std::vector<std::string> range_warnings(const Model& model, Real low, Real high,
+                                        std::optional<std::pair<Real, Real>> frequencies) {
   std::vector<std::string> out;
   // Round-off of the sweep's own arithmetic is not "beyond" (1e-9 relative).
   const auto beyond = [](Real x, Real edge, bool above) {
     const Real margin = 1e-9 * std::max(std::abs(x), std::abs(edge));
     return above ? x > edge + margin : x < edge - margin;
   };
-  for (const Element& e : model.elements)
-    for (const SpeedRange& r : e.speed_ranges()) {
-      const bool over = beyond(high, r.high, true), under = beyond(low, r.low, false);
-      if (!over && !under) continue;
-      out.push_back(fmt::format(
-          "'{}': {} is tabulated from {:.6g} to {:.6g} Hz; the analysis reaches {:.6g} Hz, where "
-          "its {} value is held",
-          e.label(), r.what, rad_to_hz(r.low), rad_to_hz(r.high), rad_to_hz(over ? high : low),
-          over ? "last" : "first"));
-    }
+  const auto check = [&](const Element& e, const SpeedRange& r, Real lo, Real hi, std::string_view axis) {
+    const bool over = beyond(hi, r.high, true), under = beyond(lo, r.low, false);
+    if (!over && !under) return;
+    out.push_back(fmt::format(
+        "'{}': {} is tabulated from {:.6g} to {:.6g} Hz{}; the analysis reaches {:.6g} Hz, where "
+        "its {} value is held",
+        e.label(), r.what, rad_to_hz(r.low), rad_to_hz(r.high), axis, rad_to_hz(over ? hi : lo),
+        over ? "last" : "first"));
+  };
+  const auto [f_low, f_high] = frequencies.value_or(std::pair{std::abs(low), std::abs(high)});
+  for (const Element& e : model.elements) {
+    for (const SpeedRange& r : e.speed_ranges()) check(e, r, low, high, "");
+    for (const SpeedRange& r : e.frequency_ranges()) check(e, r, f_low, f_high, " in frequency");
+  }
   return out;
 }
 

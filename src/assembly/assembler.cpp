@@ -75,7 +75,8 @@ SparseMatrix SystemMatrices::stiffness(Real speed) const { return K + speed * Ki
 Assembler::Assembler(const Model& model) : dofs_(model), rows_(transformation_rows(dofs_.transformation())) {
   FullTriplets t;
   for (const Element& e : model.elements) {
-    if (e.speed_dependent())
+    frequency_dependent_ = frequency_dependent_ || e.frequency_dependent();
+    if (e.speed_dependent() || e.frequency_dependent())
       speed_dependent_elements_.push_back(e);
     else
       add_element(e, OperatingPoint{}, t);
@@ -152,15 +153,15 @@ void Assembler::variable_values(Real speed, SystemMatrices& out) const {
   }
 }
 
-SystemMatrices Assembler::variable_at(Real speed) const {
+SystemMatrices Assembler::variable_at(Real speed, std::optional<Real> frequency) const {
   FullTriplets t;
-  for (const Element& e : speed_dependent_elements_) add_element(e, OperatingPoint{speed}, t);
+  for (const Element& e : speed_dependent_elements_) add_element(e, OperatingPoint{speed, frequency}, t);
   return reduce(t, rows_, dofs_.n_reduced());
 }
 
-SystemMatrices Assembler::at(Real speed) const {
+SystemMatrices Assembler::at(Real speed, std::optional<Real> frequency) const {
   if (speed_dependent_elements_.empty()) return constant_;
-  const SystemMatrices var = variable_at(speed);
+  const SystemMatrices var = variable_at(speed, frequency);
   SystemMatrices out = constant_;
   out.M += var.M;
   out.C += var.C;

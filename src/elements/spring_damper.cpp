@@ -10,11 +10,11 @@ namespace feran {
 
 namespace {
 Matrix six_by_six(const std::array<SpeedCoefficient, dofs_per_node>& direct,
-                  const SpeedCoefficient& yz, const SpeedCoefficient& zy, Real speed) {
+                  const SpeedCoefficient& yz, const SpeedCoefficient& zy, Real speed, Real frequency) {
   Matrix m = Matrix::Zero(dofs_per_node, dofs_per_node);
-  for (int d = 0; d < dofs_per_node; ++d) m(d, d) = direct[static_cast<std::size_t>(d)].at(speed);
-  m(static_cast<Index>(Dof::v), static_cast<Index>(Dof::w)) = yz.at(speed);
-  m(static_cast<Index>(Dof::w), static_cast<Index>(Dof::v)) = zy.at(speed);
+  for (int d = 0; d < dofs_per_node; ++d) m(d, d) = direct[static_cast<std::size_t>(d)].at(speed, frequency);
+  m(static_cast<Index>(Dof::v), static_cast<Index>(Dof::w)) = yz.at(speed, frequency);
+  m(static_cast<Index>(Dof::w), static_cast<Index>(Dof::v)) = zy.at(speed, frequency);
   return m;
 }
 
@@ -38,31 +38,56 @@ bool SpringDamper::speed_dependent() const {
          varies(coeffs_.kzy) || varies(coeffs_.cyz) || varies(coeffs_.czy);
 }
 
-std::vector<SpeedRange> SpringDamper::speed_ranges() const {
-  std::vector<SpeedRange> out;
-  const auto add = [&](const SpeedCoefficient& c, const char* name) {
-    if (const auto* t = std::get_if<SpeedCoefficient::Table>(&c.law()); t && !t->speeds.empty())
-      out.push_back({fmt::format("coefficient '{}'", name), t->speeds.front(), t->speeds.back()});
-  };
+bool SpringDamper::frequency_dependent() const {
+  auto varies = [](const SpeedCoefficient& c) { return c.frequency_dependent(); };
+  return std::any_of(coeffs_.k.begin(), coeffs_.k.end(), varies) ||
+         std::any_of(coeffs_.c.begin(), coeffs_.c.end(), varies) || varies(coeffs_.kyz) ||
+         varies(coeffs_.kzy) || varies(coeffs_.cyz) || varies(coeffs_.czy);
+}
+
+namespace {
+// Calls add(coefficient, name) for each of @p c's coefficients.
+template <class F>
+void each_coefficient(const SpringDamperCoefficients& c, F&& add) {
   constexpr std::array<const char*, dofs_per_node> k_names = {"kx", "ky", "kz", "krx", "kry", "krz"};
   constexpr std::array<const char*, dofs_per_node> c_names = {"cx", "cy", "cz", "crx", "cry", "crz"};
   for (std::size_t d = 0; d < dofs_per_node; ++d) {
-    add(coeffs_.k[d], k_names[d]);
-    add(coeffs_.c[d], c_names[d]);
+    add(c.k[d], k_names[d]);
+    add(c.c[d], c_names[d]);
   }
-  add(coeffs_.kyz, "kyz");
-  add(coeffs_.kzy, "kzy");
-  add(coeffs_.cyz, "cyz");
-  add(coeffs_.czy, "czy");
+  add(c.kyz, "kyz");
+  add(c.kzy, "kzy");
+  add(c.cyz, "cyz");
+  add(c.czy, "czy");
+}
+}  // namespace
+
+std::vector<SpeedRange> SpringDamper::frequency_ranges() const {
+  std::vector<SpeedRange> out;
+  each_coefficient(coeffs_, [&](const SpeedCoefficient& c, const char* name) {
+    if (const auto* t = std::get_if<SpeedCoefficient::FrequencyTable>(&c.law()); t && !t->frequencies.empty())
+      out.push_back({fmt::format("coefficient '{}'", name), t->frequencies.front(), t->frequencies.back()});
+  });
   return out;
 }
 
-Matrix SpringDamper::stiffness_6x6(Real speed) const {
-  return six_by_six(coeffs_.k, coeffs_.kyz, coeffs_.kzy, speed);
+std::vector<SpeedRange> SpringDamper::speed_ranges() const {
+  std::vector<SpeedRange> out;
+  each_coefficient(coeffs_, [&](const SpeedCoefficient& c, const char* name) {
+    if (const auto* t = std::get_if<SpeedCoefficient::Table>(&c.law()); t && !t->speeds.empty())
+      out.push_back({fmt::format("coefficient '{}'", name), t->speeds.front(), t->speeds.back()});
+    if (const auto* t = std::get_if<SpeedCoefficient::FrequencyTable>(&c.law()); t && !t->speeds.empty())
+      out.push_back({fmt::format("coefficient '{}'", name), t->speeds.front(), t->speeds.back()});
+  });
+  return out;
 }
 
-Matrix SpringDamper::damping_6x6(Real speed) const {
-  return six_by_six(coeffs_.c, coeffs_.cyz, coeffs_.czy, speed);
+Matrix SpringDamper::stiffness_6x6(Real speed, std::optional<Real> frequency) const {
+  return six_by_six(coeffs_.k, coeffs_.kyz, coeffs_.kzy, speed, frequency.value_or(speed));
+}
+
+Matrix SpringDamper::damping_6x6(Real speed, std::optional<Real> frequency) const {
+  return six_by_six(coeffs_.c, coeffs_.cyz, coeffs_.czy, speed, frequency.value_or(speed));
 }
 
 LocalMatrices SpringDamper::local_matrices(const OperatingPoint& op) const {
@@ -70,8 +95,8 @@ LocalMatrices SpringDamper::local_matrices(const OperatingPoint& op) const {
   for (int d = 0; d < dofs_per_node; ++d) out.dofs.push_back(dofs_per_node * node_a_ + d);
   if (node_b_)
     for (int d = 0; d < dofs_per_node; ++d) out.dofs.push_back(dofs_per_node * *node_b_ + d);
-  out.K = relative(stiffness_6x6(op.speed), node_b_.has_value());
-  out.C = relative(damping_6x6(op.speed), node_b_.has_value());
+  out.K = relative(stiffness_6x6(op.speed, op.frequency), node_b_.has_value());
+  out.C = relative(damping_6x6(op.speed, op.frequency), node_b_.has_value());
   out.loss_factor = coeffs_.loss_factor;
   return out;
 }

@@ -70,8 +70,11 @@ class SpecReader {
   SpeedCoefficient read_coefficient(const TableReader& parent, const toml::node& n,
                                     const std::string& key, Quantity kind,
                                     const std::string& at);
+  /// A speed (or, with @p unit_key "frequency_unit", a frequency of the motion) of a
+  /// coefficient law, in rad/s.
   Real read_speed(const TableReader& t, const toml::node& n, const std::string& name,
-                  const std::string& speed_unit, const std::string& at);
+                  const std::string& speed_unit, const std::string& at,
+                  std::string_view unit_key = "speed_unit");
   std::vector<std::pair<Real, Real>> read_time_table(const TableReader& t, const toml::node& n, std::string_view key,
                                                      Quantity kind, const std::string& at);
   std::vector<std::string> read_words(const TableReader& t, const spec::FieldKind kind,
@@ -276,16 +279,17 @@ std::vector<std::string> SpecReader::read_words(const TableReader& t, FieldKind 
 }
 
 Real SpecReader::read_speed(const TableReader& t, const toml::node& n, const std::string& name,
-                            const std::string& speed_unit, const std::string& at) {
+                            const std::string& speed_unit, const std::string& at, std::string_view unit_key) {
   QuantityValue q = t.quantity_at(n, name, Quantity::speed);
   const bool bare = n.is_integer() || n.is_floating_point();
   // A bare number would be rad/s, which a table of speeds rarely means: ask for the
   // unit (0 is 0 in every unit).
   if (bare && speed_unit.empty() && q.si != 0.0)
-    t.fail(n, fmt::format("'{}' is a bare number ({}): a speed of a coefficient law needs its unit, "
-                          "e.g. \"50 Hz\", \"3000 rpm\" or \"314 rad/s\", or the law's speed_unit "
-                          "(speed_unit = \"Hz\")",
-                          name, *n.value<double>()));
+    t.fail(n, fmt::format("'{}' is a bare number ({}): a {} of a coefficient law needs its unit, "
+                          "e.g. \"50 Hz\", \"3000 rpm\" or \"314 rad/s\", or the law's {} "
+                          "({} = \"Hz\")",
+                          name, *n.value<double>(), unit_key == "speed_unit" ? "speed" : "frequency",
+                          unit_key, unit_key));
   if (!speed_unit.empty() && bare) {
     q.si = *to_si(Quantity::speed, q.si, speed_unit);
     q.written = fmt::format("{} {}", *n.value<double>(), speed_unit);
@@ -311,12 +315,14 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
   const auto& laws = spec::coefficient_laws();
   std::vector<std::string> law_names;
   for (const auto& l : laws) law_names.emplace_back(l.law);
-  const std::string law = t.required_string("law", "\"table\", \"step\" or \"arctan\"");
+  const std::string law = t.required_string("law", "\"table\", \"step\", \"arctan\" or \"frequency_table\"");
   const auto it = std::find_if(laws.begin(), laws.end(),
                                [&](const spec::CoefficientLaw& l) { return l.law == law; });
   if (it == laws.end()) {
     std::string message = fmt::format(
-        "unknown law '{}' for coefficient '{}'; expected \"table\", \"step\" or \"arctan\"", law,
+        "unknown law '{}' for coefficient '{}'; expected \"table\", \"step\", \"arctan\" or "
+        "\"frequency_table\"",
+        law,
         key);
     if (const auto m = detail::closest_match(law, law_names, 2))
       message += fmt::format(" (did you mean \"{}\"?)", *m);
@@ -324,12 +330,12 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
   }
   t.check_keys(it->keys);
 
-  const auto speed_unit = [&]() -> std::string {
-    const auto unit = t.string("speed_unit");
+  const auto speed_unit = [&](std::string_view unit_key = "speed_unit") -> std::string {
+    const auto unit = t.string(unit_key);
     if (!unit) return {};
     if (!to_si(Quantity::speed, 1.0, *unit))
-      t.fail(*t.find("speed_unit"),
-             fmt::format("'speed_unit' must be \"rad/s\", \"Hz\" or \"rpm\", got \"{}\"", *unit));
+      t.fail(*t.find(unit_key),
+             fmt::format("'{}' must be \"rad/s\", \"Hz\" or \"rpm\", got \"{}\"", unit_key, *unit));
     return *unit;
   };
   const auto required = [&](std::string_view name, Quantity q) {
@@ -360,6 +366,58 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
           t.quantity_at(*values.get(i), fmt::format("{}.values[{}]", key, i), kind);
       record_quantity(element(child(at, "values"), i), v);
       law_table.values.push_back(v.si);
+    }
+    return SpeedCoefficient(SpeedCoefficient::Law{law_table});
+  }
+  if (law == "frequency_table") {
+    // Frequencies along each row; one row without speeds, else one row per speed.
+    const std::string s_unit = speed_unit(), f_unit = speed_unit("frequency_unit");
+    const toml::array& frequencies = t.required_array(
+        "frequencies", "an array of frequencies of the motion, e.g. [0, \"50 Hz\", \"100 Hz\"]");
+    record(child(at, "frequencies"), frequencies);
+    SpeedCoefficient::FrequencyTable law_table;
+    for (std::size_t i = 0; i < frequencies.size(); ++i)
+      law_table.frequencies.push_back(read_speed(t, *frequencies.get(i), fmt::format("{}.frequencies[{}]", key, i),
+                                                 f_unit, element(child(at, "frequencies"), i), "frequency_unit"));
+    const toml::node* speeds_node = t.find("speeds");
+    if (speeds_node != nullptr) {
+      const toml::array& speeds = t.required_array("speeds", "an array of speeds, e.g. [0, \"50 Hz\", \"100 Hz\"]");
+      record(child(at, "speeds"), speeds);
+      for (std::size_t i = 0; i < speeds.size(); ++i)
+        law_table.speeds.push_back(read_speed(t, *speeds.get(i), fmt::format("{}.speeds[{}]", key, i), s_unit,
+                                              element(child(at, "speeds"), i)));
+    }
+    const std::string one_value = fmt::format("each {}", quantity_name(kind));
+    const toml::array& values = t.required_array(
+        "values", speeds_node != nullptr
+                      ? fmt::format("an array with one array per speed of one value per frequency, {}", one_value)
+                      : fmt::format("an array of one value per frequency, {}", one_value));
+    record(child(at, "values"), values);
+    const auto read_row = [&](const toml::array& row, const std::string& row_at, const std::string& row_name) {
+      if (row.size() != law_table.frequencies.size())
+        t.fail(row, fmt::format("'{}' must hold one value per frequency: {} frequencies, got {} values", row_name,
+                                law_table.frequencies.size(), row.size()));
+      for (std::size_t j = 0; j < row.size(); ++j) {
+        const QuantityValue v = t.quantity_at(*row.get(j), fmt::format("{}[{}]", row_name, j), kind);
+        record_quantity(element(row_at, j), v);
+        law_table.values.push_back(v.si);
+      }
+    };
+    if (speeds_node == nullptr) {
+      read_row(values, child(at, "values"), fmt::format("{}.values", key));
+    } else {
+      if (values.size() != law_table.speeds.size())
+        t.fail(values, fmt::format("'{}.values' must hold one array per speed: {} speeds, got {} entries", key,
+                                   law_table.speeds.size(), values.size()));
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        const toml::array* row = values.get(i)->as_array();
+        const std::string row_name = fmt::format("{}.values[{}]", key, i);
+        if (row == nullptr)
+          t.fail(*values.get(i), fmt::format("'{}' must be an array of one value per frequency (the values at "
+                                             "speed {}), got {}",
+                                             row_name, i, type_name(*values.get(i))));
+        read_row(*row, element(child(at, "values"), i), row_name);
+      }
     }
     return SpeedCoefficient(SpeedCoefficient::Law{law_table});
   }

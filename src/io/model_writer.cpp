@@ -78,6 +78,20 @@ std::string coefficient(const SpeedCoefficient& c, Quantity kind) {
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
           return fmt::format("{{ law = \"step\", below = {}, above = {}, at = {} }}",
                              value(law.below), value(law.above), speed(law.at));
+        } else if constexpr (std::is_same_v<L, SpeedCoefficient::FrequencyTable>) {
+          const std::size_t nf = law.frequencies.size();
+          const auto row = [&](std::size_t i) {
+            return array(std::vector<Real>(law.values.begin() + static_cast<std::ptrdiff_t>(i * nf),
+                                           law.values.begin() + static_cast<std::ptrdiff_t>((i + 1) * nf)),
+                         value);
+          };
+          if (law.speeds.empty())
+            return fmt::format("{{ law = \"frequency_table\", frequencies = {}, values = {} }}",
+                               array(law.frequencies, speed), row(0));
+          std::vector<std::size_t> rows(law.speeds.size());
+          for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
+          return fmt::format("{{ law = \"frequency_table\", speeds = {}, frequencies = {}, values = {} }}",
+                             array(law.speeds, speed), array(law.frequencies, speed), array(rows, row));
         } else {
           return fmt::format(
               "{{ law = \"arctan\", value = {}, f_as = {}, c0 = {}, c1 = {}, c2 = {} }}",

@@ -392,6 +392,7 @@ std::string modal_json(const ModalResult& result, const Model& model, const Resu
   j["speed_rpm"] = rad_to_hz(result.speed) * 60.0;
   j["solver"] = solver_json(result.info);
   j["solver"]["complex_form"] = result.complex_form;
+  if (result.frequency_dependent) j["solver"]["frequency_iterations"] = result.frequency_iterations;
   if (shapes) {
     json nodes = json::array();
     for (const Node& n : model.nodes)

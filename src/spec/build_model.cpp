@@ -251,9 +251,10 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
       fmt::format(" ('{}' is a direct coefficient; only the cross terms kyz, kzy, cyz, czy may "
                   "be negative)",
                   key);
-  const auto value = [&](Real v, const std::string& at, std::string_view name, bool in_law) {
+  const auto value = [&](Real v, const std::string& at, std::string_view name, bool in_law,
+                         bool may_be_negative = false) {
     if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", name, v));
-    if (direct && v < 0.0)
+    if (direct && v < 0.0 && !may_be_negative)
       fail(at, fmt::format("'{}' must not be negative, got {}{}", name, shown(at, v, kind),
                            in_law ? note : ""));
     check_range(v, at, name, kind, {}, false);
@@ -284,6 +285,43 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
             const std::string v_at = element(child(path, "values"), i);
             value(law.values[i], v_at, fmt::format("{}.values[{}]", key, i), true);
           }
+        } else if constexpr (std::is_same_v<L, SpeedCoefficient::FrequencyTable>) {
+          const auto increasing = [&](const std::vector<Real>& grid, std::string_view name) {
+            for (std::size_t i = 0; i < grid.size(); ++i) {
+              const std::string at = element(child(path, name), i);
+              speed(grid[i], at, fmt::format("{}.{}[{}]", key, name, i));
+              if (i > 0 && !(grid[i] > grid[i - 1]))
+                fail(at, fmt::format("'{}.{}' must be strictly increasing, but entry {} ({} rad/s) does not "
+                                     "exceed the one before it ({} rad/s)",
+                                     key, name, i, grid[i], grid[i - 1]));
+            }
+          };
+          if (law.frequencies.empty())
+            fail(child(path, "frequencies"), fmt::format("'{}.frequencies' must not be empty", key));
+          increasing(law.frequencies, "frequencies");
+          if (law.frequencies.front() < 0.0)
+            fail(element(child(path, "frequencies"), 0),
+                 fmt::format("'{}.frequencies' must not be negative (a coefficient at −ω is the one at ω), got {} "
+                             "rad/s",
+                             key, law.frequencies.front()));
+          increasing(law.speeds, "speeds");
+          const std::size_t rows = law.speeds.empty() ? 1 : law.speeds.size(), nf = law.frequencies.size();
+          if (law.values.size() != rows * nf)
+            fail(child(path, "values"),
+                 fmt::format("'{}.values' must hold one value per speed and frequency: {} × {}, got {}", key, rows,
+                             nf, law.values.size()));
+          // A dynamic stiffness turns negative above a support's own resonance (mass-like):
+          // a direct stiffness in a frequency table may be negative; a direct damping may not.
+          const bool stiffness = kind == Quantity::stiffness || kind == Quantity::rotational_stiffness;
+          for (std::size_t i = 0; i < rows; ++i)
+            for (std::size_t j = 0; j < nf; ++j) {
+              const std::string at = law.speeds.empty() ? element(child(path, "values"), j)
+                                                        : element(element(child(path, "values"), i), j);
+              value(law.values[i * nf + j], at,
+                    law.speeds.empty() ? fmt::format("{}.values[{}]", key, j)
+                                       : fmt::format("{}.values[{}][{}]", key, i, j),
+                    true, stiffness);
+            }
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
           value(law.below, child(path, "below"), "below", true);
           value(law.above, child(path, "above"), "above", true);

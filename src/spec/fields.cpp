@@ -684,6 +684,7 @@ const std::vector<CoefficientLaw>& coefficient_laws() {
       {"table", {"law", "speeds", "values", "speed_unit"}},
       {"step", {"law", "below", "above", "at", "speed_unit"}},
       {"arctan", {"law", "value", "f_as", "c0", "c1", "c2"}},
+      {"frequency_table", {"law", "frequencies", "values", "speeds", "speed_unit", "frequency_unit"}},
   };
   return laws;
 }

@@ -296,6 +296,10 @@ Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, st
     if (c && std::holds_alternative<SpeedCoefficient::Table>(c->law()))
       fail(fmt::format("'{}' follows a table law: name an entry, e.g. {}.values[0]",
                        segments_[i].key, path));
+    if (c && std::holds_alternative<SpeedCoefficient::FrequencyTable>(c->law()))
+      fail(fmt::format("'{}' follows a frequency table law: name an entry, e.g. {}.values[0] (or "
+                       "{}.values[0][0] with speeds)",
+                       segments_[i].key, path, path));
     if (c && std::holds_alternative<SpeedCoefficient::Step>(c->law()))
       fail(fmt::format("'{}' follows a step law: name a part, {}.below, {}.above or {}.at",
                        segments_[i].key, path, path, path));
@@ -359,6 +363,35 @@ Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, st
           else if (part.key == "above") bind(L{}, [](L& l) -> Real& { return l.above; }, kind, "");
           else if (part.key == "at") bind(L{}, [](L& l) -> Real& { return l.at; }, Quantity::speed, "Hz");
           else found = false;
+        } else if constexpr (std::is_same_v<L, SpeedCoefficient::FrequencyTable>) {
+          parts = {"frequencies", "speeds", "values"};
+          if (part.key != "frequencies" && part.key != "speeds" && part.key != "values") return;
+          const bool grid = !law.speeds.empty() && part.key == "values";  // values[speed][frequency]
+          const std::size_t wanted = grid ? 2 : 1;
+          if (part.selectors.size() != wanted)
+            fail(grid ? fmt::format("'values' is a table over speeds and frequencies: name an entry, e.g. values[0][0]")
+                      : fmt::format("'{}' is a list: name an entry, e.g. {}[0]", part.key, part.key));
+          const std::size_t nf = law.frequencies.size();
+          const auto index_in = [&](std::size_t size, std::size_t s) {
+            std::vector<Real> dummy(size);
+            return find_entry(dummy, Segment{part.key, {part.selectors[s]}});
+          };
+          found = true;
+          if (part.key == "frequencies") {
+            const std::size_t index = find_entry(law.frequencies, part);
+            slot.path = spec::element(slot.path, index);
+            bind(L{}, [index](L& l) -> Real& { return l.frequencies[index]; }, Quantity::speed, "Hz");
+          } else if (part.key == "speeds") {
+            const std::size_t index = find_entry(law.speeds, part);
+            slot.path = spec::element(slot.path, index);
+            bind(L{}, [index](L& l) -> Real& { return l.speeds[index]; }, Quantity::speed, "Hz");
+          } else {
+            const std::size_t row = grid ? index_in(law.speeds.size(), 0) : 0;
+            const std::size_t column = index_in(nf, grid ? 1 : 0);
+            slot.path = grid ? spec::element(spec::element(slot.path, row), column) : spec::element(slot.path, column);
+            const std::size_t index = row * nf + column;
+            bind(L{}, [index](L& l) -> Real& { return l.values[index]; }, kind, "");
+          }
         } else {
           parts = {"speeds", "values"};
           if (part.key != "speeds" && part.key != "values") return;
@@ -459,6 +492,16 @@ void list_entry(const ModelSpec& spec, const S& e, const std::string& path,
                       out.push_back(spec::child(at, p));
                   } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
                     for (const char* p : {"below", "above", "at"}) out.push_back(spec::child(at, p));
+                  } else if constexpr (std::is_same_v<L, SpeedCoefficient::FrequencyTable>) {
+                    for (std::size_t i = 0; i < law.speeds.size(); ++i)
+                      out.push_back(spec::element(spec::child(at, "speeds"), i));
+                    for (std::size_t j = 0; j < law.frequencies.size(); ++j)
+                      out.push_back(spec::element(spec::child(at, "frequencies"), j));
+                    const std::size_t nf = law.frequencies.size();
+                    for (std::size_t k = 0; k < law.values.size(); ++k)
+                      out.push_back(law.speeds.empty()
+                                        ? spec::element(spec::child(at, "values"), k)
+                                        : spec::element(spec::element(spec::child(at, "values"), k / nf), k % nf));
                   } else {
                     for (std::size_t i = 0; i < law.speeds.size(); ++i)
                       out.push_back(spec::element(spec::child(at, "speeds"), i));

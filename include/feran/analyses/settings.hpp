@@ -197,8 +197,10 @@ void check_analysis_tables(const ModelSpec& spec);
 /// Warnings for the tabulated data of @p model that an analysis over the speeds
 /// [@p low, @p high] (rad/s) evaluates beyond its range, one per table: "spring
 /// 'bearing': coefficient 'ky' is tabulated from 0 to 100 Hz; the analysis reaches
-/// 150 Hz, where its last value is held".
-std::vector<std::string> range_warnings(const Model& model, Real low, Real high);
+/// 150 Hz, where its last value is held". Frequency tables are checked against the
+/// frequencies of the motion [@p frequencies] (rad/s; empty: synchronous, the speeds').
+std::vector<std::string> range_warnings(const Model& model, Real low, Real high,
+                                        std::optional<std::pair<Real, Real>> frequencies = std::nullopt);
 
 /// The speeds a run-up visits: the lowest and highest of its profile up to its end; for
 /// a torque-driven run, from its first speed to its motor's free speed.

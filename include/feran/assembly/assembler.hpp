@@ -2,6 +2,8 @@
 /// @file
 /// Assembly of the global matrices in reduced coordinates.
 
+#include <optional>
+
 #include <feran/assembly/dof_map.hpp>
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
@@ -30,20 +32,26 @@ class Assembler {
   explicit Assembler(const Model& model);
 
   const DofMap& dof_map() const { return dofs_; }
-  /// Matrices at speed @p speed [rad/s].
-  SystemMatrices at(Real speed) const;
-  /// True when some element's matrices depend on speed (beyond G and K_i).
+  /// Matrices at speed @p speed for motion at frequency @p frequency [rad/s] (empty:
+  /// synchronous, frequency = speed; it matters only to frequency-dependent elements).
+  SystemMatrices at(Real speed, std::optional<Real> frequency = std::nullopt) const;
+  /// True when some element's matrices depend on speed (beyond G and K_i) or on the
+  /// frequency of the motion.
   bool speed_dependent() const { return !speed_dependent_elements_.empty(); }
+  /// True when some element's matrices depend on the frequency of the motion (seals,
+  /// squeeze films, support structures given by frequency tables).
+  bool frequency_dependent() const { return frequency_dependent_; }
   /// The speed-independent part (assembled once).
   const SystemMatrices& constant() const { return constant_; }
-  /// Only the speed-dependent elements' contribution at @p speed (zero matrices of
-  /// the right size when there are none).
-  SystemMatrices variable_at(Real speed) const;
+  /// Only the speed-dependent elements' contribution at @p speed and @p frequency, as
+  /// for at() (zero matrices of the right size when there are none).
+  SystemMatrices variable_at(Real speed, std::optional<Real> frequency = std::nullopt) const;
   /// The same values as variable_at(@p speed), written in place into @p out: the first
   /// call sizes @p out with a sparsity pattern that holds every entry the
   /// speed-dependent elements can touch (explicit zeros included); later calls only
   /// evaluate the elements and scatter their values, without allocating. For
-  /// time integration, where the speed changes at every step.
+  /// time integration, where the speed changes at every step: frequency-dependent
+  /// elements see synchronous motion (frequency = speed).
   void variable_values(Real speed, SystemMatrices& out) const;
 
  private:
@@ -54,7 +62,8 @@ class Assembler {
   /// (reduced DOF, weight) entries; empty for a fixed DOF.
   std::vector<std::vector<std::pair<Index, Real>>> rows_;
   SystemMatrices constant_;
-  std::vector<Element> speed_dependent_elements_;
+  std::vector<Element> speed_dependent_elements_;  // those that depend on speed or frequency
+  bool frequency_dependent_ = false;
   /// Where a local entry of a speed-dependent element lands in the pattern of
   /// variable_values(): entry `local` (column-major in the element's matrices) adds
   /// `weight`·value to `value` of the reduced matrices' value arrays.

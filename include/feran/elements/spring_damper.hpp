@@ -12,7 +12,8 @@
 
 namespace feran {
 
-/// Coefficients of a spring–damper, each possibly speed dependent.
+/// Coefficients of a spring–damper, each possibly dependent on speed and on the
+/// frequency of the motion.
 /// Direct terms per DOF direction (indexed by Dof: x, y, z, rx, ry, rz), and the
 /// cross-coupled lateral terms: the force on node a along y is
 /// −(k_yy·Δv + k_yz·Δw) − (c_yy·Δv' + c_yz·Δw'), Δ = q_a − q_b.
@@ -33,19 +34,26 @@ class SpringDamper {
   LocalMatrices local_matrices(const OperatingPoint& op) const;
   std::string_view kind() const { return "spring_damper"; }
   bool speed_dependent() const;
+  /// True when a coefficient depends on the frequency of the motion (ability,
+  /// model/element.hpp).
+  bool frequency_dependent() const;
 
   Index node_a() const { return node_a_; }
   const std::optional<Index>& node_b() const { return node_b_; }
   const SpringDamperCoefficients& coefficients() const { return coeffs_; }
-  /// 6×6 stiffness and damping of the relative motion at speed @p speed [rad/s].
-  Matrix stiffness_6x6(Real speed) const;
+  /// 6×6 stiffness and damping of the relative motion at speed @p speed for motion at
+  /// @p frequency [rad/s] (empty: synchronous, frequency = speed).
+  Matrix stiffness_6x6(Real speed, std::optional<Real> frequency = std::nullopt) const;
+  Matrix damping_6x6(Real speed, std::optional<Real> frequency = std::nullopt) const;
   /// The force it transmits (ability of connecting elements, model/element.hpp).
-  Transmission transmission(Real speed) const {
-    return {node_a_, node_b_, stiffness_6x6(speed), damping_6x6(speed), coeffs_.loss_factor};
+  Transmission transmission(Real speed, std::optional<Real> frequency = std::nullopt) const {
+    return {node_a_, node_b_, stiffness_6x6(speed, frequency), damping_6x6(speed, frequency),
+            coeffs_.loss_factor};
   }
-  Matrix damping_6x6(Real speed) const;
   /// The speed ranges of its tabulated coefficients (ability, model/element.hpp).
   std::vector<SpeedRange> speed_ranges() const;
+  /// The frequency ranges of its frequency tables (ability, model/element.hpp).
+  std::vector<SpeedRange> frequency_ranges() const;
 
  private:
   Index node_a_;

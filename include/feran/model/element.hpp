@@ -14,6 +14,13 @@
 ///                                              forces and stresses are reported
 ///   speed_ranges() -> std::vector<SpeedRange>  it has tabulated data over speed
 ///                                              ranges (analyses warn beyond them)
+///   frequency_dependent() -> bool              its matrices depend on the frequency
+///                                              of the motion (OperatingPoint::frequency):
+///                                              seals, squeeze films, support structures
+///   frequency_ranges() -> std::vector<SpeedRange>  the frequency ranges of its tables
+///   transmission(Real speed, std::optional<Real> frequency) -> Transmission
+///                                              what it transmits for motion at a
+///                                              frequency (else transmission(speed))
 ///   dofs() -> std::vector<Index>               its DOFs without evaluating its matrices
 ///                                              (an element whose matrices need work,
 ///                                              or exist only at some speeds)
@@ -96,6 +103,15 @@ concept HasTransmission = requires(const E& e, Real speed) {
   { e.transmission(speed) } -> std::same_as<Transmission>;
 };
 template <class E>
+concept HasFrequencyTransmission = requires(const E& e, Real speed, std::optional<Real> frequency) {
+  { e.transmission(speed, frequency) } -> std::same_as<Transmission>;
+};
+template <class E>
+concept HasFrequencyDependence = requires(const E& e) {
+  { e.frequency_dependent() } -> std::convertible_to<bool>;
+  { e.frequency_ranges() } -> std::same_as<std::vector<SpeedRange>>;
+};
+template <class E>
 concept HasSpeedRanges = requires(const E& e) {
   { e.speed_ranges() } -> std::same_as<std::vector<SpeedRange>>;
 };
@@ -140,10 +156,17 @@ class Element {
   bool speed_dependent() const { return self_->speed_dependent(); }
   /// The user's name for the element (may be empty).
   const std::string& label() const { return label_; }
-  /// What it transmits at @p speed [rad/s], if it is a connecting element.
-  std::optional<Transmission> transmission(Real speed) const { return self_->transmission(speed); }
+  /// True when its matrices depend on the frequency of the motion.
+  bool frequency_dependent() const { return self_->frequency_dependent(); }
+  /// What it transmits at @p speed [rad/s] for motion at @p frequency [rad/s] (empty:
+  /// synchronous), if it is a connecting element.
+  std::optional<Transmission> transmission(Real speed, std::optional<Real> frequency = std::nullopt) const {
+    return self_->transmission(speed, frequency);
+  }
   /// The speed ranges of its tabulated data (empty for elements without tables).
   std::vector<SpeedRange> speed_ranges() const { return self_->speed_ranges(); }
+  /// The frequency ranges of its frequency tables [rad/s] (empty for most elements).
+  std::vector<SpeedRange> frequency_ranges() const { return self_->frequency_ranges(); }
   /// Its shaft segment, if it is a piece of shaft.
   std::optional<ShaftSegment> shaft_segment() const { return self_->shaft_segment(); }
 
@@ -163,7 +186,9 @@ class Element {
     virtual std::vector<Index> dofs() const = 0;
     virtual std::string_view kind() const = 0;
     virtual bool speed_dependent() const = 0;
-    virtual std::optional<Transmission> transmission(Real speed) const = 0;
+    virtual bool frequency_dependent() const = 0;
+    virtual std::vector<SpeedRange> frequency_ranges() const = 0;
+    virtual std::optional<Transmission> transmission(Real speed, std::optional<Real> frequency) const = 0;
     virtual std::optional<ShaftSegment> shaft_segment() const = 0;
     virtual std::vector<SpeedRange> speed_ranges() const = 0;
     virtual const std::type_info& type() const = 0;
@@ -182,8 +207,17 @@ class Element {
     }
     std::string_view kind() const override { return value.kind(); }
     bool speed_dependent() const override { return value.speed_dependent(); }
-    std::optional<Transmission> transmission(Real speed) const override {
-      if constexpr (HasTransmission<E>) return value.transmission(speed);
+    bool frequency_dependent() const override {
+      if constexpr (HasFrequencyDependence<E>) return value.frequency_dependent();
+      else return false;
+    }
+    std::vector<SpeedRange> frequency_ranges() const override {
+      if constexpr (HasFrequencyDependence<E>) return value.frequency_ranges();
+      else return {};
+    }
+    std::optional<Transmission> transmission(Real speed, std::optional<Real> frequency) const override {
+      if constexpr (HasFrequencyTransmission<E>) return value.transmission(speed, frequency);
+      else if constexpr (HasTransmission<E>) return value.transmission(speed);
       else return std::nullopt;
     }
     std::vector<SpeedRange> speed_ranges() const override {

@@ -184,7 +184,7 @@ Quantity value_quantity(const S& entry, const Field<S>& f) {
 
 /// The keys of a coefficient's law table ({ law = "step", below = …, … }).
 struct CoefficientLaw {
-  std::string_view law;                ///< "table", "step" or "arctan"
+  std::string_view law;                ///< "table", "step", "arctan" or "frequency_table"
   std::vector<std::string_view> keys;  ///< its keys, "law" first
 };
 /// The laws a coefficient may follow, in the order messages name them.

@@ -244,7 +244,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
     const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
     std::optional<SystemMatrices> variable;
-    if (assembler.speed_dependent()) variable = assembler.variable_at(speed);
+    // Frequency-dependent coefficients at the excitation frequency itself.
+    if (assembler.speed_dependent()) variable = assembler.variable_at(speed, omega);
     const SystemMatrices* var = variable ? &*variable : nullptr;
     for (;;) {
       Index gen = 0;
@@ -292,7 +293,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));
     // What a connecting element transmits: (K(1 + jη) + jωC)·(q_a − q_b).
     auto transmitted = [&](const Element& element) {
-      const Transmission link = *element.transmission(speed);
+      const Transmission link = *element.transmission(speed, omega);
       NodeAmplitudes dq = node_values(q_full, link.node_a);
       if (link.node_b) {
         const NodeAmplitudes qb = node_values(q_full, *link.node_b);

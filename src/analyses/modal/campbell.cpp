@@ -15,12 +15,6 @@
 
 namespace feran {
 
-Real mac(const ComplexVector& a, const ComplexVector& b) {
-  const Real na = a.squaredNorm(), nb = b.squaredNorm();
-  if (na == 0.0 || nb == 0.0) return 0.0;
-  return abs2(a.dot(b)) / (na * nb);
-}
-
 namespace {
 
 constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();

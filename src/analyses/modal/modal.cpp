@@ -422,8 +422,97 @@ ModalSolver::Choice ModalSolver::choice() const {
 
 ModalResult ModalSolver::solve(Real speed) const {
   require_running(supports_, speed);
+  return assembler_->frequency_dependent() ? solve_self_consistent(speed) : solve_at(speed, std::nullopt);
+}
+
+ModalResult ModalSolver::solve_self_consistent(Real speed) const {
+  // Every mode starts from the modes with synchronous coefficients (ω = Ω), the
+  // coefficients a run-up integrates. Its eigenvalue p(ω) with the coefficients at ω
+  // is followed by nearness in the complex plane (by shape among repeated values) and
+  // ω moved to the fixed point ω = Im p(ω): one fixed-point step, then secant steps on
+  // h(ω) = Im p(ω) − ω (a fixed-point step where the secant leaves ω ≥ 0).
+  const Real omega0 = std::abs(speed);
+  ModalResult result = solve_at(speed, omega0);
+  result.frequency_dependent = true;
+  if (!result.info.converged()) return result;
+  const Real zero_tol = 1e-6 * std::sqrt(lambda_max_);
+  constexpr Real rtol = 1e-9;   // on |Im p(ω) − ω| relative to ω
+  constexpr int max_iterations = 40;
+  // The solves at each trial frequency, shared by the modes.
+  std::map<Real, ModalResult> solved;
+  const auto at = [&](Real omega) -> const ModalResult& {
+    auto it = solved.find(omega);
+    if (it == solved.end()) it = solved.emplace(omega, solve_at(speed, omega)).first;
+    return it->second;
+  };
+  const auto nearest = [&](const ModalResult& r, const Mode& to) -> const Mode* {
+    const Mode* best = nullptr;
+    Real best_distance = std::numeric_limits<Real>::infinity(), best_mac = -1.0;
+    for (const Mode& m : r.modes) {
+      const Real d = magnitude(m.eigenvalue - to.eigenvalue);
+      const Real c = mac(m.reduced_shape, to.reduced_shape);
+      // Values within 1e-6 of each other are one repeated value: the shape decides.
+      const Real close = 1e-6 * (magnitude(to.eigenvalue) + zero_tol);
+      if (best == nullptr || d < best_distance - close || (d <= best_distance + close && c > best_mac)) {
+        best = &m;
+        best_distance = std::min(best_distance, d);
+        best_mac = c;
+      }
+    }
+    return best;
+  };
+
+  std::vector<Mode> settled;
+  for (const Mode& start : result.modes) {
+    Mode mode = start;
+    Real w_prev = omega0, h_prev = mode.eigenvalue.imag() - omega0;
+    Real w = mode.eigenvalue.imag();
+    Index iterations = 0;
+    bool converged = std::abs(h_prev) <= rtol * std::max(omega0, zero_tol);
+    while (!converged && iterations < max_iterations) {
+      const ModalResult& r = at(w);
+      ++iterations;
+      if (!r.info.converged()) {
+        result.info.fail(r.info.status, r.info.message);
+        break;
+      }
+      const Mode* m = nearest(r, mode);
+      if (m == nullptr) break;
+      mode = *m;
+      const Real h = mode.eigenvalue.imag() - w;
+      if (std::abs(h) <= rtol * std::max(w, zero_tol)) {
+        converged = true;
+        break;
+      }
+      Real next = h != h_prev ? w - h * (w - w_prev) / (h - h_prev) : mode.eigenvalue.imag();
+      if (!std::isfinite(next) || next < 0.0) next = mode.eigenvalue.imag();
+      w_prev = w;
+      h_prev = h;
+      w = next;
+    }
+    result.frequency_iterations = std::max(result.frequency_iterations, iterations);
+    if (!converged && result.info.converged())
+      result.info.fail(SolverStatus::not_converged,
+                       fmt::format("the mode near {:.6g} Hz at {:.6g} Hz did not settle on its own frequency in "
+                                   "{} eigen solves (frequency-dependent coefficients); its last iterate is kept",
+                                   start.frequency_hz, rad_to_hz(speed), max_iterations));
+    // Two starts that settle on one mode (same value, same shape) list it once.
+    const bool listed = std::any_of(settled.begin(), settled.end(), [&](const Mode& s) {
+      return magnitude(s.eigenvalue - mode.eigenvalue) <= 1e-7 * (magnitude(mode.eigenvalue) + zero_tol) &&
+             mac(s.reduced_shape, mode.reduced_shape) > 0.9;
+    });
+    if (!listed) settled.push_back(std::move(mode));
+  }
+  for (const auto& [w, r] : solved) result.info.iterations += r.info.iterations;
+  std::stable_sort(settled.begin(), settled.end(),
+                   [](const Mode& a, const Mode& b) { return a.frequency_hz < b.frequency_hz; });
+  result.modes = std::move(settled);
+  return result;
+}
+
+ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) const {
   // The assembled matrices themselves when no element depends on speed (no copy).
-  const SystemMatrices varying = assembler_->speed_dependent() ? assembler_->at(speed) : SystemMatrices{};
+  const SystemMatrices varying = assembler_->speed_dependent() ? assembler_->at(speed, frequency) : SystemMatrices{};
   const SystemMatrices& sys = assembler_->speed_dependent() ? varying : assembler_->constant();
   const SparseMatrix D = sys.damping(speed);
   const SparseMatrix K = sys.stiffness(speed);
@@ -667,6 +756,12 @@ ModalResult ModalSolver::solve(Real speed) const {
     return a.frequency_hz < b.frequency_hz;
   });
   return result;
+}
+
+Real mac(const ComplexVector& a, const ComplexVector& b) {
+  const Real na = a.squaredNorm(), nb = b.squaredNorm();
+  if (na == 0.0 || nb == 0.0) return 0.0;
+  return abs2(a.dot(b)) / (na * nb);
 }
 
 ModalResult run_modal(const Model& model, Real speed, const ModalOptions& options,

@@ -67,7 +67,7 @@ class Residual {
  public:
   Residual(const Model& model, const Assembler& assembler, Real speed, const EquilibriumOptions& options)
       : model_(model), T_(assembler.dof_map().transformation()), state_{.speed = speed} {
-    const SystemMatrices sys = assembler.at(speed);
+    const SystemMatrices sys = assembler.at(speed, options.frequency);
     K_ = sys.stiffness(speed);
     f_ = T_.transpose() * static_load_vector(model, options.gravity, options.loads);
     for (std::size_t i = 0; i < model.forces.size(); ++i)

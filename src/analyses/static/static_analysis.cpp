@@ -62,7 +62,7 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
       return result;
     }
   } else {
-    result.q = T * solve_linear(model, assembler, assembler.at(options.speed), T.transpose() * f_full);
+    result.q = T * solve_linear(model, assembler, assembler.at(options.speed, 0.0), T.transpose() * f_full);
   }
   if (!result.q.allFinite()) {
     // Overflow (a model built in code, past the builder's physical ranges): nothing
@@ -74,7 +74,7 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
   }
 
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const std::optional<Transmission> link = model.elements[e].transmission(options.speed);
+    const std::optional<Transmission> link = model.elements[e].transmission(options.speed, 0.0);
     if (!link) continue;
     Eigen::Matrix<Real, dofs_per_node, 1> dq = result.q.segment<dofs_per_node>(dofs_per_node * link->node_a);
     if (link->node_b) dq -= result.q.segment<dofs_per_node>(dofs_per_node * *link->node_b);

@@ -82,8 +82,11 @@ std::pair<Vector, Vector> steady_unbalance_response(const Model& model, Real spe
 std::pair<Vector, Vector> start_state(const Model& model, const TransientOptions& options) {
   if (options.start == RunupStart::rest) return {options.initial_displacement, options.initial_velocity};
   const Real speed = options.profile.speed(0.0);
-  const Equilibrium e = solve_equilibrium(model, Assembler(model), speed,
-                                          {.gravity = options.gravity, .loads = options.static_loads});
+  EquilibriumOptions at_start;
+  at_start.gravity = options.gravity;
+  at_start.loads = options.static_loads;
+  at_start.frequency = std::nullopt;  // the coefficients the run-up integrates (synchronous)
+  const Equilibrium e = solve_equilibrium(model, Assembler(model), speed, at_start);
   if (!e.info.converged()) throw Error("runup: no start at the equilibrium: " + e.info.message);
   Vector x = e.q, v = Vector::Zero(model.n_dofs());
   if (options.start == RunupStart::steady_state) {

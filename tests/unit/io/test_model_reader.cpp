@@ -315,6 +315,18 @@ TEST_F(EverythingModel, SpringsWithEveryLaw) {
   const auto* hz_step = std::get_if<Law::Step>(&cb.k[4].law());  // kry
   ASSERT_NE(hz_step, nullptr);
   EXPECT_DOUBLE_EQ(hz_step->at, 50.0 * hz);
+  const auto* over_frequency = std::get_if<Law::FrequencyTable>(&cb.c[1].law());  // cy
+  ASSERT_NE(over_frequency, nullptr);
+  EXPECT_TRUE(over_frequency->speeds.empty());  // the same at every speed
+  EXPECT_DOUBLE_EQ(over_frequency->frequencies[2], 100.0 * hz);
+  EXPECT_EQ(over_frequency->values, (std::vector<Real>{40.0, 45.0, 50.0}));
+  const auto* grid = std::get_if<Law::FrequencyTable>(&cb.kyz.law());  // rows by speed
+  ASSERT_NE(grid, nullptr);
+  EXPECT_DOUBLE_EQ(grid->speeds[1], 3000.0 * rpm);
+  EXPECT_DOUBLE_EQ(grid->frequencies[1], 100.0 * hz);
+  EXPECT_EQ(grid->values, (std::vector<Real>{1e4, 2e4, -1e4, 0.0}));
+  EXPECT_TRUE(b.frequency_dependent());
+  EXPECT_FALSE(a.frequency_dependent());
 
   const auto& foot = element_as<SpringDamper>(m(), "spring 3");  // default label
   EXPECT_EQ(foot.node_b(), index_of(m(), "foot"));

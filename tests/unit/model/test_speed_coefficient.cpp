@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include <feran/core/error.hpp>
 #include <feran/model/speed_coefficient.hpp>
 
 namespace feran::test_speed_coefficient {
@@ -106,6 +107,40 @@ TEST(SpeedCoefficient, ArctanLawConstantsAreParameters) {
   const SC a(SC::Arctan{2.0, 10.0, 0.5, 0.8, 1.0});
   EXPECT_NEAR(a.at(rad_per_s(11.0)), 2.0 * 0.3, 1e-14);
   EXPECT_NEAR(a.at(rad_per_s(10.0)), 2.0 * 0.5, 1e-14);
+}
+
+// Bilinear interpolation reproduces a bilinear function c = a + bΩ + cω + dΩω exactly
+// inside the table (reference: the function itself, to round-off 1e-12 of its size),
+// holds the edge values outside it, and is even in ω (c(Ω, −ω) = c(Ω, ω)).
+TEST(SpeedCoefficient, FrequencyTableIsBilinearInSpeedAndFrequency) {
+  const auto f = [](Real speed, Real omega) { return 3e6 + 2e3 * speed - 4e2 * omega + 1.5 * speed * omega; };
+  SC::FrequencyTable t;
+  t.speeds = {100.0, 250.0, 600.0};
+  t.frequencies = {0.0, 80.0, 300.0, 1000.0};
+  for (const Real s : t.speeds)
+    for (const Real w : t.frequencies) t.values.push_back(f(s, w));
+  const SC c(SC::Law{t});
+  EXPECT_TRUE(c.frequency_dependent());
+  EXPECT_FALSE(c.is_constant());
+  for (const Real s : {100.0, 173.0, 250.0, 512.5, 600.0})
+    for (const Real w : {0.0, 33.0, 80.0, 299.0, 777.0, 1000.0}) {
+      EXPECT_NEAR(c.at(s, w), f(s, w), 1e-12 * std::abs(f(s, w))) << s << " " << w;
+      EXPECT_EQ(c.at(s, -w), c.at(s, w));
+    }
+  // Beyond the table the edge is held, in either direction.
+  EXPECT_NEAR(c.at(50.0, 2000.0), f(100.0, 1000.0), 1e-12 * f(100.0, 1000.0));
+  EXPECT_NEAR(c.at(900.0, 500.0), f(600.0, 500.0), 1e-12 * f(600.0, 500.0));
+  // Synchronous use (callers without a frequency): ω = Ω.
+  EXPECT_EQ(c.at(250.0), c.at(250.0, 250.0));
+
+  // Without speeds: one row, the same at every speed; one frequency: a constant.
+  SC::FrequencyTable row{{}, {0.0, 100.0}, {1e6, 3e6}};
+  EXPECT_EQ(SC(SC::Law{row}).at(0.0, 25.0), 1.5e6);
+  EXPECT_EQ(SC(SC::Law{row}).at(1e4, 25.0), 1.5e6);
+  EXPECT_EQ(SC(SC::Law{SC::FrequencyTable{{}, {10.0}, {7.0}}}).at(3.0, 99.0), 7.0);
+  EXPECT_TRUE(SC(SC::Law{SC::FrequencyTable{{}, {0.0, 1.0}, {0.0, 0.0}}}).is_zero());
+  // A table whose values do not fill its grid is refused, not read past its end.
+  EXPECT_THROW((void)SC(SC::Law{SC::FrequencyTable{{0.0, 1.0}, {0.0, 1.0}, {1.0, 2.0}}}).at(0.5, 0.5), Error);
 }
 
 TEST(SpeedCoefficient, Equality) {

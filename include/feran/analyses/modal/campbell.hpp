@@ -88,7 +88,4 @@ struct CampbellResult {
 CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
                             std::shared_ptr<const Assembler> assembled = nullptr);
 
-/// Complex modal assurance criterion |aᴴb|²/(|a|²|b|²).
-Real mac(const ComplexVector& a, const ComplexVector& b);
-
 }  // namespace feran

@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,12 @@ struct ModalResult {
   /// The lateral motion was axisymmetric and solved in complex (forward/backward)
   /// coordinates: one half-size complex problem instead of the real one.
   bool complex_form = false;
+  /// Some coefficient depends on the frequency of the motion: each mode was iterated
+  /// until the coefficients it sees are those at its own damped frequency.
+  bool frequency_dependent = false;
+  /// The most eigen solves one mode needed to settle on its own frequency (0 when no
+  /// coefficient depends on frequency).
+  Index frequency_iterations = 0;
 };
 
 /// Modal solver for one model: assembles the speed-independent matrices once and
@@ -109,7 +116,12 @@ struct ModalResult {
 /// axial and torsional motion) is solved once and its modes reused at every speed.
 /// Supports (fluid-film bearings) enter as their tangent stiffness and damping about
 /// the static equilibrium at each speed (linearised(), analyses/static/equilibrium.hpp);
-/// solve() then throws Error at speed 0. solve() may be called from several threads.
+/// solve() then throws Error at speed 0. Coefficients that depend on the frequency of
+/// the motion (frequency tables) are taken at each mode's own damped frequency ω = Im p:
+/// starting from the modes with synchronous coefficients (ω = Ω), each eigenvalue is
+/// iterated to the fixed point ω = Im p(ω) by the secant method on Im p(ω) − ω
+/// (docs/theory/modal_analysis.md, "Frequency-dependent coefficients").
+/// solve() may be called from several threads.
 class ModalSolver {
  public:
   explicit ModalSolver(const Model& model, ModalOptions options = {});
@@ -129,6 +141,10 @@ class ModalSolver {
   // (src/analyses/modal/solver_choice.hpp).
   enum class Choice { dense, sparse, by_cost };
   Choice choice() const;
+  /// The modes with every coefficient taken at frequency @p frequency (empty: synchronous).
+  ModalResult solve_at(Real speed, std::optional<Real> frequency) const;
+  /// The modes each at its own frequency (frequency-dependent coefficients).
+  ModalResult solve_self_consistent(Real speed) const;
 
   ModalOptions options_;
   std::shared_ptr<const Assembler> assembler_;
@@ -142,6 +158,9 @@ class ModalSolver {
   struct BlockCache;                 // the modes of speed-independent DOF groups
   std::shared_ptr<BlockCache> cache_;
 };
+
+/// Complex modal assurance criterion |aᴴb|²/(|a|²|b|²).
+Real mac(const ComplexVector& a, const ComplexVector& b);
 
 /// Convenience: modes of @p model at speed @p speed [rad/s] (@p assembled as for
 /// ModalSolver).

@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -47,6 +48,9 @@ struct EquilibriumOptions {
   bool loads = true;         ///< include the static loads
   Real tolerance = 1e-10;    ///< on ‖residual‖ relative to ‖f‖ + the supports' largest force
   int max_iterations = 60;   ///< Newton steps
+  /// Frequency [rad/s] at which frequency-dependent coefficients are taken: 0 for a
+  /// static deflection; empty: synchronous (ω = Ω), as a run-up integrates them.
+  std::optional<Real> frequency = 0.0;
 };
 
 /// The equilibrium at one speed.
