@@ -317,10 +317,14 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
             for (std::size_t j = 0; j < nf; ++j) {
               const std::string at = law.speeds.empty() ? element(child(path, "values"), j)
                                                         : element(element(child(path, "values"), i), j);
-              value(law.values[i * nf + j], at,
-                    law.speeds.empty() ? fmt::format("{}.values[{}]", key, j)
-                                       : fmt::format("{}.values[{}][{}]", key, i, j),
-                    true, stiffness);
+              const std::string name = law.speeds.empty() ? fmt::format("{}.values[{}]", key, j)
+                                                          : fmt::format("{}.values[{}][{}]", key, i, j);
+              const Real v = law.values[i * nf + j];
+              if (direct && !stiffness && v < 0.0)
+                fail(at, fmt::format("'{}' must not be negative, got {} ('{}' is a direct damping: in a frequency "
+                                     "table a direct stiffness may turn negative, a damping may not)",
+                                     name, shown(at, v, kind), key));
+              value(v, at, name, true, true);
             }
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
           value(law.below, child(path, "below"), "below", true);

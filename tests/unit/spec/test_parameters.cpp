@@ -86,6 +86,21 @@ TEST(Parameters, PartsOfCoefficientLaws) {
   };
   EXPECT_TRUE(has(".ky.below"));
   EXPECT_TRUE(has(".ky.at"));
+
+  // A frequency table: values[speed][frequency] with speeds, values[frequency] without.
+  ModelSpec grid = spec_of(models + "/valid/everything.toml");
+  EXPECT_EQ(get_parameter(grid, "springs[bearing b].kyz.values[1][0]").value, -1e4);
+  EXPECT_EQ(get_parameter(grid, "springs[bearing b].cy.values[2]").value, 50.0);
+  set_parameter(grid, "springs[bearing b].kyz.values[1][1]", "5 kN/m");
+  set_parameter(grid, "springs[bearing b].cy.frequencies[1]", "60 Hz");
+  const auto& t = std::get<SpeedCoefficient::FrequencyTable>(grid.springs[1].kyz->law());
+  EXPECT_EQ(t.values, (std::vector<Real>{1e4, 2e4, -1e4, 5e3}));  // row-major, the rest kept
+  const auto& row = std::get<SpeedCoefficient::FrequencyTable>(grid.springs[1].cy->law());
+  EXPECT_DOUBLE_EQ(row.frequencies[1], 2.0 * 3.141592653589793 * 60.0);
+  const std::string whole = error_of([&] { (void)get_parameter(grid, "springs[bearing b].kyz"); });
+  EXPECT_NE(whole.find("follows a frequency table law: name an entry"), std::string::npos) << whole;
+  const std::string one = error_of([&] { (void)get_parameter(grid, "springs[bearing b].kyz.values[1]"); });
+  EXPECT_NE(one.find("values[0][0]"), std::string::npos) << one;
 }
 
 TEST(Parameters, EveryListedParameterReadsBackAndSetsItself) {
