@@ -72,6 +72,12 @@ def cases():
     # Newton iteration, 4 s of rotor time at 50 µs.
     out.append(("example06_runup_oil_whip", "examples", None,
                 ["runup", os.path.join(ex, "06_oil_whip", "model.toml")], 1, "run"))
+    # Frequency-dependent pedestal tables: each mode iterated to its own frequency,
+    # against the same rotor with the pedestal built in (one eigen solve per speed).
+    ex7 = os.path.join(ex, "07_pedestal")
+    out.append(("example07_campbell_tables", "examples", None, ["campbell", os.path.join(ex7, "model.toml")], 1, "run"))
+    out.append(("example07_campbell_built_in", "examples", None,
+                ["campbell", os.path.join(ex7, "model_explicit.toml")], 1, "run"))
     # The automatic eigen-solver choice against both solvers (docs/performance.md):
     # auto should never be much slower than the faster of the two.
     pump = os.path.join(HERE, "models", "pump_130.toml")

@@ -426,59 +426,68 @@ ModalResult ModalSolver::solve(Real speed) const {
 }
 
 ModalResult ModalSolver::solve_self_consistent(Real speed) const {
-  // Every mode starts from the modes with synchronous coefficients (ω = Ω), the
-  // coefficients a run-up integrates. Its eigenvalue p(ω) with the coefficients at ω
-  // is followed by nearness in the complex plane (by shape among repeated values) and
-  // ω moved to the fixed point ω = Im p(ω): one fixed-point step, then secant steps on
-  // h(ω) = Im p(ω) − ω (a fixed-point step where the secant leaves ω ≥ 0).
+  // The modes with synchronous coefficients (ω₀ = |Ω|, those a run-up integrates) fix
+  // how many modes are wanted. The oscillatory ones are then taken slot by slot: the
+  // i-th lowest frequency f_i(ω) of the solve with the coefficients at ω is a
+  // continuous function of ω (ordered values are, where modes cross too), and its
+  // fixed point ω = f_i(ω) is the i-th mode at its own frequency — one fixed point per
+  // slot while the coefficients vary slowly enough (|f_i'| < 1), so a degenerate start
+  // (an isotropic rotor at rest whose supports then part its pair) cannot lose a mode.
+  // One fixed-point step, then secant steps on h(ω) = f_i(ω) − ω. Non-oscillatory
+  // modes (Im p = 0) are taken with the coefficients at ω = 0.
   const Real omega0 = std::abs(speed);
   ModalResult result = solve_at(speed, omega0);
   result.frequency_dependent = true;
   if (!result.info.converged()) return result;
   const Real zero_tol = 1e-6 * std::sqrt(lambda_max_);
-  constexpr Real rtol = 1e-9;   // on |Im p(ω) − ω| relative to ω
+  constexpr Real rtol = 1e-9;  // on |f_i(ω) − ω| relative to ω
   constexpr int max_iterations = 40;
-  // The solves at each trial frequency, shared by the modes.
-  std::map<Real, ModalResult> solved;
+  std::map<Real, ModalResult> solved;  // the solves at each trial frequency, shared by the slots
+  solved.emplace(omega0, result);
   const auto at = [&](Real omega) -> const ModalResult& {
     auto it = solved.find(omega);
     if (it == solved.end()) it = solved.emplace(omega, solve_at(speed, omega)).first;
     return it->second;
   };
-  const auto nearest = [&](const ModalResult& r, const Mode& to) -> const Mode* {
-    const Mode* best = nullptr;
-    Real best_distance = std::numeric_limits<Real>::infinity(), best_mac = -1.0;
-    for (const Mode& m : r.modes) {
-      const Real d = magnitude(m.eigenvalue - to.eigenvalue);
-      const Real c = mac(m.reduced_shape, to.reduced_shape);
-      // Values within 1e-6 of each other are one repeated value: the shape decides.
-      const Real close = 1e-6 * (magnitude(to.eigenvalue) + zero_tol);
-      if (best == nullptr || d < best_distance - close || (d <= best_distance + close && c > best_mac)) {
-        best = &m;
-        best_distance = std::min(best_distance, d);
-        best_mac = c;
-      }
-    }
-    return best;
+  // The oscillatory modes of a solve, by frequency (ModalResult lists them so).
+  const auto oscillatory = [](const ModalResult& r) {
+    std::vector<const Mode*> out;
+    for (const Mode& m : r.modes)
+      if (m.oscillatory) out.push_back(&m);
+    return out;
   };
 
   std::vector<Mode> settled;
-  for (const Mode& start : result.modes) {
+  std::size_t n_still = 0;
+  for (const Mode& m : result.modes) n_still += m.oscillatory ? 0 : 1;
+  if (n_still > 0) {
+    const ModalResult& r0 = at(0.0);
+    for (const Mode& m : r0.modes)
+      if (!m.oscillatory && settled.size() < n_still) settled.push_back(m);
+  }
+  const std::size_t slots = oscillatory(result).size();
+  for (std::size_t i = 0; i < slots; ++i) {
+    const Mode start = *oscillatory(result)[i];
     Mode mode = start;
     Real w_prev = omega0, h_prev = mode.eigenvalue.imag() - omega0;
     Real w = mode.eigenvalue.imag();
     Index iterations = 0;
     bool converged = std::abs(h_prev) <= rtol * std::max(omega0, zero_tol);
+    std::string trouble;
     while (!converged && iterations < max_iterations) {
       const ModalResult& r = at(w);
       ++iterations;
       if (!r.info.converged()) {
-        result.info.fail(r.info.status, r.info.message);
+        trouble = r.info.message;
         break;
       }
-      const Mode* m = nearest(r, mode);
-      if (m == nullptr) break;
-      mode = *m;
+      const std::vector<const Mode*> modes = oscillatory(r);
+      if (modes.size() <= i) {
+        trouble = fmt::format("with the coefficients at {:.6g} Hz it has no oscillatory mode of its rank",
+                              rad_to_hz(w));
+        break;
+      }
+      mode = *modes[i];
       const Real h = mode.eigenvalue.imag() - w;
       if (std::abs(h) <= rtol * std::max(w, zero_tol)) {
         converged = true;
@@ -493,16 +502,14 @@ ModalResult ModalSolver::solve_self_consistent(Real speed) const {
     result.frequency_iterations = std::max(result.frequency_iterations, iterations);
     if (!converged && result.info.converged())
       result.info.fail(SolverStatus::not_converged,
-                       fmt::format("the mode near {:.6g} Hz at {:.6g} Hz did not settle on its own frequency in "
-                                   "{} eigen solves (frequency-dependent coefficients); its last iterate is kept",
-                                   start.frequency_hz, rad_to_hz(speed), max_iterations));
-    // Two starts that settle on one mode (same value, same shape) list it once.
-    const bool listed = std::any_of(settled.begin(), settled.end(), [&](const Mode& s) {
-      return magnitude(s.eigenvalue - mode.eigenvalue) <= 1e-7 * (magnitude(mode.eigenvalue) + zero_tol) &&
-             mac(s.reduced_shape, mode.reduced_shape) > 0.9;
-    });
-    if (!listed) settled.push_back(std::move(mode));
+                       fmt::format("the mode near {:.6g} Hz at {:.6g} Hz did not settle on its own frequency "
+                                   "(frequency-dependent coefficients) {}; its last iterate is kept",
+                                   start.frequency_hz, rad_to_hz(speed),
+                                   trouble.empty() ? fmt::format("in {} eigen solves", max_iterations)
+                                                   : "— " + trouble));
+    settled.push_back(std::move(mode));
   }
+  result.info.iterations = 0;
   for (const auto& [w, r] : solved) result.info.iterations += r.info.iterations;
   std::stable_sort(settled.begin(), settled.end(),
                    [](const Mode& a, const Mode& b) { return a.frequency_hz < b.frequency_hz; });

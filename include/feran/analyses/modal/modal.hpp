@@ -118,8 +118,8 @@ struct ModalResult {
 /// the static equilibrium at each speed (linearised(), analyses/static/equilibrium.hpp);
 /// solve() then throws Error at speed 0. Coefficients that depend on the frequency of
 /// the motion (frequency tables) are taken at each mode's own damped frequency ω = Im p:
-/// starting from the modes with synchronous coefficients (ω = Ω), each eigenvalue is
-/// iterated to the fixed point ω = Im p(ω) by the secant method on Im p(ω) − ω
+/// starting from the modes with synchronous coefficients (ω = Ω), the i-th lowest
+/// frequency f_i(ω) is iterated to its fixed point ω = f_i(ω) by the secant method
 /// (docs/theory/modal_analysis.md, "Frequency-dependent coefficients").
 /// solve() may be called from several threads.
 class ModalSolver {
