@@ -31,7 +31,9 @@ Real bilinear(const SpeedCoefficient::FrequencyTable& t, Real speed, Real freque
   const std::size_t ns = t.speeds.empty() ? 1 : t.speeds.size();
   if (nf == 0 || t.values.size() != ns * nf)
     throw Error("a frequency table needs one value per speed and frequency, and at least one frequency");
-  const auto [j, sf] = locate(t.frequencies, std::abs(frequency));
+  const std::pair<std::size_t, Real> at_frequency = locate(t.frequencies, std::abs(frequency));
+  const std::size_t j = at_frequency.first;
+  const Real sf = at_frequency.second;
   const auto row = [&](std::size_t i) {
     const Real* v = t.values.data() + i * nf;
     return nf == 1 ? v[0] : (1.0 - sf) * v[j] + sf * v[j + 1];
