@@ -465,9 +465,9 @@ ModalResult ModalSolver::solve_self_consistent(Real speed) const {
     for (const Mode& m : r0.modes)
       if (!m.oscillatory && settled.size() < n_still) settled.push_back(m);
   }
-  const std::size_t slots = oscillatory(result).size();
-  for (std::size_t i = 0; i < slots; ++i) {
-    const Mode start = *oscillatory(result)[i];
+  const std::vector<const Mode*> starts = oscillatory(result);  // result.modes stays as it is until the end
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    const Mode start = *starts[i];
     Mode mode = start;
     Real w_prev = omega0, h_prev = mode.eigenvalue.imag() - omega0;
     Real w = mode.eigenvalue.imag();
