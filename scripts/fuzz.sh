@@ -11,12 +11,13 @@
 #                                              # already (the test suite's sanitizer pass)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/compiler_cache.sh
 seconds=${1:-60}
 build=${2:-build-fuzz}
 jobs=$(nproc 2>/dev/null || echo 2)
 if [ $# -lt 2 ]; then
   CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -DFERAN_FUZZ=ON -DFERAN_BUILD_TESTS=OFF \
-    -DFERAN_BUILD_PYTHON=OFF -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" >/dev/null
+    -DFERAN_BUILD_PYTHON=OFF -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" "${feran_launcher[@]}" >/dev/null
 elif ! grep -q '^FERAN_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
   echo "fuzz.sh: $build is not a tree configured with -DFERAN_FUZZ=ON (clang-14)" >&2
   exit 2

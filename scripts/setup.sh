@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake
+  ccache  # a second build of the same sources (CI on the same machine, a new clone) compiles only what changed
   libeigen3-dev libspectra-dev liblapack-dev libopenblas-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev

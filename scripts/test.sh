@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the whole test suite through ctest, twice:
-#  1. the Release build, warnings as errors;
+#  1. the Release build, warnings as errors (scripts/build.sh: the configuration demo.sh
+#     builds too);
 #  2. a build with clang-14, AddressSanitizer and UndefinedBehaviorSanitizer, a Debug
 #     build (no NDEBUG), so that Eigen's and feran's debug assertions and memory
 #     errors are checked too, optimised only at -O1 (the level the sanitizers' own
@@ -17,19 +18,20 @@
 #     the sanitizer build carries libFuzzer's coverage instrumentation (FERAN_FUZZ).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/compiler_cache.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 stage() { echo "test.sh: $1 took $((SECONDS - stage_start)) s (total ${SECONDS} s)"; stage_start=$SECONDS; }
 stage_start=$SECONDS
 bash scripts/setup.sh
 stage "set-up"
-FERAN_WARNINGS_AS_ERRORS=ON bash scripts/build.sh
+bash scripts/build.sh
 stage "the Release build"
 ctest --test-dir build --output-on-failure -j "$jobs"
 stage "the Release tests"
 
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g0 -O1" \
   -DFERAN_SANITIZE=ON -DFERAN_FUZZ=ON -DFERAN_LONG_TESTS=OFF -DFERAN_BUILD_PYTHON=OFF -DFERAN_BROWSER_TESTS=OFF \
-  -DFERAN_WARNINGS_AS_ERRORS=ON -DFERAN_UNITY_BUILD=ON >/dev/null
+  -DFERAN_WARNINGS_AS_ERRORS=ON -DFERAN_UNITY_BUILD=ON "${feran_launcher[@]}" >/dev/null
 cmake --build build-sanitize -j "$jobs" >/dev/null
 stage "the sanitizer build"
 ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long_runup
