@@ -82,7 +82,7 @@ Runner add_api684_command(CLI::App& app) {
     if (!args->unbalance.empty()) request.model_unbalance = args->unbalance == "model";
     request.unbalance_multiple = args->multiple;
     for (const std::string& p : args->probes) request.probes.push_back(find_node_reference(model, p, "--probe"));
-    for (const std::string& b : args->bearings) request.bearings.push_back(spring_element(model, b));
+    for (const std::string& b : args->bearings) request.bearings.push_back(bearing_element(model, b));
     request.map = !args->no_map;
     request.map_low = args->map_low;
     request.map_high = args->map_high;

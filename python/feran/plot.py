@@ -119,7 +119,8 @@ def campbell(result, unit="Hz", colour="damping_ratio", orders=True, criticals=T
              ax=None, cmap="coolwarm_r"):
     """The Campbell diagram: the frequency of each tracked mode against speed,
     coloured by its damping ratio (``colour="damping_ratio"``) or log decrement
-    (``"log_decrement"``; ``None``: one colour per mode), forward whirl marked ▲ and
+    (``"log_decrement"``; ``None``: one colour per mode) on a diverging scale
+    symmetric about zero (the report's: red below zero, unstable; blue above), forward whirl marked ▲ and
     backward ▼, the excitation lines f = k × speed, the critical speeds (○) and the
     stability threshold (a dotted vertical line). The frequency axis ends at
     ``fmax`` (in ``unit``), by default a little above the highest excitation line,
@@ -134,10 +135,11 @@ def campbell(result, unit="Hz", colour="damping_ratio", orders=True, criticals=T
     finite = values[np.isfinite(values)] if values is not None else np.array([])
     norm = None
     if finite.size:
+        # One scale for every door (the report's too): diverging, centred on zero
+        # damping and symmetric about it, so that red always means unstable (below
+        # zero) and blue well damped, with ticks on both sides.
         limit = float(np.max(np.abs(finite))) or 1.0
-        norm = matplotlib.colors.TwoSlopeNorm(vcenter=0.0, vmin=min(-1e-12, float(finite.min())),
-                                              vmax=max(1e-12, float(finite.max()))) \
-            if finite.min() < 0 < finite.max() else matplotlib.colors.Normalize(-limit, limit)
+        norm = matplotlib.colors.Normalize(-limit, limit)
     for i, label in enumerate(result.labels):
         if colour and norm is not None:
             points = np.column_stack([x, y[i]])

@@ -9,6 +9,7 @@
 
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
 #include <feran/io/report.hpp>
@@ -29,10 +30,7 @@ struct PyApi684Result {
 
 py::object optional_value(const std::optional<Real>& x) { return x ? py::cast(*x) : py::none(); }
 
-std::string element_label(const Model& model, Index e) {
-  const std::string& label = model.elements[static_cast<std::size_t>(e)].label();
-  return label.empty() ? "element " + std::to_string(e + 1) : label;
-}
+std::string element_label(const Model& model, Index e) { return linearised_element_name(model, e); }
 
 py::dict case_dict(const Api684Case& c, const Model& model) {
   py::dict d;
@@ -69,6 +67,7 @@ py::dict case_dict(const Api684Case& c, const Model& model) {
       dk["actual_margin"] = k.actual_margin;
       dk["required_margin"] = optional_value(k.required_margin);
       dk["passes"] = k.passes ? py::cast(*k.passes) : py::none();
+      dk["unstable"] = k.unstable;
       peaks.append(dk);
     }
   d["peaks"] = peaks;
@@ -163,6 +162,20 @@ void bind_api684(py::module_& m) {
                if (!c.passes) return false;
              return true;
            }, "every judged resonance peak keeps the separation margin API 617 requires")
+      .def_property_readonly("operating_stability", [](const PyApi684Result& r) {
+             const OperatingStability& v = r.result.stability_verdict;
+             py::dict d;
+             d["passes"] = v.passes;
+             d["reason"] = v.reason;
+             d["speeds"] = array_1d(v.points.size(), [&](std::size_t i) { return v.points[i].speed; });
+             d["unstable"] = array_1d(v.points.size(), [&](std::size_t i) {
+               return v.points[i].known ? (v.points[i].unstable ? 1.0 : 0.0) : NAN;
+             });
+             d["growth_rate"] = array_1d(v.points.size(), [&](std::size_t i) { return v.points[i].growth_rate; });
+             return d;
+           }, "the stability verdict over the operating range: passes, reason, speeds [rad/s], unstable\n"
+              "(1/0, NaN unknown) and growth_rate [1/s] at 11 speeds from the minimum to the maximum\n"
+              "continuous speed")
       .def_property_readonly("map", [](const PyApi684Result& r) { return map_dict(r.result.map, r.model()); },
                              "the undamped critical speed map: stiffness [N/m], criticals (stiffness × n)\n"
                              "[rad/s], curves and intersections; None without it")
@@ -196,7 +209,7 @@ void bind_api684(py::module_& m) {
         request.unbalance_multiple = unbalance_multiple;
         request.probes = node_arguments(file->model, probes, "probes");
         for (const std::string& b : text_arguments(bearings, "bearings"))
-          request.bearings.push_back(spring_element(file->model, b));
+          request.bearings.push_back(bearing_element(file->model, b));
         request.map = map;
         request.map_low = optional_stiffness(map_low, "map_low");
         request.map_high = optional_stiffness(map_high, "map_high");

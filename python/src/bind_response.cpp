@@ -74,6 +74,22 @@ void bind_response(py::module_& m) {
       .def_property_readonly("frequencies", [](const PyResponseResult& r) {
              return array_1d(r.result.frequencies.size(), [&](std::size_t k) { return r.result.frequencies[k]; });
            }, "excitation frequency per point [rad/s] (the speed itself in a speed sweep)")
+      .def_property_readonly("unstable", [](const PyResponseResult& r) {
+             return array_1d(r.result.stability.size(), [&](std::size_t k) {
+               const StabilityPoint& p = r.result.stability[k];
+               return p.known ? (p.unstable ? 1.0 : 0.0) : NAN;
+             });
+           }, "per point: 1 where the rotor is unstable at its speed (the response there is no steady state), 0 "
+              "where stable, NaN where unknown; empty when not judged (stability=False)")
+      .def_property_readonly("growth_rate", [](const PyResponseResult& r) {
+             return array_1d(r.result.stability.size(), [&](std::size_t k) { return r.result.stability[k].growth_rate; });
+           }, "per point: the largest real part of a non-rigid eigenvalue [1/s] (> 0: unstable); NaN where the "
+              "energy test decided (stable) or unknown")
+      .def_property_readonly("first_unstable_speed", [](const PyResponseResult& r) -> py::object {
+             const Index k = first_unstable_point(r.result);
+             if (k < 0) return py::none();
+             return py::float_(r.result.stability[static_cast<std::size_t>(k)].speed);
+           }, "the lowest speed of the sweep at which the rotor is unstable [rad/s], or None")
       .def_property_readonly("probes", [](const PyResponseResult& r) {
              return string_list(r.result.probes.size(), [&](std::size_t i) { return node_name(r.model(), r.result.probes[i].node); });
            }, "the probe nodes, by name (else number)")

@@ -6,7 +6,9 @@
 #include <numbers>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/transient/integrator.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/suggestions.hpp>
@@ -159,8 +161,11 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
     for (const NodeRef& p : f.probes) o.probes.push_back(node_index(model, p));
   o.bearings = request.bearings;
   if (o.bearings.empty())
-    for (const std::string& name : f.bearings) o.bearings.push_back(spring_element(model, name));
-  if (o.bearings.empty()) o.bearings = support_springs(model);
+    for (const std::string& name : f.bearings) o.bearings.push_back(bearing_element(model, name));
+  // The bearings as the analysis numbers them: journal and rolling bearings after
+  // the model's own elements (linearised(), analyses/static/equilibrium.hpp).
+  const Model lin = linearised(model);
+  if (o.bearings.empty()) o.bearings = bearing_elements(lin);
   StaticRequest gravity;
   gravity.loads = true;
   o.gravity = static_settings(file.static_, gravity);
@@ -173,10 +178,16 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
     // maximum continuous speed (geometric mean over bearings and directions).
     Real log_sum = 0;
     int count = 0;
-    for (const Index e : o.bearings)
-      if (const auto t = model.elements[static_cast<std::size_t>(e)].transmission(*high))
+    for (const Index e : o.bearings) {
+      std::optional<Transmission> t;
+      try {
+        t = lin.elements[static_cast<std::size_t>(e)].transmission(*high);
+      } catch (const Error&) {  // no journal equilibrium there: the analysis itself will say why
+      }
+      if (t)
         for (const Dof d : {Dof::v, Dof::w})
           if (const Real k = (*t).K(static_cast<Index>(d), static_cast<Index>(d)); k > 0) log_sum += std::log(k), ++count;
+    }
     const Real centre = count > 0 ? std::exp(log_sum / count) : 1e7;
     map.k_low = request.map_low.value_or(f.map_low.value_or(centre / 100));
     map.k_high = request.map_high.value_or(f.map_high.value_or(centre * 100));
@@ -241,6 +252,24 @@ Index spring_element(const Model& model, const std::string& name) {
     if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name)
       return static_cast<Index>(e);
   throw Error(fmt::format("no spring-damper is named '{}'", name));
+}
+
+Index bearing_element(const Model& model, const std::string& name) {
+  for (std::size_t e = 0; e < model.elements.size(); ++e)
+    if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name)
+      return static_cast<Index>(e);
+  Index k = static_cast<Index>(model.elements.size());
+  std::vector<std::string> names;
+  for (const Force& f : model.forces) {
+    if (!f.supports()) continue;
+    if (f.label() == name) return k;
+    ++k;
+    if (!f.label().empty()) names.push_back(fmt::format("'{}'", f.label()));
+  }
+  for (const Element& e : model.elements)
+    if (e.kind() == "spring_damper" && !e.label().empty()) names.push_back(fmt::format("'{}'", e.label()));
+  throw Error(fmt::format("no spring-damper, journal or rolling bearing is named '{}'{}", name,
+                          names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
 }
 
 ModalSettings modal_settings(const ModalSpec& file, const ModalRequest& request) {

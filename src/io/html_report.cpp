@@ -15,6 +15,7 @@
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/core/error.hpp>
@@ -23,6 +24,7 @@
 #include <feran/io/result_writer.hpp>
 #include <feran/io/runup_writer.hpp>
 
+#include "json_text.hpp"
 #include "report_assets.hpp"
 
 namespace feran {
@@ -112,6 +114,7 @@ json model_summary(const ModelFile& file, Real speed) {
       const auto k = [&](Dof d) { return t->K(static_cast<Index>(d), static_cast<Index>(d)); };
       const auto c = [&](Dof d) { return t->C(static_cast<Index>(d), static_cast<Index>(d)); };
       springs.push_back({{"label", el.label()},
+                         {"kind", "spring_damper"},
                          {"node_a", t->node_a},
                          {"node_b", t->node_b ? json(*t->node_b) : json(nullptr)},
                          {"x_m", model.nodes[static_cast<std::size_t>(t->node_a)].x},
@@ -121,6 +124,36 @@ json model_summary(const ModelFile& file, Real speed) {
                          {"kzy_n_per_m", t->K(2, 1)},
                          {"cyy_n_s_per_m", c(Dof::v)},
                          {"czz_n_s_per_m", c(Dof::w)}});
+    }
+  }
+  // Journal and rolling bearings: their tangent about the static equilibrium at this
+  // speed (none at rest for an oil film, or where no equilibrium is found).
+  if (has_supports(model)) {
+    const Model lin = linearised(model);
+    for (auto e = static_cast<Index>(model.elements.size()); e < static_cast<Index>(lin.elements.size()); ++e) {
+      const Element& el = lin.elements[static_cast<std::size_t>(e)];
+      const Connection at = *el.connection();
+      std::optional<Transmission> t;
+      if (speed > 0 || !needs_speed(model)) {
+        try {
+          t = el.transmission(speed);
+        } catch (const Error&) {  // no equilibrium at this speed: drawn without coefficients
+        }
+      }
+      const auto k = [&](Index i, Index j) { return t ? detail::json_number(t->K(i, j)) : json(nullptr); };
+      const auto c = [&](Index i) { return t ? detail::json_number(t->C(i, i)) : json(nullptr); };
+      const auto v = static_cast<Index>(Dof::v), w = static_cast<Index>(Dof::w);
+      springs.push_back({{"label", linearised_element_name(model, e)},
+                         {"kind", std::string(model.forces[*linearised_support_force(model, e)].kind())},
+                         {"node_a", at.node_a},
+                         {"node_b", at.node_b ? json(*at.node_b) : json(nullptr)},
+                         {"x_m", model.nodes[static_cast<std::size_t>(at.node_a)].x},
+                         {"kyy_n_per_m", k(v, v)},
+                         {"kzz_n_per_m", k(w, w)},
+                         {"kyz_n_per_m", k(v, w)},
+                         {"kzy_n_per_m", k(w, v)},
+                         {"cyy_n_s_per_m", c(v)},
+                         {"czz_n_s_per_m", c(w)}});
     }
   }
   return {{"title", file.title},
@@ -247,7 +280,19 @@ std::string html_report(const ModelFile& file, const ReportOptions& options) {
 
   // Mode shapes at the chosen speeds.
   std::vector<Real> speeds = options.mode_speeds;
-  if (speeds.empty()) speeds = {0.0, high.value_or(co.speeds.back())};
+  if (speeds.empty()) {
+    // At rest, unless an oil film carries the rotor only while it turns: then the
+    // lowest operating speed, else the Campbell diagram's first speed above 0.
+    Real first = 0.0;
+    if (needs_speed(model)) {
+      first = low.value_or(0.0);
+      for (const Real s : co.speeds)
+        if (!(first > 0) && s > 0) first = s;
+    }
+    speeds = {first};
+    const Real last = high.value_or(co.speeds.back());
+    if (last != first) speeds.push_back(last);
+  }
   json modes = json::array();
   for (const Real s : speeds) {
     ModalOptions mo;
@@ -275,17 +320,15 @@ std::string html_report(const ModelFile& file, const ReportOptions& options) {
       if (low && high) {
         json peaks = json::array();
         for (std::size_t p = 0; p < hr.probes.size(); ++p) {
-          std::vector<Real> amplitude;
-          for (const Orbit& o : hr.probes[p].orbit) amplitude.push_back(o.major);
-          for (const SeparationCheck& c :
-               separation_checks(std::span<const Real>(hr.speeds.data(), amplitude.size()), amplitude, *low, *high))
+          for (const SeparationCheck& c : separation_checks(hr, p, *low, *high))
             peaks.push_back({{"probe", p},
                              {"speed_rpm", rad_to_hz(c.peak.speed) * 60},
                              {"amplitude_m", c.peak.amplitude},
                              {"amplification_factor", c.peak.resolved() ? json(c.peak.amplification_factor) : json(nullptr)},
                              {"actual_margin", c.actual_margin},
                              {"required_margin", c.required_margin ? json(*c.required_margin) : json(nullptr)},
-                             {"passes", c.passes ? json(*c.passes) : json(nullptr)}});
+                             {"passes", c.passes ? json(*c.passes) : json(nullptr)},
+                             {"unstable", c.unstable}});
         }
         j["peaks"] = peaks;
       }
@@ -313,7 +356,12 @@ std::string html_report(const ModelFile& file, const ReportOptions& options) {
 
   if (options.static_analysis)
     section(data, "static", [&] {
-      const StaticOptions so = static_settings(spec.static_, {});
+      // A rotor on oil films rests on them only while it turns: without a speed of
+      // its own, the static analysis runs at the maximum operating speed (else the
+      // first speed above 0 the mode shapes use).
+      StaticRequest request;
+      if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
+      const StaticOptions so = static_settings(spec.static_, request);
       return json::parse(static_json(run_static(model, so), so, model, source));
     });
 

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/text.hpp>
 
 namespace feran {
@@ -109,9 +110,30 @@ namespace {
 // Names as the model gives them, made printable (core/text.hpp).
 std::string node_name(const Model& model, Index node) { return printable(model.node_label(node)); }
 
+// Also for the elements of linearised(model) that stand for its journal and rolling
+// bearings (numbered after its own).
 std::string element_name(const Model& model, Index element) {
-  const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
-  return label.empty() ? fmt::format("element {}", element + 1) : printable(label);
+  return printable(linearised_element_name(model, element));
+}
+
+// A steady-state result's stability (modal/stability.hpp), in a few lines: nothing
+// when stable everywhere; else where it is unstable and what that means.
+std::string stability_text(const HarmonicResult& result) {
+  const Index first = first_unstable_point(result);
+  std::string out;
+  Index unknown = 0;
+  for (const StabilityPoint& p : result.stability) unknown += p.known ? 0 : 1;
+  if (first >= 0) {
+    const StabilityPoint& p = result.stability[static_cast<std::size_t>(first)];
+    out += fmt::format("WARNING: the rotor is UNSTABLE at {} of {} points, from {:.2f} Hz ({:.0f} rpm): {}.\n"
+                       "         There the response is no steady state the rotor reaches: any disturbance grows.\n\n",
+                       unstable_points(result), result.stability.size(), rad_to_hz(p.speed), 60 * rad_to_hz(p.speed),
+                       p.divergence ? fmt::format("divergence, a real eigenvalue {:.4g} 1/s", p.growth_rate)
+                                    : fmt::format("a mode at {:.4g} Hz grows at {:.4g} 1/s", p.frequency_hz, p.growth_rate));
+  }
+  if (unknown > 0)
+    out += fmt::format("note: the stability is unknown at {} of {} points\n\n", unknown, result.stability.size());
+  return out;
 }
 
 std::string force_name(const Model& model, Index force) {
@@ -149,6 +171,7 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
     out += "Orbit size (major semi-axis, = largest |r|) [mm] and phase of v [deg]\n";
     out += fmt::format("{:>12}", result.frequency_sweep ? "freq. [Hz]" : "speed [Hz]");
     for (const ProbeResponse& p : result.probes) out += fmt::format(" {:>14} {:>7}", node_name(model, p.node), "phase");
+    if (unstable_points(result) > 0) out += "  rotor";
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t k = rows == 1 ? 0 : r * (n - 1) / (rows - 1);
@@ -159,11 +182,13 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
         out += ' ';
         out += cell(std::arg(p.q[k][static_cast<std::size_t>(Dof::v)]) * 180 / pi, ".1f", 7, 1);
       }
+      if (unstable_points(result) > 0 && result.stability[k].unstable) out += "  UNSTABLE";
       out += '\n';
     }
     out += '\n';
   }
 
+  out += stability_text(result);
   const ResponseSummary sum = summarize(result);
   out += "Peaks:\n";
   for (std::size_t p = 0; p < sum.probe_peaks.size(); ++p)
@@ -286,10 +311,7 @@ namespace {
 
 std::string rpm_text(Real speed) { return fmt::format("{:.0f} rpm", rad_to_hz(speed) * 60.0); }
 
-std::string bearing_name(const Model& model, Index e) {
-  const std::string& label = model.elements[static_cast<std::size_t>(e)].label();
-  return label.empty() ? fmt::format("element {}", e + 1) : printable(label);
-}
+std::string bearing_name(const Model& model, Index e) { return element_name(model, e); }
 
 std::string api684_cases(const Api684Result& result, const Model& model) {
   std::string out;
@@ -309,7 +331,10 @@ std::string api684_cases(const Api684Result& result, const Model& model) {
                            k.peak.amplitude * 1e6, cell(k.peak.amplification_factor, ".2f", 8, 2),
                            k.required_margin ? fmt::format("{:>9.1f}%", 100 * *k.required_margin) : fmt::format("{:>10}", "-"),
                            100 * k.actual_margin,
-                           !k.passes ? "not judged (no half-power points)" : *k.passes ? "pass" : "FAIL");
+                           k.unstable   ? "FAIL (rotor unstable here: no steady state)"
+                           : !k.passes  ? "not judged (no half-power points)"
+                           : *k.passes  ? "pass"
+                                        : "FAIL");
   }
   return out;
 }
@@ -319,6 +344,8 @@ std::string api684_cases(const Api684Result& result, const Model& model) {
 std::string api684_report(const Api684Result& result, const Model& model, const ResultSource& source) {
   std::string out = source_line("api684", source);
   out += fmt::format("operating range {} to {}\n", rpm_text(result.low), rpm_text(result.high));
+  out += fmt::format("stability in the operating range: {} ({})\n",
+                     result.stability_verdict.passes ? "passes" : "FAILS", result.stability_verdict.reason);
   if (!result.journals.empty()) {
     out += "\njournal loads:";
     for (const JournalLoad& j : result.journals)

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <feran/analyses/static/equilibrium.hpp>
+
 #include "csv_text.hpp"
 #include "json_text.hpp"
 
@@ -74,14 +76,39 @@ json dof_series(const std::vector<NodeAmplitudes>& values, const std::array<bool
 constexpr std::array<bool, dofs_per_node> all_dofs{true, true, true, true, true, true};
 constexpr std::array<bool, dofs_per_node> lateral_dofs{false, true, true, false, false, false};
 
-std::string element_label(const Model& model, Index element) {
-  const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
-  return label.empty() ? fmt::format("element {}", element + 1) : label;
-}
+// Also for the elements of linearised(model) that stand for its journal and rolling
+// bearings (numbered after its own).
+std::string element_label(const Model& model, Index element) { return linearised_element_name(model, element); }
 
 std::string force_label(const Model& model, Index force) {
   const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
   return label.empty() ? fmt::format("force {}", force + 1) : label;
+}
+
+// The rotor's stability at each point of a steady-state result (modal/stability.hpp):
+// per point whether it is unstable (null: unknown), the largest growth rate where
+// eigenvalues were computed, and the first unstable speed.
+json point_stability_json(const std::vector<StabilityPoint>& points) {
+  if (points.empty()) return nullptr;
+  json unstable = json::array(), growth = json::array(), frequency = json::array(), kind = json::array();
+  Index first = -1, count = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const StabilityPoint& p = points[k];
+    unstable.push_back(p.known ? json(p.unstable) : json(nullptr));
+    growth.push_back(detail::json_number(p.growth_rate));
+    frequency.push_back(p.unstable ? detail::json_number(p.frequency_hz) : json(nullptr));
+    kind.push_back(!p.known ? "unknown" : !p.unstable ? "stable" : p.divergence ? "divergence" : "flutter");
+    if (p.unstable) {
+      ++count;
+      if (first < 0) first = static_cast<Index>(k);
+    }
+  }
+  json j = {{"unstable", unstable}, {"growth_rate_per_s", growth}, {"unstable_mode_frequency_hz", frequency},
+            {"kind", kind}, {"unstable_points", count}};
+  j["first_unstable_speed_hz"] = first < 0 ? json(nullptr) : json(rad_to_hz(points[static_cast<std::size_t>(first)].speed));
+  j["note"] = count == 0 ? "stable at every point"
+                         : "where unstable the response is no steady state the rotor reaches: any disturbance grows";
+  return j;
 }
 
 json station_json(const Model& model, const ShaftStation& st) {
@@ -112,6 +139,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
                    std::any_of(model.forces.begin(), model.forces.end(),
                                [](const Force& f) { return f.kind() == "unbalance"; });
   j["solver"] = solver_json(result.info);
+  j["stability"] = point_stability_json(result.stability);
 
   json probes = json::array();
   for (const ProbeResponse& p : result.probes) {
@@ -278,7 +306,8 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
   for (const ReactionResponse& r : result.reactions)
     out << ',' << detail::csv_column(node_tag(r.node), "_support_peak_lateral_force_n");
   const bool peaks = !result.shaft_stations.empty();
-  out << (peaks ? ",max_von_mises_pa,max_von_mises_x_m\n" : "\n");
+  const bool stability = !result.stability.empty();
+  out << (peaks ? ",max_von_mises_pa,max_von_mises_x_m" : "") << (stability ? ",unstable,growth_rate_per_s\n" : "\n");
   for (std::size_t k = 0; k < result.speeds.size(); ++k) {
     out << csv_number(rad_to_hz(result.speeds[k])) << ',' << csv_number(rad_to_hz(result.frequencies[k]));
     for (const ProbeResponse& p : result.probes) {
@@ -293,6 +322,10 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
       const StationPeak& vm = result.station_peaks[k].von_mises;
       out << ',' << csv_number(vm.value) << ','
           << csv_number(result.shaft_stations[static_cast<std::size_t>(vm.station)].x);
+    }
+    if (stability) {  // 1 unstable, 0 stable, empty unknown
+      const StabilityPoint& p = result.stability[k];
+      out << ',' << (p.known ? (p.unstable ? "1" : "0") : "") << ',' << csv_number(p.growth_rate);
     }
     out << '\n';
   }
@@ -570,11 +603,13 @@ json case_json(const Api684Case& c, const Model& model) {
                        {"amplification_factor", json_number(k.peak.amplification_factor)},
                        {"actual_margin", json_number(k.actual_margin)},
                        {"required_margin", optional_number(k.required_margin)},
-                       {"passes", k.passes ? json(*k.passes) : json(nullptr)}});
+                       {"passes", k.passes ? json(*k.passes) : json(nullptr)},
+                       {"unstable", k.unstable}});
     jp["peaks"] = peaks;
     probes.push_back(jp);
   }
   jc["probes"] = probes;
+  jc["stability"] = point_stability_json(c.response.stability);
   return jc;
 }
 
@@ -627,6 +662,17 @@ std::string api684_json(const Api684Result& result, const Model& model, const Re
   json j = header("api684", source);
   j["operating"] = {{"min_rpm", rpm_of(result.low)}, {"max_rpm", rpm_of(result.high)}};
   j["solver"] = solver_json(result.info);
+  {
+    const OperatingStability& v = result.stability_verdict;
+    json speeds = json::array(), unstable = json::array(), growth = json::array();
+    for (const StabilityPoint& p : v.points) {
+      speeds.push_back(json_number(rpm_of(p.speed)));
+      unstable.push_back(p.known ? json(p.unstable) : json(nullptr));
+      growth.push_back(json_number(p.growth_rate));
+    }
+    j["operating_stability"] = {{"passes", v.passes}, {"reason", v.reason}, {"speeds_rpm", speeds},
+                                {"unstable", unstable}, {"growth_rate_per_s", growth}};
+  }
   json journals = json::array();
   for (const JournalLoad& l : result.journals) {
     json jl = node_json(model, l.node);

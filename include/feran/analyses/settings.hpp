@@ -172,7 +172,7 @@ struct Api684Request {
   std::optional<bool> model_unbalance;       ///< default [api684] unbalance = "model", else 4W/N
   std::optional<Real> unbalance_multiple;    ///< default [api684], else 1
   std::vector<Index> probes;                 ///< empty: [api684] probes, else the default
-  std::vector<Index> bearings;               ///< elements; empty: [api684] bearings, else support_springs()
+  std::vector<Index> bearings;               ///< elements; empty: [api684] bearings, else bearing_elements(linearised(model))
   bool map = true;                           ///< the critical speed map
   std::optional<Real> map_low, map_high;     ///< [N/m]; default [api684], else the bearings' k/100 and ×100
   std::optional<int> map_points;             ///< default [api684], else 41
@@ -208,5 +208,10 @@ std::pair<Real, Real> speed_span(const Model& model, const TransientOptions& opt
 
 /// The spring–damper element labelled @p name; throws Error when there is none.
 Index spring_element(const Model& model, const std::string& name);
+
+/// The bearing labelled @p name, numbered as an element of linearised(@p model): a
+/// spring–damper, or a journal or rolling bearing (after the model's own elements).
+/// Throws Error, listing the named ones, when there is none.
+Index bearing_element(const Model& model, const std::string& name);
 
 }  // namespace feran

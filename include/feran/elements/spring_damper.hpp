@@ -40,6 +40,7 @@ class SpringDamper {
 
   Index node_a() const { return node_a_; }
   const std::optional<Index>& node_b() const { return node_b_; }
+  Connection connection() const { return {node_a_, node_b_}; }
   const SpringDamperCoefficients& coefficients() const { return coeffs_; }
   /// 6×6 stiffness and damping of the relative motion at speed @p speed for motion at
   /// @p frequency [rad/s] (empty: synchronous, frequency = speed).

@@ -25,8 +25,10 @@ struct ReportOptions {
   std::string command;            ///< the command that made the report (its inputs table)
   std::string version;            ///< feran's version (its inputs table)
   CampbellRequest campbell;       ///< stop default: [campbell], else 1.5 × the maximum operating speed
-  /// Speeds of the mode shapes [rad/s]; empty: 0 and the maximum operating speed (or
-  /// the Campbell diagram's last speed).
+  /// Speeds of the mode shapes [rad/s]; empty: 0 (for a rotor on oil films, which
+  /// carry it only while it turns: the minimum operating speed, else the Campbell
+  /// diagram's first speed above 0) and the maximum operating speed (or the Campbell
+  /// diagram's last speed).
   std::vector<Real> mode_speeds;
   int mode_count = 6;             ///< lateral modes drawn at each speed
   ResponseRequest response;       ///< the unbalance response (when the model has unbalances or forces)

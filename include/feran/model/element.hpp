@@ -10,6 +10,9 @@
 ///   transmission(Real speed) -> Transmission   it connects two nodes (or a node and
 ///                                              the ground) and transmits a force to
 ///                                              report: spring–dampers, bearings
+///   connection() -> Connection                 the nodes it connects, known without
+///                                              evaluating it (analyses find the bearings
+///                                              by it; without it, transmission(0) tells)
 ///   shaft_segment() -> ShaftSegment            it is a piece of shaft whose section
 ///                                              forces and stresses are reported
 ///   speed_ranges() -> std::vector<SpeedRange>  it has tabulated data over speed
@@ -71,6 +74,12 @@ struct Transmission {
   Real loss_factor = 0.0;       ///< hysteretic loss factor η of K (harmonic analyses)
 };
 
+/// The nodes a connecting element joins: node_a to node_b, or to the ground.
+struct Connection {
+  Index node_a = 0;
+  std::optional<Index> node_b;  ///< empty: the ground
+};
+
 /// A two-node piece of shaft with a circular cross-section: where section forces
 /// and stresses are reported.
 struct ShaftSegment {
@@ -121,6 +130,11 @@ concept HasShaftSegment = requires(const E& e) {
 };
 
 template <class E>
+concept HasConnection = requires(const E& e) {
+  { e.connection() } -> std::same_as<Connection>;
+};
+
+template <class E>
 concept HasDofs = requires(const E& e) {
   { e.dofs() } -> std::same_as<std::vector<Index>>;
 };
@@ -163,6 +177,8 @@ class Element {
   std::optional<Transmission> transmission(Real speed, std::optional<Real> frequency = std::nullopt) const {
     return self_->transmission(speed, frequency);
   }
+  /// The nodes it connects, if it is a connecting element.
+  std::optional<Connection> connection() const { return self_->connection(); }
   /// The speed ranges of its tabulated data (empty for elements without tables).
   std::vector<SpeedRange> speed_ranges() const { return self_->speed_ranges(); }
   /// The frequency ranges of its frequency tables [rad/s] (empty for most elements).
@@ -190,6 +206,7 @@ class Element {
     virtual std::vector<SpeedRange> frequency_ranges() const = 0;
     virtual std::optional<Transmission> transmission(Real speed, std::optional<Real> frequency) const = 0;
     virtual std::optional<ShaftSegment> shaft_segment() const = 0;
+    virtual std::optional<Connection> connection() const = 0;
     virtual std::vector<SpeedRange> speed_ranges() const = 0;
     virtual const std::type_info& type() const = 0;
     virtual const void* data() const = 0;
@@ -219,6 +236,13 @@ class Element {
       if constexpr (HasFrequencyTransmission<E>) return value.transmission(speed, frequency);
       else if constexpr (HasTransmission<E>) return value.transmission(speed);
       else return std::nullopt;
+    }
+    std::optional<Connection> connection() const override {
+      if constexpr (HasConnection<E>) return value.connection();
+      else if constexpr (HasTransmission<E> || HasFrequencyTransmission<E>) {
+        const std::optional<Transmission> t = transmission(0.0, std::nullopt);  // its nodes, by evaluating it
+        return Connection{t->node_a, t->node_b};
+      } else return std::nullopt;
     }
     std::vector<SpeedRange> speed_ranges() const override {
       if constexpr (HasSpeedRanges<E>) return value.speed_ranges();

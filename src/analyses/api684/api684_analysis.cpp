@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/error.hpp>
 #include <feran/elements/spring_damper.hpp>
 #include <feran/forces/unbalance.hpp>
@@ -16,16 +17,6 @@ namespace feran {
 namespace {
 
 constexpr Real rpm_per_rad_s = 30.0 / pi;
-
-// The rotating node of a bearing.
-Index rotating_node(const Model& model, Index element) {
-  const SpringDamper* s = model.elements[static_cast<std::size_t>(element)].target<SpringDamper>();
-  if (s == nullptr) throw Error(fmt::format("element {} is not a spring–damper", element));
-  if (model.nodes[static_cast<std::size_t>(s->node_a())].rotating) return s->node_a();
-  if (s->node_b() && model.nodes[static_cast<std::size_t>(*s->node_b())].rotating) return *s->node_b();
-  throw Error(fmt::format("the spring '{}' holds no rotating node: it is not a bearing",
-                          model.elements[static_cast<std::size_t>(element)].label()));
-}
 
 // The mode's lateral amplitude at each node, signed against its largest: the
 // projection of the node's (V, W) on the largest node's.
@@ -90,11 +81,20 @@ std::vector<JournalLoad> journal_loads(const Model& model, const std::vector<Ind
   if (!(g > 0)) throw Error("the journal loads of 4W/N need gravity (a direction in [static] or the analysis's own)");
   const StaticResult r = run_static(model, gravity);
   if (!r.info.converged()) throw Error(fmt::format("the static analysis failed: {}", r.info.message));
+  const Model lin = linearised(model);
   std::vector<JournalLoad> out;
+  const auto lateral = [](const NodeValues& force) {
+    return std::hypot(force[static_cast<std::size_t>(Dof::v)], force[static_cast<std::size_t>(Dof::w)]);
+  };
   for (const Index e : springs) {
-    JournalLoad j{e, rotating_node(model, e), 0, 0};
-    for (const auto& [element, force] : r.springs)
-      if (element == e) j.force = std::hypot(force[static_cast<std::size_t>(Dof::v)], force[static_cast<std::size_t>(Dof::w)]);
+    JournalLoad j{e, journal_node(lin, e), 0, 0};
+    if (const auto support = linearised_support_force(model, e)) {
+      for (const auto& [force, value] : r.supports)
+        if (force == static_cast<Index>(*support)) j.force = lateral(value);
+    } else {
+      for (const auto& [element, value] : r.springs)
+        if (element == e) j.force = lateral(value);
+    }
     j.mass = j.force / g;
     out.push_back(j);
   }
@@ -146,10 +146,40 @@ std::vector<PlacedUnbalance> api684_placement(const Model& model, const ComplexV
   };
   const JournalLoad jp = nearest(positive), jn = nearest(negative);
   const auto name = [&](const JournalLoad& j) {
-    const std::string& label = model.elements[static_cast<std::size_t>(j.element)].label();
-    return label.empty() ? fmt::format("bearing at node {}", model.node_label(j.node)) : label;
+    const bool labelled = linearised_support_force(model, j.element)
+                              ? !model.forces[*linearised_support_force(model, j.element)].label().empty()
+                              : !model.elements[static_cast<std::size_t>(j.element)].label().empty();
+    return labelled ? linearised_element_name(model, j.element)
+                    : fmt::format("bearing at node {}", model.node_label(j.node));
   };
   return {placed(positive, jp.mass, 0.0, name(jp)), placed(negative, jn.mass, pi, name(jn))};
+}
+
+OperatingStability operating_stability(const Model& model, Real low, Real high, int points) {
+  OperatingStability out;
+  const int n = low == high ? 1 : std::max(points, 2);
+  for (int i = 0; i < n; ++i) out.points.push_back(stability_at(model, n == 1 ? low : low + (high - low) * i / (n - 1)));
+  const auto rpm = [](Real speed) { return fmt::format("{:.0f} rpm", speed * rpm_per_rad_s); };
+  for (const StabilityPoint& p : out.points) {
+    if (p.unstable) {
+      out.passes = false;
+      out.reason = p.divergence
+                       ? fmt::format("unstable at {}: divergence (a real eigenvalue {:.4g} 1/s: a negative stiffness "
+                                     "or a load beyond buckling)",
+                                     rpm(p.speed), p.growth_rate)
+                       : fmt::format("unstable at {}: a mode at {:.4g} Hz grows at {:.4g} 1/s (log. decrement {:.3g})",
+                                     rpm(p.speed), p.frequency_hz, p.growth_rate,
+                                     -2 * pi * p.growth_rate / (2 * pi * p.frequency_hz));
+      return out;
+    }
+    if (!p.known) {
+      out.passes = false;
+      out.reason = fmt::format("stability unknown at {}: {}", rpm(p.speed), p.message);
+      return out;
+    }
+  }
+  out.reason = fmt::format("stable at {} speeds from {} to {}", out.points.size(), rpm(low), rpm(high));
+  return out;
 }
 
 Api684Result run_api684(const Model& model, const Api684Options& options) {
@@ -160,21 +190,34 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
   Api684Result result;
   result.low = options.low;
   result.high = options.high;
-  result.bearings = options.bearings.empty() ? support_springs(model) : options.bearings;
+  // Every kind of support, as the linear analyses take it: journal and rolling
+  // bearings by their tangent about the static equilibrium at each speed (elements
+  // numbered after the model's own, equilibrium.hpp).
+  const Model lin = linearised(model);
+  result.bearings = options.bearings.empty() ? bearing_elements(lin) : options.bearings;
   if (result.bearings.empty())
-    throw Error("the model has no bearings: no spring–damper holds a rotating node to the ground or to a "
-                "non-rotating node");
+    throw Error("the model has no bearings: no spring–damper, journal or rolling bearing holds a rotating node to "
+                "the ground or to a non-rotating node");
   std::vector<Index> bearing_nodes;
-  for (const Index e : result.bearings) bearing_nodes.push_back(rotating_node(model, e));
+  for (const Index e : result.bearings) bearing_nodes.push_back(journal_node(lin, e));
+  // An oil film carries nothing at rest: the undamped critical speeds start from the
+  // coefficients at the maximum continuous speed, and the responses leave out speed 0.
+  const bool running = needs_speed(model);
+  std::vector<Real> speeds = options.speeds;
+  if (running) std::erase_if(speeds, [](Real s) { return !(s > 0); });
+  if (speeds.size() < 3) throw Error("the unbalance responses need at least 3 speeds above 0");
 
-  result.undamped = undamped_critical_speeds(model, std::max(options.modes, 4), true, &result.info);
+  result.stability_verdict = operating_stability(model, options.low, options.high);
+  result.undamped = undamped_critical_speeds(with_direct_bearing_stiffness(lin, result.bearings),
+                                             std::max(options.modes, 4), true, &result.info,
+                                             running ? options.high : 0.0);
 
   // The unbalance cases.
   Model base = model;
   std::erase_if(base.forces, [](const Force& f) { return f.kind() == "unbalance"; });
   const auto respond = [&](Api684Case c, const Model& m) {
     HarmonicOptions h;
-    h.speeds = options.speeds;
+    h.speeds = speeds;
     h.probes = options.probes;
     if (h.probes.empty()) {
       h.probes = bearing_nodes;
@@ -184,11 +227,8 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
     h.stop = options.stop;
     c.response = run_harmonic_response(m, h);
     if (!c.response.info.converged() && result.info.converged()) result.info = c.response.info;
-    for (const ProbeResponse& p : c.response.probes) {
-      std::vector<Real> amplitude;
-      for (const Orbit& o : p.orbit) amplitude.push_back(o.major);
-      const std::span<const Real> s(c.response.speeds.data(), amplitude.size());
-      c.checks.push_back(separation_checks(s, amplitude, options.low, options.high));
+    for (std::size_t p = 0; p < c.response.probes.size(); ++p) {
+      c.checks.push_back(separation_checks(c.response, p, options.low, options.high));
       for (const SeparationCheck& check : c.checks.back())
         if (check.passes && !*check.passes) c.passes = false;
     }
@@ -229,7 +269,7 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
     CriticalSpeedMapOptions map = *options.map;
     if (map.springs.empty()) map.springs = result.bearings;
     map.stop = options.stop;
-    result.map = run_critical_speed_map(model, map);
+    result.map = run_critical_speed_map(lin, map);
   }
   if (options.stability) {
     StabilitySweepOptions s = *options.stability;

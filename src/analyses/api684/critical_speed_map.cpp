@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <Eigen/Cholesky>
 #include <fmt/format.h>
@@ -162,21 +163,34 @@ struct LateralSystem {
   Matrix M, G;
 };
 
-const SpringDamper& spring_at(const Model& model, Index e) {
+// The connection of bearing @p e of @p model, checked.
+Connection bearing_at(const Model& model, Index e) {
   if (e < 0 || e >= static_cast<Index>(model.elements.size()))
     throw Error(fmt::format("no element {} in the model", e));
-  const SpringDamper* s = model.elements[static_cast<std::size_t>(e)].target<SpringDamper>();
-  if (s == nullptr)
-    throw Error(fmt::format("element {} ('{}') is a {}, not a spring–damper: only bearings can be varied", e,
-                            model.elements[static_cast<std::size_t>(e)].label(),
-                            model.elements[static_cast<std::size_t>(e)].kind()));
-  return *s;
+  const Element& element = model.elements[static_cast<std::size_t>(e)];
+  const std::optional<Connection> c = element.connection();
+  if (!c)
+    throw Error(fmt::format("element {} ('{}') is a {}, not a bearing: only bearings can be varied", e + 1,
+                            element.label(), element.kind()));
+  return *c;
+}
+
+// The direct lateral stiffness k_yy or k_zz of bearing @p e at @p speed; NaN where it
+// cannot be evaluated (a journal bearing whose equilibrium is not found there).
+Real direct_stiffness(const Model& model, Index e, Dof d, Real speed) {
+  try {
+    const auto t = model.elements[static_cast<std::size_t>(e)].transmission(speed);
+    return t ? (*t).K(static_cast<Index>(d), static_cast<Index>(d)) : nan;
+  } catch (const Error&) {
+    return nan;
+  }
 }
 
 // The n lowest forward criticals at one stiffness, speed-dependent coefficients of
 // the other elements at each critical itself.
-std::vector<Real> criticals_of(const LateralSystem& system, int n, bool gyroscopic, SolverInfo& info) {
-  std::vector<UndampedCritical> at_rest = system.forward(system.stiffness(0.0), gyroscopic);
+std::vector<Real> criticals_of(const LateralSystem& system, int n, bool gyroscopic, SolverInfo& info,
+                               Real start = 0.0) {
+  std::vector<UndampedCritical> at_rest = system.forward(system.stiffness(start), gyroscopic);
   std::vector<Real> out(static_cast<std::size_t>(n), nan);
   for (int i = 0; i < n && i < static_cast<int>(at_rest.size()); ++i) out[static_cast<std::size_t>(i)] = at_rest[static_cast<std::size_t>(i)].speed;
   if (!system.assembler.speed_dependent()) return out;
@@ -185,7 +199,17 @@ std::vector<Real> criticals_of(const LateralSystem& system, int n, bool gyroscop
     if (std::isnan(speed)) continue;
     bool converged = false;
     for (int it = 0; it < 100 && !converged; ++it) {
-      const auto found = system.forward(system.stiffness(speed), gyroscopic);
+      std::vector<UndampedCritical> found;
+      try {
+        found = system.forward(system.stiffness(speed), gyroscopic);
+      } catch (const Error& e) {  // a support not evaluable there (no journal equilibrium)
+        if (info.converged())
+          info.fail(SolverStatus::numerical_failure,
+                    fmt::format("the {}. critical speed: the supports at {:.6g} rad/s: {}", i + 1, speed, e.what()));
+        speed = nan;
+        converged = true;
+        break;
+      }
       const Real next = i < static_cast<int>(found.size()) ? found[static_cast<std::size_t>(i)].speed : nan;
       if (std::isnan(next)) break;
       converged = std::abs(next - speed) <= 1e-10 * next;
@@ -202,38 +226,99 @@ std::vector<Real> criticals_of(const LateralSystem& system, int n, bool gyroscop
 
 }  // namespace
 
-std::vector<Index> support_springs(const Model& model) {
+std::vector<Index> bearing_elements(const Model& model) {
   std::vector<Index> out;
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const SpringDamper* s = model.elements[e].target<SpringDamper>();
-    if (s == nullptr) continue;
-    const bool a = model.nodes[static_cast<std::size_t>(s->node_a())].rotating;
-    const bool b = s->node_b() && model.nodes[static_cast<std::size_t>(*s->node_b())].rotating;
+    const std::optional<Connection> c = model.elements[e].connection();
+    if (!c) continue;
+    const bool a = model.nodes[static_cast<std::size_t>(c->node_a)].rotating;
+    const bool b = c->node_b && model.nodes[static_cast<std::size_t>(*c->node_b)].rotating;
     if (a != b) out.push_back(static_cast<Index>(e));
   }
   return out;
 }
 
+Index journal_node(const Model& model, Index element) {
+  const Connection c = bearing_at(model, element);
+  if (model.nodes[static_cast<std::size_t>(c.node_a)].rotating) return c.node_a;
+  if (c.node_b && model.nodes[static_cast<std::size_t>(*c.node_b)].rotating) return *c.node_b;
+  throw Error(fmt::format("element {} ('{}') holds no rotating node: it is not a bearing", element + 1,
+                          model.elements[static_cast<std::size_t>(element)].label()));
+}
+
 Model with_bearing_stiffness(const Model& model, const std::vector<Index>& springs, Real k) {
   Model out = model;
   for (const Index e : springs) {
-    const SpringDamper& s = spring_at(model, e);
-    SpringDamperCoefficients c = s.coefficients();
+    const Connection connection = bearing_at(model, e);
+    const Element& element = model.elements[static_cast<std::size_t>(e)];
+    SpringDamperCoefficients c;
+    if (const SpringDamper* s = element.target<SpringDamper>()) c = s->coefficients();
     c.k[static_cast<std::size_t>(Dof::v)] = k;
     c.k[static_cast<std::size_t>(Dof::w)] = k;
     c.kyz = 0.0;
     c.kzy = 0.0;
-    out.elements[static_cast<std::size_t>(e)] = Element(SpringDamper(s.node_a(), s.node_b(), c),
-                                                        model.elements[static_cast<std::size_t>(e)].label());
+    out.elements[static_cast<std::size_t>(e)] =
+        Element(SpringDamper(connection.node_a, connection.node_b, c), element.label());
   }
   return out;
 }
 
-std::vector<UndampedCritical> undamped_critical_speeds(const Model& model, int n, bool gyroscopic, SolverInfo* info) {
+namespace {
+
+// A bearing's direct stiffness alone: the terms of its stiffness that join a DOF to
+// the same direction (k_yy, k_zz, and between its two nodes), without cross-coupling
+// or damping, at each speed as the bearing gives it.
+class DirectStiffness {
+ public:
+  explicit DirectStiffness(std::shared_ptr<const Element> bearing) : bearing_(std::move(bearing)) {}
+  std::string_view kind() const { return "direct_stiffness"; }
+  bool speed_dependent() const { return bearing_->speed_dependent(); }
+  std::vector<Index> dofs() const { return bearing_->dofs(); }
+  Connection connection() const { return *bearing_->connection(); }
+  LocalMatrices local_matrices(const OperatingPoint& op) const {
+    const LocalMatrices full = bearing_->local_matrices(op);
+    LocalMatrices out;
+    out.dofs = full.dofs;
+    if (full.K.size() == 0) return out;
+    out.K = Matrix::Zero(full.K.rows(), full.K.cols());
+    for (std::size_t i = 0; i < full.dofs.size(); ++i)
+      for (std::size_t j = 0; j < full.dofs.size(); ++j)
+        if (full.dofs[i] % dofs_per_node == full.dofs[j] % dofs_per_node)
+          out.K(static_cast<Index>(i), static_cast<Index>(j)) = full.K(static_cast<Index>(i), static_cast<Index>(j));
+    return out;
+  }
+  Transmission transmission(Real speed) const {
+    Transmission t = *bearing_->transmission(speed);
+    for (Index i = 0; i < dofs_per_node; ++i)
+      for (Index j = 0; j < dofs_per_node; ++j)
+        if (i != j) t.K(i, j) = 0;
+    t.C.setZero();
+    return t;
+  }
+
+ private:
+  std::shared_ptr<const Element> bearing_;
+};
+
+}  // namespace
+
+Model with_direct_bearing_stiffness(const Model& model, const std::vector<Index>& bearings) {
+  Model out = model;
+  for (const Index e : bearings) {
+    bearing_at(model, e);
+    const Element& element = model.elements[static_cast<std::size_t>(e)];
+    out.elements[static_cast<std::size_t>(e)] =
+        Element(DirectStiffness(std::make_shared<const Element>(element)), element.label());
+  }
+  return out;
+}
+
+std::vector<UndampedCritical> undamped_critical_speeds(const Model& model, int n, bool gyroscopic, SolverInfo* info,
+                                                       Real start) {
   const LateralSystem system(model);
   SolverInfo local;
   SolverInfo& record = info ? *info : local;
-  const std::vector<Real> speeds = criticals_of(system, n, gyroscopic, record);
+  const std::vector<Real> speeds = criticals_of(system, n, gyroscopic, record, start);
   std::vector<UndampedCritical> out;
   for (const Real s : speeds) {
     if (std::isnan(s)) break;
@@ -256,11 +341,11 @@ CriticalSpeedMapResult run_critical_speed_map(const Model& model, const Critical
   if (options.points < 2) throw Error(fmt::format("the map needs at least 2 stiffness values, got {}", options.points));
   if (options.criticals < 1) throw Error(fmt::format("the map needs at least 1 critical speed, got {}", options.criticals));
   CriticalSpeedMapResult result;
-  result.springs = options.springs.empty() ? support_springs(model) : options.springs;
+  result.springs = options.springs.empty() ? bearing_elements(model) : options.springs;
   if (result.springs.empty())
-    throw Error("the model has no bearings to vary: no spring–damper holds a rotating node to the ground or to a "
-                "non-rotating node");
-  for (const Index e : result.springs) spring_at(model, e);
+    throw Error("the model has no bearings to vary: no spring–damper or bearing holds a rotating node to the ground "
+                "or to a non-rotating node");
+  for (const Index e : result.springs) bearing_at(model, e);
 
   const std::size_t np = static_cast<std::size_t>(options.points);
   result.stiffness.resize(np);
@@ -292,24 +377,22 @@ CriticalSpeedMapResult run_critical_speed_map(const Model& model, const Critical
   if (!(options.curve_stop > 0)) return result;
   const int nc = std::max(2, options.curve_points);
   for (const Index e : result.springs) {
-    const SpringDamper& s = spring_at(model, e);
     for (const Dof d : {Dof::v, Dof::w}) {
       BearingCurve curve{e, d == Dof::v ? "y" : "z", {}, {}};
       for (int j = 0; j < nc; ++j) {
         const Real speed = options.curve_stop * j / (nc - 1);
         curve.speeds.push_back(speed);
-        curve.stiffness.push_back(s.stiffness_6x6(speed)(static_cast<Index>(d), static_cast<Index>(d)));
+        curve.stiffness.push_back(direct_stiffness(model, e, d, speed));
       }
       result.curves.push_back(std::move(curve));
     }
   }
   for (const BearingCurve& curve : result.curves) {
-    const SpringDamper& s = spring_at(model, curve.element);
-    const Index d = curve.direction == "y" ? static_cast<Index>(Dof::v) : static_cast<Index>(Dof::w);
+    const Dof d = curve.direction == "y" ? Dof::v : Dof::w;
     // Ω_n(k(Ω)) for every n at once, the other elements at Ω itself.
     const auto criticals_at = [&](Real speed) {
       std::vector<Real> out(static_cast<std::size_t>(options.criticals), nan);
-      const Real k = s.stiffness_6x6(speed)(d, d);
+      const Real k = direct_stiffness(model, curve.element, d, speed);
       if (!(k > 0)) return out;
       const LateralSystem system(with_bearing_stiffness(model, result.springs, k));
       const auto found = system.forward(system.stiffness(speed), options.gyroscopic);
@@ -327,7 +410,8 @@ CriticalSpeedMapResult run_critical_speed_map(const Model& model, const Critical
         const Real fa = grid[j - 1][i] - a, fb = grid[j][i] - b;
         if (!(std::isfinite(fa) && std::isfinite(fb) && fa * fb <= 0 && fa != 0)) continue;
         const RootResult r = brent_root(h, a, b, fa, fb, 1e-9 * b);
-        result.intersections.push_back({curve.element, curve.direction, n, r.x, s.stiffness_6x6(r.x)(d, d)});
+        result.intersections.push_back({curve.element, curve.direction, n, r.x,
+                                        direct_stiffness(model, curve.element, d, r.x)});
         break;
       }
     }

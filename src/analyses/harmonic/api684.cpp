@@ -100,4 +100,22 @@ std::vector<SeparationCheck> separation_checks(std::span<const Real> speeds, std
   return out;
 }
 
+std::vector<SeparationCheck> separation_checks(const HarmonicResult& response, std::size_t probe, Real low, Real high) {
+  std::vector<Real> amplitude;
+  for (const Orbit& o : response.probes.at(probe).orbit) amplitude.push_back(o.major);
+  const std::vector<Real>& at = response.speeds;
+  std::vector<SeparationCheck> checks =
+      separation_checks(std::span<const Real>(at.data(), amplitude.size()), amplitude, low, high);
+  if (response.stability.empty()) return checks;
+  for (SeparationCheck& check : checks) {
+    const auto k = static_cast<std::size_t>(std::lower_bound(at.begin(), at.end(), check.peak.speed) - at.begin());
+    if ((k < response.stability.size() && response.stability[k].unstable) ||
+        (k > 0 && k - 1 < response.stability.size() && response.stability[k - 1].unstable)) {
+      check.unstable = true;
+      check.passes = false;
+    }
+  }
+  return checks;
+}
+
 }  // namespace feran

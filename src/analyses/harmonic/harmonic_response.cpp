@@ -153,6 +153,7 @@ struct PointResult {
   std::vector<SectionForces> forces;  // every station (StationOutput::all)
   std::vector<SectionStress> stress;
   StationPeaks peaks;
+  StabilityPoint stability;
 };
 
 // Keeps the larger of a peak and a station's value.
@@ -235,6 +236,9 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   std::mutex pattern_mutex;
   std::vector<Workspace> workspaces(static_cast<std::size_t>(resolve_threads(options.n_threads)));
   std::vector<PointResult> points(n_points);
+  // A frequency sweep turns at one speed: its stability once.
+  std::optional<StabilityPoint> fixed_speed_stability;
+  if (options.stability && result.frequency_sweep && n_points > 0) fixed_speed_stability = stability_at(model, options.speed);
 
   auto solve_point = [&](std::size_t k, Workspace& ws) {
     if (options.stop.requested()) {
@@ -285,6 +289,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       q_full = T * ComplexVector(ws.lu.solve(f_reduced));
     }
     out.solved = true;
+    if (options.stability)
+      out.stability = fixed_speed_stability ? *fixed_speed_stability : stability_at(model, speed);
     if (!q_full.allFinite()) {
       out.finite = false;
       return;
@@ -384,6 +390,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     }
     result.speeds.push_back(speed);
     result.frequencies.push_back(omega);
+    if (options.stability) result.stability.push_back(pt.stability);
     ++result.info.n_converged;
     for (std::size_t p = 0; p < result.probes.size(); ++p) {
       ProbeResponse& pr = result.probes[p];
@@ -410,6 +417,17 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     pt = PointResult{};  // free as we go
   }
   return result;
+}
+
+Index first_unstable_point(const HarmonicResult& result) {
+  for (std::size_t k = 0; k < result.stability.size(); ++k)
+    if (result.stability[k].unstable) return static_cast<Index>(k);
+  return -1;
+}
+
+Index unstable_points(const HarmonicResult& result) {
+  return static_cast<Index>(std::count_if(result.stability.begin(), result.stability.end(),
+                                          [](const StabilityPoint& s) { return s.unstable; }));
 }
 
 ResponseSummary summarize(const HarmonicResult& r) {

@@ -705,7 +705,9 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
     const ComplexVector Mphi = times(sys.M, phi);
     const Real kinetic = phi.dot(Mphi).real();
     const Real strain = phi.dot(times(sys.K, phi)).real();  // of K's symmetric part
-    mode.rigid_body = kinetic > 0 && strain / kinetic < rigid_tol;
+    // |strain|: a negative stiffness (divergence) stores negative strain energy and is
+    // no rigid-body mode.
+    mode.rigid_body = kinetic > 0 && std::abs(strain) / kinetic < rigid_tol;
     Complex p = pairs.values(j);
     if (mode.rigid_body && magnitude(p) < zero_tol) {
       // Only real zeros: a tiny conjugate pair stands for two real motions at once.

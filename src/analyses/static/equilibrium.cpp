@@ -52,6 +52,11 @@ bool has_supports(const Model& model) {
   return std::any_of(model.forces.begin(), model.forces.end(), [](const Force& f) { return f.supports(); });
 }
 
+bool needs_speed(const Model& model) {
+  return std::any_of(model.forces.begin(), model.forces.end(),
+                     [](const Force& f) { return f.supports() && f.needs_speed(); });
+}
+
 namespace {
 
 std::string force_name(const Force& force) {
@@ -287,6 +292,10 @@ class LinearisedSupport {
   std::string_view kind() const { return "linearised_support"; }
   bool speed_dependent() const { return true; }
   std::vector<Index> dofs() const { return path_->model().forces[force_].dofs(); }
+  Connection connection() const {
+    const std::vector<Index> nodes = path_->model().forces[force_].nodes();
+    return {nodes.front(), nodes.size() > 1 ? std::optional<Index>(nodes[1]) : std::nullopt};
+  }
 
   // Zero at rest for a film, which has no stiffness then (the analyses refuse speed 0
   // with require_running(); the assembly asks at rest only for the pattern).
@@ -346,6 +355,27 @@ Model linearised(const Model& model) {
     else out.forces.push_back(force);
   }
   return out;
+}
+
+std::optional<std::size_t> linearised_support_force(const Model& model, Index element) {
+  const auto n = static_cast<Index>(model.elements.size());
+  if (element < n) return std::nullopt;
+  Index k = element - n;
+  for (std::size_t i = 0; i < model.forces.size(); ++i)
+    if (model.forces[i].supports() && k-- == 0) return i;
+  throw Error(fmt::format("no element {} in the linearised model", element + 1));
+}
+
+std::string linearised_element_name(const Model& model, Index element) {
+  if (const auto force = linearised_support_force(model, element)) {
+    const Force& f = model.forces[*force];
+    if (!f.label().empty()) return f.label();
+    std::string kind(f.kind());
+    std::replace(kind.begin(), kind.end(), '_', ' ');
+    return fmt::format("{} {}", kind, *force + 1);
+  }
+  const std::string& label = model.elements[static_cast<std::size_t>(element)].label();
+  return label.empty() ? fmt::format("element {}", element + 1) : label;
 }
 
 }  // namespace feran

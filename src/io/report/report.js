@@ -10,6 +10,20 @@
   const fromRpm = (rpm) => (rpm === null ? null : unit === "Hz" ? rpm / 60 : rpm);
   const speedTitle = `speed [${unit}]`;
   const config = { responsive: true, displaylogo: false, toImageButtonOptions: { format: "png", scale: 2 } };
+  // A resonance peak's verdict: an unstable rotor fails there whatever its margin.
+  const verdict = (k) => (k.unstable ? "FAIL: rotor unstable (no steady state)" : k.passes === null ? "not judged" : k.passes ? "pass" : "FAIL");
+  // Red bands over the speeds of a steady-state result where the rotor is unstable.
+  const unstableShapes = (speeds, stability) => {
+    if (!stability) return [];
+    const out = [];
+    for (let k = 0; k < speeds.length; ++k) {
+      if (stability.unstable[k] !== true) continue;
+      const x0 = k > 0 ? (speeds[k - 1] + speeds[k]) / 2 : speeds[k];
+      const x1 = k + 1 < speeds.length ? (speeds[k] + speeds[k + 1]) / 2 : speeds[k];
+      out.push({ type: "rect", x0, x1, y0: 0, y1: 1, yref: "paper", fillcolor: "rgba(214,39,40,0.15)", line: { width: 0 } });
+    }
+    return out;
+  };
   const plots = []; // every figure drawn: its section, its element and what it must show
   const numbers = []; // the table of numbers: [quantity, value, unit, where from]
   const palette = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"];
@@ -109,23 +123,27 @@
       ["polar inertia", fmt(rp.polar_inertia_kg_m2, 5), "kg m²"], ["degrees of freedom", m.n_dofs, "–"]]);
     numbers.push(["rotor mass", rp.mass_kg, "kg", "model"], ["polar inertia", rp.polar_inertia_kg_m2, "kg m²", "model"],
                  ["transverse inertia", rp.transverse_inertia_kg_m2, "kg m²", "model"]);
-    table(s, ["spring", "node", "to", `k_yy [N/m]`, `k_zz [N/m]`, "k_yz [N/m]", "k_zy [N/m]", "c_yy [N s/m]", "c_zz [N s/m]"],
-      m.springs.map((b) => [b.label, m.nodes[b.node_a].number, b.node_b === null ? "ground" : m.nodes[b.node_b].number,
+    const kinds = { spring_damper: "spring–damper", fluid_film_bearing: "journal bearing", rolling_bearing: "rolling bearing" };
+    table(s, ["bearing or spring", "kind", "node", "to", `k_yy [N/m]`, `k_zz [N/m]`, "k_yz [N/m]", "k_zy [N/m]", "c_yy [N s/m]", "c_zz [N s/m]"],
+      m.springs.map((b) => [b.label, kinds[b.kind] || b.kind, m.nodes[b.node_a].number, b.node_b === null ? "ground" : m.nodes[b.node_b].number,
                             fmt(b.kyy_n_per_m), fmt(b.kzz_n_per_m), fmt(b.kyz_n_per_m), fmt(b.kzy_n_per_m), fmt(b.cyy_n_s_per_m), fmt(b.czz_n_s_per_m)]));
-    s.append(el("p", { class: "caption" }, `Spring coefficients at ${fmt(fromRpm(m.springs_at_speed_rpm), 5)} ${unit}.`));
+    s.append(el("p", { class: "caption" }, `Coefficients at ${fmt(fromRpm(m.springs_at_speed_rpm), 5)} ${unit}; journal and rolling bearings by their tangent about the static equilibrium there (– where they carry nothing: an oil film at rest).`));
   }
 
   // ---------------------------------------------------------------- Campbell
   const campbell = data.campbell;
   {
-    const s = sectionEl("campbell", "Campbell diagram", "Natural frequencies against speed. Colour: logarithmic decrement; marker: whirl (▲ forward, ▼ backward, ● mixed or planar). Dashed: excitation orders; ◆ critical speeds; green band: operating range; red line: stability threshold.");
+    const s = sectionEl("campbell", "Campbell diagram", "Natural frequencies against speed. Colour: logarithmic decrement (red below zero: unstable; blue: well damped); marker: whirl (▲ forward, ▼ backward, ● mixed or planar). Dashed: excitation orders; ◆ critical speeds; green band: operating range; red line: stability threshold.");
     const sp = campbell.speeds_hz.map(fromHz);
     const lateral = campbell.modes.filter((m) => m.type !== "axial" && m.type !== "torsional");
     const allDelta = lateral.flatMap((m) => m.log_decrement.filter((d) => d !== null));
+    // Diverging and symmetric about zero damping: red below zero (unstable), blue well
+    // damped — the scale feran.plot.campbell uses too.
+    const dampingScale = [[0, "#b2182b"], [0.25, "#ef8a62"], [0.5, "#f7f7f7"], [0.75, "#67a9cf"], [1, "#2166ac"]];
     const dmax = Math.max(0.05, ...allDelta.map(Math.abs));
     const traces = lateral.map((m, i) => ({
       name: m.label, x: sp, y: m.frequency_hz, mode: "lines+markers", line: { color: "rgba(90,90,90,0.5)", width: 1 },
-      marker: { size: 6, color: m.log_decrement, cmin: -dmax, cmax: dmax, colorscale: "RdBu", reversescale: false,
+      marker: { size: 6, color: m.log_decrement, cmin: -dmax, cmax: dmax, colorscale: dampingScale,
                 symbol: m.whirl_at.map((w) => (w === "forward" ? "triangle-up" : w === "backward" ? "triangle-down" : "circle")),
                 colorbar: i === 0 ? { title: { text: "log. decr." } } : undefined, showscale: i === 0 },
       customdata: m.log_decrement, hovertemplate: `${m.label}<br>%{x:.4g} ${unit}<br>%{y:.4g} Hz<br>δ %{customdata:.4f}<extra></extra>` }));
@@ -210,7 +228,7 @@
     if (r.error) failed(s, "response");
     else {
       const sp = r.speeds_hz.map(fromHz);
-      const critShapes = operatingShape().concat(campbell.critical_speeds.filter((c) => c.order === 1 && c.whirl === "forward").map((c) => ({
+      const critShapes = operatingShape().concat(unstableShapes(sp, r.stability), campbell.critical_speeds.filter((c) => c.order === 1 && c.whirl === "forward").map((c) => ({
         type: "line", x0: fromHz(c.speed_hz), x1: fromHz(c.speed_hz), y0: 0, y1: 1, yref: "paper", line: { dash: "dot", color: "#999" } })));
       const bode = r.probes.map((p, i) => ({ name: p.name || `node ${p.node}`, x: sp, y: p.amplitude_m.map((a) => a * 1e6), mode: "lines", line: { color: palette[i % palette.length] },
                                              hovertemplate: `%{x:.5g} ${unit}<br>%{y:.4g} µm<extra>${p.name || p.node}</extra>` }));
@@ -222,12 +240,13 @@
                     hovertemplate: `%{x:.5g} ${unit}<br>%{text}<extra></extra>` });
       figure(s, bode, { title: { text: "amplitude (Bode)" }, xaxis: axis(speedTitle), yaxis: axis("amplitude [µm]"), shapes: critShapes, height: 420 },
              "Dotted: forward critical speeds of the Campbell diagram; green band: the operating range" +
+             (r.stability && r.stability.unstable_points > 0 ? `; red bands: the rotor is UNSTABLE there (from ${fmt(fromHz(r.stability.first_unstable_speed_hz), 5)} ${unit}): no steady state, any disturbance grows` : "") +
              (r.peaks ? "; markers: resonance peaks with their amplification factor and separation margins (● passes API 617, × fails; hover)." : "."));
       if (r.peaks)
         table(s, ["probe", `peak [${unit}]`, "amplitude [µm]", "AF", "SM required", "SM actual", "verdict"],
               r.peaks.map((k) => [r.probes[k.probe].name || r.probes[k.probe].node, fmt(fromRpm(k.speed_rpm), 6), fmt(k.amplitude_m * 1e6),
                                   fmt(k.amplification_factor, 3), k.required_margin === null ? "–" : `${fmt(100 * k.required_margin, 3)} %`,
-                                  `${fmt(100 * k.actual_margin, 3)} %`, k.passes === null ? "not judged" : k.passes ? "pass" : "FAIL"]));
+                                  `${fmt(100 * k.actual_margin, 3)} %`, verdict(k)]));
       figure(s, r.probes.map((p, i) => ({ name: p.name || `node ${p.node}`, x: sp, y: p.phase_deg, mode: "lines", line: { color: palette[i % palette.length] } })),
              { title: { text: "phase of v (Bode)" }, xaxis: axis(speedTitle), yaxis: axis("phase [deg]"), shapes: critShapes, height: 360 });
       figure(s, r.probes.map((p, i) => ({ type: "scatterpolar", name: p.name || `node ${p.node}`, r: p.dofs.v.amplitude.map((a) => a * 1e6), theta: p.dofs.v.phase_deg,
@@ -263,8 +282,9 @@
       figure(s, [{ name: "v", x: rot.map((d) => d.x_m), y: rot.map((d) => d.v * 1e6), mode: "lines+markers" },
                  { name: "w", x: rot.map((d) => d.x_m), y: rot.map((d) => d.w * 1e6), mode: "lines+markers" }],
              { title: { text: "static deflection" }, xaxis: axis("x [m]"), yaxis: axis("deflection [µm]"), height: 360 });
-      table(s, ["spring", "F_y [N]", "F_z [N]"], st.springs.map((b) => [b.label, fmt(b.force.y), fmt(b.force.z)]));
-      st.springs.forEach((b) => numbers.push([`static load of ${b.label}`, Math.hypot(b.force.y, b.force.z), "N", "static"]));
+      const loads = st.springs.concat(st.supports || []);
+      table(s, ["bearing or spring", "F_y [N]", "F_z [N]"], loads.map((b) => [b.label, fmt(b.force.y), fmt(b.force.z)]));
+      loads.forEach((b) => numbers.push([`static load of ${b.label}`, Math.hypot(b.force.y, b.force.z), "N", "static"]));
     }
   }
 
@@ -274,6 +294,8 @@
     const a = data.api684;
     if (a.error) failed(s, "api684");
     else {
+      s.append(el("p", { class: a.operating_stability.passes ? "pass" : "fail" },
+                  `Stability in the operating range: ${a.operating_stability.passes ? "passes" : "FAILS"} (${a.operating_stability.reason}).`));
       for (const c of a.cases) {
         const sub = el("div", { class: "case" });
         s.append(sub);
@@ -298,7 +320,7 @@
         table(sub, ["probe", `peak [${unit}]`, "amplitude [µm]", "AF", "SM required", "SM actual", "verdict"],
               c.probes.flatMap((p) => p.peaks.map((k) => [p.name || p.node, fmt(fromRpm(k.speed_rpm), 6), fmt(k.amplitude_m * 1e6), fmt(k.amplification_factor, 3),
                 k.required_margin === null ? "–" : `${fmt(100 * k.required_margin, 3)} %`, `${fmt(100 * k.actual_margin, 3)} %`,
-                k.passes === null ? "not judged" : k.passes ? "pass" : "FAIL"])));
+                verdict(k)])));
         for (const q of peaks) numbers.push([`${c.name}: AF at ${q.p.name || q.p.node}, ${fmt(fromRpm(q.k.speed_rpm), 5)} ${unit}`, q.k.amplification_factor, "–", "API 684"]);
       }
       if (a.map) {

@@ -73,7 +73,7 @@ TEST(Api684Unbalance, TheAmountIs6350WOverNGramMillimetresCappedAt25000Rpm) {
 // A rotor of 1.5 m between two bearings with two disks (Friswell Example 5.9.1).
 TEST(Api684Unbalance, JournalLoadsCarryTheRotorAndTheModesGetTheirPlacements) {
   const Model model = test::friswell_5_9_1(12);
-  const auto bearings = support_springs(model);
+  const auto bearings = bearing_elements(model);
   ASSERT_EQ(bearings.size(), 2u);
   StaticOptions gravity;
   gravity.gravity = Eigen::Vector3d(0, -9.81, 0);
@@ -131,7 +131,7 @@ TEST(Api684Unbalance, AnOverhungDiskTakesTheOverhungMass) {
   test::fix(model, 0, {Dof::u, Dof::rx});
   StaticOptions gravity;
   gravity.gravity = Eigen::Vector3d(0, -9.81, 0);
-  const auto journals = journal_loads(model, support_springs(model), gravity);
+  const auto journals = journal_loads(model, bearing_elements(model), gravity);
   ModalOptions mo;
   mo.oscillatory_only = true;
   const auto modal = run_modal(model, 100.0, mo);

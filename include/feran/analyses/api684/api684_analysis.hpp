@@ -34,14 +34,15 @@ Real rotating_mass(const Model& model, const std::function<bool(Index node)>& se
 
 /// The static load of a bearing: the lateral force it carries under @p gravity.
 struct JournalLoad {
-  Index element = 0;  ///< the bearing (spring–damper)
+  Index element = 0;  ///< the bearing, an element of linearised(model)
   Index node = 0;     ///< its rotating node
   Real force = 0;     ///< |(F_y, F_z)| [N]
   Real mass = 0;      ///< force / g [kg]: W of 4W/N
 };
 
-/// The loads of the bearings @p springs (each holding a rotating node) of @p model
-/// under its gravity and static loads. Throws Error without gravity.
+/// The loads of the bearings @p springs (elements of linearised(@p model), each
+/// holding a rotating node) under @p model's gravity and static loads, from its static
+/// equilibrium. Throws Error without gravity.
 std::vector<JournalLoad> journal_loads(const Model& model, const std::vector<Index>& springs,
                                        const StaticOptions& gravity);
 
@@ -73,7 +74,7 @@ struct Api684Options {
   bool model_unbalance = false;
   Real unbalance_multiple = 1.0;
   std::vector<Index> probes;    ///< empty: each bearing's node and each unbalance's node
-  std::vector<Index> bearings;  ///< empty: support_springs()
+  std::vector<Index> bearings;  ///< elements of linearised(model); empty: bearing_elements() of it
   StaticOptions gravity;        ///< for the journal loads
   std::optional<CriticalSpeedMapOptions> map;  ///< none: no map (its springs: the bearings)
   std::optional<StabilitySweepOptions> stability;
@@ -93,8 +94,22 @@ struct Api684Case {
   bool passes = true;
 };
 
+/// The stability verdict over the operating range: the rotor's stability
+/// (modal/stability.hpp) at evenly spaced speeds from the minimum to the maximum
+/// continuous speed, both included.
+struct OperatingStability {
+  std::vector<StabilityPoint> points;
+  bool passes = true;   ///< every point stable (and decided)
+  std::string reason;   ///< why it fails, or "stable at N speeds from … to …"
+};
+
+/// The verdict at @p points speeds over [@p low, @p high] [rad/s].
+OperatingStability operating_stability(const Model& model, Real low, Real high, int points = 11);
+
 struct Api684Result {
   Real low = 0, high = 0;
+  /// Stability in the operating range: fails when any mode there has negative damping.
+  OperatingStability stability_verdict;
   std::vector<Index> bearings;
   std::vector<JournalLoad> journals;
   /// Undamped forward critical speeds with the bearings as they are (their

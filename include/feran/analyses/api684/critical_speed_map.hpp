@@ -29,22 +29,36 @@ struct UndampedCritical {
 /// undamped natural frequencies at rest. Only the lateral motion counts; damping and
 /// circulatory terms are left out. Coefficients that depend on speed are evaluated at
 /// each critical speed itself (a fixed-point iteration; @p info says when it did not
-/// converge). Throws Error when the lateral stiffness is singular (a rotor not held
-/// laterally) or the model couples lateral motion with axial or torsional motion.
+/// converge), starting from the coefficients at @p start [rad/s] (0: at rest; a
+/// speed where the supports carry the rotor when they carry it only while it turns,
+/// as oil films do). Throws Error when the lateral stiffness is singular (a rotor not
+/// held laterally) or the model couples lateral motion with axial or torsional motion.
+/// The lateral stiffness is taken as symmetric (its lower triangle): give bearings
+/// with cross-coupling through with_direct_bearing_stiffness().
 std::vector<UndampedCritical> undamped_critical_speeds(const Model& model, int n, bool gyroscopic = true,
-                                                       SolverInfo* info = nullptr);
+                                                       SolverInfo* info = nullptr, Real start = 0.0);
 
-/// The spring–dampers of @p model that hold a rotating node: to the ground, or to a
-/// node that does not rotate (its bearings), in model order.
-std::vector<Index> support_springs(const Model& model);
+/// The bearings of @p model: the connecting elements (Element::connection()) that hold
+/// a rotating node to the ground or to a node that does not rotate, in model order —
+/// spring–dampers, and in a linearised() model the journal and rolling bearings.
+std::vector<Index> bearing_elements(const Model& model);
 
-/// @p model with the lateral stiffness of the springs @p springs replaced by the
-/// isotropic constant @p k [N/m] (cross-coupled terms removed; their other directions
-/// and damping kept).
+/// The rotating node that bearing @p element holds; throws Error when it is none.
+Index journal_node(const Model& model, Index element);
+
+/// @p model with the lateral stiffness of the bearings @p springs replaced by the
+/// isotropic constant @p k [N/m] (cross-coupled terms removed; a spring–damper keeps
+/// its other directions and damping, another bearing becomes a spring–damper with
+/// that lateral stiffness alone).
 Model with_bearing_stiffness(const Model& model, const std::vector<Index>& springs, Real k);
 
+/// @p model with each bearing of @p bearings replaced by its direct stiffness alone
+/// (k_yy, k_zz at each speed as the bearing gives it; cross-coupled stiffness and
+/// damping left out), as API 684's undamped analyses take bearings.
+Model with_direct_bearing_stiffness(const Model& model, const std::vector<Index>& bearings);
+
 struct CriticalSpeedMapOptions {
-  std::vector<Index> springs;  ///< the bearings varied; empty: support_springs()
+  std::vector<Index> springs;  ///< the bearings varied; empty: bearing_elements()
   Real k_low = 1e5;            ///< [N/m]
   Real k_high = 1e10;          ///< [N/m]
   int points = 61;             ///< stiffness values, evenly spaced in log k
@@ -88,8 +102,8 @@ struct CriticalSpeedMapResult {
 };
 
 /// The undamped critical speed map of @p model. Throws Error for bad options
-/// (k_low ≤ 0, k_high ≤ k_low, fewer than 2 points, a spring that is not a
-/// spring–damper, no bearings, no curve_stop when the bearings have stiffness).
+/// (k_low ≤ 0, k_high ≤ k_low, fewer than 2 points, an element that is not a
+/// bearing, no bearings, no curve_stop when the bearings have stiffness).
 CriticalSpeedMapResult run_critical_speed_map(const Model& model, const CriticalSpeedMapOptions& options);
 
 }  // namespace feran

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran {
@@ -52,12 +53,21 @@ struct SeparationCheck {
   /// required_separation_margin(); none when the peak has no half-power points.
   std::optional<Real> required_margin;
   /// actual ≥ required; none for a peak without an amplification factor (a peak the
-  /// sweep cuts or that rides on another's shoulder: it cannot be judged).
+  /// sweep cuts or that rides on another's shoulder: it cannot be judged); false when
+  /// the rotor is unstable at the peak (unstable).
   std::optional<bool> passes;
+  /// The rotor is unstable at the peak's speed: the peak is no steady state the rotor
+  /// reaches, and it fails whatever its margin.
+  bool unstable = false;
 };
 
 /// Every peak of @p amplitude over @p speeds with its margins from [@p low, @p high].
 std::vector<SeparationCheck> separation_checks(std::span<const Real> speeds, std::span<const Real> amplitude, Real low,
                                                Real high);
+
+/// The peaks of probe @p probe of the speed sweep @p response, checked as above, each
+/// marked unstable (and failing) when the rotor is unstable at a response point on
+/// either side of its speed (HarmonicResult::stability).
+std::vector<SeparationCheck> separation_checks(const HarmonicResult& response, std::size_t probe, Real low, Real high);
 
 }  // namespace feran

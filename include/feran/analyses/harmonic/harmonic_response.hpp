@@ -15,6 +15,7 @@
 #include <feran/analyses/common/orbit.hpp>
 #include <feran/analyses/common/shaft_sections.hpp>
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/modal/stability.hpp>
 #include <feran/core/stop.hpp>
 #include <feran/core/types.hpp>
 #include <feran/forces/harmonic_force.hpp>
@@ -51,6 +52,10 @@ struct HarmonicOptions {
   /// Asked before each point; the sweep then ends as interrupted, its points up to
   /// the first not solved kept.
   StopToken stop;
+  /// Judge the rotor's stability at each point (modal/stability.hpp): a steady state
+  /// at a speed where the free motion grows is marked so. false: not judged (the
+  /// result's stability is then empty).
+  bool stability = true;
 };
 
 /// Complex amplitudes of the six DOFs of a node, indexed by Dof.
@@ -123,10 +128,20 @@ struct HarmonicResult {
   /// Every station's values at every point (StationOutput::all only), in the order
   /// of shaft_stations.
   std::vector<StationResponse> stations;
+  /// Per point, the rotor's stability at its speed (HarmonicOptions::stability; empty
+  /// when not judged). Where it is unstable the response is no steady state that the
+  /// rotor reaches: any disturbance grows instead.
+  std::vector<StabilityPoint> stability;
   /// converged() is false when the dynamic stiffness was singular at some point (an
   /// undamped resonance hit exactly); the vectors then stop before that point.
   SolverInfo info;
 };
+
+/// The first point of @p result at which the rotor is unstable; -1 when none is (or
+/// stability was not judged).
+Index first_unstable_point(const HarmonicResult& result);
+/// How many points of @p result are unstable.
+Index unstable_points(const HarmonicResult& result);
 
 /// The largest values of a harmonic result.
 struct ResponseSummary {

@@ -14,6 +14,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -38,6 +39,10 @@ void require_unloaded_free_motions(const Model& model, const Assembler& assemble
 
 /// True when some force of @p model carries the rotor (supports()).
 bool has_supports(const Model& model);
+
+/// True when some support of @p model carries load only while the rotor turns (an oil
+/// film, Force::needs_speed()): analyses of it need a speed above 0.
+bool needs_speed(const Model& model);
 
 /// Throws Error, naming the support, when some of @p forces supports the rotor and
 /// @p speed is not above 0: at rest an oil film carries no load and has no stiffness.
@@ -97,5 +102,15 @@ class EquilibriumPath {
 /// @p model itself when nothing carries the rotor. Analyses that report per element
 /// index into @p model, whose elements keep their indices here.
 Model linearised(const Model& model);
+
+/// The index in @p model.forces of the support that element @p element of
+/// linearised(@p model) stands for (an index past @p model's own elements: the k-th
+/// such element is the k-th force that supports()); empty for @p model's own elements.
+std::optional<std::size_t> linearised_support_force(const Model& model, Index element);
+
+/// The user's name of element @p element of linearised(@p model): its label, or the
+/// label of the support it stands for, else "element N", or for a support its kind
+/// and its number among the forces ("fluid film bearing 3").
+std::string linearised_element_name(const Model& model, Index element);
 
 }  // namespace feran

@@ -1,0 +1,72 @@
+// The rotor's stability at a speed (analyses/modal/stability.hpp), against the closed
+// form of the Jeffcott rotor: in complex coordinates z = v + i·w,
+//   m z'' + (c_a + c_i) z' + (k − iΩ c_i) z = 0,
+// whose eigenvalues p = [−(c_a + c_i) ± √((c_a + c_i)² − 4m(k − iΩ c_i))]/(2m) (and
+// their conjugates, for the backward whirl) give the growth rate max Re p exactly;
+// the forward mode turns unstable at Ω = ω_n(1 + c_a/c_i). A negative stiffness
+// diverges at the real rate (−c + √(c² + 4m|k|))/(2m).
+#include <cmath>
+#include <complex>
+
+#include <gtest/gtest.h>
+
+#include <feran/analyses/modal/stability.hpp>
+
+#include "test_models.hpp"
+
+namespace feran::test_stability {
+namespace {
+
+constexpr Real m = 9.1, k = 1.6e5, ca = 50, ci = 100;
+
+Real closed_form_growth(Real speed) {
+  Real best = -1e300;
+  for (const Real sign : {1.0, -1.0}) {  // forward (k − iΩc_i) and backward (k + iΩc_i)
+    const std::complex<Real> root = std::sqrt(std::complex<Real>((ca + ci) * (ca + ci), 0) -
+                                              4 * m * std::complex<Real>(k, -sign * speed * ci));
+    for (const Real branch : {1.0, -1.0}) best = std::max(best, ((-(ca + ci) + branch * root) / (2 * m)).real());
+  }
+  return best;
+}
+
+TEST(Stability, JeffcottWithRotatingDampingMatchesTheClosedFormEitherSideOfItsThreshold) {
+  const Model model = test::jeffcott(m, k, ca, ci);
+  const Real threshold = std::sqrt(k / m) * (1 + ca / ci);
+  for (const Real ratio : {0.0, 0.5, 0.95, 1.05, 2.0}) {
+    const Real speed = ratio * threshold;
+    const StabilityPoint p = stability_at(model, speed);
+    ASSERT_TRUE(p.known) << p.message;
+    EXPECT_EQ(p.unstable, ratio > 1) << "at " << ratio << " x the threshold";
+    EXPECT_FALSE(p.divergence);
+    if (ratio > 0) {
+      // The circulatory Ω·K_i leaves the energy test; the eigenvalues decide (their
+      // relative accuracy, ~1e-12 of |p| = 132 1/s).
+      EXPECT_FALSE(p.by_energy);
+      EXPECT_NEAR(p.growth_rate, closed_form_growth(speed), 1e-9 * std::sqrt(k / m)) << "at " << ratio;
+    }
+  }
+}
+
+TEST(Stability, AConservativeRotorIsStableByTheEnergyTestAndTheEigenvaluesAgree) {
+  const Model model = test::friswell_5_9_1();
+  const StabilityPoint p = stability_at(model, 2000.0);
+  EXPECT_TRUE(p.known && p.by_energy && !p.unstable);
+  // Damped: every eigenvalue's real part ≤ 0 in the modal analysis too.
+  const Model damped = test::jeffcott(m, k, ca, 0.0);
+  const StabilityPoint q = stability_at(damped, 300.0);
+  EXPECT_TRUE(q.by_energy && !q.unstable);
+}
+
+TEST(Stability, ANegativeStiffnessDivergesAtItsRealRateNotAsARigidBodyMode) {
+  const Real kn = -2e4, c = 30;
+  Model model = test::jeffcott(m, kn, c, 0.0);
+  const StabilityPoint p = stability_at(model, 100.0);
+  ASSERT_TRUE(p.known) << p.message;
+  EXPECT_TRUE(p.unstable);
+  EXPECT_TRUE(p.divergence);
+  EXPECT_EQ(p.frequency_hz, 0.0);
+  EXPECT_NEAR(p.growth_rate, (-c + std::sqrt(c * c + 4 * m * -kn)) / (2 * m), 1e-9 * std::sqrt(-kn / m));
+}
+
+}  // namespace
+}  // namespace feran::test_stability
