@@ -33,6 +33,7 @@ struct ResponseArgs {
   std::vector<std::string> forces;
   double loss_factor = -1.0;
   bool no_unbalance = false;
+  bool no_stability = false;
   std::string stations;
   int threads = 0;
   OutputOptions out;
@@ -69,6 +70,9 @@ Runner add_response_command(CLI::App& app) {
   cmd->add_option("--loss-factor", args->loss_factor, "Global hysteretic loss factor eta: adds j*eta*K")
       ->check(non_negative_number());
   cmd->add_flag("--no-unbalance", args->no_unbalance, "Leave the model's unbalances out");
+  cmd->add_flag("--no-stability", args->no_stability,
+                "Do not judge the rotor's stability at each point (by default each point says whether the rotor is "
+                "unstable at its speed, where the response is no steady state)");
   cmd->add_option("--stations", args->stations,
                   "Section forces and stresses at the shaft stations: all (every station at every point), "
                   "summary (per point the largest values and their place; default) or none")
@@ -82,6 +86,7 @@ Runner add_response_command(CLI::App& app) {
     const Model& model = file.model;
     ResponseRequest request;
     request.unbalance = !args->no_unbalance;
+    request.stability = !args->no_stability;
     request.n_threads = args->threads;
     if (args->loss_factor >= 0) request.loss_factor = args->loss_factor;
     for (const std::string& f : args->forces) request.extra_forces.push_back(parse_force_text(model, f, "--force"));

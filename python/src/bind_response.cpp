@@ -171,7 +171,8 @@ void bind_response(py::module_& m) {
       [](const PyModel& model, const py::object& start, const py::object& stop, std::optional<int> points,
          const py::object& speed, const py::object& freq_start, const py::object& freq_stop,
          std::optional<int> freq_points, const py::object& probes, const py::object& forces,
-         std::optional<double> loss_factor, bool unbalance, std::optional<std::string> stations, int threads) {
+         std::optional<double> loss_factor, bool unbalance, std::optional<std::string> stations, int threads,
+         bool stability) {
         auto file = std::make_shared<const ModelFile>(model.built());
         const Model& built = file->model;
         ResponseRequest request;
@@ -186,6 +187,7 @@ void bind_response(py::module_& m) {
         for (const std::string& f : text_arguments(forces, "force")) request.extra_forces.push_back(parse_force_text(built, f, "force"));
         request.loss_factor = loss_factor;
         request.unbalance = unbalance;
+        request.stability = stability;
         if (stations) request.stations = station_output(*stations);
         request.n_threads = threads;
         PyResponseResult out{{}, response_settings(built, file->spec.response, request), {}};
@@ -203,13 +205,14 @@ void bind_response(py::module_& m) {
       py::arg("points") = py::none(), py::arg("speed") = py::none(), py::arg("freq_start") = py::none(),
       py::arg("freq_stop") = py::none(), py::arg("freq_points") = py::none(), py::arg("probe") = py::none(),
       py::arg("force") = py::none(), py::arg("loss_factor") = py::none(), py::arg("unbalance") = true,
-      py::arg("stations") = py::none(), py::arg("threads") = 0,
+      py::arg("stations") = py::none(), py::arg("threads") = 0, py::arg("stability") = true,
       "Steady-state response, as feran response. A speed sweep (start, stop, points) excites at\n"
       "the rotor speed; a frequency sweep (freq_start, freq_stop, freq_points) holds the rotor at\n"
       "speed and excites at each frequency; speed alone gives one point. probe: node name(s) or\n"
       "number(s); force: 'NODE:DIRECTION:AMPLITUDE[:PHASE]' text(s) as --force; unbalance=False\n"
-      "as --no-unbalance; stations 'all', 'summary' or 'none'. Unset options come from the\n"
-      "model's [response] table. threads: 0 (all cores, as the CLI) or 1.");
+      "as --no-unbalance; stations 'all', 'summary' or 'none'; stability=False as --no-stability\n"
+      "(no per-point stability). Unset options come from the model's [response] table. threads: 0\n"
+      "(all cores, as the CLI) or 1.");
 }
 
 }  // namespace feran::python

@@ -313,6 +313,7 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
                                   const ResponseRequest& request) {
   HarmonicOptions options;
   options.unbalance = request.unbalance;
+  options.stability = request.stability;
   options.n_threads = request.n_threads;
   options.loss_factor = checked<ResponseSpec>(request.loss_factor, "loss_factor", "--loss-factor")
                             .value_or(file.loss_factor.value_or(0.0));

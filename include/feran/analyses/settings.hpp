@@ -102,6 +102,8 @@ struct ResponseRequest {
   std::optional<Real> loss_factor;          ///< default [response] loss_factor, else 0
   std::optional<StationOutput> stations;    ///< default [response] stations, else summary
   bool unbalance = true;                    ///< include the model's unbalances
+  /// Judge the rotor's stability at each point (HarmonicOptions::stability).
+  bool stability = true;
   int n_threads = 1;                        ///< 0: all cores
 };
 

@@ -15,13 +15,21 @@ namespace feran {
 
 namespace {
 
+// The modes whose eigenvalues decide (the lowest by |p|).
+constexpr Index stability_modes = 24;
+
 // Symmetric to round-off and positive semidefinite (the smallest eigenvalue not below
 // −1e-10 of the largest magnitude: rigid-body and free motions give zeros).
+bool symmetric(const Matrix& A) {
+  if (A.size() == 0) return true;
+  return (A - A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * A.cwiseAbs().maxCoeff();
+}
+
 bool symmetric_semidefinite(const Matrix& A) {
   if (A.size() == 0) return true;
   const Real scale = A.cwiseAbs().maxCoeff();
   if (scale == 0) return true;
-  if ((A - A.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) return false;
+  if (!symmetric(A)) return false;
   const Eigen::SelfAdjointEigenSolver<Matrix> eig(A, Eigen::EigenvaluesOnly);
   if (eig.info() != Eigen::Success) return false;
   const Vector& lambda = eig.eigenvalues();
@@ -32,7 +40,23 @@ bool symmetric_semidefinite(const Matrix& A) {
 
 bool energy_stable(const Model& linear, Real speed) {
   for (const Element& element : linear.elements) {
-    if (element.frequency_dependent()) return false;
+    if (element.frequency_dependent()) {
+      // A passive support: its stiffness symmetric at every frequency of its tables,
+      // positive semidefinite at rest, its damping symmetric positive semidefinite at
+      // every frequency (it dissipates at each one). Sampled at 129 frequencies over
+      // each table's range and at 0: between the knots of a table linear in frequency
+      // the matrices are convex combinations, which keep these properties.
+      std::vector<Real> frequencies{0.0, speed};
+      for (const SpeedRange& range : element.frequency_ranges())
+        for (int i = 0; i <= 128; ++i) frequencies.push_back(range.low + (range.high - range.low) * i / 128.0);
+      for (const Real w : frequencies) {
+        const LocalMatrices lm = element.local_matrices(OperatingPoint(speed, w));
+        if (speed != 0 && lm.Ki.size() != 0 && lm.Ki.cwiseAbs().maxCoeff() > 0) return false;
+        if (!symmetric_semidefinite(lm.C) || !symmetric_semidefinite(lm.Ci)) return false;
+        if (w == 0.0 ? !symmetric_semidefinite(lm.K) : !symmetric(lm.K)) return false;
+      }
+      continue;
+    }
     const LocalMatrices lm = element.local_matrices(OperatingPoint(speed, speed));
     if (speed != 0 && lm.Ki.size() != 0 && lm.Ki.cwiseAbs().maxCoeff() > 0) return false;
     if (!symmetric_semidefinite(lm.K) || !symmetric_semidefinite(lm.C) || !symmetric_semidefinite(lm.Ci))
@@ -61,6 +85,7 @@ StabilityPoint stability_at(const Model& model, Real speed) {
     }
     ModalOptions options;
     options.shapes = false;
+    options.n_modes = stability_modes;
     const ModalResult r = run_modal(model, speed, options);
     if (!r.info.converged()) {
       out.known = false;

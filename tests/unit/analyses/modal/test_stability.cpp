@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/modal/stability.hpp>
+#include <feran/io/model_reader.hpp>
 
 #include "test_models.hpp"
 
@@ -55,6 +57,26 @@ TEST(Stability, AConservativeRotorIsStableByTheEnergyTestAndTheEigenvaluesAgree)
   const Model damped = test::jeffcott(m, k, ca, 0.0);
   const StabilityPoint q = stability_at(damped, 300.0);
   EXPECT_TRUE(q.by_energy && !q.unstable);
+}
+
+TEST(Stability, APassivePedestalGivenByFrequencyTablesIsStableAndTheEigenvaluesAgree) {
+  // Example 07: the pedestal condensed into tables over frequency (symmetric, damping
+  // positive at every frequency): passive, so stable without eigenvalues; the modal
+  // analysis, each mode at its own frequency, finds no growing mode either.
+  const ModelFile file = read_model_file(FERAN_SOURCE_DIR "/examples/07_pedestal/model.toml");
+  for (const Real speed : {100.0, 314.0}) {
+    const StabilityPoint p = stability_at(file.model, speed);
+    EXPECT_TRUE(p.known && p.by_energy && !p.unstable) << speed;
+    ModalOptions options;
+    options.shapes = false;
+    options.n_modes = 12;
+    const ModalResult r = run_modal(file.model, speed, options);
+    ASSERT_TRUE(r.info.converged()) << r.info.message;
+    for (const Mode& mode : r.modes) {
+      if (mode.rigid_body) continue;
+      EXPECT_LE(mode.eigenvalue.real(), 1e-9 * std::abs(mode.eigenvalue)) << speed;
+    }
+  }
 }
 
 TEST(Stability, ANegativeStiffnessDivergesAtItsRealRateNotAsARigidBodyMode) {
