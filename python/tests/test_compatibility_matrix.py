@@ -27,10 +27,10 @@ import warnings
 import pytest
 
 import feran
+from test_analyses import same  # numbers to 1e-12
 
 SOURCE = os.environ.get("FERAN_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 FERAN = os.environ.get("FERAN_PROGRAM", os.path.join(SOURCE, "build", "feran"))
-RTOL = 1e-12
 JOURNAL = os.path.join(SOURCE, "tests", "models", "valid", "journal_rotor.toml")
 
 
@@ -104,21 +104,6 @@ def finite_numbers(value, where="result"):
             finite_numbers(v, f"{where}[{i}]")
     elif isinstance(value, float):
         assert math.isfinite(value), where
-
-
-def same(a, b, where="result"):
-    if isinstance(a, dict):
-        assert isinstance(b, dict) and sorted(a) == sorted(b), where
-        for k in a:
-            same(a[k], b[k], f"{where}.{k}")
-    elif isinstance(a, list):
-        assert isinstance(b, list) and len(a) == len(b), where
-        for i, (x, y) in enumerate(zip(a, b)):
-            same(x, y, f"{where}[{i}]")
-    elif isinstance(a, float) or isinstance(b, float):
-        assert a == pytest.approx(b, rel=RTOL, abs=1e-300) or (math.isnan(a) and math.isnan(b)), where
-    else:
-        assert a == b, where
 
 
 def refused(stderr):
