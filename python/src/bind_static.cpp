@@ -50,6 +50,19 @@ void bind_static(py::module_& m) {
       .def_property_readonly("bearings", [](const PyStaticResult& r) {
              return string_list(r.result.supports.size(), [&](std::size_t i) { return r.model().forces[static_cast<std::size_t>(r.result.supports[i].first)].label(); });
            }, "journal bearings ([[journal_bearings]] names)")
+      .def_property_readonly("bearing_data", [](const PyStaticResult& r) {
+             py::list out;
+             for (const auto& data : r.result.support_data) {
+               py::dict d;
+               for (const OperatingValue& o : data) d[py::str(o.name)] = o.value;
+               out.append(d);
+             }
+             return out;
+           }, "per bearing (as bearings), its operating state at the equilibrium: a dict of numbers whose\n"
+              "names carry their units (eccentricity_ratio, attitude_angle_deg, min_film_thickness_m,\n"
+              "min_film_angle_deg, load_n, sommerfeld_number, friction_torque_nm, power_loss_w,\n"
+              "peak_pressure_pa; for rolling bearings max_element_load_n, loaded_elements,\n"
+              "max_contact_stress_pa), as the JSON's supports[].operating")
       .def_property_readonly("bearing_force", [](const PyStaticResult& r) {
              return array_2d(r.result.supports.size(), dofs_per_node, [&](std::size_t i, std::size_t d) { return r.result.supports[i].second[d]; });
            }, "force each journal bearing transmits to its housing or ground at the equilibrium [N], shape (bearings, 6)")

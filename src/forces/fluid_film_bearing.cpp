@@ -1,6 +1,8 @@
 #include <feran/forces/fluid_film_bearing.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -325,6 +327,70 @@ NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& 
   const bool housing = node_b.has_value();
   const FilmForce F = film_force(geometry, theory, s.speed, detail::relative(x, housing), detail::relative(v, housing), grid);
   return detail::pair_force(F.f, F.dfdx, F.dfdv, housing);
+}
+
+namespace {
+
+// The largest value of p over α ∈ [0, 2π), by sampling and a parabola through the top.
+template <class P>
+Real peak_over_angle(P&& p) {
+  constexpr int n = 3600;
+  int best = 0;
+  Real top = p(0.0);
+  for (int i = 1; i < n; ++i)
+    if (const Real v = p(2 * pi * i / n); v > top) top = v, best = i;
+  const Real h = 2 * pi / n, a = best * h;
+  const Real f0 = p(a - h), f1 = top, f2 = p(a + h), d = f0 - 2 * f1 + f2;
+  return d < 0 ? f1 - (f2 - f0) * (f2 - f0) / (8 * d) : f1;
+}
+
+}  // namespace
+
+Real short_bearing_peak_pressure(const JournalBearingGeometry& g, Real speed, const Eigen::Vector2d& x,
+                                 const Eigen::Vector2d& v) {
+  const Real mu = g.viscosity, L = g.length, c = g.clearance;
+  const Real peak = peak_over_angle([&](Real a) {
+    const Real ca = std::cos(a), sa = std::sin(a);
+    const Real h = c - x(0) * ca - x(1) * sa;
+    const Real h_a = x(0) * sa - x(1) * ca, h_t = -(v(0) * ca + v(1) * sa);
+    return -3 * mu * L * L / (2 * h * h * h) * (0.5 * speed * h_a + h_t);
+  });
+  return std::max(peak, 0.0);
+}
+
+std::vector<OperatingValue> FluidFilmBearing::operating_data(const MotionState& s, const Vector& x,
+                                                             const Vector& v) const {
+  const bool housing = node_b.has_value();
+  const Eigen::Vector2d e = detail::relative(x, housing), ev = detail::relative(v, housing);
+  const FilmForce F = film_force(geometry, theory, s.speed, e, ev, grid);
+  const Real c = geometry.clearance, R = geometry.diameter / 2, eps = e.norm() / c;
+  const Eigen::Vector2d load = -F.f;  // what the journal puts on the film
+  const Real W = load.norm();
+  const Real attitude = std::atan2(load(0) * e(1) - load(1) * e(0), load.dot(e));
+  const Real N = s.speed / (2 * pi);
+  const Real torque = drag_torque(s, x, v);
+  Real peak = std::numeric_limits<Real>::quiet_NaN();
+  if (theory == FilmTheory::short_bearing) {
+    peak = short_bearing_peak_pressure(geometry, s.speed, e, ev);
+  } else if (theory == FilmTheory::long_bearing && ev.isZero(0.0)) {
+    // Sommerfeld's pressure with θ from the thickest film, Gümbel's positive half.
+    const Real mu = geometry.viscosity;
+    peak = std::max(0.0, peak_over_angle([&](Real t) {
+      const Real ct = std::cos(t);
+      return 6 * mu * s.speed * (R / c) * (R / c) * eps * std::sin(t) * (2 + eps * ct) /
+             ((2 + eps * eps) * (1 + eps * ct) * (1 + eps * ct));
+    }));
+  }
+  return {{"eccentricity_ratio", eps},
+          {"attitude_angle_deg", W > 0 && eps > 0 ? attitude * 180 / pi : std::numeric_limits<Real>::quiet_NaN()},
+          {"min_film_thickness_m", c * (1 - eps)},
+          {"min_film_angle_deg", eps > 0 ? std::atan2(e(1), e(0)) * 180 / pi : std::numeric_limits<Real>::quiet_NaN()},
+          {"load_n", W},
+          {"sommerfeld_number", W > 0 ? geometry.viscosity * N * geometry.length * geometry.diameter / W * (R / c) * (R / c)
+                                      : std::numeric_limits<Real>::infinity()},
+          {"friction_torque_nm", torque},
+          {"power_loss_w", torque * s.speed},
+          {"peak_pressure_pa", peak}};
 }
 
 }  // namespace feran

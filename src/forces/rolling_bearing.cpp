@@ -1,6 +1,8 @@
 #include <feran/forces/rolling_bearing.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "lateral_pair.hpp"
 
@@ -45,6 +47,26 @@ NonlinearForceValue RollingBearing::force(const MotionState& s, const Vector& x,
     J -= p * q / delta * ca * ca * e * e.transpose();
   }
   return detail::pair_force(f, J, Eigen::Matrix2d::Zero(), node_b.has_value());
+}
+
+std::vector<OperatingValue> RollingBearing::operating_data(const MotionState& s, const Vector& x, const Vector&) const {
+  const std::vector<Real> Q = element_loads(geometry, detail::relative(x, node_b.has_value()), s.angle);
+  Real q_max = 0;
+  int loaded = 0;
+  for (const Real q : Q) {
+    q_max = std::max(q_max, q);
+    loaded += q > 0 ? 1 : 0;
+  }
+  Real stress = std::numeric_limits<Real>::quiet_NaN();
+  if (!geometry.roller) {
+    // Sphere on a plane, both steel: E* = E/(2(1 − ν²)); K = (4/3)E*√R gives R, then
+    // a = (3QR/(4E*))^(1/3) and p_max = 3Q/(2πa²) (Johnson, Contact Mechanics, §4.2).
+    const Real E_star = 210e9 / (2 * (1 - 0.3 * 0.3));
+    const Real radius = std::pow(3 * geometry.hertz_constant / (4 * E_star), 2);
+    const Real a = std::cbrt(3 * q_max * radius / (4 * E_star));
+    stress = q_max > 0 ? 3 * q_max / (2 * pi * a * a) : 0.0;
+  }
+  return {{"max_element_load_n", q_max}, {"loaded_elements", static_cast<Real>(loaded)}, {"max_contact_stress_pa", stress}};
 }
 
 }  // namespace feran

@@ -136,6 +136,51 @@ std::string stability_text(const HarmonicResult& result) {
   return out;
 }
 
+std::string force_name(const Model& model, Index force);
+
+// The supports' operating state at the equilibrium (Force::operating_data()), one row
+// per support, with units in the headers: a journal bearing's eccentricity ratio,
+// attitude angle, minimum film thickness and where it is, Sommerfeld number, friction
+// torque and power loss, peak film pressure; a rolling bearing's most loaded element.
+std::string operating_table(const StaticResult& result, const Model& model) {
+  struct Column {
+    const char* name;
+    const char* head;
+    Real scale;
+    const char* format;
+  };
+  static const Column columns[] = {
+      {"eccentricity_ratio", "eps [-]", 1, ".4f"},        {"attitude_angle_deg", "attitude [deg]", 1, ".2f"},
+      {"min_film_thickness_m", "h_min [um]", 1e6, ".3f"}, {"min_film_angle_deg", "at [deg]", 1, ".1f"},
+      {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},  {"friction_torque_nm", "torque [N m]", 1, ".4g"},
+      {"power_loss_w", "loss [W]", 1, ".4g"},             {"peak_pressure_pa", "p_max [MPa]", 1e-6, ".4g"},
+      {"max_element_load_n", "Q_max [N]", 1, ".4g"},      {"loaded_elements", "loaded", 1, ".0f"},
+      {"max_contact_stress_pa", "p_Hertz [MPa]", 1e-6, ".4g"}};
+  std::vector<const Column*> used;
+  for (const Column& c : columns)
+    for (const auto& data : result.support_data)
+      if (std::any_of(data.begin(), data.end(), [&](const OperatingValue& o) { return o.name == c.name; })) {
+        used.push_back(&c);
+        break;
+      }
+  if (used.empty()) return {};
+  std::string out = fmt::format("\nBearing operating data at the equilibrium\n{:>30}", "");
+  for (const Column* c : used) out += fmt::format(" {:>14}", c->head);
+  out += '\n';
+  for (std::size_t i = 0; i < result.supports.size(); ++i) {
+    out += fmt::format("{:>30}", force_name(model, result.supports[i].first));
+    for (const Column* c : used) {
+      std::string text = "-";
+      for (const OperatingValue& o : result.support_data[i])
+        if (o.name == c->name && std::isfinite(o.value))
+          text = fmt::format(fmt::runtime("{:" + std::string(c->format) + "}"), o.value * c->scale);
+      out += fmt::format(" {:>14}", text);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 std::string force_name(const Model& model, Index force) {
   const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
   return label.empty() ? fmt::format("force {}", force + 1) : printable(label);
@@ -245,6 +290,7 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   if (!result.supports.empty()) {
     out += fmt::format("\nForces the bearings transmit to their housing or ground\n{:>30}{}\n", "", head);
     for (const auto& [i, f] : result.supports) out += fmt::format("{:>30}{}\n", force_name(model, i), forces(f));
+    out += operating_table(result, model);
   }
   if (!result.reactions.empty()) {
     out += fmt::format("\nForces on the supports (fixed DOFs)\n{:>30}{}\n", "", head);

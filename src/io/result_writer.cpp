@@ -370,6 +370,9 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
                {"node", model.nodes[static_cast<std::size_t>(at.front())].number},
                {"force", {{"y", f[static_cast<std::size_t>(Dof::v)]}, {"z", f[static_cast<std::size_t>(Dof::w)]}}}};
     js["to"] = at.size() > 1 ? json(model.nodes[static_cast<std::size_t>(at[1])].number) : json("ground");
+    json operating = json::object();
+    for (const OperatingValue& o : result.support_data[supports.size()]) operating[o.name] = json_number(o.value);
+    js["operating"] = operating;
     supports.push_back(js);
   }
   j["supports"] = supports;

@@ -102,6 +102,22 @@ struct FluidFilmBearing {
   /// 2πμR³LΩ/(c√(1 − ε²)) + ½(e × F)_x (Couette shear over the whole film, and the
   /// pressure's share; docs/theory/fluid_film_bearings.md).
   Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const;
+  /// The film's operating state (docs/theory/fluid_film_bearings.md, "Operating
+  /// data"): eccentricity_ratio, attitude_angle_deg (from the load line to the journal's
+  /// displacement, positive in the direction of rotation), min_film_thickness_m
+  /// c(1 − ε) and min_film_angle_deg (where it is, from +y towards +z),
+  /// sommerfeld_number μNLD/W·(R/c)² (N in rev/s, W the film force), load_n,
+  /// friction_torque_nm, power_loss_w and peak_pressure_pa (the short bearing's closed
+  /// form with the squeeze term; the long bearing's at rest in its housing, else NaN;
+  /// NaN for the finite bearing).
+  std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const;
 };
+
+/// The largest film pressure [Pa] of the short bearing (Ocvirk, π film) at journal
+/// position @p x and velocity @p v relative to the housing:
+/// p(α, 0) = −3μL²/(2h³)·((Ω/2)·∂h/∂α + ∂h/∂t), the largest over α (sampled, then a
+/// parabola through the top three samples).
+Real short_bearing_peak_pressure(const JournalBearingGeometry& g, Real speed, const Eigen::Vector2d& x,
+                                 const Eigen::Vector2d& v);
 
 }  // namespace feran

@@ -59,6 +59,12 @@ struct RollingBearing {
   NonlinearForceValue force(const MotionState& s, const Vector& x, const Vector& v) const;
   /// It carries the rotor (the ability of model/force.hpp).
   bool supports() const { return true; }
+  /// Its operating state: max_element_load_n, loaded_elements, and for balls
+  /// max_contact_stress_pa, Hertz's p_max = 3Q/(2πa²) of the most loaded element with
+  /// the contact of a sphere on a plane of steel (E = 210 GPa, ν = 0.3) whose radius
+  /// gives the bearing's Hertz constant K = (4/3)E*√R (docs/theory/rolling_bearings.md);
+  /// NaN for rollers, whose line contact needs the roller's length.
+  std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const;
 };
 
 }  // namespace feran

@@ -30,6 +30,11 @@
 ///                                                              torque [N m] (an oil film's
 ///                                                              friction): torque-driven
 ///                                                              run-ups load the drive with it
+///   operating_data(const MotionState&, x, v) (with force())    the numbers of its operating
+///                                                              state an engineer checks (a
+///                                                              journal bearing's eccentricity
+///                                                              ratio, film thickness, …):
+///                                                              OperatingValue list
 ///
 /// Vectors are over all unconstrained DOFs (global_dof order); add_* add into them.
 /// To add a force: a type in forces/ with kind(), nodes() and its abilities, its
@@ -72,6 +77,14 @@ struct NonlinearForceValue {
   Matrix dfdv;
 };
 
+/// One number of a support's operating state: a machine-readable name that carries its
+/// unit ("min_film_thickness_m", "eccentricity_ratio"), and its value (NaN where the
+/// support's theory does not give it).
+struct OperatingValue {
+  std::string name;
+  Real value = 0.0;
+};
+
 /// What every force type provides.
 template <class F>
 concept ForceType = std::copyable<F> && requires(const F& f) {
@@ -110,6 +123,13 @@ concept NeedsSpeed = requires(const F& f) {
 template <class F>
 concept HasDragTorque = requires(const F& f, const MotionState& s, const Vector& x) {
   { f.drag_torque(s, x, x) } -> std::same_as<Real>;
+};
+
+/// A support that reports its operating state (a journal bearing's film, a rolling
+/// bearing's most loaded element).
+template <class F>
+concept HasOperatingData = requires(const F& f, const MotionState& s, const Vector& x) {
+  { f.operating_data(s, x, x) } -> std::same_as<std::vector<OperatingValue>>;
 };
 
 /// A type-erased force with value semantics (copies are deep).
@@ -160,6 +180,11 @@ class Force {
   Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const {
     return self_->drag_torque(s, x, v);
   }
+  /// Its operating state at local displacements @p x and velocities @p v (on dofs());
+  /// empty without the ability.
+  std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const {
+    return self_->operating_data(s, x, v);
+  }
   /// The global DOFs of a nonlinear force (empty for others).
   std::vector<Index> dofs() const { return self_->dofs(); }
   /// Force and Jacobian of a nonlinear force at local displacements @p x and
@@ -193,6 +218,7 @@ class Force {
     virtual bool needs_speed() const = 0;
     virtual bool has_drag_torque() const = 0;
     virtual Real drag_torque(const MotionState&, const Vector&, const Vector&) const = 0;
+    virtual std::vector<OperatingValue> operating_data(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual std::vector<Index> dofs() const = 0;
     virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual const std::type_info& type() const = 0;
@@ -229,6 +255,10 @@ class Force {
     Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const override {
       if constexpr (HasDragTorque<F>) return value.drag_torque(s, x, v);
       else return 0.0;
+    }
+    std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const override {
+      if constexpr (HasOperatingData<F>) return value.operating_data(s, x, v);
+      else return {};
     }
     std::vector<Index> dofs() const override {
       if constexpr (HasNonlinearForce<F>) return value.dofs();

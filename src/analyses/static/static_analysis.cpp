@@ -102,6 +102,7 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
         out[static_cast<std::size_t>(dofs[static_cast<std::size_t>(k)] % dofs_per_node)] = -f(k);
     }
     result.supports.emplace_back(static_cast<Index>(i), out);
+    result.support_data.push_back(force.operating_data({.speed = options.speed}, x, Vector::Zero(n)));
   }
 
   // Force on the supports at the fixed DOFs: the load applied there minus the element

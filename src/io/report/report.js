@@ -285,6 +285,20 @@
       const loads = st.springs.concat(st.supports || []);
       table(s, ["bearing or spring", "F_y [N]", "F_z [N]"], loads.map((b) => [b.label, fmt(b.force.y), fmt(b.force.z)]));
       loads.forEach((b) => numbers.push([`static load of ${b.label}`, Math.hypot(b.force.y, b.force.z), "N", "static"]));
+      const ops = (st.supports || []).filter((b) => b.operating && Object.keys(b.operating).length);
+      if (ops.length) {
+        // Every number of each bearing's operating state, its unit from its name.
+        const names = [...new Set(ops.flatMap((b) => Object.keys(b.operating)))];
+        const shown = { m: [1e6, "µm"], pa: [1e-6, "MPa"] };
+        const head = (n) => {
+          const unit = n.split("_").pop();
+          return shown[unit] ? `${n.replace(/_(m|pa)$/, "")} [${shown[unit][1]}]` : n;
+        };
+        const value = (n, v) => { const unit = n.split("_").pop(); return fmt(v === null ? null : shown[unit] ? v * shown[unit][0] : v); };
+        s.append(el("h3", {}, "Bearing operating data at the equilibrium"));
+        table(s, ["bearing", ...names.map(head)], ops.map((b) => [b.label, ...names.map((n) => value(n, b.operating[n] ?? null))]));
+        ops.forEach((b) => { if (b.operating.min_film_thickness_m !== undefined) numbers.push([`minimum film thickness of ${b.label}`, b.operating.min_film_thickness_m * 1e6, "µm", "static"]); });
+      }
     }
   }
 

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <string>
 #include <random>
 
 #include <feran/core/error.hpp>
@@ -181,6 +183,46 @@ TEST(ShortBearing, Friswell551) {
   EXPECT_NEAR(c.C(0, 1), -81.92e3, 0.005e3);
   EXPECT_NEAR(c.C(1, 0), -81.92e3, 0.005e3);
   EXPECT_NEAR(c.C(1, 1), 294.9e3, 0.05e3);
+}
+
+
+// The operating data an engineer checks first, against their definitions and closed
+// forms: the short bearing at eccentricity ε has h_min = c(1 − ε), the attitude angle
+// tan φ = π√(1 − ε²)/(4ε) (its closed form, film_attitude_angle), the Sommerfeld number
+// μNLD/W·(R/c)² with W its closed-form load, the power loss torque × Ω with Petroff's
+// torque 2πμR³LΩ/c at the centre, and the peak pressure
+// 3μΩL²/(4c²)·ε sin θ*/(1 + ε cos θ*)³ at cos θ* = (1 − √(1 + 24ε²))/(4ε).
+TEST(JournalOperatingData, ShortBearingAgreesWithItsClosedForms) {
+  const JournalBearingGeometry g = friswell_5_5_1();
+  const Real speed = 1500 * pi / 30;
+  FluidFilmBearing b{.node_a = 0, .node_b = {}, .geometry = g, .theory = FilmTheory::short_bearing, .grid = {}};
+  for (const Real eps : {0.1, 0.4, 0.8}) {
+    Vector x(2);
+    x << eps * g.clearance * std::cos(0.7), eps * g.clearance * std::sin(0.7);
+    std::map<std::string, Real> d;
+    for (const OperatingValue& o : b.operating_data({.speed = speed}, x, Vector::Zero(2))) d[o.name] = o.value;
+    const Real R = g.diameter / 2, W = film_load(g, FilmTheory::short_bearing, speed, eps);
+    EXPECT_NEAR(d["eccentricity_ratio"], eps, 1e-15);
+    EXPECT_NEAR(d["min_film_thickness_m"], g.clearance * (1 - eps), 1e-18);
+    EXPECT_NEAR(d["min_film_angle_deg"], 0.7 * 180 / pi, 1e-9);
+    // The force integrated by quadrature against the closed forms: 1e-9.
+    EXPECT_NEAR(d["load_n"], W, 1e-9 * W);
+    EXPECT_NEAR(d["attitude_angle_deg"], film_attitude_angle(FilmTheory::short_bearing, eps) * 180 / pi, 1e-7);
+    const Real S = g.viscosity * speed / (2 * pi) * g.length * g.diameter / W * (R / g.clearance) * (R / g.clearance);
+    EXPECT_NEAR(d["sommerfeld_number"], S, 1e-9 * S);
+    EXPECT_NEAR(d["power_loss_w"], d["friction_torque_nm"] * speed, 1e-12 * d["power_loss_w"]);
+    const Real ct = (1 - std::sqrt(1 + 24 * eps * eps)) / (4 * eps), st = std::sqrt(1 - ct * ct);
+    const Real p_max = 3 * g.viscosity * speed * g.length * g.length / (4 * g.clearance * g.clearance) * eps * st /
+                       std::pow(1 + eps * ct, 3);
+    // 3600 samples and a parabola through the top three: 1e-7.
+    EXPECT_NEAR(d["peak_pressure_pa"], p_max, 1e-7 * p_max) << eps;
+  }
+  // Petroff at the centre: no load, the whole film shears, T = 2πμR³LΩ/c.
+  std::map<std::string, Real> d;
+  for (const OperatingValue& o : b.operating_data({.speed = speed}, Vector::Zero(2), Vector::Zero(2))) d[o.name] = o.value;
+  const Real R = g.diameter / 2;
+  EXPECT_NEAR(d["friction_torque_nm"], 2 * pi * g.viscosity * R * R * R * g.length * speed / g.clearance, 1e-15);
+  EXPECT_EQ(d["min_film_thickness_m"], g.clearance);
 }
 
 }  // namespace

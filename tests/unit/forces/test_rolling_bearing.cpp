@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 #include <numeric>
 
 #include <feran/forces/rolling_bearing.hpp>
@@ -102,6 +105,31 @@ TEST(RollingBearing, CageTurnsAtTheKinematicRatioAndTheStiffnessRepeatsAtTheBall
                         fh = force_on_journal(b, x, 0.3 + 0.5 * period);
   EXPECT_LT((f0 - f1).norm(), 1e-12 * f0.norm());
   EXPECT_GT((f0 - fh).norm(), 1e-3 * f0.norm());
+}
+
+
+// The most loaded element, the loaded count, and Hertz's contact stress of a sphere of
+// radius R on a steel plane: with K = (4/3)E*√R, p_max = (6QE*²/(π³R²))^(1/3)
+// (Johnson, Contact Mechanics, 1985, eq. 4.24), a form independent of the one coded.
+TEST(RollingBearing, OperatingDataGiveTheMostLoadedElementAndItsHertzStress) {
+  const Real E_star = 210e9 / (2 * (1 - 0.09)), radius = 0.004;
+  RollingBearingGeometry g = ball_bearing();
+  g.hertz_constant = 4.0 / 3.0 * E_star * std::sqrt(radius);
+  const RollingBearing b{.node_a = 0, .node_b = {}, .geometry = g};
+  Vector x(2);
+  x << 2e-5, 0.0;
+  std::map<std::string, Real> d;
+  for (const OperatingValue& o : b.operating_data({}, x, Vector::Zero(2))) d[o.name] = o.value;
+  const std::vector<Real> Q = element_loads(g, Eigen::Vector2d(x), 0.0);
+  const Real q = *std::max_element(Q.begin(), Q.end());
+  EXPECT_EQ(d["max_element_load_n"], q);
+  EXPECT_EQ(d["loaded_elements"], static_cast<Real>(std::count_if(Q.begin(), Q.end(), [](Real v) { return v > 0; })));
+  EXPECT_GT(d["loaded_elements"], 1);
+  EXPECT_NEAR(d["max_contact_stress_pa"], std::cbrt(6 * q * E_star * E_star / (pi * pi * pi * radius * radius)),
+              1e-12 * d["max_contact_stress_pa"]);
+  g.roller = true;
+  const RollingBearing r{.node_a = 0, .node_b = {}, .geometry = g};
+  EXPECT_TRUE(std::isnan(r.operating_data({}, x, Vector::Zero(2)).back().value));
 }
 
 }  // namespace

@@ -34,6 +34,9 @@ struct StaticResult {
   /// Force each nonlinear support (fluid-film bearing) transmits to its housing or the
   /// ground at the equilibrium, in the journal's DOF directions.
   std::vector<std::pair<Index, NodeValues>> supports;  ///< (force, force)
+  /// Each support's operating state at the equilibrium (Force::operating_data(): a
+  /// journal bearing's eccentricity ratio, film thickness, …), in the order of supports.
+  std::vector<std::vector<OperatingValue>> support_data;
   /// Force transmitted to the supports at fixed DOFs, per node with fixed DOFs.
   std::vector<std::pair<Index, NodeValues>> reactions;  ///< (node, force)
   std::vector<ShaftStation> stations;
