@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <feran/core/error.hpp>
+#include <feran/core/text.hpp>
 #include <feran/io/html_report.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/output_files.hpp>
@@ -68,11 +69,15 @@ Runner add_report_command(CLI::App& app, int argc, char** argv) {
     if (!args->study.empty()) options.study_directory = args->study;
     if (!args->speed_unit.empty()) options.speed_unit = args->speed_unit;
     options.stop = interrupt_token();
-    const std::string text = html_report(file, options);
+    std::string verdicts;
+    const std::string text = html_report(file, options, &verdicts);
     if (const auto code = stopped_single_solve()) return *code;
     files.write(html, text);
     files.commit();
-    if (!args->quiet) std::printf("feran report: wrote %s (%.1f MB)\n", args->output.c_str(), static_cast<double>(text.size()) / 1e6);
+    if (!args->quiet) {
+      std::printf("feran report: wrote %s (%.1f MB)\n", args->output.c_str(), static_cast<double>(text.size()) / 1e6);
+      std::printf("verdicts:\n%s", printable(verdicts, true).c_str());
+    }
     return static_cast<int>(ok);
   };
 }

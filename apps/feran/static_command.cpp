@@ -26,6 +26,7 @@ struct StaticArgs {
   std::string g;
   std::string speed;
   bool no_loads = false;
+  bool no_stability = false;
   OutputOptions out;
 };
 }  // namespace
@@ -44,6 +45,9 @@ Runner add_static_command(CLI::App& app) {
   cmd->add_option("--g", args->g, "Gravitational acceleration with unit (default 9.81m/s^2)");
   cmd->add_option("-s,--speed", args->speed, "Speed at which speed-dependent coefficients are taken (default 0)");
   cmd->add_flag("--no-loads", args->no_loads, "Leave the model's [[static_loads]] out");
+  cmd->add_flag("--no-stability", args->no_stability,
+                "Do not judge whether the rotor stays at the equilibrium when disturbed (by default the result "
+                "says whether the equilibrium is stable, from the motion linearised about it)");
   add_output_options(*cmd, args->out);
 
   return [args]() {
@@ -54,6 +58,7 @@ Runner add_static_command(CLI::App& app) {
     if (!args->gravity.empty()) request.gravity = args->gravity;
     if (!args->speed.empty()) request.speed = parse_speed_text(args->speed, "--speed");
     request.loads = !args->no_loads;
+    request.stability = !args->no_stability;
     const StaticOptions options = static_settings(file.spec.static_, request);
     const StaticResult result = run_static(file.model, options);
     if (const auto stopped = stopped_single_solve()) return *stopped;

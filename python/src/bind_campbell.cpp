@@ -133,11 +133,13 @@ void bind_campbell(py::module_& m) {
              d["speed"] = t.speed;
              d["speed_hz"] = rad_to_hz(t.speed);
              d["mode"] = t.mode;
-             d["label"] = r.result.modes.at(static_cast<std::size_t>(t.mode)).label;
+             d["label"] = threshold_label(r.result, t);
              d["frequency_hz"] = t.frequency_hz;
              d["unstable_at_start"] = t.unstable_at_start;
+             d["kind"] = t.divergence ? "divergence" : "flutter";
              return d;
-           }, "the lowest speed at which a mode's damping turns negative (a dict), or None")
+           }, "the lowest speed at which a mode's damping turns negative (kind 'flutter') or a real\n"
+             "eigenvalue turns positive (kind 'divergence', mode -1), a dict; or None")
       .def_property_readonly("complete", [](const PyCampbellResult& r) { return r.result.info.converged(); },
                              "whether every speed was solved")
       .def_property_readonly("message", [](const PyCampbellResult& r) { return r.result.info.message; })

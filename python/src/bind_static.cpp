@@ -50,6 +50,20 @@ void bind_static(py::module_& m) {
       .def_property_readonly("bearings", [](const PyStaticResult& r) {
              return string_list(r.result.supports.size(), [&](std::size_t i) { return r.model().forces[static_cast<std::size_t>(r.result.supports[i].first)].label(); });
            }, "journal bearings ([[journal_bearings]] names)")
+      .def_property_readonly("stability", [](const PyStaticResult& r) {
+             const StabilityPoint& p = r.result.stability;
+             py::dict d;
+             d["kind"] = stability_kind(p);
+             d["unstable"] = p.known ? py::object(py::bool_(p.unstable)) : py::object(py::none());
+             d["growth_rate"] = p.growth_rate;
+             d["frequency_hz"] = p.unstable && !p.divergence ? py::object(py::float_(p.frequency_hz)) : py::object(py::none());
+             d["message"] = stability_phrase(p);
+             return d;
+           }, "whether the rotor stays at this equilibrium when disturbed: a dict of kind ('stable',\n"
+              "'flutter', 'divergence', 'unknown'), unstable (None: unknown), growth_rate [1/s] (NaN when\n"
+              "decided without eigenvalues), frequency_hz of a growing oscillation, and message")
+      .def_property_readonly("unstable", [](const PyStaticResult& r) { return r.result.stability.known && r.result.stability.unstable; },
+                             "True when the equilibrium is unstable (see stability)")
       .def_property_readonly("bearing_data", [](const PyStaticResult& r) {
              py::list out;
              for (const auto& data : r.result.support_data) {
@@ -98,7 +112,7 @@ void bind_static(py::module_& m) {
   m.def(
       "static",
       [](const PyModel& model, std::optional<std::string> gravity, const py::object& g, const py::object& speed,
-         bool loads) {
+         bool loads, bool stability) {
         auto file = std::make_shared<const ModelFile>(model.built());
         StaticRequest request;
         request.gravity = std::move(gravity);
@@ -110,6 +124,7 @@ void bind_static(py::module_& m) {
         }
         request.speed = optional_speed(speed, "speed");
         request.loads = loads;
+        request.stability = stability;
         PyStaticResult out{{}, static_settings(file->spec.static_, request), {}};
         out.context = result_context(file, out.options.speed, out.options.speed);
         {
@@ -121,9 +136,10 @@ void bind_static(py::module_& m) {
         return out;
       },
       py::arg("model"), py::kw_only(), py::arg("gravity") = py::none(), py::arg("g") = py::none(),
-      py::arg("speed") = py::none(), py::arg("loads") = true,
+      py::arg("speed") = py::none(), py::arg("loads") = true, py::arg("stability") = true,
       "Static analysis, as feran static: gravity '+x' … '-z' or 'none', g ('9.81 m/s^2' or a\n"
-      "number in m/s²), speed (of speed-dependent coefficients), loads=False as --no-loads.\n"
+      "number in m/s²), speed (of speed-dependent coefficients), loads=False as --no-loads,\n"
+      "stability=False as --no-stability (the result's stability is then unknown).\n"
       "Unset options come from the model's [static] table. A singular or failed solve raises\n"
       "feran.Error.");
 }

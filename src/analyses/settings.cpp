@@ -396,6 +396,7 @@ StaticOptions static_settings(const StaticSpec& file, const StaticRequest& reque
   }
   options.speed = request.speed.value_or(file.speed.value_or(0.0));
   options.loads = request.loads;
+  options.stability = request.stability;
   return options;
 }
 

@@ -390,7 +390,13 @@ std::vector<OperatingValue> FluidFilmBearing::operating_data(const MotionState& 
                                       : std::numeric_limits<Real>::infinity()},
           {"friction_torque_nm", torque},
           {"power_loss_w", torque * s.speed},
-          {"peak_pressure_pa", peak}};
+          {"peak_pressure_pa", peak},
+          // The design limits of Trumpler ("Design of Film Bearings", 1966): a unit
+          // load W/(L·D) of at most 2.07 MPa (300 psi) and a minimum film thickness of
+          // at least 0.0002 in + 0.00004·D (5.08 µm + 4e-5·D).
+          {"specific_load_pa", W / (geometry.length * geometry.diameter)},
+          {"specific_load_limit_pa", trumpler_specific_load_limit},
+          {"min_film_limit_m", trumpler_min_film(geometry.diameter)}};
 }
 
 }  // namespace feran

@@ -66,7 +66,12 @@ std::vector<OperatingValue> RollingBearing::operating_data(const MotionState& s,
     const Real a = std::cbrt(3 * q_max * radius / (4 * E_star));
     stress = q_max > 0 ? 3 * q_max / (2 * pi * a * a) : 0.0;
   }
-  return {{"max_element_load_n", q_max}, {"loaded_elements", static_cast<Real>(loaded)}, {"max_contact_stress_pa", stress}};
+  // ISO 76's static load rating is the load giving 4200 MPa at the most loaded ball's
+  // contact (4000 MPa for rollers): beyond it the raceways dent permanently.
+  return {{"max_element_load_n", q_max},
+          {"loaded_elements", static_cast<Real>(loaded)},
+          {"max_contact_stress_pa", stress},
+          {"contact_stress_limit_pa", geometry.roller ? std::numeric_limits<Real>::quiet_NaN() : 4.2e9}};
 }
 
 }  // namespace feran

@@ -26,6 +26,7 @@
 
 #include "json_text.hpp"
 #include "report_assets.hpp"
+#include "verdicts.hpp"
 
 namespace feran {
 
@@ -242,7 +243,7 @@ std::string html_escape(const std::string& text) {
 
 bool report_available() { return detail::report_assets_built(); }
 
-std::string html_report(const ModelFile& file, const ReportOptions& options) {
+std::string html_report(const ModelFile& file, const ReportOptions& options, std::string* summary) {
   if (!report_available())
     throw Error("this feran was built without plotly.js, which the report inlines: run scripts/setup.sh (it "
                 "installs the front-end packages with npm) and build again");
@@ -384,6 +385,11 @@ std::string html_report(const ModelFile& file, const ReportOptions& options) {
     });
 
   if (!options.study_directory.empty()) data["study"] = study_results(options.study_directory);
+
+  // The verdicts the report opens with, read off the sections above.
+  const std::vector<detail::Verdict> verdicts = detail::report_verdicts(data, options.speed_unit);
+  data["verdicts"] = detail::verdicts_json(verdicts);
+  if (summary) *summary = detail::verdicts_text(verdicts);
 
   const std::string title = html_escape(data["title"].get<std::string>());
   std::string html;

@@ -94,9 +94,13 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
     out += fmt::format("none up to {} (every damping ratio stays >= 0)\n", speed_text(result.speeds.back()));
   } else {
     const StabilityThreshold& t = *result.stability_threshold;
-    const std::string& label = result.modes[static_cast<std::size_t>(t.mode)].label;
+    const std::string label = threshold_label(result, t);
     if (t.unstable_at_start)
       out += fmt::format("{} is already unstable at the first speed, {}\n", label, speed_text(t.speed));
+    else if (t.divergence)
+      out += fmt::format("{}: a real eigenvalue turns positive (divergence: the stiffness loses its positivity, "
+                         "a negative support stiffness or an axial load beyond buckling)\n",
+                         speed_text(t.speed));
     else
       out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {:.4g} Hz natural frequency\n",
                          speed_text(t.speed), label, t.frequency_hz);
@@ -152,7 +156,8 @@ std::string operating_table(const StaticResult& result, const Model& model) {
   static const Column columns[] = {
       {"eccentricity_ratio", "eps [-]", 1, ".4f"},        {"attitude_angle_deg", "attitude [deg]", 1, ".2f"},
       {"min_film_thickness_m", "h_min [um]", 1e6, ".3f"}, {"min_film_angle_deg", "at [deg]", 1, ".1f"},
-      {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},  {"friction_torque_nm", "torque [N m]", 1, ".4g"},
+      {"specific_load_pa", "W/(LD) [MPa]", 1e-6, ".4g"},  {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},
+      {"friction_torque_nm", "torque [N m]", 1, ".4g"},
       {"power_loss_w", "loss [W]", 1, ".4g"},             {"peak_pressure_pa", "p_max [MPa]", 1e-6, ".4g"},
       {"max_element_load_n", "Q_max [N]", 1, ".4g"},      {"loaded_elements", "loaded", 1, ".0f"},
       {"max_contact_stress_pa", "p_Hertz [MPa]", 1e-6, ".4g"}};
@@ -268,6 +273,11 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   out += fmt::format("gravity ({:.4g}, {:.4g}, {:.4g}) m/s^2, {} static load(s), coefficients at {}\n\n",
                      options.gravity(0), options.gravity(1), options.gravity(2),
                      options.loads ? model.n_forces("static_load") : 0, speed_text(options.speed));
+  if (result.stability.known && result.stability.unstable)
+    out += fmt::format("warning: the rotor does not stay at this equilibrium: {}\n\n",
+                       stability_phrase(result.stability));
+  else
+    out += fmt::format("stability of the equilibrium: {}\n\n", stability_phrase(result.stability));
   out += "Displacements [mm, mrad]\n";
   out += fmt::format("{:>20} {:>9} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "node", "x [mm]", "u", "v", "w", "rx",
                      "ry", "rz");

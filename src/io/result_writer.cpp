@@ -88,6 +88,16 @@ std::string force_label(const Model& model, Index force) {
 // The rotor's stability at each point of a steady-state result (modal/stability.hpp):
 // per point whether it is unstable (null: unknown), the largest growth rate where
 // eigenvalues were computed, and the first unstable speed.
+// One point's stability (the static equilibrium's).
+json stability_point_json(const StabilityPoint& p) {
+  return {{"kind", stability_kind(p)},
+          {"unstable", p.known ? json(p.unstable) : json(nullptr)},
+          {"growth_rate_per_s", detail::json_number(p.growth_rate)},
+          {"unstable_mode_frequency_hz", p.unstable && !p.divergence ? json(p.frequency_hz) : json(nullptr)},
+          {"by_energy", p.by_energy},
+          {"message", stability_phrase(p)}};
+}
+
 json point_stability_json(const std::vector<StabilityPoint>& points) {
   if (points.empty()) return nullptr;
   json unstable = json::array(), growth = json::array(), frequency = json::array(), kind = json::array();
@@ -338,6 +348,7 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
   j["gravity_m_s2"] = {options.gravity(0), options.gravity(1), options.gravity(2)};
   j["speed_hz"] = rad_to_hz(options.speed);
   j["solver"] = solver_json(result.info);
+  j["stability"] = stability_point_json(result.stability);
   json nodes = json::array();
   for (Index node = 0; node < model.n_nodes(); ++node) {
     json jn = node_json(model, node);
@@ -520,9 +531,10 @@ std::string campbell_json(const CampbellResult& result, const CampbellOptions& o
     j["stability_threshold_hz"] = rad_to_hz(t.speed);
     j["stability_threshold"] = {{"speed_hz", rad_to_hz(t.speed)},
                                 {"speed_rpm", rad_to_hz(t.speed) * 60.0},
-                                {"mode", result.modes[static_cast<std::size_t>(t.mode)].label},
+                                {"mode", threshold_label(result, t)},
                                 {"frequency_hz", t.frequency_hz},
-                                {"unstable_at_start", t.unstable_at_start}};
+                                {"unstable_at_start", t.unstable_at_start},
+                                {"kind", t.divergence ? "divergence" : "flutter"}};
   } else {
     j["stability_threshold_hz"] = nullptr;
     j["stability_threshold"] = nullptr;

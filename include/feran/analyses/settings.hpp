@@ -123,6 +123,7 @@ struct StaticRequest {
   std::optional<Real> g;      ///< [m/s²]; default [static] g, else 9.81
   std::optional<Real> speed;  ///< [rad/s]; default [static] speed, else 0
   bool loads = true;          ///< include the model's [[static_loads]]
+  bool stability = true;      ///< decide whether the equilibrium is stable (StaticResult::stability)
 };
 
 /// Throws Error for a direction that is not one of the seven words or g ≤ 0.

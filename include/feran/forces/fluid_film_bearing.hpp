@@ -109,9 +109,18 @@ struct FluidFilmBearing {
   /// sommerfeld_number μNLD/W·(R/c)² (N in rev/s, W the film force), load_n,
   /// friction_torque_nm, power_loss_w and peak_pressure_pa (the short bearing's closed
   /// form with the squeeze term; the long bearing's at rest in its housing, else NaN;
-  /// NaN for the finite bearing).
+  /// NaN for the finite bearing), specific_load_pa W/(L·D), and Trumpler's design
+  /// limits specific_load_limit_pa and min_film_limit_m (below).
   std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const;
 };
+
+/// Trumpler's design limits for plain journal bearings (P. R. Trumpler, "Design of
+/// Film Bearings", Macmillan 1966; quoted in Hamrock, Schmid & Jacobson, "Fundamentals
+/// of Fluid Film Lubrication", 2nd ed. 2004, ch. 10): the unit load W/(L·D) at start
+/// and stop at most 300 psi, and the minimum film thickness at least
+/// 0.0002 in + 0.00004·D.
+inline constexpr Real trumpler_specific_load_limit = 2.0684e6;  ///< [Pa], 300 psi
+inline Real trumpler_min_film(Real diameter) { return 5.08e-6 + 4e-5 * diameter; }  ///< [m]
 
 /// The largest film pressure [Pa] of the short bearing (Ocvirk, π film) at journal
 /// position @p x and velocity @p v relative to the housing:

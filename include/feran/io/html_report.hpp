@@ -46,8 +46,9 @@ struct ReportOptions {
 /// Throws Error for options that are wrong (an unknown unit, a study directory without
 /// results, a Campbell diagram without a last speed); a solve that fails is reported in
 /// its section, with the results so far. Throws Error when feran was built without
-/// plotly.js (report_available() is false).
-std::string html_report(const ModelFile& file, const ReportOptions& options);
+/// plotly.js (report_available() is false). @p summary, when given, receives the
+/// verdicts the report opens with as terminal lines (docs/report.md, "Verdicts").
+std::string html_report(const ModelFile& file, const ReportOptions& options, std::string* summary = nullptr);
 
 /// True when the report's scripts were built in (the front-end packages were installed
 /// by scripts/setup.sh when feran was built).

@@ -148,6 +148,14 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
 
   std::vector<StabilityThreshold> thresholds;
   std::vector<Bracket> brackets;
+  // Divergence: a real eigenvalue that is positive (ModalResult::divergence, beyond
+  // round-off of the largest eigenvalue), at the first grid speed where it appears.
+  const auto divergent = [](const ModalResult& r) {
+    Real largest = 0;
+    for (const Mode& m : r.modes) largest = std::max(largest, magnitude(m.eigenvalue));
+    return r.divergence > 1e-9 * std::max(largest, r.divergence);
+  };
+  std::optional<std::size_t> first_divergent;
   for (std::size_t i = 0; i < options.speeds.size(); ++i) {
     const Real speed = options.speeds[i];
     ModalResult r = std::move(grid[i]);
@@ -162,6 +170,7 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
       result.info.message = "eigen solve failed at " + std::to_string(rad_to_hz(speed)) + " Hz: " + r.info.message;
       break;
     }
+    if (divergent(r) && !first_divergent) first_divergent = i;
     std::vector<Mode> cands = oscillatory_modes(std::move(r), i == 0 ? n_track : n_cand);
     result.speeds.push_back(speed);
 
@@ -258,6 +267,25 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     else
       crossings[static_cast<std::size_t>(bi)] = StabilityThreshold{s, br.mode, freq, false};
   });
+  // The onset of a divergence, by bisection between the last grid speed without it
+  // and the first with it (no eigenvalue continues through it: the real one is born
+  // at p = 0).
+  if (first_divergent && !options.stop.requested()) {
+    const std::size_t i = *first_divergent;
+    StabilityThreshold t{options.speeds[i], -1, 0.0, i == 0, true};
+    if (i > 0) {
+      Real low = options.speeds[i - 1], high = options.speeds[i];
+      while (high - low > options.speed_tolerance && !options.stop.requested()) {
+        const Real mid = 0.5 * (low + high);
+        if (mid <= low || mid >= high) break;
+        const ModalResult r = solve(mid);
+        if (!r.info.converged()) break;
+        (divergent(r) ? high : low) = mid;
+      }
+      t.speed = high;  // where it was seen: never above the onset by more than the bracket
+    }
+    thresholds.push_back(t);
+  }
   result.n_solves += n_refinement_solves;
   if (n_skipped > 0 && result.info.converged())
     result.info.fail(SolverStatus::interrupted,
@@ -301,6 +329,12 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     tm.label = family + " " + std::to_string(++counters[family]);
   }
   return result;
+}
+
+std::string threshold_label(const CampbellResult& result, const StabilityThreshold& threshold) {
+  if (threshold.divergence || threshold.mode < 0 || threshold.mode >= static_cast<Index>(result.modes.size()))
+    return "divergence (a real eigenvalue)";
+  return result.modes[static_cast<std::size_t>(threshold.mode)].label;
 }
 
 }  // namespace feran

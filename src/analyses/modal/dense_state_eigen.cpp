@@ -151,12 +151,18 @@ std::vector<Index> select_pairs(const Vector& wr, const Vector& wi, const DenseS
       continue;
     }
     const bool counts = !s.oscillatory_only || wi(j) > 0.0;
+    // A real positive eigenvalue (divergence) is kept wherever it lies, so that the
+    // stability of a sweep of oscillatory modes still sees it.
+    const bool divergent = s.oscillatory_only && wi(j) == 0.0 && wr(j) > 0.0;
     if (counted >= s.count) {
       if (counts && repeated(pj, last)) chosen.push_back(j);
-      if (!repeated(pj, last)) break;
+      else if (divergent) chosen.push_back(j);
       continue;
     }
-    if (!counts) continue;
+    if (!counts) {
+      if (divergent) chosen.push_back(j);
+      continue;
+    }
     chosen.push_back(j);
     ++counted;
     last = pj;
@@ -225,12 +231,16 @@ std::vector<Index> select_complex(const ComplexVector& w, const DenseSelection& 
       continue;
     }
     const bool counts = !s.oscillatory_only || q.imag() > 0.0;
+    const bool divergent = s.oscillatory_only && q.imag() == 0.0 && q.real() > 0.0;
     if (counted >= s.count) {
       if (counts && repeated(q, last)) chosen.push_back(j);
-      if (!repeated(q, last)) break;
+      else if (divergent) chosen.push_back(j);
       continue;
     }
-    if (!counts) continue;
+    if (!counts) {
+      if (divergent) chosen.push_back(j);
+      continue;
+    }
     chosen.push_back(j);
     ++counted;
     last = q;

@@ -732,7 +732,10 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
                 : dominant == 1                          ? ModeType::axial
                                                          : ModeType::torsional;
 
-    if (options_.oscillatory_only && !mode.oscillatory) continue;
+    if (options_.oscillatory_only && !mode.oscillatory) {
+      if (!mode.rigid_body && p.imag() == 0.0 && p.real() > result.divergence) result.divergence = p.real();
+      continue;
+    }
     const ComplexVector full = times(T, phi);
     const WhirlResult whirl = classify_whirl(full);
     mode.whirl = whirl.whirl;

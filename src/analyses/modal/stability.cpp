@@ -76,8 +76,19 @@ StabilityPoint stability_at(const Model& model, Real speed) {
     return out;
   }
   try {
-    const Model linear_copy = supported ? linearised(model) : Model{};
-    const Model& linear = supported ? linear_copy : model;
+    return supported ? stability_of_linear(linearised(model), speed) : stability_of_linear(model, speed);
+  } catch (const Error& e) {
+    out.known = false;
+    out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
+    out.message = e.what();
+  }
+  return out;
+}
+
+StabilityPoint stability_of_linear(const Model& linear, Real speed) {
+  StabilityPoint out;
+  out.speed = speed;
+  try {
     if (energy_stable(linear, speed)) {
       out.by_energy = true;
       out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
@@ -86,7 +97,7 @@ StabilityPoint stability_at(const Model& model, Real speed) {
     ModalOptions options;
     options.shapes = false;
     options.n_modes = stability_modes;
-    const ModalResult r = run_modal(model, speed, options);
+    const ModalResult r = run_modal(linear, speed, options);
     if (!r.info.converged()) {
       out.known = false;
       out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
@@ -113,6 +124,23 @@ StabilityPoint stability_at(const Model& model, Real speed) {
     out.message = e.what();
   }
   return out;
+}
+
+std::string stability_kind(const StabilityPoint& point) {
+  return !point.known ? "unknown" : !point.unstable ? "stable" : point.divergence ? "divergence" : "flutter";
+}
+
+std::string stability_phrase(const StabilityPoint& point) {
+  if (!point.known) return "unknown: " + point.message;
+  if (!point.unstable)
+    return point.by_energy ? "stable (no element feeds energy in)"
+                           : fmt::format("stable (the least damped mode decays at {:.4g} 1/s)", -point.growth_rate);
+  if (point.divergence)
+    return fmt::format("UNSTABLE: divergence, a real eigenvalue {:.4g} 1/s (a disturbance grows without "
+                       "oscillating)",
+                       point.growth_rate);
+  return fmt::format("UNSTABLE: flutter, a mode at {:.4g} Hz grows at {:.4g} 1/s", point.frequency_hz,
+                     point.growth_rate);
 }
 
 }  // namespace feran

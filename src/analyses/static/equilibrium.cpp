@@ -344,9 +344,12 @@ class LinearisedSupport {
 }  // namespace
 
 Model linearised(const Model& model) {
+  return linearised(model, EquilibriumOptions{.gravity = model.gravity, .loads = true});
+}
+
+Model linearised(const Model& model, const EquilibriumOptions& about) {
   if (!has_supports(model)) return model;
-  auto path = std::make_shared<const EquilibriumPath>(
-      model, EquilibriumOptions{.gravity = model.gravity, .loads = true});
+  auto path = std::make_shared<const EquilibriumPath>(model, about);
   Model out = model;
   out.forces.clear();
   for (std::size_t i = 0; i < model.forces.size(); ++i) {

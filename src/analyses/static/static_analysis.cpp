@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
@@ -171,6 +172,26 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
     result.total_load[5] += f_full(global_dof(node, Dof::rz)) + x * fy;
   }
   result.info.n_converged = 1;
+  if (options.stability) {
+    // The motion about this equilibrium: the supports linearised about the
+    // equilibrium under the same gravity and loads.
+    if (has_supports(model)) {
+      try {
+        result.stability = stability_of_linear(
+            linearised(model, EquilibriumOptions{.gravity = options.gravity, .loads = options.loads}), options.speed);
+      } catch (const Error& e) {
+        result.stability.known = false;
+        result.stability.growth_rate = std::numeric_limits<Real>::quiet_NaN();
+        result.stability.message = e.what();
+      }
+    } else {
+      result.stability = stability_of_linear(model, options.speed);
+    }
+  } else {
+    result.stability.known = false;
+    result.stability.growth_rate = std::numeric_limits<Real>::quiet_NaN();
+    result.stability.message = "not asked for";
+  }
   return result;
 }
 

@@ -81,6 +81,20 @@
   const nav = el("nav");
   root.append(nav);
 
+  // ---------------------------------------------------------------- verdicts
+  // One verdict per check, each with its number and reason (computed by feran from
+  // the sections below: docs/report.md, "Verdicts").
+  if (data.verdicts) {
+    const s = sectionEl("verdicts", "Verdicts", "What to know before signing: each check, its verdict, the number that decides it and why. The sections below show where each number comes from.");
+    const t = table(s, ["check", "verdict", "value", "reason"],
+      data.verdicts.map((v) => [v.check, v.status, v.value === null ? "–" : `${fmt(v.value, 4)}${v.unit ? " " + v.unit : ""}`, v.reason]));
+    t.classList.add("verdicts");
+    t.querySelectorAll("tbody tr").forEach((tr, i) => {
+      const status = data.verdicts[i].status;
+      tr.children[1].classList.add(status === "pass" ? "pass" : status === "FAIL" ? "fail" : "unchecked");
+    });
+  }
+
   // ---------------------------------------------------------------- model
   {
     const m = data.model;
@@ -278,6 +292,9 @@
     const st = data.static;
     if (st.error) failed(s, "static");
     else {
+      if (st.stability)
+        s.append(el("p", { class: st.stability.unstable ? "error" : "" },
+          `At ${fmt(fromHz(st.speed_hz), 5)} ${unit}: ${st.stability.unstable ? "the rotor does not stay at this equilibrium — " : "equilibrium "}${st.stability.message}.`));
       const rot = st.displacements.filter((d) => data.model.nodes.find((n) => n.number === d.node)?.rotating);
       figure(s, [{ name: "v", x: rot.map((d) => d.x_m), y: rot.map((d) => d.v * 1e6), mode: "lines+markers" },
                  { name: "w", x: rot.map((d) => d.x_m), y: rot.map((d) => d.w * 1e6), mode: "lines+markers" }],

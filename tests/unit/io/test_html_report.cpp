@@ -2,6 +2,7 @@
 // uniform shaft, the sections present for what the model gives, text that would end
 // the data's <script> element kept inside it, and the configuration file's located
 // errors. (The page itself is checked in a browser: tests/browser/.)
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -109,7 +110,18 @@ TEST(HtmlReport, KeepsTextThatWouldEndItsScriptInsideTheData) {
   EXPECT_EQ(report_data(html)["title"], title);
 }
 
+// The verdict of each check, by name.
+const nlohmann::json& verdict(const nlohmann::json& d, const std::string& check) {
+  for (const nlohmann::json& v : d["verdicts"])
+    if (v["check"] == check) return v;
+  ADD_FAILURE() << "no verdict " << check;
+  return d["verdicts"][0];
+}
+
 TEST(HtmlReport, RunsTheApi684SectionWhenTheModelGivesAnOperatingRange) {
+  // Also the verdicts it opens with: the stability and separation verdicts say what
+  // the API section says; a rotor on springs has no bearing model to judge loads or
+  // films by ("not checked", with the reason).
   if (!report_available()) GTEST_SKIP() << "built without plotly.js";
   const ModelFile file = read_model_string(
       shaft_model("shaft", "[api684]\nmin_speed = \"2000 rpm\"\nmax_speed = \"3000 rpm\"\npoints = 41\nmap_points = 5\n"),
@@ -117,13 +129,52 @@ TEST(HtmlReport, RunsTheApi684SectionWhenTheModelGivesAnOperatingRange) {
   ReportOptions options;
   options.runup = false;
   options.n_threads = 1;
-  const nlohmann::json d = report_data(html_report(file, options));
+  std::string text;
+  const nlohmann::json d = report_data(html_report(file, options, &text));
   ASSERT_TRUE(d.contains("api684"));
   EXPECT_FALSE(d["api684"].contains("error"));
   EXPECT_EQ(d["api684"]["map"]["stiffness_n_per_m"].size(), 5u);
   EXPECT_NEAR(d["operating"]["max_rpm"].get<Real>(), 3000, 1e-9);
+  ASSERT_EQ(d["verdicts"].size(), 5u);
+  EXPECT_EQ(verdict(d, "stability in the operating range")["status"],
+            d["api684"]["operating_stability"]["passes"] ? "pass" : "FAIL");
+  EXPECT_EQ(verdict(d, "separation margins")["status"], d["api684"]["separation_margins_pass"] ? "pass" : "FAIL");
+  EXPECT_EQ(verdict(d, "bearing loads")["status"], "not checked");
+  EXPECT_EQ(verdict(d, "minimum film thickness")["status"], "not checked");
+  EXPECT_NE(text.find("separation margins"), std::string::npos);
   options.speed_unit = "rad/s";
   EXPECT_THROW(html_report(file, options), Error);
+}
+
+TEST(HtmlReport, JudgesTheJournalBearingsFilmAndLoadByTrumplersLimits) {
+  // The two-disk rotor on short journal bearings (unstable from about 5300 rpm, run
+  // from 8000 to 10000 rpm): the stability verdict fails as API 684's does, and the
+  // film and load verdicts carry the static section's own numbers against limits
+  // computed here from the bearings' size (D = 60 mm, L = 30 mm):
+  // h_min ≥ 5.08 µm + 4e-5·D = 7.48 µm, W/(L·D) ≤ 300 psi.
+  if (!report_available()) GTEST_SKIP() << "built without plotly.js";
+  const ModelFile file = read_model_file(FERAN_TEST_MODELS "/valid/journal_rotor.toml");
+  ReportOptions options;
+  options.runup = false;
+  options.n_threads = 1;
+  options.api684_request.points = 41;
+  options.api684_request.map_points = 5;
+  const nlohmann::json d = report_data(html_report(file, options));
+  EXPECT_EQ(verdict(d, "stability in the operating range")["status"], "FAIL");
+  EXPECT_FALSE(d["api684"]["operating_stability"]["passes"].get<bool>());
+  double thinnest = 1e300, heaviest = 0;
+  for (const nlohmann::json& b : d["static"]["supports"]) {
+    thinnest = std::min(thinnest, b["operating"]["min_film_thickness_m"].get<double>());
+    heaviest = std::max(heaviest, b["operating"]["load_n"].get<double>() / (0.03 * 0.06));
+  }
+  const nlohmann::json& film = verdict(d, "minimum film thickness");
+  EXPECT_NEAR(film["value"].get<double>(), thinnest * 1e6, 1e-12 * thinnest * 1e6);
+  EXPECT_EQ(film["status"], thinnest >= 5.08e-6 + 4e-5 * 0.06 ? "pass" : "FAIL");
+  EXPECT_NE(film["reason"].get<std::string>().find("7.48 µm"), std::string::npos) << film["reason"];
+  const nlohmann::json& load = verdict(d, "bearing loads");
+  EXPECT_NEAR(load["value"].get<double>(), heaviest * 1e-6, 1e-9 * heaviest * 1e-6);
+  EXPECT_EQ(load["status"], heaviest <= 300 * 6894.757 ? "pass" : "FAIL");
+  EXPECT_NE(load["reason"].get<std::string>().find("unstable"), std::string::npos) << load["reason"];
 }
 
 TEST(ReportConfig, ReadsItsKeysAndLocatesMistakes) {

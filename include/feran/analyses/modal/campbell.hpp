@@ -66,9 +66,12 @@ struct CriticalSpeed {
 /// The lowest speed at which a mode's damping ratio turns negative.
 struct StabilityThreshold {
   Real speed = 0;  ///< [rad/s]
-  Index mode = 0;  ///< index into CampbellResult::modes
-  Real frequency_hz = 0;  ///< the mode's frequency there
+  Index mode = 0;  ///< index into CampbellResult::modes; −1 for a divergence
+  Real frequency_hz = 0;  ///< the mode's frequency there (0 for a divergence)
   bool unstable_at_start = false;  ///< already negative at the first speed
+  /// A real eigenvalue turns positive (a negative stiffness, a shaft beyond its
+  /// buckling load): a divergence, which no tracked (oscillating) mode shows.
+  bool divergence = false;
 };
 
 struct CampbellResult {
@@ -79,6 +82,10 @@ struct CampbellResult {
   SolverInfo info;  ///< method used; converged() is false if a solve failed (results so far kept)
   Index n_solves = 0;  ///< eigen solves, grid and refinement
 };
+
+/// How the threshold's unstable motion is named: the tracked mode's label, or
+/// "divergence (a real eigenvalue)".
+std::string threshold_label(const CampbellResult& result, const StabilityThreshold& threshold);
 
 /// Runs the sweep. Modes are matched from speed to speed by the complex MAC of their
 /// shapes with a predicted eigenvalue (linear extrapolation) as second criterion, by

@@ -105,6 +105,11 @@ struct ModalResult {
   /// The most eigen solves one mode needed to settle on its own frequency (0 when no
   /// coefficient depends on frequency).
   Index frequency_iterations = 0;
+  /// With ModalOptions::oscillatory_only: the largest real positive eigenvalue of a
+  /// mode that is not rigid-body motion [1/s] (divergence: a negative stiffness, a
+  /// shaft beyond its buckling load), among the eigenvalues the solver computed (all
+  /// of them in a dense solve), although such a mode is not listed; 0: none.
+  Real divergence = 0;
 };
 
 /// Modal solver for one model: assembles the speed-independent matrices once and

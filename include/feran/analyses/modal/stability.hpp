@@ -47,6 +47,17 @@ struct StabilityPoint {
 /// the result is unknown with the reason.
 StabilityPoint stability_at(const Model& model, Real speed);
 
+/// The same for a model whose supports are already linearised (linearised(): no force
+/// carries the rotor), about whichever equilibrium they were linearised.
+StabilityPoint stability_of_linear(const Model& linear, Real speed);
+
+/// One phrase for @p point: "stable", "UNSTABLE: flutter, a mode at 41.2 Hz grows at
+/// 3.05 1/s", "UNSTABLE: divergence, a real eigenvalue 70.7 1/s", "unknown: <reason>".
+std::string stability_phrase(const StabilityPoint& point);
+
+/// "stable", "flutter", "divergence" or "unknown" (machine-readable).
+std::string stability_kind(const StabilityPoint& point);
+
 /// True when the energy test alone shows @p model stable at @p speed (see above); the
 /// supports must already be linearised.
 bool energy_stable(const Model& linear, Real speed);

@@ -103,6 +103,10 @@ class EquilibriumPath {
 /// index into @p model, whose elements keep their indices here.
 Model linearised(const Model& model);
 
+/// The same about the equilibria under @p about's gravity and loads (a static
+/// analysis' own, which may differ from the model's).
+Model linearised(const Model& model, const EquilibriumOptions& about);
+
 /// The index in @p model.forces of the support that element @p element of
 /// linearised(@p model) stands for (an index past @p model's own elements: the k-th
 /// such element is the k-th force that supports()); empty for @p model's own elements.

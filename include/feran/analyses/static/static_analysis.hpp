@@ -10,6 +10,7 @@
 
 #include <feran/analyses/common/shaft_sections.hpp>
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/modal/stability.hpp>
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
 
@@ -22,6 +23,9 @@ struct StaticOptions {
   /// evaluated [rad/s] (with supports, the equilibrium includes the circulatory Ω·K_i).
   Real speed = 0.0;
   bool loads = true;  ///< include Model::static_loads
+  /// Decide whether the equilibrium is stable (StaticResult::stability); false leaves
+  /// it unknown ("not asked"), as --no-stability does.
+  bool stability = true;
 };
 
 /// Six real components indexed by Dof (forces [N], moments [N m]).
@@ -43,6 +47,11 @@ struct StaticResult {
   std::vector<SectionForces> section_forces;  ///< real values (imaginary parts zero)
   std::vector<SectionStress> stresses;
   NodeValues total_load{};  ///< sum of the applied forces (moments about the origin) [N], [N m]
+  /// Whether the rotor stays at this equilibrium when disturbed: the stability of the
+  /// motion about it at the analysis' speed (analyses/modal/stability.hpp). An
+  /// unstable equilibrium (oil whirl above the threshold, a divergence) is one the
+  /// rotor does not stay at: the doors print it flagged, with the reason.
+  StabilityPoint stability;
   SolverInfo info;
 };
 

@@ -10,8 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/modal/stability.hpp>
+#include <feran/analyses/static/static_analysis.hpp>
 #include <feran/io/model_reader.hpp>
 
 #include "test_models.hpp"
@@ -88,6 +90,62 @@ TEST(Stability, ANegativeStiffnessDivergesAtItsRealRateNotAsARigidBodyMode) {
   EXPECT_TRUE(p.divergence);
   EXPECT_EQ(p.frequency_hz, 0.0);
   EXPECT_NEAR(p.growth_rate, (-c + std::sqrt(c * c + 4 * m * -kn)) / (2 * m), 1e-9 * std::sqrt(-kn / m));
+}
+
+// A Jeffcott rotor whose spring softens with speed, k(Ω) = k0·(1 − Ω/Ω_d) (a table
+// linear in speed), diverges from Ω_d on, where k turns negative: a real eigenvalue
+// is born at p = 0 and no oscillating mode shows it.
+Model softening_jeffcott(Real k0, Real divergence_speed, Real c) {
+  Model model = test::jeffcott(m, 1.0, c, 0.0);
+  SpringDamperCoefficients sc;
+  const SpeedCoefficient law(SpeedCoefficient::Table{{0.0, 2 * divergence_speed}, {k0, -k0}});
+  sc.k[static_cast<std::size_t>(Dof::v)] = law;
+  sc.k[static_cast<std::size_t>(Dof::w)] = law;
+  sc.c[static_cast<std::size_t>(Dof::v)] = c;
+  sc.c[static_cast<std::size_t>(Dof::w)] = c;
+  model.elements.back() = Element(SpringDamper(0, std::nullopt, sc));
+  return model;
+}
+
+TEST(Stability, TheCampbellThresholdFindsADivergenceThatNoTrackedModeShows) {
+  // The onset is where k(Ω) = 0, Ω_d = 100 rad/s; bisected to the sweep's speed
+  // tolerance, it lies above Ω_d by no more than that, plus the speed at which the
+  // real eigenvalue −k(Ω)/c first exceeds round-off (1e-9 of the largest |p|):
+  // asserted to 1e-6 relative.
+  const Real divergence_speed = 100.0;
+  const Model model = softening_jeffcott(k, divergence_speed, ca);
+  CampbellOptions options;
+  for (int i = 0; i <= 10; ++i) options.speeds.push_back(20.0 * i);
+  options.n_modes = 2;
+  const CampbellResult r = run_campbell(model, options);
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  ASSERT_TRUE(r.stability_threshold);
+  EXPECT_TRUE(r.stability_threshold->divergence);
+  EXPECT_FALSE(r.stability_threshold->unstable_at_start);
+  EXPECT_EQ(r.stability_threshold->mode, -1);
+  EXPECT_NEAR(r.stability_threshold->speed / divergence_speed, 1.0, 1e-6);
+  EXPECT_EQ(threshold_label(r, *r.stability_threshold), "divergence (a real eigenvalue)");
+}
+
+TEST(Stability, AStaticEquilibriumPastTheDivergenceIsFlaggedWithItsRate) {
+  // At 1.5 Ω_d, k = −k0/2: m p² + c p + k = 0 has the real root
+  // (−c + √(c² + 2 m k0))/(2m). Below Ω_d the same equilibrium is stable.
+  const Real divergence_speed = 100.0;
+  const Model model = softening_jeffcott(k, divergence_speed, ca);
+  StaticOptions options;
+  options.speed = 1.5 * divergence_speed;
+  const StaticResult above = run_static(model, options);
+  ASSERT_TRUE(above.stability.known) << above.stability.message;
+  EXPECT_TRUE(above.stability.unstable);
+  EXPECT_TRUE(above.stability.divergence);
+  EXPECT_EQ(stability_kind(above.stability), "divergence");
+  EXPECT_NEAR(above.stability.growth_rate, (-ca + std::sqrt(ca * ca + 2 * m * k)) / (2 * m), 1e-9 * std::sqrt(k / m));
+  options.speed = 0.5 * divergence_speed;
+  const StaticResult below = run_static(model, options);
+  EXPECT_TRUE(below.stability.known);
+  EXPECT_FALSE(below.stability.unstable);
+  options.stability = false;
+  EXPECT_FALSE(run_static(model, options).stability.known);
 }
 
 }  // namespace
