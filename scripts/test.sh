@@ -2,7 +2,8 @@
 # Sets up, builds and runs the whole test suite through ctest, twice:
 #  1. the Release build, warnings as errors (scripts/build.sh: the configuration demo.sh
 #     builds too);
-#  2. a build with clang-14, AddressSanitizer and UndefinedBehaviorSanitizer, a Debug
+#  2. a build with clang-14, AddressSanitizer and UndefinedBehaviorSanitizer (without
+#     its null, alignment and pointer-overflow checks: CMakeLists.txt), a Debug
 #     build (no NDEBUG), so that Eigen's and feran's debug assertions and memory
 #     errors are checked too, optimised only at -O1 (the level the sanitizers' own
 #     documentation recommends): at -O0 Eigen's uninlined expressions made these

@@ -44,7 +44,7 @@ TEST(JournalRotor, ResponsePointsAreMarkedUnstableFromTheCampbellThresholdOn) {
 TEST(JournalRotor, Api684TakesTheJournalBearingsAndFailsTheStabilityVerdict) {
   const ModelFile file = read_model_file(path);
   Api684Request request;
-  request.points = 121;
+  request.points = 41;
   request.map_points = 9;
   request.stability = false;
   const Api684Options options = api684_settings(file.model, file.spec, request);
