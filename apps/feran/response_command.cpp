@@ -6,6 +6,7 @@
 
 #include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/core/error.hpp>
+#include <feran/core/text.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/node_reference.hpp>
 #include <feran/io/option_text.hpp>
@@ -109,7 +110,11 @@ Runner add_response_command(CLI::App& app) {
     if (!options.frequencies.empty())
       frequencies = std::pair{*std::min_element(options.frequencies.begin(), options.frequencies.end()),
                               *std::max_element(options.frequencies.begin(), options.frequencies.end())};
-    const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high, frequencies)};
+    ResultSource source{file.path, file.title, speed_range_warnings(model, low, high, frequencies)};
+    for (const std::string& w : clearance_warnings(result, model)) {
+      std::fprintf(stderr, "feran: warning: %s\n", printable(w, true).c_str());
+      source.warnings.push_back(w);
+    }
     outputs.set_json([&] { return response_json(result, options, model, source); });
     outputs.set_csv([&] { return response_csv(result, model); });
     outputs.files.commit();

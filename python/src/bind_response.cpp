@@ -124,6 +124,13 @@ void bind_response(py::module_& m) {
       .def_property_readonly("bearing_peak", [](const PyResponseResult& r) {
              return array_2d(r.result.supports.size(), r.points(), [&](std::size_t i, std::size_t k) { return r.result.supports[i].peak_lateral[k]; });
            }, "largest lateral journal-bearing force over a period [N], shape (bearings, points)")
+      .def_property_readonly("bearing_orbit", [](const PyResponseResult& r) {
+             return array_2d(r.result.supports.size(), r.points(), [&](std::size_t i, std::size_t k) { return r.result.supports[i].orbit[k]; });
+           }, "major semi-axis of each journal's orbit relative to its housing [m], shape (bearings, points)")
+      .def_property_readonly("bearing_orbit_ratio", [](const PyResponseResult& r) {
+             return array_2d(r.result.supports.size(), r.points(), [&](std::size_t i, std::size_t k) { return r.result.supports[i].orbit_clearance_ratio[k]; });
+           }, "that orbit over the bearing's radial clearance (NaN without one), shape (bearings, points);\n"
+              "above 1 the linearised response is no motion the bearing allows (a warning says so)")
       .def_property_readonly("reactions", [](const PyResponseResult& r) {
              return string_list(r.result.reactions.size(), [&](std::size_t i) { return node_name(r.model(), r.result.reactions[i].node); });
            }, "nodes with fixed DOFs")
@@ -198,6 +205,11 @@ void bind_response(py::module_& m) {
         out.options.stop = StopToken(flag);
         bool interrupted = false;
         run_watched([&] { out.result = run_harmonic_response(built, out.options); }, flag, interrupted);
+        // Journals whose orbit leaves the clearance: a warning, kept with the result.
+        for (const std::string& w : clearance_warnings(out.result, built)) {
+          py::module_::import("warnings").attr("warn")(w, py::handle(PyExc_UserWarning), 2);
+          out.context.source.warnings.push_back(w);
+        }
         if (interrupted) raise_interrupted(py::cast(std::move(out)));
         return out;
       },

@@ -59,7 +59,7 @@ std::optional<Real> checked(std::optional<Real> value, std::string_view key, std
     throw Error(fmt::format("{}: must not be negative, got {}", option, text()));
   if (quantity) {
     const PhysicalRange range = physical_range(f.quantity);
-    const auto limit = [&](Real si) { return fmt::format("{:g} {}", si, si_unit(f.quantity)); };
+    const auto limit = [&](Real si) { return approximate_quantity(si, f.quantity, f.unit); };
     if (std::abs(v) > range.largest)
       throw Error(fmt::format("{}: {} is beyond the physical range of {} (at most {} in magnitude)", option, text(),
                               quantity_name(f.quantity), limit(range.largest)));
@@ -154,6 +154,14 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
   for (int i = 0; i < points; ++i) o.speeds.push_back(stop * i / (points - 1));
   o.modes = request.modes.value_or(f.modes.value_or(2));
   o.model_unbalance = request.model_unbalance.value_or(f.unbalance.value_or("4W/N") == "model");
+  // Each count within its bounds, the work they multiply into bounded too: one
+  // unbalance response (each point a solve and a stability decision) per mode.
+  constexpr long long max_response_points = 200000;
+  const long long cases = o.model_unbalance ? 1 : o.modes;
+  if (cases * points > max_response_points)
+    throw Error(fmt::format("[api684] the unbalance responses would take {} × {} = {} points (modes × points, "
+                            "from --modes/modes and --points/points): at most {}; ask for fewer",
+                            cases, points, cases * points, max_response_points));
   o.unbalance_multiple = request.unbalance_multiple.value_or(f.unbalance_multiple.value_or(1.0));
   checked<Api684Spec>(request.unbalance_multiple, "unbalance_multiple", "--unbalance-multiple");
   o.probes = request.probes;
@@ -193,6 +201,13 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
     map.k_high = request.map_high.value_or(f.map_high.value_or(centre * 100));
     map.points = request.map_points.value_or(f.map_points.value_or(41));
     map.criticals = request.map_criticals.value_or(f.map_criticals.value_or(4));
+    constexpr long long max_map_work = 100000;
+    if (static_cast<long long>(map.points) * map.criticals > max_map_work)
+      throw Error(fmt::format("[api684] the critical speed map would take {} × {} = {} critical speeds "
+                              "(map_points × map_criticals, from --map-points/map_points and "
+                              "--map-criticals/map_criticals): at most {}; ask for fewer",
+                              map.points, map.criticals, static_cast<long long>(map.points) * map.criticals,
+                              max_map_work));
     map.curve_stop = stop;
     map.n_threads = request.n_threads;
     o.map = map;

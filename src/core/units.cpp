@@ -90,6 +90,49 @@ bool iequal(std::string_view a, std::string_view b) {
   return true;
 }
 
+
+// The SI prefixes (the BIPM's SI Brochure, 9th ed., table 7), each a power of ten.
+struct Prefix {
+  std::string_view symbol;
+  int power;
+};
+constexpr Prefix si_prefixes[] = {{"da", 1}, {"Y", 24}, {"Z", 21}, {"E", 18}, {"P", 15}, {"T", 12}, {"G", 9},
+                                  {"M", 6},  {"k", 3},  {"h", 2},   {"d", -1}, {"c", -2}, {"m", -3}, {"u", -6},
+                                  {"n", -9}, {"p", -12}, {"f", -15}, {"a", -18}};
+
+// The units an SI prefix may stand before: those whose first factor is a coherent SI
+// unit or the gram (not kg, rpm, deg, cP, nor an already prefixed one), without an
+// exponent on it.
+bool prefixable(std::string_view name) {
+  const std::size_t end = name.find_first_of("*/^");
+  if (end != std::string_view::npos && name[end] == '^') return false;
+  const std::string_view first = name.substr(0, end);
+  for (const std::string_view base : {"m", "g", "s", "N", "Pa", "Hz", "rad"})
+    if (first == base) return true;
+  return false;
+}
+
+// The listed unit and the power of ten of @p normalized: a listed unit itself
+// (power 0), or an SI prefix before a prefixable listed unit ("MN", "kHz", "nm").
+std::optional<std::pair<UnitDef, int>> find_unit(Quantity kind, const std::string& normalized) {
+  for (const UnitDef& u : kind_def(kind).units)
+    if (u.name == normalized) return std::pair{u, 0};
+  for (const Prefix& p : si_prefixes) {
+    if (!std::string_view(normalized).starts_with(p.symbol)) continue;
+    const std::string_view rest = std::string_view(normalized).substr(p.symbol.size());
+    for (const UnitDef& u : kind_def(kind).units)
+      if (u.name == rest && prefixable(u.name)) return std::pair{u, p.power};
+  }
+  return std::nullopt;
+}
+
+// 10^|power| exactly (every power of ten up to 1e22 is a double).
+Real ten_to(int power) {
+  Real out = 1;
+  for (int i = 0; i < std::abs(power); ++i) out *= 10;
+  return out;
+}
+
 }  // namespace
 
 std::string_view quantity_name(Quantity kind) { return kind_def(kind).article_name; }
@@ -114,6 +157,11 @@ std::string accepted_units_text(Quantity kind) {
     if (i > 0) out += (i + 1 == units.size()) ? " or " : ", ";
     out += units[i];
   }
+  for (const std::string_view u : units)
+    if (prefixable(u)) {
+      out += fmt::format(" (any SI prefix on {0} too: k{0}, m{0}, …)", u);
+      break;
+    }
   return out;
 }
 
@@ -166,18 +214,21 @@ std::string normalize_unit(std::string_view unit) {
   return out;
 }
 
+
 std::optional<Real> to_si(Quantity kind, Real value, std::string_view unit) {
-  const std::string normalized = normalize_unit(unit);
-  for (const UnitDef& u : kind_def(kind).units)
-    if (u.name == normalized) return value * u.multiply / u.divide;
-  return std::nullopt;
+  const auto found = find_unit(kind, normalize_unit(unit));
+  if (!found) return std::nullopt;
+  const auto& [u, power] = *found;
+  // Sub-multiples divide, so that "68 mm" and "68 nm" give the nearest doubles.
+  return power >= 0 ? value * (u.multiply * ten_to(power)) / u.divide
+                    : value * u.multiply / (u.divide * ten_to(power));
 }
 
 std::optional<Real> from_si(Quantity kind, Real si, std::string_view unit) {
-  const std::string normalized = normalize_unit(unit);
-  for (const UnitDef& u : kind_def(kind).units)
-    if (u.name == normalized) return si * u.divide / u.multiply;
-  return std::nullopt;
+  const auto found = find_unit(kind, normalize_unit(unit));
+  if (!found) return std::nullopt;
+  const auto& [u, power] = *found;
+  return power >= 0 ? si * u.divide / (u.multiply * ten_to(power)) : si * (u.divide * ten_to(power)) / u.multiply;
 }
 
 std::string format_quantity(Real si, Quantity kind, std::string_view unit) {
@@ -186,6 +237,13 @@ std::string format_quantity(Real si, Quantity kind, std::string_view unit) {
       if (std::isfinite(*value) && to_si(kind, *value, unit) == si)
         return fmt::format("{} {}", *value, unit);
   return fmt::format("{} {}", si, si_unit(kind));
+}
+
+std::string approximate_quantity(Real si, Quantity kind, std::string_view unit) {
+  if (!unit.empty())
+    if (const auto value = from_si(kind, si, unit); value && std::isfinite(*value))
+      return fmt::format("{:.6g} {}", *value, unit);
+  return fmt::format("{:.6g} {}", si, si_unit(kind));
 }
 
 std::string must_be_quantity(std::string_view name, Quantity kind) {

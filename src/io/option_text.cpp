@@ -20,8 +20,8 @@ Real parse_speed_text(const std::string& text, const std::string& what) {
   if (!si) throw Error(fmt::format("{} '{}': the unit must be Hz, rpm or rad/s", what, text));
   const Real largest = physical_range(Quantity::speed).largest;
   if (!std::isfinite(*si) || std::abs(*si) > largest)
-    throw Error(fmt::format("{} '{}': beyond the physical range of a speed (at most {:g} rad/s in magnitude)", what,
-                            text, largest));
+    throw Error(fmt::format("{} '{}': beyond the physical range of a speed (at most {} in magnitude)", what, text,
+                            approximate_quantity(largest, Quantity::speed, q->unit)));
   return *si;
 }
 

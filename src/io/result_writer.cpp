@@ -191,8 +191,14 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
     json js = {{"label", force_label(model, s.force)},
                {"node", model.nodes[static_cast<std::size_t>(at.front())].number},
                {"peak_lateral_force_n", numbers(s.peak_lateral)},
-               {"force", dof_series(s.amplitude, lateral_dofs, direction_names)}};
+               {"force", dof_series(s.amplitude, lateral_dofs, direction_names)},
+               {"orbit_m", numbers(s.orbit)},
+               {"orbit_clearance_ratio", numbers(s.orbit_clearance_ratio)}};
     js["to"] = at.size() > 1 ? json(model.nodes[static_cast<std::size_t>(at[1])].number) : json("ground");
+    Real largest = -1;
+    for (const Real r : s.orbit_clearance_ratio)
+      if (r > largest) largest = r;
+    js["largest_orbit_clearance_ratio"] = largest >= 0 ? json(largest) : json(nullptr);
     supports.push_back(js);
   }
   j["supports"] = supports;

@@ -187,7 +187,11 @@ bool Builder::earlier(const std::string& a, const std::string& b) const {
 void Builder::check_range(Real v, const std::string& at, std::string_view key, Quantity quantity,
                           std::string_view unit, bool positive) const {
   const PhysicalRange range = physical_range(quantity);
-  const auto limit = [&](Real si) { return fmt::format("{:g} {}", si, si_unit(quantity)); };
+  // The limit in the unit the value was written in.
+  const std::string written = shown(at, v, quantity, unit);
+  const auto split = split_quantity(written);
+  const std::string user_unit = split && !split->unit.empty() ? std::string(split->unit) : std::string(unit);
+  const auto limit = [&](Real si) { return approximate_quantity(si, quantity, user_unit); };
   if (std::abs(v) > range.largest)
     fail(at, fmt::format("'{}' is {}, beyond the physical range of {} (at most {} in magnitude)", key,
                          shown(at, v, quantity, unit), quantity_name(quantity), limit(range.largest)));
@@ -239,6 +243,18 @@ void Builder::check_bounds(const S& entry, const std::string& path) const {
               check_integer(value[i], element(at, i), fmt::format("{}[{}]", f.key, i));
           } else if constexpr (std::is_same_v<T, std::optional<SpeedCoefficient>>) {
             if (value) check_coefficient(*value, at, f.key, f.quantity, f.direct);
+          } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>) {
+            // A word of a table is checked like its command-line flag: one of the
+            // field's choices, listed in the message.
+            if (f.kind == spec::FieldKind::choice && !f.choices.empty()) {
+              const std::string* word = nullptr;
+              if constexpr (std::is_same_v<T, std::string>) {
+                if (!value.empty()) word = &value;
+              } else if (value) {
+                word = &*value;
+              }
+              if (word) check_choice(*word, at, f.key, f.choices);
+            }
           }
         },
         f.member);
@@ -880,6 +896,16 @@ void Builder::build_journal_bearings() {
     }
     if (s.circumferential_cells) b.grid.circumferential = *s.circumferential_cells;
     if (s.axial_cells) b.grid.axial = *s.axial_cells;
+    // Each count within its bounds, their product bounded too: every force evaluation
+    // factorises the Reynolds equation on the whole grid.
+    constexpr long long max_cells = 250000;
+    const long long cells = static_cast<long long>(b.grid.circumferential) * b.grid.axial;
+    if (cells > max_cells)
+      fail(child(path, s.axial_cells ? "axial_cells" : "circumferential_cells"),
+           fmt::format("the film's grid of {} × {} = {} cells is too large: at most {} (each force evaluation "
+                       "solves the Reynolds equation on the whole grid; its time and memory grow faster than the "
+                       "count)",
+                       b.grid.circumferential, b.grid.axial, cells, max_cells));
     model_.forces.emplace_back(b, label);
   }
 }
@@ -1263,6 +1289,7 @@ void Builder::check_api684() const {
                                         shown("api684.map_low", *a.map_low, Quantity::stiffness)));
   distinct_nodes(a.probes, "api684.probes", "probes");
   check_spring_names(a.bearings, "api684.bearings");
+  if (a.stability_node) node(*a.stability_node, "api684.stability_node", "stability_node", {});
 }
 
 void Builder::check_structure(BuildInfo* info) {
@@ -1291,6 +1318,8 @@ void Builder::build_drive() {
   }
   check_bounds(s, "drive");
   const auto at = [](std::string_view key) { return child("drive", key); };
+  // The law first: the keys that belong to it are judged by it.
+  check_choice(s.motor, at("motor"), "motor", spec::choices_of<DriveSpec>("motor"));
   Drive d;
   d.inertia = s.inertia;
   d.friction_torque = s.friction_torque;

@@ -321,7 +321,8 @@ const FieldTable<JournalBearingSpec>& fields_of<JournalBearingSpec>() {
        .doc = "only with `theory = \"finite\"`: grid cells around the circumference", .bound = at_least(8, 100000),
        .default_text = "`72`"},
       {.key = "axial_cells", .kind = K::integer, .member = &S::axial_cells,
-       .doc = "only with `theory = \"finite\"`: grid cells from the bearing's mid-plane to one end", .bound = at_least(1, 10000),
+       .doc = "only with `theory = \"finite\"`: grid cells from the bearing's mid-plane to one end; "
+              "`circumferential_cells` × `axial_cells` at most 250000", .bound = at_least(1, 10000),
        .default_text = "`8`"},
   };
   return table;
@@ -642,7 +643,7 @@ const FieldTable<Api684Spec>& fields_of<Api684Spec>() {
       {.key = "stop", .kind = K::quantity, .member = &S::stop,
        .doc = "last speed of the unbalance responses (they start at 0)", .quantity = Q::speed, .bound = positive,
        .unit = "rpm", .default_text = "2 × `max_speed`"},
-      {.key = "points", .kind = K::integer, .member = &S::points, .doc = "speeds of the unbalance responses",
+      {.key = "points", .kind = K::integer, .member = &S::points, .doc = "speeds of the unbalance responses; `modes` × `points` at most 200000 (one response per mode)",
        .bound = at_least(3, max_sweep_points), .default_text = "`401`"},
       {.key = "modes", .kind = K::integer, .member = &S::modes,
        .doc = "forward modes excited in turn by the analytical unbalance, the lowest at `max_speed`",
@@ -665,7 +666,7 @@ const FieldTable<Api684Spec>& fields_of<Api684Spec>() {
        .doc = "highest bearing stiffness of the map; > `map_low`", .quantity = Q::stiffness, .bound = positive,
        .default_text = "the bearings' stiffness at `max_speed` × 100"},
       {.key = "map_points", .kind = K::integer, .member = &S::map_points,
-       .doc = "stiffness values of the map, evenly spaced in log k", .bound = at_least(2, max_sweep_points),
+       .doc = "stiffness values of the map, evenly spaced in log k; `map_points` × `map_criticals` at most 100000", .bound = at_least(2, max_sweep_points),
        .default_text = "`41`"},
       {.key = "map_criticals", .kind = K::integer, .member = &S::map_criticals,
        .doc = "critical speeds on the map", .bound = at_least(1), .default_text = "`4`"},

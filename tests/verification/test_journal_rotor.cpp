@@ -41,6 +41,36 @@ TEST(JournalRotor, ResponsePointsAreMarkedUnstableFromTheCampbellThresholdOn) {
   EXPECT_GT(unstable_points(r), 0);
 }
 
+TEST(JournalRotor, TheJournalOrbitIsGivenAgainstTheClearanceAndWarnedBeyondIt) {
+  // "bearing A" is a probe and its housing is the ground: the journal's orbit relative
+  // to the housing is the probe's own (v, w) orbit, computed by another path, to
+  // round-off; over the clearance c = 0.06 mm it is the ratio. The model's 2 g at
+  // 150 mm keeps every orbit inside the clearance (no warning); a thousand times that
+  // throws the linearised orbit far beyond it, and the warning names the bearing.
+  const ModelFile file = read_model_file(path);
+  HarmonicOptions ho = response_settings(file.model, file.spec.response, {});
+  ho.stability = false;
+  const HarmonicResult r = run_harmonic_response(file.model, ho);
+  ASSERT_TRUE(r.info.converged()) << r.info.message;
+  ASSERT_EQ(r.supports.size(), 2u);
+  const ProbeResponse& journal = r.probes[1];
+  ASSERT_EQ(file.model.node_label(journal.node), "1 (bearing A)");
+  const SupportForceResponse& a = r.supports[0];
+  ASSERT_EQ(a.orbit.size(), r.speeds.size());
+  for (std::size_t k = 0; k < r.speeds.size(); ++k) {
+    EXPECT_NEAR(a.orbit[k], journal.orbit[k].major, 1e-12 * journal.orbit[k].major + 1e-20);
+    EXPECT_NEAR(a.orbit_clearance_ratio[k], a.orbit[k] / 0.06e-3, 1e-12 * a.orbit_clearance_ratio[k]);
+    EXPECT_LT(a.orbit_clearance_ratio[k], 1.0);
+  }
+  EXPECT_TRUE(clearance_warnings(r, file.model).empty());
+
+  const ModelFile heavy = read_model_file(path, {"unbalances[disk 1 unbalance].mass=2 kg"});
+  const HarmonicResult big = run_harmonic_response(heavy.model, ho);
+  const std::vector<std::string> warnings = clearance_warnings(big, heavy.model);
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_NE(warnings.front().find("'bearing A'"), std::string::npos) << warnings.front();
+}
+
 TEST(JournalRotor, Api684TakesTheJournalBearingsAndFailsTheStabilityVerdict) {
   const ModelFile file = read_model_file(path);
   Api684Request request;

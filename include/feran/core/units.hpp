@@ -87,6 +87,10 @@ std::optional<Real> from_si(Quantity kind, Real si, std::string_view unit);
 /// means the SI unit.
 std::string format_quantity(Real si, Quantity kind, std::string_view unit = {});
 
+/// @p si in @p unit to 6 significant digits ("1.59155e+05 Hz"), else in the SI unit:
+/// how messages echo a limit in the unit the user wrote.
+std::string approximate_quantity(Real si, Quantity kind, std::string_view unit = {});
+
 /// "'length' must be a length (a number in m, or a string such as "68 mm")".
 std::string must_be_quantity(std::string_view name, Quantity kind);
 /// "a length, e.g. 0.068 or "68 mm"" (for missing-key messages).

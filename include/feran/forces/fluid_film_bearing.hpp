@@ -91,6 +91,8 @@ struct FluidFilmBearing {
   FiniteBearingGrid grid;  ///< for FilmTheory::finite_length
 
   std::string_view kind() const { return "fluid_film_bearing"; }
+  /// The radial clearance c (ability clearance(), model/force.hpp).
+  Real clearance() const { return geometry.clearance; }
   std::vector<Index> nodes() const;
   /// v, w of the journal, then of the housing when there is one.
   std::vector<Index> dofs() const;

@@ -51,6 +51,8 @@ struct RollingBearing {
   RollingBearingGeometry geometry;
 
   std::string_view kind() const { return "rolling_bearing"; }
+  /// The radial internal clearance (ability clearance(), model/force.hpp; 0: none).
+  Real clearance() const { return geometry.clearance; }
   std::vector<Index> nodes() const;
   /// v, w of the journal, then of the housing when there is one.
   std::vector<Index> dofs() const;

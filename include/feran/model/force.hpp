@@ -35,6 +35,10 @@
 ///                                                              journal bearing's eccentricity
 ///                                                              ratio, film thickness, …):
 ///                                                              OperatingValue list
+///   clearance() (with supports())                              the radial clearance [m] its
+///                                                              journal moves in: responses
+///                                                              give each orbit as a fraction
+///                                                              of it
 ///
 /// Vectors are over all unconstrained DOFs (global_dof order); add_* add into them.
 /// To add a force: a type in forces/ with kind(), nodes() and its abilities, its
@@ -42,6 +46,7 @@
 
 #include <concepts>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -132,6 +137,13 @@ concept HasOperatingData = requires(const F& f, const MotionState& s, const Vect
   { f.operating_data(s, x, x) } -> std::same_as<std::vector<OperatingValue>>;
 };
 
+/// A support whose journal moves within a radial clearance (a journal bearing's film,
+/// a rolling bearing's internal clearance).
+template <class F>
+concept HasClearance = requires(const F& f) {
+  { f.clearance() } -> std::convertible_to<Real>;
+};
+
 /// A type-erased force with value semantics (copies are deep).
 class Force {
  public:
@@ -185,6 +197,8 @@ class Force {
   std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const {
     return self_->operating_data(s, x, v);
   }
+  /// The radial clearance its journal moves in [m]; empty without the ability.
+  std::optional<Real> clearance() const { return self_->clearance(); }
   /// The global DOFs of a nonlinear force (empty for others).
   std::vector<Index> dofs() const { return self_->dofs(); }
   /// Force and Jacobian of a nonlinear force at local displacements @p x and
@@ -219,6 +233,7 @@ class Force {
     virtual bool has_drag_torque() const = 0;
     virtual Real drag_torque(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual std::vector<OperatingValue> operating_data(const MotionState&, const Vector&, const Vector&) const = 0;
+    virtual std::optional<Real> clearance() const = 0;
     virtual std::vector<Index> dofs() const = 0;
     virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual const std::type_info& type() const = 0;
@@ -259,6 +274,10 @@ class Force {
     std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const override {
       if constexpr (HasOperatingData<F>) return value.operating_data(s, x, v);
       else return {};
+    }
+    std::optional<Real> clearance() const override {
+      if constexpr (HasClearance<F>) return static_cast<Real>(value.clearance());
+      else return std::nullopt;
     }
     std::vector<Index> dofs() const override {
       if constexpr (HasNonlinearForce<F>) return value.dofs();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <optional>
 
@@ -150,6 +151,7 @@ struct PointResult {
   bool skipped = false;  // not started: a stop was asked for
   bool finite = true;    // false: the solve gave non-finite amplitudes
   std::vector<NodeAmplitudes> probes, springs, supports, reactions;
+  std::vector<Real> support_orbits;  // per support: the journal's orbit relative to its housing [m]
   std::vector<SectionForces> forces;  // every station (StationOutput::all)
   std::vector<SectionStress> stress;
   StationPeaks peaks;
@@ -223,7 +225,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   std::vector<Index> support_elements;
   for (std::size_t i = 0, e = model.elements.size(); i < model.forces.size(); ++i)
     if (model.forces[i].supports()) {
-      result.supports.push_back({static_cast<Index>(i), {}, {}});
+      result.supports.push_back({static_cast<Index>(i), {}, {}, {}, {}});
       support_elements.push_back(static_cast<Index>(e++));
     }
   if (options.stations != StationOutput::none) result.shaft_stations = shaft_stations(model);
@@ -297,14 +299,19 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     }
 
     for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));
-    // What a connecting element transmits: (K(1 + jη) + jωC)·(q_a − q_b).
-    auto transmitted = [&](const Element& element) {
-      const Transmission link = *element.transmission(speed, omega);
+    // The motion of a connecting element's first node relative to its second.
+    auto relative = [&](const Transmission& link) {
       NodeAmplitudes dq = node_values(q_full, link.node_a);
       if (link.node_b) {
         const NodeAmplitudes qb = node_values(q_full, *link.node_b);
         for (std::size_t d = 0; d < dq.size(); ++d) dq[d] -= qb[d];
       }
+      return dq;
+    };
+    // What a connecting element transmits: (K(1 + jη) + jωC)·(q_a − q_b).
+    auto transmitted = [&](const Element& element) {
+      const Transmission link = *element.transmission(speed, omega);
+      const NodeAmplitudes dq = relative(link);
       const Eigen::Map<const Eigen::Matrix<Complex, dofs_per_node, 1>> delta(dq.data());
       const Eigen::Matrix<Complex, dofs_per_node, 1> force =
           (Complex(1.0, link.loss_factor + options.loss_factor) * link.K.cast<Complex>() +
@@ -314,7 +321,12 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       return f;
     };
     for (const Index e : springs) out.springs.push_back(transmitted(model.elements[static_cast<std::size_t>(e)]));
-    for (const Index e : support_elements) out.supports.push_back(transmitted(linear.elements[static_cast<std::size_t>(e)]));
+    for (const Index e : support_elements) {
+      const Element& element = linear.elements[static_cast<std::size_t>(e)];
+      out.supports.push_back(transmitted(element));
+      const NodeAmplitudes dq = relative(*element.transmission(speed, omega));
+      out.support_orbits.push_back(orbit(dq[static_cast<std::size_t>(Dof::v)], dq[static_cast<std::size_t>(Dof::w)]).major);
+    }
     if (!result.reactions.empty()) {
       // The force the structure puts on its supports at the fixed DOFs: the applied
       // load there minus the element forces (dynamic stiffness times motion).
@@ -402,8 +414,13 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       result.springs[s].peak_lateral.push_back(peak_lateral(pt.springs[s]));
     }
     for (std::size_t s = 0; s < result.supports.size(); ++s) {
-      result.supports[s].amplitude.push_back(pt.supports[s]);
-      result.supports[s].peak_lateral.push_back(peak_lateral(pt.supports[s]));
+      SupportForceResponse& sr = result.supports[s];
+      sr.amplitude.push_back(pt.supports[s]);
+      sr.peak_lateral.push_back(peak_lateral(pt.supports[s]));
+      sr.orbit.push_back(pt.support_orbits[s]);
+      const std::optional<Real> c = model.forces[static_cast<std::size_t>(sr.force)].clearance();
+      sr.orbit_clearance_ratio.push_back(c && *c > 0 ? pt.support_orbits[s] / *c
+                                                     : std::numeric_limits<Real>::quiet_NaN());
     }
     for (std::size_t r = 0; r < result.reactions.size(); ++r) {
       result.reactions[r].force.push_back(pt.reactions[r]);
@@ -464,6 +481,27 @@ const char* to_string(StationOutput output) {
     case StationOutput::none: return "none";
   }
   return "?";
+}
+
+std::vector<std::string> clearance_warnings(const HarmonicResult& result, const Model& model) {
+  std::vector<std::string> out;
+  for (const SupportForceResponse& sr : result.supports) {
+    Real largest = 0;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < sr.orbit_clearance_ratio.size(); ++k)
+      if (sr.orbit_clearance_ratio[k] > largest) largest = sr.orbit_clearance_ratio[k], at = k;
+    if (!(largest > 1)) continue;
+    const Force& force = model.forces[static_cast<std::size_t>(sr.force)];
+    const Real x = result.frequency_sweep ? result.frequencies[at] : result.speeds[at];
+    const std::string where = result.frequency_sweep ? fmt::format("{:.6g} Hz excitation", x / (2 * pi))
+                                                     : fmt::format("{:.6g} rpm", x * 30 / pi);
+    out.push_back(fmt::format("the journal orbit in {} reaches {:.3g} × its clearance at {}: the linearised "
+                              "response is no motion the bearing allows there (the excitation is too large for a "
+                              "linear analysis; a run-up shows the real motion)",
+                              force.label().empty() ? std::string(force.kind()) : "'" + force.label() + "'", largest,
+                              where));
+  }
+  return out;
 }
 
 }  // namespace feran

@@ -236,9 +236,11 @@ Equilibrium solve_equilibrium(const Model& model, const Assembler& assembler, Re
   // from the centre), continuation: the load grows in steps, each solved from the
   // last, the step halved where Newton fails and doubled where it succeeds.
   bool done = newton(residual, 1.0, scale, options, q, out);
+  Real reached = 1.0;
   if (!done) {
     q.setZero();
-    Real reached = 0.0, step = 0.125;
+    reached = 0.0;
+    Real step = 0.125;
     while (reached < 1.0 && step > 1e-6) {
       const Real next = std::min(1.0, reached + step);
       Vector trial = q;
@@ -255,14 +257,40 @@ Equilibrium solve_equilibrium(const Model& model, const Assembler& assembler, Re
       }
     }
     done = reached == 1.0;
-    if (!done)
-      out.info.fail(SolverStatus::not_converged,
-                    fmt::format("the static equilibrium at {:.6g} rad/s was not found: Newton's method with load "
-                                "continuation carried {:.3g} % of the load (a bearing too weak for its load, or a "
-                                "journal pressed to its wall)",
-                                speed, 100.0 * reached));
   }
   out.q = assembler.dof_map().transformation() * q;
+  if (!done) {
+    // The likely cause, by support: one that has no stiffness where the journal
+    // stopped (a rolling bearing's clearance not yet closed), else the one whose
+    // journal moved furthest (a bearing too weak for its load, or pressed to its wall).
+    std::string cause;
+    Real furthest = -1;
+    std::string far_name;
+    for (const Force& force : model.forces) {
+      if (!force.supports()) continue;
+      const std::vector<Index> dofs = force.dofs();
+      Vector x(static_cast<Index>(dofs.size()));
+      for (std::size_t k = 0; k < dofs.size(); ++k) x(static_cast<Index>(k)) = out.q(dofs[k]);
+      try {
+        const NonlinearForceValue value = force.force({.speed = speed}, x, Vector::Zero(x.size()));
+        if (value.dfdx.size() == 0 || value.dfdx.cwiseAbs().maxCoeff() == 0)
+          cause += fmt::format("{}the {} has no stiffness where its journal is (a clearance not closed, or "
+                               "nothing to carry the load there)",
+                               cause.empty() ? "" : "; ", force_name(force));
+      } catch (const Error& e) {
+        cause += fmt::format("{}the {}: {}", cause.empty() ? "" : "; ", force_name(force), e.what());
+      }
+      if (x.norm() > furthest) furthest = x.norm(), far_name = force_name(force);
+    }
+    if (cause.empty() && furthest >= 0)
+      cause = fmt::format("the {} moved furthest ({:.3g} m): too weak for its load, or its journal pressed to its "
+                          "wall",
+                          far_name, furthest);
+    out.info.fail(SolverStatus::not_converged,
+                  fmt::format("the static equilibrium at {:.6g} rad/s was not found: Newton's method with load "
+                              "continuation carried {:.3g} % of the load; likely cause: {}",
+                              speed, 100.0 * reached, cause));
+  }
   if (done) out.info.n_converged = 1;
   return out;
 }

@@ -98,7 +98,7 @@ TEST(Units, Viscosity) {
   EXPECT_DOUBLE_EQ(parse_quantity("28 mPa*s", Quantity::viscosity), 0.028);
   EXPECT_DOUBLE_EQ(parse_quantity("28 cP", Quantity::viscosity), 0.028);
   EXPECT_EQ(si_unit(Quantity::viscosity), "Pa*s");
-  EXPECT_EQ(accepted_units_text(Quantity::viscosity), "Pa*s, mPa*s or cP");
+  EXPECT_EQ(accepted_units_text(Quantity::viscosity), "Pa*s, mPa*s or cP (any SI prefix on Pa*s too: kPa*s, mPa*s, …)");
   EXPECT_THROW(parse_quantity("0.1 Pa", Quantity::viscosity), QuantityError);
 }
 
@@ -110,7 +110,7 @@ TEST(Units, Acceleration) {
   EXPECT_DOUBLE_EQ(parse_quantity("9.81", Quantity::acceleration), 9.81);
   EXPECT_EQ(si_unit(Quantity::acceleration), "m/s^2");
   EXPECT_EQ(quantity_name(Quantity::acceleration), "an acceleration");
-  EXPECT_EQ(accepted_units_text(Quantity::acceleration), "m/s^2 or mm/s^2");
+  EXPECT_EQ(accepted_units_text(Quantity::acceleration), "m/s^2 or mm/s^2 (any SI prefix on m/s^2 too: km/s^2, mm/s^2, …)");
   // A velocity unit is not an acceleration, and the message says what it is.
   try {
     parse_quantity("9.81 m/s", Quantity::acceleration);
@@ -118,8 +118,8 @@ TEST(Units, Acceleration) {
   } catch (const QuantityError& e) {
     EXPECT_EQ(e.reason(), QuantityError::Reason::wrong_unit);
     EXPECT_STREQ(e.what(),
-                 "\"9.81 m/s\" has unit 'm/s', expected an acceleration in m/s^2 or mm/s^2 "
-                 "('m/s' is a unit of velocity)");
+                 "\"9.81 m/s\" has unit 'm/s', expected an acceleration in m/s^2 or mm/s^2 (any SI prefix on "
+                 "m/s^2 too: km/s^2, mm/s^2, …) ('m/s' is a unit of velocity)");
   }
   EXPECT_THROW(parse_quantity("1 g", Quantity::acceleration), QuantityError);  // g is grams
   EXPECT_THROW(parse_quantity("1 m/s^2", Quantity::velocity), QuantityError);
@@ -140,6 +140,30 @@ TEST(Units, NumbersWithoutUnitAreSi) {
   EXPECT_DOUBLE_EQ(parse_quantity(".5", Quantity::length), 0.5);
 }
 
+TEST(Units, EverySiPrefixWorksOnTheCoherentUnitsAndTheGram) {
+  // The BIPM's prefixes before the coherent SI unit of each quantity, exact to the
+  // double nearest the decimal value (sub-multiples divide, as the listed "mm" does).
+  EXPECT_EQ(parse_quantity("2 MN", Quantity::force), 2e6);
+  EXPECT_EQ(parse_quantity("3 mN", Quantity::force), 3e-3);
+  EXPECT_EQ(parse_quantity("68 nm", Quantity::length), 68e-9);
+  EXPECT_EQ(parse_quantity("1.5 km", Quantity::length), 1500);
+  EXPECT_EQ(parse_quantity("250 mg", Quantity::mass), 250e-6);
+  EXPECT_EQ(parse_quantity("4 GN/m", Quantity::stiffness), 4e9);
+  EXPECT_EQ(parse_quantity("5 kN*m", Quantity::rotational_stiffness), 5e3);
+  EXPECT_EQ(parse_quantity("20 us", Quantity::time), 20e-6);
+  EXPECT_EQ(parse_quantity("2 kHz", Quantity::frequency), 2e3);
+  EXPECT_EQ(parse_quantity("2 kHz", Quantity::speed), 2e3 * 2 * pi);
+  EXPECT_EQ(parse_quantity("3 hPa", Quantity::pressure), 300);
+  EXPECT_EQ(parse_quantity("10 mrad", Quantity::angle), 10e-3);
+  EXPECT_EQ(parse_quantity("7 kN*m", Quantity::moment), 7e3);
+  // Not on kg (already prefixed), rpm, deg or cP, and one prefix only.
+  for (const auto& [text, kind] : {std::pair{"1 kkg", Quantity::mass}, {"1 krpm", Quantity::speed},
+                                  {"1 mdeg", Quantity::angle}, {"1 kcP", Quantity::viscosity},
+                                  {"1 kmm", Quantity::length}, {"1 MM", Quantity::length}})
+    EXPECT_THROW(parse_quantity(text, kind), QuantityError) << text;
+  EXPECT_EQ(format_quantity(2e6, Quantity::force, "MN"), "2 MN");
+}
+
 TEST(Units, RejectsUnitsOfOtherKinds) {
   try {
     parse_quantity("5 kg", Quantity::length);
@@ -148,13 +172,13 @@ TEST(Units, RejectsUnitsOfOtherKinds) {
     EXPECT_EQ(e.reason(), QuantityError::Reason::wrong_unit);
     EXPECT_EQ(e.unit(), "kg");
     EXPECT_STREQ(e.what(),
-                 "\"5 kg\" has unit 'kg', expected a length in m, mm, cm or um ('kg' is a unit "
-                 "of mass)");
+                 "\"5 kg\" has unit 'kg', expected a length in m, mm, cm or um (any SI prefix on m "
+                 "too: km, mm, …) ('kg' is a unit of mass)");
   }
   EXPECT_THROW(parse_quantity("30 Hz", Quantity::length), QuantityError);
   EXPECT_THROW(parse_quantity("5 N/m", Quantity::damping), QuantityError);
   EXPECT_THROW(parse_quantity("5 rad/s", Quantity::velocity), QuantityError);
-  EXPECT_THROW(parse_quantity("5 kN*m", Quantity::rotational_stiffness), QuantityError);
+  EXPECT_THROW(parse_quantity("5 kN*m*s", Quantity::rotational_stiffness), QuantityError);
   EXPECT_THROW(parse_quantity("5 m extra", Quantity::length), QuantityError);
 }
 
@@ -224,8 +248,8 @@ TEST(Units, DescribesKinds) {
   EXPECT_EQ(quantity_name(Quantity::angle), "an angle");
   EXPECT_EQ(si_unit(Quantity::speed), "rad/s");
   EXPECT_EQ(si_unit(Quantity::frequency), "Hz");
-  EXPECT_EQ(accepted_units_text(Quantity::length), "m, mm, cm or um");
-  EXPECT_EQ(accepted_units_text(Quantity::speed), "rad/s, Hz or rpm");
+  EXPECT_EQ(accepted_units_text(Quantity::length), "m, mm, cm or um (any SI prefix on m too: km, mm, …)");
+  EXPECT_EQ(accepted_units_text(Quantity::speed), "rad/s, Hz or rpm (any SI prefix on rad/s too: krad/s, mrad/s, …)");
   EXPECT_EQ(accepted_units_text(Quantity::inertia), "kg*m^2, kg*mm^2 or kg m^2");
   // Every accepted unit converts, and its example parses.
   for (int k = 0; k <= static_cast<int>(Quantity::acceleration); ++k) {

@@ -82,6 +82,11 @@ struct SupportForceResponse {
   Index force = 0;  ///< index into Model::forces
   std::vector<NodeAmplitudes> amplitude;
   std::vector<Real> peak_lateral;  ///< largest |(F_y, F_z)| over a period [N]
+  /// The major semi-axis of the journal's (v, w) orbit relative to its housing [m].
+  std::vector<Real> orbit;
+  /// That orbit over the support's radial clearance (Force::clearance()); NaN without
+  /// one. Above 1 the linearised response is no motion the bearing allows.
+  std::vector<Real> orbit_clearance_ratio;
 };
 
 /// Force transmitted to the supports at the fixed DOFs of a node, per point.
@@ -162,5 +167,11 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
 /// output: "all", "summary", "none".
 const char* to_string(StationOutput output);
 ResponseSummary summarize(const HarmonicResult& result);
+
+/// Warnings for journals whose linearised orbit leaves the clearance (largest
+/// SupportForceResponse::orbit_clearance_ratio above 1): one per support, naming it,
+/// the ratio and the speed; such a response is no motion the bearing allows (the
+/// unbalance is too large for a linear analysis: a run-up shows the real motion).
+std::vector<std::string> clearance_warnings(const HarmonicResult& result, const Model& model);
 
 }  // namespace feran
