@@ -107,7 +107,7 @@ json point_stability_json(const std::vector<StabilityPoint>& points) {
     unstable.push_back(p.known ? json(p.unstable) : json(nullptr));
     growth.push_back(detail::json_number(p.growth_rate));
     frequency.push_back(p.unstable ? detail::json_number(p.frequency_hz) : json(nullptr));
-    kind.push_back(!p.known ? "unknown" : !p.unstable ? "stable" : p.divergence ? "divergence" : "flutter");
+    kind.push_back(stability_kind(p));
     if (p.unstable) {
       ++count;
       if (first < 0) first = static_cast<Index>(k);
