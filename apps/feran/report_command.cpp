@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include <fmt/format.h>
@@ -65,15 +66,23 @@ Runner add_report_command(CLI::App& app, int argc, char** argv) {
     options.command = command;
     options.version = FERAN_VERSION;
     options.n_threads = args->threads;
+    files.add_input(args->config, "the report configuration");
     if (!args->config.empty()) read_report_config_file(args->config, file.model, options);
     if (!args->study.empty()) options.study_directory = args->study;
+    if (!options.study_directory.empty())
+      for (const char* name : {"study.json", "evaluations.jsonl", "summary.json"})
+        files.add_input((std::filesystem::path(options.study_directory) / name).string(), "a file of the study shown");
     if (!args->speed_unit.empty()) options.speed_unit = args->speed_unit;
     options.stop = interrupt_token();
     std::string verdicts;
     const std::string text = html_report(file, options, &verdicts);
-    if (const auto code = stopped_single_solve()) return *code;
     files.write(html, text);
     files.commit();
+    if (const int signal = interrupt_signal()) {
+      std::fprintf(stderr, "feran: interrupted by %s: the report up to there was written to %s, marked incomplete\n",
+                   signal_name(signal), printable(args->output, true).c_str());
+      return interrupted_base + signal;
+    }
     if (!args->quiet) {
       std::printf("feran report: wrote %s (%.1f MB)\n", args->output.c_str(), static_cast<double>(text.size()) / 1e6);
       std::printf("verdicts:\n%s", printable(verdicts, true).c_str());

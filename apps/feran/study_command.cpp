@@ -106,7 +106,8 @@ Runner add_study_command(CLI::App& app) {
     std::unique_ptr<StudyLog> log;
     if (first) {
       try {
-        log = std::make_unique<StudyLog>(directory, study, args->resume);
+        log = std::make_unique<StudyLog>(directory, study, args->resume,
+                                         std::vector<std::string>{file->path, file->base.path});
       } catch (const Error& e) {
         error = e.what();
       }

@@ -15,6 +15,13 @@ from ._feran import (Api684Result, CampbellResult, Error, Interrupted, ModalResu
                      ParameterError, ResponseResult, RunupResult, StaticResult, StudyResult, api684, campbell,
                      modal, read_model, report, response, runup, static, __version__)
 from .study import Study, read_study
+from ._arguments import explained as _explained
+
+# Every compiled function and Model method names a wrong argument in its TypeError.
+api684, campbell, modal, read_model, report, response, runup, static = (
+    _explained(f) for f in (api684, campbell, modal, read_model, report, response, runup, static))
+for _method in ("__init__", "__getitem__", "__setitem__", "geometry", "_add"):
+    setattr(Model, _method, _explained(getattr(Model, _method), "Model"))
 
 
 def _to_dict(result):

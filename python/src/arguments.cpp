@@ -21,7 +21,7 @@ namespace feran::python {
 namespace {
 
 double number_argument(const py::handle& value, const char* name, const char* expected) {
-  if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value))
+  if ((!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value)) || py::isinstance<py::bool_>(value))
     throw Error(fmt::format("{}={}: expected {}", name, py::repr(value).cast<std::string>(), expected));
   const double x = value.cast<double>();
   if (!std::isfinite(x)) throw Error(fmt::format("{}={}: expected a finite number", name, x));
@@ -63,7 +63,7 @@ std::vector<Index> node_arguments(const Model& model, const py::handle& value, c
     throw Error(fmt::format("{}: a node is a name (str) or a number (int), got {}", name,
                             py::repr(v).cast<std::string>()));
   };
-  if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value)) {
+  if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value) || !py::isinstance<py::iterable>(value)) {
     out.push_back(one(value));
     return out;
   }
@@ -75,6 +75,8 @@ std::vector<std::string> text_arguments(const py::handle& value, const char* nam
   std::vector<std::string> out;
   if (value.is_none()) return out;
   if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
+  if (!py::isinstance<py::iterable>(value))
+    throw Error(fmt::format("{}: expected text or a list of texts, got {}", name, py::repr(value).cast<std::string>()));
   for (const py::handle& v : py::iter(value)) {
     if (!py::isinstance<py::str>(v))
       throw Error(fmt::format("{}: expected text, got {}", name, py::repr(v).cast<std::string>()));

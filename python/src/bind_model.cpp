@@ -20,15 +20,32 @@
 namespace feran::python {
 
 void PyModel::set(const std::string& path, const std::string& value) {
+  ModelSpec before = spec_;
   const std::string canonical = set_parameter(spec_, path, value);
   changed_.emplace_back(fmt::format("model['{}'] = '{}'", path, value), canonical);
-  built_.reset();
+  check_assignment(std::move(before), changed_.back().first);
 }
 
 void PyModel::set(const std::string& path, double si) {
+  ModelSpec before = spec_;
   const std::string canonical = set_parameter(spec_, path, si);
   changed_.emplace_back(fmt::format("model['{}'] = {}", path, si), canonical);
+  check_assignment(std::move(before), changed_.back().first);
+}
+
+void PyModel::check_assignment(ModelSpec before, const std::string& assignment) {
   built_.reset();
+  try {
+    (void)built();  // kept for the analysis that follows
+  } catch (const Error& e) {
+    // The builder names the latest assignment to the path where it found the problem.
+    if (std::string_view(e.what()).starts_with(assignment + ": ")) {
+      spec_ = std::move(before);
+      changed_.pop_back();
+      built_.reset();
+      throw ParameterError(e.what());
+    }
+  }
 }
 
 void PyModel::add(const std::string& table, const std::string& keys_toml, const std::string& call) {

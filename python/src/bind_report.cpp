@@ -1,5 +1,6 @@
 // The interactive HTML report (docs/report.md), as feran report writes it.
 #include <atomic>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -27,8 +28,15 @@ void bind_report(py::module_& m) {
         options.command = "feran.report(" + (file.path.empty() ? std::string("model") : "'" + file.path + "'") +
                           (config ? ", config='" + *config + "'" : "") + (study ? ", study='" + *study + "'" : "") + ")";
         options.n_threads = threads;
+        // The path is checked before the analyses run: never an input of the report.
+        OutputFiles files(file.path);
+        const int id = path ? files.add("path", *path) : -1;
+        if (config) files.add_input(*config, "the report configuration");
         if (config) read_report_config_file(*config, file.model, options);
         if (study) options.study_directory = *study;
+        if (!options.study_directory.empty())
+          for (const char* name : {"study.json", "evaluations.jsonl", "summary.json"})
+            files.add_input((std::filesystem::path(options.study_directory) / name).string(), "a file of the study shown");
         if (speed_unit) options.speed_unit = *speed_unit;
         if (title) options.title = *title;
         std::atomic<bool> flag{false};
@@ -41,8 +49,6 @@ void bind_report(py::module_& m) {
           throw py::error_already_set();
         }
         if (path) {
-          OutputFiles files(file.path);
-          const int id = files.add("path", *path);
           files.write(id, html);
           files.commit();
         }

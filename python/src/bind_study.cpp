@@ -184,7 +184,8 @@ PyStudyResult run(const std::shared_ptr<PyStudy>& s, const std::optional<std::st
   const StudySpec& study = s->study();
   if (resume && !output) throw Error("resume=True continues a study recorded on disk: give it output=DIRECTORY");
   std::unique_ptr<StudyLog> log;
-  if (output) log = std::make_unique<StudyLog>(*output, study, resume);
+  if (output)
+    log = std::make_unique<StudyLog>(*output, study, resume, std::vector<std::string>{s->file.path, s->file.base.path});
   const std::vector<Evaluation> done = log ? log->done() : std::vector<Evaluation>{};
   std::atomic<bool> flag{false};
   const StopToken stop(flag);

@@ -35,7 +35,11 @@ class PyModel {
 
   const ModelSpec& spec() const { return spec_; }
   const std::string& path() const { return path_; }
-  /// Sets a parameter by its path ("springs[bearing 1].ky", "2e7 N/m").
+  /// Sets a parameter by its path ("springs[bearing 1].ky", "2e7 N/m"). A value the
+  /// model cannot take (out of its bounds, or in conflict with the model where that is
+  /// checked at this very path) is refused here, naming the assignment, and the model
+  /// stays as it was; a problem elsewhere in a model still being built in code is left
+  /// to the analysis.
   void set(const std::string& path, const std::string& value);
   void set(const std::string& path, double si);
   /// Adds an entry to an array of tables ("materials") or sets a table ("campbell"),
@@ -54,6 +58,10 @@ class PyModel {
   std::string path_;
   std::vector<std::pair<std::string, std::string>> changed_;
   mutable std::shared_ptr<const ModelFile> built_;
+
+  /// Builds the model after the assignment @p assignment; if the build fails because
+  /// of it, restores @p before and throws.
+  void check_assignment(ModelSpec before, const std::string& assignment);
 };
 
 void bind_model(py::module_& m);

@@ -10,6 +10,10 @@
 
 #include <dlfcn.h>
 
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+
 namespace feran {
 
 void single_threaded_blas() {
@@ -22,6 +26,8 @@ void single_threaded_blas() {
 }
 
 int resolve_threads(int requested) {
+  if (requested < 0 || requested > max_threads)
+    throw Error(fmt::format("threads: 0 (all cores) or a count from 1 to {}, got {}", max_threads, requested));
   if (requested > 0) return requested;
   const unsigned hw = std::thread::hardware_concurrency();
   return hw == 0 ? 1 : static_cast<int>(hw);

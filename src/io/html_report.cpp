@@ -202,7 +202,11 @@ json study_results(const std::string& directory) {
 
 // Records a section's failure instead of the whole report's.
 template <class F>
-void section(json& data, const char* name, F&& make) {
+void section(json& data, const char* name, F&& make, const StopToken& stop = {}) {
+  if (stop.requested()) {  // a report stopped on request: the sections after are left out
+    data[name] = {{"error", "not computed: the report was stopped on request"}};
+    return;
+  }
   try {
     data[name] = make();
   } catch (const Error& e) {
@@ -299,10 +303,13 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
     ModalOptions mo;
     mo.oscillatory_only = true;
     mo.n_modes = options.mode_count;
-    section(modes.emplace_back(), "result", [&] {
-      const ModalResult r = run_modal(model, s, mo, file.assembler);
-      return json::parse(modal_json(r, model, source, true));
-    });
+    section(
+        modes.emplace_back(), "result",
+        [&] {
+          const ModalResult r = run_modal(model, s, mo, file.assembler);
+          return json::parse(modal_json(r, model, source, true));
+        },
+        options.stop);
   }
   data["modes"] = modes;
 
@@ -352,7 +359,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
       HarmonicOptions so = response_settings(model, spec.response, shape);
       j["deflected_shape"] = json::parse(response_json(run_harmonic_response(model, so), so, model, source));
       return j;
-    });
+    }, options.stop);
   }
 
   if (options.static_analysis)
@@ -364,7 +371,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
       if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
       const StaticOptions so = static_settings(spec.static_, request);
       return json::parse(static_json(run_static(model, so), so, model, source));
-    });
+    }, options.stop);
 
   if (options.api684 && low && high)
     section(data, "api684", [&] {
@@ -373,7 +380,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
       Api684Options ao = api684_settings(model, spec, request);
       ao.stop = options.stop;
       return json::parse(api684_json(run_api684(model, ao), model, source));
-    });
+    }, options.stop);
 
   const RunupSpec& r = spec.runup;
   if (options.runup && (r.speed || r.to || !r.table.empty()))
@@ -382,9 +389,13 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
       to.stop = options.stop;
       const TransientResult tr = run_transient(model, to);
       return json::parse(runup_json(tr, to, model, source));
-    });
+    }, options.stop);
 
   if (!options.study_directory.empty()) data["study"] = study_results(options.study_directory);
+
+  // Stopped on request: what was computed is shown, marked incomplete (an analysis
+  // cut short keeps its results up to there; the sections after it are left out).
+  data["complete"] = !options.stop.requested();
 
   // The verdicts the report opens with, read off the sections above.
   const std::vector<detail::Verdict> verdicts = detail::report_verdicts(data, options.speed_unit);

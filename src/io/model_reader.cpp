@@ -591,15 +591,8 @@ void check_before_parsing(std::string_view text, const std::string& path) {
 
 ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages,
                           SpecSource* source) {
-  check_before_parsing(toml_text, path_for_messages);
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, std::string_view{path_for_messages});
-  } catch (const toml::parse_error& e) {
-    throw ModelError(SourceLocation{path_for_messages, static_cast<int>(e.source().begin.line),
-                                    static_cast<int>(e.source().begin.column)},
-                     fmt::format("TOML syntax error: {}", e.description()));
-  }
+  check_before_parsing(detail::utf8_text(toml_text, path_for_messages), path_for_messages);
+  const toml::table root = detail::parse_toml(toml_text, path_for_messages);
   SpecReader reader(root, path_for_messages);
   ModelSpec spec = reader.read();
   if (source != nullptr) *source = reader.take_source();
@@ -625,8 +618,9 @@ void build(ModelFile& file, const std::vector<std::pair<std::string, std::string
     for (const std::string& path : info.node_paths)
       file.node_locations.push_back(file.source.locate(path));
   } catch (const SpecError& e) {
-    for (const auto& [assignment, path] : set)
-      if (overlaps(path, e.path())) throw Error(fmt::format("{}: {}", assignment, e.message()));
+    // The latest assignment to the path is the value the spec holds.
+    for (auto it = set.rbegin(); it != set.rend(); ++it)
+      if (overlaps(it->second, e.path())) throw Error(fmt::format("{}: {}", it->first, e.message()));
     throw file.source.locate(e);
   }
 }

@@ -149,7 +149,16 @@ struct OutputFiles::Output {
   }
 };
 
-OutputFiles::OutputFiles(std::string model_path) : model_path_(std::move(model_path)) {}
+OutputFiles::OutputFiles(std::string model_path) { inputs_.push_back({std::move(model_path), "the model file"}); }
+
+void OutputFiles::add_input(std::string path, std::string what) {
+  struct stat st {};
+  if (!path.empty() && ::stat(path.c_str(), &st) == 0)
+    for (const auto& o : outputs_)
+      if (o->id && *o->id == *file_id(st))
+        throw o->failure(fmt::format("it is {} '{}'", what, path));
+  inputs_.push_back({std::move(path), std::move(what)});
+}
 
 OutputFiles::~OutputFiles() {
   for (auto& o : outputs_) o->discard();
@@ -217,10 +226,12 @@ int OutputFiles::add(std::string option, std::string path, bool streamed) {
     throw o->failure(system_reason(errno));
   }
 
-  // Never the model file, never a file an earlier output writes.
-  struct stat model_st {};
-  if (o->id && ::stat(model_path_.c_str(), &model_st) == 0 && *o->id == *file_id(model_st))
-    throw o->failure(fmt::format("it is the model file '{}'", model_path_));
+  // Never an input, never a file an earlier output writes.
+  for (const auto& input : inputs_) {
+    struct stat input_st {};
+    if (o->id && ::stat(input.path.c_str(), &input_st) == 0 && *o->id == *file_id(input_st))
+      throw o->failure(fmt::format("it is {} '{}'", input.what, input.path));
+  }
   for (const auto& other : outputs_) {
     if (other->kind == Output::Kind::none || (o->null_device && other->null_device)) continue;
     const bool same = (o->id && other->id && *o->id == *other->id) ||

@@ -50,13 +50,7 @@ std::vector<Index> nodes(const TableReader& t, std::string_view key, const Model
 
 void read_report_config(std::string_view toml_text, const std::string& path, const Model& model,
                         ReportOptions& options) {
-  toml::table root_table;
-  try {
-    root_table = toml::parse(toml_text, std::string_view{path});
-  } catch (const toml::parse_error& e) {
-    throw ModelError(SourceLocation{path, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
-                     fmt::format("TOML syntax error: {}", e.description()));
-  }
+  const toml::table root_table = detail::parse_toml(toml_text, path);
   const TableReader root(root_table, "", path);
   root.check_keys({"title", "speed_unit", "campbell", "modes", "response", "static", "api684", "runup", "study"});
   if (const auto t = root.string("title")) options.title = *t;

@@ -143,12 +143,49 @@ Evaluation evaluation_from_json(const StudySpec& study, const std::string& line)
   }
 }
 
-StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume)
+namespace {
+
+// Whether @p name is a file the study writes in its directory.
+bool written_by_study(const std::string& name) {
+  const auto pareto = [&] {  // pareto-INDEX.toml
+    const std::size_t n = name.size();
+    if (n <= 12 || name.rfind("pareto-", 0) != 0 || name.compare(n - 5, 5, ".toml") != 0) return false;
+    return name.find_first_not_of("0123456789", 7) == n - 5;
+  };
+  return name == "evaluations.jsonl" || name == "evaluations.csv" || name == "study.json" || name == "summary.json" ||
+         name == "best.toml" || pareto();
+}
+
+// Refuses @p directory if a file the study writes there is one of @p inputs: the
+// input's own name there, or a name there that leads to it (a link, a hard link).
+void refuse_inputs(const std::string& directory, const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  for (const auto& input : inputs) {
+    if (input.empty() || !fs::exists(input, ec)) continue;
+    const fs::path real = fs::canonical(input, ec);
+    if (!ec && written_by_study(real.filename().string()) && fs::equivalent(real.parent_path(), directory, ec))
+      throw Error(fmt::format("cannot write the study's results in '{}': they would replace its input '{}' (the study "
+                              "writes {} there); give another directory with -o",
+                              directory, input, real.filename().string()));
+    for (const auto& entry : fs::directory_iterator(directory, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (written_by_study(name) && fs::equivalent(entry.path(), input, ec))
+        throw Error(fmt::format("cannot write the study's results in '{}': its '{}' is the input '{}'; give another "
+                                "directory with -o",
+                                directory, name, input));
+    }
+  }
+}
+
+}  // namespace
+
+StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume, std::vector<std::string> inputs)
     : directory_(std::move(directory)), study_(study) {
   std::error_code ec;
   fs::create_directories(directory_, ec);
   if (!fs::is_directory(directory_))
     throw Error(fmt::format("cannot make the output directory '{}'{}", directory_, ec ? ": " + ec.message() : ""));
+  refuse_inputs(directory_, inputs);
   const auto jsonl_path = (fs::path(directory_) / "evaluations.jsonl").string();
   const auto csv_path = (fs::path(directory_) / "evaluations.csv").string();
   const auto study_path = (fs::path(directory_) / "study.json").string();

@@ -396,13 +396,7 @@ class StudyReader {
 namespace {
 
 StudyFile read_study(std::string_view toml_text, const std::string& path, const StudyCode* code) {
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, std::string_view{path});
-  } catch (const toml::parse_error& e) {
-    throw ModelError(SourceLocation{path, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
-                     fmt::format("TOML syntax error: {}", e.description()));
-  }
+  const toml::table root = detail::parse_toml(toml_text, path);
   return StudyReader(root, path, code).read();
 }
 

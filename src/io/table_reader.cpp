@@ -22,6 +22,42 @@ bool before(const toml::source_position& a, const toml::source_position& b) {
 
 }  // namespace
 
+std::string_view utf8_text(std::string_view text, const std::string& path) {
+  const auto byte = [&](std::size_t i) { return i < text.size() ? static_cast<unsigned char>(text[i]) : 0x100u; };
+  if (byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) return text.substr(3);
+  const char* encoding = nullptr;
+  if (byte(0) == 0xFF && byte(1) == 0xFE && byte(2) == 0 && byte(3) == 0)
+    encoding = "UTF-32 (little-endian, by its byte-order mark)";
+  else if (byte(0) == 0 && byte(1) == 0 && byte(2) == 0xFE && byte(3) == 0xFF)
+    encoding = "UTF-32 (big-endian, by its byte-order mark)";
+  else if (byte(0) == 0xFF && byte(1) == 0xFE)
+    encoding = "UTF-16 (little-endian, by its byte-order mark)";
+  else if (byte(0) == 0xFE && byte(1) == 0xFF)
+    encoding = "UTF-16 (big-endian, by its byte-order mark)";
+  else if (byte(0) == 0 && byte(1) == 0 && byte(2) == 0 && byte(3) != 0 && byte(3) < 0x100)
+    encoding = "UTF-32 (big-endian, by the zero bytes of its first character)";
+  else if (byte(0) != 0 && byte(0) < 0x100 && byte(1) == 0 && byte(2) == 0 && byte(3) == 0)
+    encoding = "UTF-32 (little-endian, by the zero bytes of its first character)";
+  else if (byte(0) == 0 && byte(1) != 0 && byte(1) < 0x100)
+    encoding = "UTF-16 (big-endian, by the zero bytes of its first characters)";
+  else if (byte(0) != 0 && byte(0) < 0x100 && byte(1) == 0)
+    encoding = "UTF-16 (little-endian, by the zero bytes of its first characters)";
+  if (encoding != nullptr)
+    throw ModelError(SourceLocation{path, 1, 1},
+                     fmt::format("the file is in {}; TOML files are UTF-8: save it as UTF-8 (the editor's 'UTF-8' "
+                                 "encoding, or iconv -t UTF-8)",
+                                 encoding));
+  return text;
+}
+
+toml::table parse_toml(std::string_view text, const std::string& path) {
+  try {
+    return toml::parse(utf8_text(text, path), std::string_view{path});
+  } catch (const toml::parse_error& e) {
+    throw ModelError(location_of_region(path, e.source()), fmt::format("TOML syntax error: {}", e.description()));
+  }
+}
+
 SourceLocation location_of(const std::string& path, const toml::node& node) {
   return location_of_region(path, node.source());
 }

@@ -23,6 +23,15 @@ namespace feran::detail {
 /// Where @p node is in file @p path.
 SourceLocation location_of(const std::string& path, const toml::node& node);
 
+/// @p text without a UTF-8 byte-order mark (which is skipped); a file in UTF-16 or
+/// UTF-32 (by its byte-order mark, or by the zero bytes of its first characters) is
+/// refused as such, located at @p path:1:1, since TOML files are UTF-8.
+std::string_view utf8_text(std::string_view text, const std::string& path);
+
+/// The TOML table of @p text (utf8_text() first); a syntax error is a ModelError at
+/// its line and column of @p path.
+toml::table parse_toml(std::string_view text, const std::string& path);
+
 /// "a string", "an integer", "a floating-point number", "a boolean", "an array", …
 std::string type_name(const toml::node& node);
 

@@ -276,6 +276,12 @@ std::vector<Verdict> report_verdicts(const json& data, const std::string& speed_
   std::vector<Verdict> out{stability(data, speed)};
   for (Verdict& v : margins(data, speed)) out.push_back(std::move(v));
   for (Verdict& v : bearings(data, speed)) out.push_back(std::move(v));
+  // A report stopped on request judged part of its range: a failure found stands, a
+  // pass does not.
+  if (!data.value("complete", true))
+    for (Verdict& v : out)
+      if (v.status == "pass")
+        v = not_checked(v.check, "the report was stopped on request before its analyses were complete; " + v.reason);
   return out;
 }
 

@@ -18,20 +18,26 @@ Run by ctest (tests/hostile/CMakeLists.txt), one test per group:
 """
 import os
 import re
+import signal
 import stat
 import subprocess
 import sys
 import tempfile
+import time
 
 TIME_LIMIT = 120  # seconds per case; the slowest legitimate refusal takes well under one
 
 
 class Case:
-    def __init__(self, group, name, args, code, message, model=None, files=None, setup=None):
+    def __init__(self, group, name, args, code, message, model=None, files=None, setup=None, signal=None,
+                 written=(), python=None):
         self.group, self.name, self.args, self.code, self.message = group, name, args, code, message
         self.model = model  # text (str or bytes) of model.toml, written into the case's directory
-        self.files = files or {}  # more files: name -> bytes
+        self.files = files or {}  # more files: name -> bytes (or str)
         self.setup = setup  # a function of the directory, for special files
+        self.signal = signal  # sent once the run has begun (its outputs' temporary files exist)
+        self.written = set(written)  # outputs that may be written (a run stopped by a signal keeps its results)
+        self.python = python  # a Python statement run with feran imported and `model` read from model.toml
 
 
 def base_model():
@@ -466,7 +472,191 @@ def cases():
     ]
     for name, args, code, message in outputs:
         add(Case("outputs", name, args, code, message, model=base_model()))
+
+    # ------------------------------------------------------------------ inputs
+    # No output may replace any file a command reads: the model, REPORT.toml, a study
+    # file, a study's model, the files of a study shown in a report.
+    study_model = journal_model()
+    study_text = ('title = "t"\nmodel = "MODEL"\n[[variables]]\nname = "c"\npaths = ["journal_bearings[bearing A].viscosity"]\n'
+                  'lower = "0.01 Pa*s"\nupper = "0.02 Pa*s"\n[[quantities]]\nname = "f1"\nkind = "natural_frequency"\nn = 1\n'
+                  'speed = "100 Hz"\n[[objectives]]\nquantity = "f1"\nsense = "maximise"\n[explore]\nmethod = "grid"\nlevels = 2\n')
+    config = '[campbell]\nstop = "50 Hz"\npoints = 5\n'
+    shown_study = {"st/study.json": "{}", "st/evaluations.jsonl": "", "st/summary.json": "{}"}
+
+    def study_case(name, study_name, model_name, args, message, setup=None):
+        files = {study_name: study_text.replace("MODEL", model_name), model_name: study_model}
+        add(Case("inputs", name, ["study", study_name, "-q", *args], 1, message, files=files, setup=setup))
+
+    def link(name, target):
+        return lambda d: os.symlink(target, os.path.join(d, name))
+
+    def hard_link(name, target):
+        return lambda d: os.link(os.path.join(d, target), os.path.join(d, name))
+
+    def mkdir(name):
+        return lambda d: os.makedirs(os.path.join(d, name), exist_ok=True)
+
+    def both(*fs):
+        return lambda d: [f(d) for f in fs]
+
+    study_case("study_model_named_best", "s.toml", "best.toml", ["-o", "."],
+               r"cannot write the study's results in '\.': they would replace its input 'best\.toml'")
+    study_case("study_file_named_study_json", "study.json", "m.toml", ["-o", "."],
+               r"they would replace its input 'study\.json'")
+    study_case("study_model_named_summary", "s.toml", "summary.json", ["-o", "."],
+               r"they would replace its input 'summary\.json'")
+    study_case("study_model_named_evaluations_csv", "s.toml", "evaluations.csv", ["-o", "."],
+               r"they would replace its input 'evaluations\.csv'")
+    study_case("study_model_named_pareto", "s.toml", "pareto-12.toml", ["-o", "."],
+               r"they would replace its input 'pareto-12\.toml'")
+    study_case("study_best_linked_to_model", "s.toml", "m.toml", ["-o", "out"],
+               r"its 'best\.toml' is the input 'm\.toml'", setup=both(mkdir("out"), link("out/best.toml", "../m.toml")))
+    study_case("study_summary_hard_linked_to_study", "s.toml", "m.toml", ["-o", "out"],
+               r"its 'summary\.json' is the input 's\.toml'", setup=both(mkdir("out"), hard_link("out/summary.json", "s.toml")))
+    add(Case("inputs", "study_in_its_own_results", ["study", "s.results/study.json", "-o", "s.results", "-q"], 1,
+             r"they would replace its input 's\.results/study\.json'",
+             files={"s.results/study.json": study_text.replace("MODEL", "m.toml"), "s.results/m.toml": study_model}))
+    add(Case("inputs", "report_output_is_config", ["report", "model.toml", "--config", "r.toml", "-o", "r.toml"], 1,
+             r"--output 'r\.toml': cannot write: it is the report configuration 'r\.toml'", model=J, files={"r.toml": config}))
+    add(Case("inputs", "report_output_links_to_config", ["report", "model.toml", "--config", "r.toml", "-o", "o.html"], 1,
+             r"--output 'o\.html': cannot write: it is the report configuration 'r\.toml'", model=J,
+             files={"r.toml": config}, setup=link("o.html", "r.toml")))
+    add(Case("inputs", "report_output_is_a_study_file", ["report", "model.toml", "--study", "st", "-o", "st/summary.json"], 1,
+             r"cannot write: it is a file of the study shown 'st/summary\.json'", model=J, files=shown_study,
+             setup=mkdir("st")))
+    add(Case("inputs", "report_output_is_the_config_study", ["report", "model.toml", "--config", "r.toml", "-o",
+                                                              "st/evaluations.jsonl"], 1,
+             r"it is a file of the study shown 'st/evaluations\.jsonl'", model=J,
+             files={"r.toml": config + '[study]\ndirectory = "st"\n', **shown_study}, setup=mkdir("st")))
+    add(Case("inputs", "report_output_links_to_model", ["report", "model.toml", "-o", "o.html"], 1,
+             r"cannot write: it is the model file 'model\.toml'", model=J, setup=link("o.html", "model.toml")))
+    add(Case("inputs", "api684_json_hard_linked_to_model", ["api684", "model.toml", "--json", "a.json"], 1,
+             r"--json 'a\.json': cannot write: it is the model file", model=J, setup=hard_link("a.json", "model.toml")))
+    add(Case("inputs", "runup_csv_links_to_model", ["runup", "model.toml", "--speed", "1Hz", "--duration", "0.01s",
+                                                     "--csv", "r.csv"], 1,
+             r"--csv 'r\.csv': cannot write: it is the model file", model=J, setup=link("r.csv", "model.toml")))
+    add(Case("inputs", "static_json_is_model_by_another_name", ["static", "./model.toml", "--json", "model.toml"], 1,
+             r"--json 'model\.toml': cannot write: it is the model file", model=J))
+
+    # ------------------------------------------------------------------ encodings of the other files
+    def utf16(text):
+        return "\ufeff".encode("utf-16-le") + text.encode("utf-16-le")
+
+    add(Case("encodings", "report_config_utf16", ["report", "model.toml", "--config", "r.toml", "-o", "o.html"], 1,
+             r"r\.toml:1:1: the file is in UTF-16 \(little-endian, by its byte-order mark\)", model=J,
+             files={"r.toml": utf16(config)}))
+    add(Case("encodings", "study_utf16", ["study", "s.toml", "-q"], 1,
+             r"s\.toml:1:1: the file is in UTF-16 \(little-endian, by its byte-order mark\)",
+             files={"s.toml": utf16(study_text.replace("MODEL", "m.toml")), "m.toml": study_model}))
+    add(Case("encodings", "study_model_utf16_be", ["study", "s.toml", "-q"], 1,
+             r"m\.toml:1:1: the file is in UTF-16 \(big-endian, by the zero bytes of its first characters\)",
+             files={"s.toml": study_text.replace("MODEL", "m.toml"), "m.toml": study_model.encode("utf-16-be")}))
+    add(Case("encodings", "report_config_with_bom_read", ["report", "model.toml", "--config", "r.toml", "-o", "o.html",
+                                                           "-q"], 0, r"^$", model=J,
+             files={"r.toml": b"\xef\xbb\xbf" + config.encode()}))
+
+    # ------------------------------------------------------------------ REPORT.toml
+    # A mistake in REPORT.toml is a located error, exit 1, nothing written.
+    report_configs = [
+        ("unknown_table", '[campbel]\nstop = "50 Hz"\n', 1, r"unknown key 'campbel' at the top level; did you mean 'campbell'"),
+        ("unknown_key", '[campbell]\nstpo = "50 Hz"\n', 2, r"unknown key 'stpo'.*did you mean 'stop'"),
+        ("speed_without_unit_word", '[campbell]\nstop = "fast"\n', 2, r"'stop' must be a speed"),
+        ("points_text", '[campbell]\npoints = "many"\n', 2, r"'points'"),
+        ("points_zero", '[campbell]\npoints = 0\n', 2, r"'points'"),
+        ("syntax", '[campbell\n', 1, r"TOML syntax error"),
+        ("speed_unit_unknown", 'speed_unit = "krpm"\n', 1, r"speed_unit"),
+        ("modes_speeds_not_a_list", '[modes]\nspeeds = "0 rpm"\n', 2, r"'speeds'"),
+        ("modes_count_negative", '[modes]\ncount = -1\n', 2, r"'count'"),
+        ("probe_unknown", '[response]\nprobes = ["rotr"]\n', 2, r"'probes\[0\]': the model has no such node"),
+        ("static_enabled_text", '[static]\nenabled = "yes"\n', 2, r"'enabled'"),
+        ("api684_unknown_key", '[api684]\nmin_sped = "9000 rpm"\n', 2, r"unknown key 'min_sped'"),
+        ("study_not_a_table", 'study = "dir"\n', 1, r"'study' must be a table"),
+        ("title_number", 'title = 3\n', 1, r"'title'"),
+    ]
+    for name, text, line, message in report_configs:
+        add(Case("report", name, ["report", "model.toml", "--config", "r.toml", "-o", "o.html"], 1,
+                 rf"r\.toml:{line}:\d+: .*{message}", model=J, files={"r.toml": text}))
+
+    # ------------------------------------------------------------------ signals
+    # A run stopped by SIGINT, SIGTERM or SIGHUP: exit 128 + N, its results so far
+    # written whole and marked incomplete, no temporary file left behind.
+    long_runs = [
+        ("api684", ["api684", "model.toml", "--points", "20000", "--json", "out.json"], {"out.json"}),
+        ("report", ["report", "model.toml", "-o", "o.html"], {"o.html"}),
+        ("campbell", ["campbell", "model.toml", "--stop", "200Hz", "--points", "200000"], {"out.json", "out.csv"}),
+        ("response", ["response", "model.toml", "--stop", "200Hz", "--points", "900000"], {"out.json", "out.csv"}),
+        ("runup", ["runup", "model.toml", "--speed", "100Hz", "--duration", "1000s"], {"out.json", "out.csv"}),
+    ]
+    for command, args, written in long_runs:
+        for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+            add(Case("signals", f"{command}_{signal.Signals(sig).name}", args, 128 + sig,
+                     rf"feran: interrupted by {signal.Signals(sig).name}: .*(written|marked incomplete)",
+                     model=J, signal=sig, written=written))
+
+    # ------------------------------------------------------------------ Python
+    # Every wrong argument raises feran.Error, ModelError, ParameterError or TypeError
+    # naming the argument; an invalid model[path] = value fails at that assignment.
+    L = 'model["shafts[0].sections[0].length"]'
+    python = [
+        ("modes_text", 'feran.modal(model, modes="x")', r"TypeError: modal\(\): 'modes' must be an integer or None, got str 'x'"),
+        ("modes_float", "feran.modal(model, modes=2.5)", r"TypeError: modal\(\): 'modes' must be an integer or None, got float 2\.5"),
+        ("misspelt_keyword", "feran.modal(model, sped=3)", r"TypeError: modal\(\): has no argument 'sped'; did you mean 'speed'\?"),
+        ("path_for_model", 'feran.modal("model.toml")', r"TypeError: modal\(\): 'model' must be a feran\.Model \(feran\.read_model"),
+        ("no_model", "feran.campbell()", r"TypeError: campbell\(\): needs the argument 'model'"),
+        ("positional_option", "feran.modal(model, 3)", r"TypeError: modal\(\): takes 1 positional argument \(model\)"),
+        ("points_beyond_int", "feran.campbell(model, points=10**12)", r"TypeError: campbell\(\): 'points' = 1000000000000 is beyond an integer's range"),
+        ("orders_text", 'feran.campbell(model, orders="1")', r"TypeError: campbell\(\): 'orders' must be a list of integers, got str"),
+        ("threads_negative", "feran.campbell(model, threads=-3)", r"Error: threads: 0 \(all cores\) or a count from 1 to 1024, got -3"),
+        ("threads_too_many", "feran.response(model, threads=5000)", r"Error: threads: 0 \(all cores\) or a count from 1 to 1024, got 5000"),
+        ("threads_text", 'feran.campbell(model, threads="2")', r"TypeError: campbell\(\): 'threads' must be an integer, got str '2'"),
+        ("probes_misspelt", "feran.response(model, probes=[1])", r"TypeError: response\(\): has no argument 'probes'; did you mean 'probe'\?"),
+        ("probe_float", "feran.response(model, probe=3.5)", r"Error: probe: a node is a name \(str\) or a number \(int\), got 3\.5"),
+        ("loss_factor_text", 'feran.response(model, loss_factor="x")', r"TypeError: response\(\): 'loss_factor' must be a number or None"),
+        ("speed_bool", "feran.modal(model, speed=True)", r"Error: speed=True: expected a speed"),
+        ("runup_speed_dict", 'feran.runup(model, speed={"a": 1})', r"Error: speed=\{'a': 1\}: expected a speed"),
+        ("gravity_word", 'feran.static(model, gravity="up")', r"Error: static: gravity must be"),
+        ("report_speed_unit", 'feran.report(model, speed_unit="krpm")', r"Error: the report's speed unit must be"),
+        ("report_into_directory", 'feran.report(model, ".")', r"Error: path '\.': cannot write: it is a directory"),
+        ("report_over_model", 'feran.report(model, "model.toml")', r"Error: path 'model\.toml': cannot write: it is the model file"),
+        ("api684_speed_word", 'feran.api684(model, min_speed="a")', r"Error: min_speed 'a': give a speed with its unit"),
+        ("read_model_number", "feran.read_model(5)", r"TypeError: read_model\(\): 'path_or_text' must be a string, got int 5"),
+        ("model_title_number", "feran.Model(5)", r"TypeError: Model\.__init__\(\): 'title' must be a string, got int 5"),
+        ("text_model_syntax", 'feran.read_model("title = ")', r"ModelError: <string>:1:9: TOML syntax error"),
+        ("set_negative_length", L + ' = "-3 mm"', r"ParameterError: model\['shafts\[0\]\.sections\[0\]\.length'\] = '-3 mm': 'length' must be positive, got -3 mm"),
+        ("set_nan", L + ' = float("nan")', r"ParameterError: model\['shafts\[0\]\.sections\[0\]\.length'\] = nan: 'length' must be a finite number"),
+        ("set_beyond_range", L + ' = "1e9 km"', r"ParameterError: .*'length' is .*beyond the physical range of a length"),
+        ("set_wrong_unit", L + ' = "3 kg"', r"ParameterError: parameter 'shafts\[0\]\.sections\[0\]\.length': \"3 kg\" has unit 'kg'"),
+        ("set_list", L + " = [1]", r"TypeError: model\[path\] = value: the value must be text with its unit"),
+        ("set_unknown_table", 'model["nope.x"] = 1', r"ParameterError: parameter path 'nope\.x': there is no table 'nope'"),
+        ("set_path_number", "model[3] = 1", r"TypeError: model\[path\] = value: the path must be a string, got int 3"),
+        ("set_then_unchanged", 'before = ' + L + '\ntry:\n    ' + L + ' = "-3 mm"\nexcept feran.Error:\n    assert ' + L +
+         ' == before, ' + L + '\n    raise',
+         r"ParameterError: model\['shafts\[0\]\.sections\[0\]\.length'\] = '-3 mm'"),
+        ("dict_holding_itself", 'd = {"law": "table"}\nd["values"] = d\nmodel.add_spring(name="s", node="disk 1", ky=d)',
+         r"Error: add_spring\(name='s'\): ky\.values.*nested more than 16 levels deep"),
+        ("lone_surrogate", 'model.add_node(name="a\\ud800b", x=0.1)', r"Error: add_node\(name=.*is not valid text \(surrogates not allowed"),
+        ("integer_beyond_64_bits", 'model.add_node(name="n", x=10**30)', r"Error: add_node\(name='n'\): x: 10{30} is beyond a 64-bit integer"),
+        ("inner_key_not_text", 'model.add_spring(name="s", node="disk 1", ky={"law": "table", 1: 2})',
+         r"TypeError: add_spring\(name='s'\): ky: keys are text, got int 1"),
+        ("from_dict_list_expected", 'feran.Model.from_dict({"materials": {"name": "x"}})', r"Error: from_dict: 'materials' is a list of entries"),
+    ]
+    for name, statement, message in python:
+        add(Case("python", name, [], 1, "^" + message, model=J, python=statement,
+                 files={"r.toml": config}))
     return out
+
+
+# The Python door: the statement's exception, printed as "TYPE: message", exit 1.
+PYTHON_CASE = '''
+import sys
+import feran
+model = feran.read_model("model.toml")
+try:
+    exec(sys.argv[1])
+except BaseException as e:
+    print(f"{type(e).__name__}: {e}", file=sys.stderr)
+    sys.exit(1)
+'''
 
 
 def run_case(case):
@@ -476,6 +666,10 @@ def run_case(case):
             data = case.model.encode() if isinstance(case.model, str) else case.model
             with open(os.path.join(d, "model.toml"), "wb") as f:
                 f.write(data)
+        for name, content in case.files.items():
+            os.makedirs(os.path.dirname(os.path.join(d, name)), exist_ok=True)
+            with open(os.path.join(d, name), "wb") as f:
+                f.write(content.encode() if isinstance(content, str) else content)
         if case.setup:
             case.setup(d)
         before = snapshot(d)
@@ -487,13 +681,39 @@ def run_case(case):
                 args += ["--json", "out.json"]
             if "--csv" not in args and args[0] not in ("params", "api684"):
                 args += ["--csv", "out.csv"]
+        command = [FERAN, *args]
+        if case.python is not None:
+            env = dict(os.environ, PYTHONPATH=PYTHONPATH + os.pathsep + os.environ.get("PYTHONPATH", ""))
+            command = [sys.executable, "-c", PYTHON_CASE, case.python]
+        else:
+            env = None
         try:
-            r = subprocess.run([FERAN, *args], cwd=d, capture_output=True, timeout=TIME_LIMIT)
+            if case.signal is None:
+                r = subprocess.run(command, cwd=d, capture_output=True, timeout=TIME_LIMIT, env=env)
+            else:
+                p = subprocess.Popen(command, cwd=d, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+                # The outputs' temporary files exist once the signal handlers are
+                # installed; then well into the run.
+                deadline = time.time() + 60
+                while (p.poll() is None and time.time() < deadline
+                       and not any(".part-" in name for name in os.listdir(d))):
+                    time.sleep(0.01)
+                time.sleep(0.5)
+                p.send_signal(case.signal)
+                out, err = p.communicate(timeout=TIME_LIMIT)
+                r = subprocess.CompletedProcess(command, p.returncode, out, err)
         except subprocess.TimeoutExpired:
             return "hang", f"no end after {TIME_LIMIT} s"
         stderr = r.stderr.decode("utf-8", "replace")
         after = snapshot(d)
-        if r.returncode < 0 or r.returncode == 4 or "Sanitizer" in stderr or "runtime error" in stderr:
+        if case.written:  # outputs a stopped run keeps: written whole, no temporary file left
+            leftovers = [name for name in after if ".part-" in name]
+            if leftovers:
+                return "damaged", f"temporary files left: {leftovers}"
+            for name in case.written:
+                after.pop(name, None)
+        if (r.returncode < 0 or r.returncode == 4 or "Sanitizer" in stderr or "runtime error" in stderr
+                or "Traceback" in stderr or "RecursionError" in stderr):
             return "crash", f"exit {r.returncode}: {stderr[-400:]}"
         # Devices a case writes to must stay devices (a program that renames a temporary
         # file over its output replaces /dev/full with a regular file, as root).
@@ -534,8 +754,10 @@ def snapshot(d):
 
 
 def main():
-    global FERAN, SOURCE
+    global FERAN, SOURCE, PYTHONPATH
     FERAN, SOURCE = sys.argv[1], sys.argv[2]
+    # The Python package beside the program (build/python).
+    PYTHONPATH = os.path.join(os.path.dirname(os.path.abspath(FERAN)), "python")
     selector = sys.argv[3] if len(sys.argv) > 3 else None
     all_cases = cases()
     if selector == "--summary":

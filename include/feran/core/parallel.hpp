@@ -18,8 +18,12 @@ namespace feran {
 void single_threaded_blas();
 
 /// Number of threads a sweep uses when asked for @p requested: the hardware
-/// concurrency for 0, else @p requested (at least 1).
+/// concurrency for 0, else @p requested. Throws feran::Error for a negative count or
+/// more than max_threads.
 int resolve_threads(int requested);
+
+/// The most threads a sweep may be asked for (as the command line's --threads).
+inline constexpr int max_threads = 1024;
 
 /// Calls @p body(i, worker) for i = 0 … n−1 on up to @p n_threads threads
 /// (0: the hardware concurrency); worker ∈ [0, n_threads) identifies the calling

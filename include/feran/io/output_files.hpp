@@ -29,13 +29,17 @@ namespace feran {
 ///   commit() (a streamed output: as it comes).
 ///
 /// Refused, with the option, the path and why: a directory, a missing directory, a
-/// directory the program cannot write to, the model file itself (however reached:
-/// through links or another name), a path that an earlier output also writes
-/// (except /dev/null).
+/// directory the program cannot write to, the model file or another input
+/// (add_input) itself (however reached: through links or another name), a path that
+/// an earlier output also writes (except /dev/null).
 class OutputFiles {
  public:
   /// @p model_path is the file the command reads, which no output may replace.
   explicit OutputFiles(std::string model_path);
+  /// Another file the command reads (@p what names it in messages: "the report
+  /// configuration"), which no output may replace either: checked against the
+  /// outputs added before and after. Throws feran::Error naming the output's option.
+  void add_input(std::string path, std::string what);
   ~OutputFiles();
   OutputFiles(const OutputFiles&) = delete;
   OutputFiles& operator=(const OutputFiles&) = delete;
@@ -60,7 +64,10 @@ class OutputFiles {
 
  private:
   struct Output;
-  std::string model_path_;
+  struct Input {
+    std::string path, what;
+  };
+  std::vector<Input> inputs_;
   std::vector<std::unique_ptr<Output>> outputs_;
   bool committed_ = false;
 };

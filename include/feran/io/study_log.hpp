@@ -20,8 +20,11 @@ class StudyLog {
   /// Opens @p directory for @p study (created if missing). Without @p resume the
   /// directory must not hold evaluations already; with it, the evaluations there are
   /// read back (a line cut short by a crash is dropped, and the CSV rewritten to
-  /// match), after checking that they belong to the same study. Throws feran::Error.
-  StudyLog(std::string directory, const StudySpec& study, bool resume);
+  /// match), after checking that they belong to the same study. The files the study
+  /// reads, @p inputs (its study file and model file), must not be among those it
+  /// writes there (however reached: through links or another name). Throws
+  /// feran::Error.
+  StudyLog(std::string directory, const StudySpec& study, bool resume, std::vector<std::string> inputs = {});
   ~StudyLog();
   StudyLog(const StudyLog&) = delete;
   StudyLog& operator=(const StudyLog&) = delete;

@@ -78,6 +78,8 @@
   root.append(el("p", { class: "meta" },
     `feran ${data.inputs.version} · ${data.inputs.created} · model ${data.inputs.model_path}` +
     (data.operating ? ` · operating range ${fmt(fromRpm(data.operating.min_rpm), 5)}–${fmt(fromRpm(data.operating.max_rpm), 5)} ${unit}` : "")));
+  if (data.complete === false)
+    root.append(el("p", { class: "error" }, "Incomplete: the report was stopped on request. An analysis cut short shows its results up to there; the sections after it were not computed, and no check passes on them."));
   const nav = el("nav");
   root.append(nav);
 
