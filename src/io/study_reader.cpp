@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -102,6 +103,9 @@ class StudyReader {
   }
 
   void read_variables(StudySpec& study) {
+    // Every number one variable sets, by its canonical path: two variables (or two
+    // tied paths) setting one number would fight over it.
+    std::map<std::string, std::string> owner;
     each_table("variables", "design variable", [&](const TableReader& t, int i) {
       t.check_keys({"name", "path", "paths", "lower", "upper", "scale", "values", "unit"});
       DesignVariable v;
@@ -143,6 +147,14 @@ class StudyReader {
         } catch (const ParameterError& e) {
           t.fail(*path_nodes[k], e.what());
         }
+        ModelSpec scratch = study.base;  // the canonical path (entries by index), from setting it
+        const auto [it, fresh] = owner.emplace(set_parameter(scratch, v.paths[k], p.value), v.name);
+        if (!fresh)
+          t.fail(*path_nodes[k], it->second == v.name
+                                     ? fmt::format("'{}' is given twice in this variable's paths", v.paths[k])
+                                     : fmt::format("'{}' is already set by the variable '{}': one number, one "
+                                                   "variable (tie paths within one variable with 'paths')",
+                                                   v.paths[k], it->second));
         if (k == 0) {
           v.quantity = p.quantity;
           v.unit = p.unit;

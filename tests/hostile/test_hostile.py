@@ -350,6 +350,13 @@ def cases():
     add(in_text("drives", "quadratic_with_unit", M, dc, dc + '\nquadratic_torque = "1 N*m"', "'quadratic_torque' must be a number without unit", "quadratic_torque", args=R))
     add(in_text("drives", "friction_negative", M, dc, dc + '\nfriction_torque = "-1 N*m"', "'friction_torque' must not be negative", "friction_torque", args=R))
     add(in_text("drives", "unknown_key", M, dc, dc + '\nstal_torque = "4 N*m"', "unknown key 'stal_torque'.*did you mean 'stall_torque'", "stal_torque", args=R))
+    add(Case("drives", "friction_holds_the_rotor", R + ["model.toml", "--duration", "0.01s"], 1,
+             r"the drive cannot start the rotor from rest: its motor gives 4 N m at 0 Hz, not more than the friction "
+             r"torque 5 N m", model=M.replace(dc, dc + '\nfriction_torque = "5 N*m"')))
+    add(Case("drives", "motor_turns_backwards", R + ["model.toml", "--duration", "0.01s"], 1,
+             r"the drive's motor gives -2 N m at rest: it would turn the rotor backwards",
+             model=M.replace(dc, 'motor = "table"\ntorque = { law = "table", speeds = [0, "100 Hz"], values = ["-2 N*m", "3 N*m"] }')
+             .replace(stall, "").replace('no_load_speed = "105 Hz"\n', "")))
     add(in_text("drives", "table_name_misspelt", M, "[drive]", "[drivee]", "unknown key 'drivee' at the top level; did you mean 'drive'", args=R))
     induction = 'motor = "induction"\nsynchronous_speed = "50 Hz"\nbreakdown_torque = "5 N*m"\nbreakdown_slip = {}'
     no_dc = M.replace(stall, "").replace('no_load_speed = "105 Hz"\n', "")
@@ -499,6 +506,18 @@ def cases():
     def both(*fs):
         return lambda d: [f(d) for f in fs]
 
+    two = study_text.replace("MODEL", "m.toml").replace("[[quantities]]", '[[variables]]\nname = "d"\npaths = '
+                                                      '["journal_bearings[0].viscosity"]\nlower = "0.01 Pa*s"\n'
+                                                      'upper = "0.02 Pa*s"\n[[quantities]]')
+    add(Case("studies", "study_two_variables_on_one_path", ["study", "s.toml", "-q"], 1,
+             r"s\.toml:10:\d+: 'journal_bearings\[0\]\.viscosity' is already set by the variable 'c'",
+             files={"s.toml": two, "m.toml": study_model}))
+    add(Case("studies", "study_path_tied_to_itself", ["study", "s.toml", "-q"], 1,
+             r"s\.toml:5:\d+: 'journal_bearings\[bearing A\]\.viscosity' is given twice in this variable's paths",
+             files={"s.toml": study_text.replace("MODEL", "m.toml").replace(
+                 'paths = ["journal_bearings[bearing A].viscosity"]',
+                 'paths = ["journal_bearings[bearing A].viscosity", "journal_bearings[bearing A].viscosity"]'),
+                 "m.toml": study_model}))
     study_case("study_model_named_best", "s.toml", "best.toml", ["-o", "."],
                r"cannot write the study's results in '\.': they would replace its input 'best\.toml'")
     study_case("study_file_named_study_json", "study.json", "m.toml", ["-o", "."],

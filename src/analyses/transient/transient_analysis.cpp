@@ -119,6 +119,21 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     throw Error("runup: a torque-driven run needs the model's [drive] (its motor and load torques)");
   if (options.driven && options.reduced_modes > 0)
     throw Error("runup: a torque-driven run integrates the full model: leave out reduced_modes");
+  if (options.driven && options.profile.speed(0.0) == 0.0) {
+    // From rest the motor must overcome the friction torque, which holds the rotor
+    // at rest (set-valued at zero speed: no step of the smoothed sign resolves it).
+    const Drive& d = *model.drive;
+    const Real start = d.motor.torque(0.0);
+    if (start < 0.0)
+      throw Error(fmt::format("runup: the drive's motor gives {:.4g} N m at rest: it would turn the rotor backwards; "
+                              "a motor torque at 0 Hz above 0 starts it",
+                              start));
+    if (d.friction_torque > 0.0 && start <= d.friction_torque)
+      throw Error(fmt::format("runup: the drive cannot start the rotor from rest: its motor gives {:.4g} N m at 0 Hz, "
+                              "not more than the friction torque {:.4g} N m of [drive], which holds the rotor at "
+                              "rest; a stronger motor or less friction starts it",
+                              start, d.friction_torque));
+  }
   const auto [x_start, v_start] = start_state(model, options);
   RotorSystem rotor(model, options.profile, constant_load, options.driven ? &*model.drive : nullptr);
   std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
