@@ -68,6 +68,7 @@ Runner add_api684_command(CLI::App& app) {
       ->check(positive_number());
   add_threads_option(*cmd, args->threads);
   add_output_options(*cmd, args->out);
+  args->out.speed_unit = "rpm";  // API 617/684's own unit, unless --speed-unit says otherwise
 
   return [args]() {
     CommandOutputs outputs(args->model, args->out);
@@ -97,7 +98,8 @@ Runner add_api684_command(CLI::App& app) {
 
     const Api684Result result = run_api684(model, options);
     const ResultSource source{file.path, file.title,
-                              speed_range_warnings(model, options.speeds.front(), options.speeds.back())};
+                              speed_range_warnings(model, options.speeds.front(), options.speeds.back()),
+                              args->out.speed_unit};
     outputs.set_json([&] { return api684_json(result, model, source); });
     outputs.files.commit();
     if (!args->out.quiet) std::fputs(api684_report(result, model, source).c_str(), stdout);

@@ -63,6 +63,7 @@ struct OutputOptions {
   std::string json_path;
   std::string csv_path;
   bool quiet = false;
+  std::string speed_unit = "Hz";  ///< speeds in the terminal tables
 };
 void add_output_options(CLI::App& cmd, OutputOptions& out);
 

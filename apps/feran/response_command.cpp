@@ -110,7 +110,8 @@ Runner add_response_command(CLI::App& app) {
     if (!options.frequencies.empty())
       frequencies = std::pair{*std::min_element(options.frequencies.begin(), options.frequencies.end()),
                               *std::max_element(options.frequencies.begin(), options.frequencies.end())};
-    ResultSource source{file.path, file.title, speed_range_warnings(model, low, high, frequencies)};
+    ResultSource source{file.path, file.title, speed_range_warnings(model, low, high, frequencies),
+                        args->out.speed_unit};
     for (const std::string& w : clearance_warnings(result, model)) {
       std::fprintf(stderr, "feran: warning: %s\n", printable(w, true).c_str());
       source.warnings.push_back(w);

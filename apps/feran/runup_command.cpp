@@ -145,7 +145,7 @@ Runner add_runup_command(CLI::App& app) {
     TransientOptions options = runup_settings(model, file.spec.runup, request);
     options.stop = interrupt_token();
     const auto [low, high] = speed_span(model, options);
-    const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high)};
+    const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high), args->out.speed_unit};
 
     std::optional<RunupCsvWriter> csv;
     if (outputs.files.wanted(outputs.csv)) csv.emplace(outputs.files, outputs.csv, model, options);

@@ -68,7 +68,7 @@ Runner add_static_command(CLI::App& app) {
       return static_cast<int>(numerical_failure);
     }
     const ResultSource source{file.path, file.title,
-                              speed_range_warnings(file.model, options.speed, options.speed)};
+                              speed_range_warnings(file.model, options.speed, options.speed), args->out.speed_unit};
     outputs.set_json([&] { return static_json(result, options, file.model, source); });
     outputs.set_csv([&] { return static_csv(result, file.model); });
     outputs.files.commit();

@@ -154,6 +154,17 @@ Runner add_study_command(CLI::App& app) {
       out += optimiser ? fmt::format("{} designs evaluated ({} resumed)", all.size(), done.size())
                        : fmt::format("{} of {} designs evaluated ({} resumed)", all.size(), total, done.size());
       out += fmt::format(", {} failed, {} feasible\n", static_cast<Index>(all.size()) - evaluated, feasible);
+      // A quantity that is only a bound where an analysis' range ended says so.
+      for (std::size_t i = 0; i < study.quantities.size(); ++i) {
+        Index count = 0;
+        const Evaluation* example = nullptr;
+        for (const auto& e : all)
+          if (i < e.clipped.size() && !e.clipped[i].empty() && ++count == 1) example = &e;
+        if (count > 0)
+          out += fmt::format("note: '{}' is clipped by the analysed range in {} design{} (design {}: {})\n",
+                             study.quantities[i].name, count, count == 1 ? "" : "s", example->index,
+                             example->clipped[i]);
+      }
       if (study.objectives.size() == 1) {
         if (const auto best = best_design(study, all)) out += "best:\n" + design_line(study, all[static_cast<std::size_t>(*best)]);
         else out += "no feasible design\n";

@@ -181,6 +181,28 @@ for _result, _frame in ((ModalResult, _modal_frame), (CampbellResult, _campbell_
         _result.to_dict = _to_dict
     _result.to_pandas = _frame
 
+
+# Every speed a result holds in rad/s is also given in Hz and in rpm: NAME_hz, NAME_rpm.
+_SPEEDS = {ModalResult: ("speed",), CampbellResult: ("speeds",), ResponseResult: ("speeds", "first_unstable_speed"),
+           RunupResult: ("speed", "envelope_speed"), Api684Result: ("min_speed", "max_speed", "undamped_criticals")}
+
+
+def _speed_in(name, factor, unit):
+    def get(self):
+        value = getattr(self, name)
+        if value is None:
+            return None
+        return (_np.asarray(value, dtype=float) * factor) if not _np.isscalar(value) else float(value) * factor
+
+    return property(get, doc=f"{name} in {unit}")
+
+
+for _result, _names in _SPEEDS.items():
+    for _name in _names:
+        if not hasattr(_result, f"{_name}_hz"):
+            setattr(_result, f"{_name}_hz", _speed_in(_name, _HZ, "Hz"))
+        setattr(_result, f"{_name}_rpm", _speed_in(_name, 60 * _HZ, "rpm"))
+
 __all__ = ["CampbellResult", "Error", "Interrupted", "ModalResult", "Model", "ModelError", "ParameterError",
            "ResponseResult", "RunupResult", "StaticResult", "Study", "StudyResult", "campbell", "modal",
            "read_model", "read_study", "response", "runup", "static"]

@@ -287,6 +287,18 @@ void bind_study(py::module_& m) {
       .def_property_readonly("messages", [](const PyStudyResult& r) {
         return string_list(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].message; });
       }, "why a design failed or which constraint it violates ('' otherwise)")
+      .def_property_readonly("clipped", [](const PyStudyResult& r) {
+        py::list out;
+        const auto& quantities = r.study->study().quantities;
+        for (const auto& e : r.evaluations) {
+          py::dict d;
+          for (std::size_t i = 0; i < e.clipped.size() && i < quantities.size(); ++i)
+            if (!e.clipped[i].empty()) d[py::str(quantities[i].name)] = e.clipped[i];
+          out.append(d);
+        }
+        return out;
+      }, "per design, {quantity: why its value is only a bound} for the quantities clipped by the range an\n"
+         "analysis covered (a separation margin or stability threshold beyond the Campbell range's end)")
       .def_property_readonly("seconds", [](const PyStudyResult& r) {
         return array_1d(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].seconds; });
       }, "wall time of each evaluation [s]")

@@ -115,6 +115,22 @@ def test_campbell_arrays_and_critical_speeds(tmp_path):
         c.critical_speeds(whirl="forwards")
 
 
+def test_every_speed_in_rad_s_comes_in_hz_and_rpm_too():
+    # rpm = 60 Hz = 60 ω/2π, to rounding (1e-15); None stays None.
+    model = feran.read_model(EXAMPLE)
+    c = feran.campbell(model, stop="80 Hz", points=5)
+    assert np.allclose(c.speeds_rpm, c.speeds * 30 / np.pi, rtol=1e-15, atol=0)
+    assert np.allclose(c.speeds_rpm, 60 * c.speeds_hz, rtol=1e-15, atol=0)
+    assert c.speeds_rpm[-1] == pytest.approx(4800, rel=1e-14)
+    m = feran.modal(model, speed="1800 rpm")
+    assert m.speed_rpm == pytest.approx(1800, rel=1e-14) and m.speed_hz == pytest.approx(30, rel=1e-14)
+    r = feran.response(model, stop="80 Hz", points=5)
+    assert np.allclose(r.speeds_rpm, r.speeds * 30 / np.pi, rtol=1e-15, atol=0)
+    assert (r.first_unstable_speed_rpm is None) == (r.first_unstable_speed is None)
+    u = feran.runup(model, speed="10 Hz", duration="0.01 s")
+    assert np.allclose(u.speed_rpm, 600, rtol=1e-14)
+
+
 def test_response_arrays_match_the_json(tmp_path):
     model = feran.read_model(EXAMPLE)
     r = feran.response(model, stop="60 Hz", points=31, probe=["rotor", 1])

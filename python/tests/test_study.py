@@ -59,6 +59,30 @@ def test_a_study_file_gives_the_command_lines_evaluations_bit_for_bit(tmp_path):
     assert result.quantities[best, 0] == pytest.approx(ZETA_BEST, rel=1e-4)
 
 
+def test_a_quantity_clipped_by_the_campbell_range_says_so_through_every_door(tmp_path):
+    # Friswell's rotor with its Campbell diagram cut at 4000 rpm: every design's
+    # separation margin is the range end's, (4000 - 3300)/3300, a lower bound. The
+    # command line's files, its summary and Python's StudyResult.clipped agree.
+    with open(os.path.join(STUDIES, "friswell_margin_grid.toml")) as f:
+        text = f.read().replace("levels = 41", "levels = 3")
+    text = text.replace('model = "friswell_5_9_1.toml"', 'model = "%s"\n[settings]\n"campbell.stop" = "4000 rpm"'
+                        % os.path.join(STUDIES, "friswell_5_9_1.toml"))
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    out = subprocess.run([PROGRAM, "study", str(path), "-o", str(tmp_path / "cli")], check=True,
+                         capture_output=True, text=True).stdout
+    assert "note: 'margin' is clipped by the analysed range in 9 designs" in out
+    with open(tmp_path / "cli" / "evaluations.jsonl") as f:
+        cli = sorted((json.loads(line) for line in f), key=lambda e: e["index"])
+    with open(tmp_path / "cli" / "summary.json") as f:
+        assert json.load(f)["clipped"]["margin"]["designs"] == 9
+    result = feran.read_study(str(path)).run(threads=1)
+    assert result.clipped == [e["clipped"] for e in cli]
+    for e, q in zip(cli, result.quantities[:, 0]):
+        assert "a lower bound" in e["clipped"]["margin"]
+        assert q == pytest.approx(700 / 3300, rel=1e-12)
+
+
 def test_a_study_read_from_a_file_rebuilds_where_it_is_sent():
     # What a dask worker receives: the study pickled and rebuilt from its text.
     import pickle

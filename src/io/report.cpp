@@ -17,8 +17,19 @@ std::string source_line(const char* analysis, const ResultSource& source) {
   return fmt::format("feran {}: {} ({})\n", analysis, printable(source.title), printable(source.model_path));
 }
 
-std::string speed_text(Real speed) {
+// A speed in the unit the user chose ("Hz" or "rpm"), the other in parentheses.
+std::string speed_text(Real speed, const std::string& unit = "Hz") {
+  if (unit == "rpm") return fmt::format("{:.6g} rpm ({:.4g} Hz)", rad_to_hz(speed) * 60.0, rad_to_hz(speed));
   return fmt::format("{:.4g} Hz ({:.6g} rpm)", rad_to_hz(speed), rad_to_hz(speed) * 60.0);
+}
+
+// A speed column: its header and the value in the chosen unit.
+std::string speed_header(const std::string& unit) { return unit == "rpm" ? "speed [rpm]" : "speed [Hz]"; }
+Real speed_value(Real speed, const std::string& unit) { return rad_to_hz(speed) * (unit == "rpm" ? 60.0 : 1.0); }
+
+// A speed alone, in the chosen unit ("105.3 Hz", "6318 rpm").
+std::string speed_short(Real speed, const std::string& unit) {
+  return unit == "rpm" ? fmt::format("{:.0f} rpm", speed_value(speed, unit)) : fmt::format("{:.4g} Hz", rad_to_hz(speed));
 }
 
 // A right-aligned number; "-" when it does not exist. Values that would print as
@@ -33,7 +44,7 @@ std::string cell(Real x, const char* format_spec, int width, int decimals) {
 
 std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source) {
   std::string out = source_line("modal", source);
-  out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed), result.modes.size(),
+  out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed, source.speed_unit), result.modes.size(),
                      to_string(result.info.method));
   (void)model;
   out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {}\n", "mode", "frequency [Hz]",
@@ -56,19 +67,20 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
   const std::size_t n = result.speeds.size();
   if (n == 0) return out + "no speed could be solved\n";
   out += fmt::format("{} speeds from {} to {}, {} modes tracked, solver {}, {} eigen solves\n\n", n,
-                     speed_text(result.speeds.front()), speed_text(result.speeds.back()),
-                     result.modes.size(), to_string(result.info.method), result.n_solves);
+                     speed_text(result.speeds.front(), source.speed_unit),
+                     speed_text(result.speeds.back(), source.speed_unit), result.modes.size(), to_string(result.info.method), result.n_solves);
 
   // Frequencies at (at most) 11 evenly spread speeds of the grid.
   const std::size_t rows = std::min<std::size_t>(n, 11);
   auto row_index = [&](std::size_t r) { return rows == 1 ? 0 : r * (n - 1) / (rows - 1); };
   auto table = [&](const char* title, auto value, const char* spec) {
-    out += fmt::format("{}\n{:>11}", title, "speed [Hz]");
+    out += fmt::format("{}\n{:>11}", title, speed_header(source.speed_unit));
     for (const TrackedMode& m : result.modes) out += fmt::format(" {:>12}", m.label);
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t i = row_index(r);
-      out += cell(rad_to_hz(result.speeds[i]), ".2f", 11, 2);
+      out += source.speed_unit == "rpm" ? cell(speed_value(result.speeds[i], "rpm"), ".1f", 11, 1)
+                                        : cell(rad_to_hz(result.speeds[i]), ".2f", 11, 2);
       for (const TrackedMode& m : result.modes) {
         out += ' ';
         out += cell(value(m, i), spec, 12, 3);
@@ -88,22 +100,22 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
   if (result.critical_speeds.empty()) out += "  none in the speed range\n";
   for (const CriticalSpeed& c : result.critical_speeds)
     out += fmt::format("  {:<14} k = {}  at {}\n", result.modes[static_cast<std::size_t>(c.mode)].label,
-                       c.order, speed_text(c.speed));
+                       c.order, speed_text(c.speed, source.speed_unit));
   out += "\nStability threshold: ";
   if (!result.stability_threshold) {
-    out += fmt::format("none up to {} (every damping ratio stays >= 0)\n", speed_text(result.speeds.back()));
+    out += fmt::format("none up to {} (every damping ratio stays >= 0)\n", speed_text(result.speeds.back(), source.speed_unit));
   } else {
     const StabilityThreshold& t = *result.stability_threshold;
     const std::string label = threshold_label(result, t);
     if (t.unstable_at_start)
-      out += fmt::format("{} is already unstable at the first speed, {}\n", label, speed_text(t.speed));
+      out += fmt::format("{} is already unstable at the first speed, {}\n", label, speed_text(t.speed, source.speed_unit));
     else if (t.divergence)
       out += fmt::format("{}: a real eigenvalue turns positive (divergence: the stiffness loses its positivity, "
                          "a negative support stiffness or an axial load beyond buckling)\n",
-                         speed_text(t.speed));
+                         speed_text(t.speed, source.speed_unit));
     else
       out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {:.4g} Hz natural frequency\n",
-                         speed_text(t.speed), label, t.frequency_hz);
+                         speed_text(t.speed, source.speed_unit), label, t.frequency_hz);
   }
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
@@ -122,16 +134,16 @@ std::string element_name(const Model& model, Index element) {
 
 // A steady-state result's stability (modal/stability.hpp), in a few lines: nothing
 // when stable everywhere; else where it is unstable and what that means.
-std::string stability_text(const HarmonicResult& result) {
+std::string stability_text(const HarmonicResult& result, const std::string& unit) {
   const Index first = first_unstable_point(result);
   std::string out;
   Index unknown = 0;
   for (const StabilityPoint& p : result.stability) unknown += p.known ? 0 : 1;
   if (first >= 0) {
     const StabilityPoint& p = result.stability[static_cast<std::size_t>(first)];
-    out += fmt::format("WARNING: the rotor is UNSTABLE at {} of {} points, from {:.2f} Hz ({:.0f} rpm): {}.\n"
+    out += fmt::format("WARNING: the rotor is UNSTABLE at {} of {} points, from {}: {}.\n"
                        "         There the response is no steady state the rotor reaches: any disturbance grows.\n\n",
-                       unstable_points(result), result.stability.size(), rad_to_hz(p.speed), 60 * rad_to_hz(p.speed),
+                       unstable_points(result), result.stability.size(), speed_text(p.speed, unit),
                        p.divergence ? fmt::format("divergence, a real eigenvalue {:.4g} 1/s", p.growth_rate)
                                     : fmt::format("a mode at {:.4g} Hz grows at {:.4g} 1/s", p.frequency_hz, p.growth_rate));
   }
@@ -191,10 +203,10 @@ std::string force_name(const Model& model, Index force) {
   return label.empty() ? fmt::format("force {}", force + 1) : printable(label);
 }
 
-std::string point_text(const HarmonicResult& r, Index k) {
+std::string point_text(const HarmonicResult& r, Index k, const std::string& unit) {
   const auto i = static_cast<std::size_t>(k);
   if (r.frequency_sweep) return fmt::format("{:.4g} Hz excitation", rad_to_hz(r.frequencies[i]));
-  return speed_text(r.speeds[i]);
+  return speed_text(r.speeds[i], unit);
 }
 
 }  // namespace
@@ -206,12 +218,13 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
   if (n == 0) return out + "no point could be solved\n";
   if (result.frequency_sweep)
     out += fmt::format("frequency sweep {:.4g} to {:.4g} Hz ({} points) at rotor speed {}", rad_to_hz(result.frequencies.front()),
-                       rad_to_hz(result.frequencies.back()), n, speed_text(options.speed));
+                       rad_to_hz(result.frequencies.back()), n, speed_text(options.speed, source.speed_unit));
   else if (n == 1)
-    out += fmt::format("at speed {}, synchronous excitation", speed_text(result.speeds.front()));
+    out += fmt::format("at speed {}, synchronous excitation", speed_text(result.speeds.front(), source.speed_unit));
   else
-    out += fmt::format("speed sweep {} to {} ({} points), synchronous excitation", speed_text(result.speeds.front()),
-                       speed_text(result.speeds.back()), n);
+    out += fmt::format("speed sweep {} to {} ({} points), synchronous excitation",
+                       speed_text(result.speeds.front(), source.speed_unit), speed_text(result.speeds.back(), source.speed_unit),
+                       n);
   out += fmt::format(", {} unbalance(s), {} force(s), loss factor {}\n\n",
                      (!result.frequency_sweep && options.unbalance) ? model.n_forces("unbalance") : std::size_t{0},
                      model.n_forces("harmonic_force") + options.extra_forces.size(), options.loss_factor);
@@ -219,13 +232,15 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
   if (!result.probes.empty()) {
     const std::size_t rows = std::min<std::size_t>(n, 11);
     out += "Orbit size (major semi-axis, = largest |r|) [mm] and phase of v [deg]\n";
-    out += fmt::format("{:>12}", result.frequency_sweep ? "freq. [Hz]" : "speed [Hz]");
+    out += fmt::format("{:>12}", result.frequency_sweep ? "freq. [Hz]" : speed_header(source.speed_unit));
     for (const ProbeResponse& p : result.probes) out += fmt::format(" {:>14} {:>7}", node_name(model, p.node), "phase");
     if (unstable_points(result) > 0) out += "  rotor";
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t k = rows == 1 ? 0 : r * (n - 1) / (rows - 1);
-      out += cell(rad_to_hz(result.frequency_sweep ? result.frequencies[k] : result.speeds[k]), ".2f", 12, 2);
+      out += result.frequency_sweep          ? cell(rad_to_hz(result.frequencies[k]), ".2f", 12, 2)
+             : source.speed_unit == "rpm" ? cell(speed_value(result.speeds[k], "rpm"), ".1f", 12, 1)
+                                          : cell(rad_to_hz(result.speeds[k]), ".2f", 12, 2);
       for (const ProbeResponse& p : result.probes) {
         out += ' ';
         out += cell(1e3 * p.orbit[k].major, ".5f", 14, 5);
@@ -238,30 +253,30 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
     out += '\n';
   }
 
-  out += stability_text(result);
+  out += stability_text(result, source.speed_unit);
   const ResponseSummary sum = summarize(result);
   out += "Peaks:\n";
   for (std::size_t p = 0; p < sum.probe_peaks.size(); ++p)
     if (sum.probe_peaks[p].point >= 0)
       out += fmt::format("  orbit at node {:<18} {:.5g} mm at {}\n", node_name(model, result.probes[p].node),
-                         1e3 * sum.probe_peaks[p].value, point_text(result, sum.probe_peaks[p].point));
+                         1e3 * sum.probe_peaks[p].value, point_text(result, sum.probe_peaks[p].point, source.speed_unit));
   if (sum.spring_force.point >= 0)
     out += fmt::format("  largest spring-damper force: {} {:.5g} N at {}\n",
                        element_name(model, result.springs[static_cast<std::size_t>(sum.spring_force.item)].element),
-                       sum.spring_force.value, point_text(result, sum.spring_force.point));
+                       sum.spring_force.value, point_text(result, sum.spring_force.point, source.speed_unit));
   if (sum.support_force.point >= 0)
     out += fmt::format("  largest bearing force: {} {:.5g} N at {}\n",
                        force_name(model, result.supports[static_cast<std::size_t>(sum.support_force.item)].force),
-                       sum.support_force.value, point_text(result, sum.support_force.point));
+                       sum.support_force.value, point_text(result, sum.support_force.point, source.speed_unit));
   if (sum.reaction_force.point >= 0)
     out += fmt::format("  largest support force: node {} {:.5g} N at {}\n",
                        node_name(model, result.reactions[static_cast<std::size_t>(sum.reaction_force.item)].node),
-                       sum.reaction_force.value, point_text(result, sum.reaction_force.point));
+                       sum.reaction_force.value, point_text(result, sum.reaction_force.point, source.speed_unit));
   if (sum.stress.point >= 0) {
     const ShaftStation& st = result.shaft_stations[static_cast<std::size_t>(sum.stress.item)];
     out += fmt::format("  largest equivalent stress: {:.5g} MPa at x = {:.4g} mm ({} {}), at {}\n", 1e-6 * sum.stress.value,
                        1e3 * st.x, element_name(model, st.element), st.end == 0 ? "start" : "end",
-                       point_text(result, sum.stress.point));
+                       point_text(result, sum.stress.point, source.speed_unit));
   }
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
@@ -272,7 +287,7 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   std::string out = source_line("static", source);
   out += fmt::format("gravity ({:.4g}, {:.4g}, {:.4g}) m/s^2, {} static load(s), coefficients at {}\n\n",
                      options.gravity(0), options.gravity(1), options.gravity(2),
-                     options.loads ? model.n_forces("static_load") : 0, speed_text(options.speed));
+                     options.loads ? model.n_forces("static_load") : 0, speed_text(options.speed, source.speed_unit));
   if (result.stability.known && result.stability.unstable)
     out += fmt::format("warning: the rotor does not stay at this equilibrium: {}\n\n",
                        stability_phrase(result.stability));
@@ -329,10 +344,13 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
 std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,
                          const ResultSource& source, double wall_seconds) {
   std::string out = source_line("runup", source);
-  out += fmt::format("{} from {:.4g} to {:.4g} s, speed {:.4g} -> {:.4g} Hz{}; {} steps ({} rejected), {} "
+  const auto number = [&](Real speed) {  // in the chosen unit, without it
+    return source.speed_unit == "rpm" ? fmt::format("{:.0f}", speed_value(speed, "rpm")) : fmt::format("{:.4g}", rad_to_hz(speed));
+  };
+  out += fmt::format("{} from {:.4g} to {:.4g} s, speed {} -> {} {}{}; {} steps ({} rejected), {} "
                      "factorizations, {} Newton iterations",
-                     options.integrator, 0.0, result.t_end, rad_to_hz(options.profile.speed(0.0)),
-                     rad_to_hz(result.speed_end), options.driven ? " (torque-driven)" : "", result.steps, result.rejected,
+                     options.integrator, 0.0, result.t_end, number(options.profile.speed(0.0)), number(result.speed_end),
+                     source.speed_unit == "rpm" ? "rpm" : "Hz", options.driven ? " (torque-driven)" : "", result.steps, result.rejected,
                      result.factorizations, result.newton_iterations);
   out += wall_seconds >= 0 ? fmt::format("; {:.3g} s wall\n", wall_seconds) : std::string("\n");
   if (result.basis_size > 0)
@@ -340,9 +358,9 @@ std::string runup_report(const TransientResult& result, const TransientOptions& 
                        modal_basis_speeds, result.basis_size);
   for (std::size_t p = 0; p < options.probes.size() && p < result.envelopes.size(); ++p) {
     const Envelope& e = result.envelopes[p];
-    out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {:.4g} Hz\n",
+    out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {}\n",
                        printable(model.node_label(options.probes[p])), 1e3 * e.peak, e.peak_time,
-                       rad_to_hz(e.peak_speed));
+                       speed_short(e.peak_speed, source.speed_unit));
   }
   if (!result.warning.empty()) out += "warning: " + printable(result.warning, true) + "\n";
   return out;
@@ -365,11 +383,9 @@ std::string parameters_report(const std::vector<Parameter>& parameters, const Re
 
 namespace {
 
-std::string rpm_text(Real speed) { return fmt::format("{:.0f} rpm", rad_to_hz(speed) * 60.0); }
-
 std::string bearing_name(const Model& model, Index e) { return element_name(model, e); }
 
-std::string api684_cases(const Api684Result& result, const Model& model) {
+std::string api684_cases(const Api684Result& result, const Model& model, const std::string& unit) {
   std::string out;
   for (const Api684Case& c : result.cases) {
     out += fmt::format("\n{}", c.name);
@@ -378,12 +394,14 @@ std::string api684_cases(const Api684Result& result, const Model& model) {
     for (const PlacedUnbalance& u : c.unbalances)
       out += fmt::format("  unbalance {:.4g} g mm at node {}, {:.0f} deg (W = {:.4g} kg, {})\n", u.amount * 1e6,
                          model.node_label(u.node), u.phase * 180.0 / pi, u.mass, printable(u.basis));
-    out += fmt::format("  {:<16} {:>11} {:>13} {:>8} {:>10} {:>10}  {}\n", "probe", "peak [rpm]", "amplitude [um]",
+    out += fmt::format("  {:<16} {:>11} {:>13} {:>8} {:>10} {:>10}  {}\n", "probe", fmt::format("peak [{}]", unit),
+                       "amplitude [um]",
                        "AF", "SM req.", "SM actual", "verdict");
     for (std::size_t p = 0; p < c.response.probes.size(); ++p)
       for (const SeparationCheck& k : c.checks[p])
-        out += fmt::format("  {:<16} {:>11.0f} {:>13.4g} {} {} {:>9.1f}%  {}\n",
-                           printable(model.node_label(c.response.probes[p].node)), rad_to_hz(k.peak.speed) * 60.0,
+        out += fmt::format("  {:<16} {} {:>13.4g} {} {} {:>9.1f}%  {}\n",
+                           printable(model.node_label(c.response.probes[p].node)),
+                           cell(speed_value(k.peak.speed, unit), unit == "rpm" ? ".0f" : ".2f", 11, unit == "rpm" ? 0 : 2),
                            k.peak.amplitude * 1e6, cell(k.peak.amplification_factor, ".2f", 8, 2),
                            k.required_margin ? fmt::format("{:>9.1f}%", 100 * *k.required_margin) : fmt::format("{:>10}", "-"),
                            100 * k.actual_margin,
@@ -399,7 +417,7 @@ std::string api684_cases(const Api684Result& result, const Model& model) {
 
 std::string api684_report(const Api684Result& result, const Model& model, const ResultSource& source) {
   std::string out = source_line("api684", source);
-  out += fmt::format("operating range {} to {}\n", rpm_text(result.low), rpm_text(result.high));
+  out += fmt::format("operating range {} to {}\n", speed_short(result.low, source.speed_unit), speed_short(result.high, source.speed_unit));
   out += fmt::format("stability in the operating range: {} ({})\n",
                      result.stability_verdict.passes ? "passes" : "FAILS", result.stability_verdict.reason);
   if (!result.journals.empty()) {
@@ -409,9 +427,9 @@ std::string api684_report(const Api684Result& result, const Model& model, const 
     out.back() = '\n';
   }
   out += "undamped critical speeds (forward, bearings as given):";
-  for (const UndampedCritical& c : result.undamped) out += " " + rpm_text(c.speed);
+  for (const UndampedCritical& c : result.undamped) out += " " + speed_short(c.speed, source.speed_unit);
   out += "\n";
-  out += api684_cases(result, model);
+  out += api684_cases(result, model, source.speed_unit);
   if (result.map) {
     const CriticalSpeedMapResult& m = *result.map;
     out += fmt::format("\nundamped critical speed map: {} stiffness values from {:.3g} to {:.3g} N/m\n",
@@ -419,12 +437,12 @@ std::string api684_report(const Api684Result& result, const Model& model, const 
                        m.stiffness.empty() ? 0.0 : m.stiffness.back());
     for (const MapIntersection& x : m.intersections)
       out += fmt::format("  {} ({}) meets critical {} at {} ({:.4g} N/m)\n", bearing_name(model, x.element),
-                         x.direction, x.critical, rpm_text(x.speed), x.stiffness);
+                         x.direction, x.critical, speed_short(x.speed, source.speed_unit), x.stiffness);
     if (!m.info.converged()) out += fmt::format("  warning: {}\n", m.info.message);
   }
   if (result.stability) {
     const StabilitySweepResult& s = *result.stability;
-    out += fmt::format("\nlevel I stability at {}, cross-coupling at node {}:\n", rpm_text(s.speed),
+    out += fmt::format("\nlevel I stability at {}, cross-coupling at node {}:\n", speed_short(s.speed, source.speed_unit),
                        model.node_label(s.node));
     if (!s.log_decrement.empty()) out += fmt::format("  log. decr. without cross-coupling {:.4f}\n", s.log_decrement.front());
     out += s.q_zero ? fmt::format("  Q0 (log. decr. 0) = {:.4g} N/m\n", *s.q_zero)

@@ -44,7 +44,7 @@ std::string csv_header(const StudySpec& study) {
     const auto unit = si_unit_of(quantity_unit(q));
     cells.push_back(unit.empty() ? q.name : fmt::format("{} [{}]", q.name, unit));
   }
-  for (const char* c : {"evaluated", "feasible", "seconds", "message"}) cells.emplace_back(c);
+  for (const char* c : {"evaluated", "feasible", "seconds", "message", "clipped"}) cells.emplace_back(c);
   std::string line;
   for (std::size_t i = 0; i < cells.size(); ++i) line += (i ? "," : "") + detail::csv_field(cells[i]);
   return line + "\n";
@@ -55,7 +55,11 @@ std::string csv_row(const StudySpec& study, const Evaluation& e) {
   for (const Real v : e.values) line += fmt::format(",{:.17g}", v);
   for (std::size_t i = 0; i < study.quantities.size(); ++i)
     line += e.quantities.empty() ? std::string(",") : fmt::format(",{:.17g}", e.quantities[i]);
-  line += fmt::format(",{},{},{:.6f},{}\n", e.evaluated, e.feasible, e.seconds, detail::csv_field(e.message));
+  std::string clipped;  // "NAME: why; NAME: why" for the quantities that are only bounds
+  for (std::size_t i = 0; i < e.clipped.size() && i < study.quantities.size(); ++i)
+    if (!e.clipped[i].empty()) clipped += (clipped.empty() ? "" : "; ") + study.quantities[i].name + ": " + e.clipped[i];
+  line += fmt::format(",{},{},{:.6f},{},{}\n", e.evaluated, e.feasible, e.seconds, detail::csv_field(e.message),
+                      detail::csv_field(clipped));
   return line;
 }
 
@@ -114,9 +118,12 @@ std::string evaluation_json(const StudySpec& study, const Evaluation& e) {
     quantities = json::object();
     for (std::size_t i = 0; i < study.quantities.size(); ++i) quantities[study.quantities[i].name] = json_number(e.quantities[i]);
   }
+  json clipped = json::object();
+  for (std::size_t i = 0; i < e.clipped.size() && i < study.quantities.size(); ++i)
+    if (!e.clipped[i].empty()) clipped[study.quantities[i].name] = e.clipped[i];
   const json j = {{"index", e.index},       {"unit", e.unit},          {"variables", values},
-                  {"quantities", quantities}, {"evaluated", e.evaluated}, {"feasible", e.feasible},
-                  {"message", e.message},   {"seconds", e.seconds}};
+                  {"quantities", quantities}, {"clipped", clipped},     {"evaluated", e.evaluated},
+                  {"feasible", e.feasible},  {"message", e.message},   {"seconds", e.seconds}};
   return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
@@ -132,6 +139,12 @@ Evaluation evaluation_from_json(const StudySpec& study, const std::string& line)
         const auto& x = j.at("quantities").at(q.name);
         e.quantities.push_back(x.is_null() ? std::numeric_limits<Real>::quiet_NaN() : x.get<Real>());
       }
+    if (!e.quantities.empty()) {
+      e.clipped.assign(study.quantities.size(), std::string());
+      if (const auto c = j.find("clipped"); c != j.end())
+        for (std::size_t i = 0; i < study.quantities.size(); ++i)
+          if (c->contains(study.quantities[i].name)) e.clipped[i] = c->at(study.quantities[i].name).get<std::string>();
+    }
     e.evaluated = j.at("evaluated").get<bool>();
     e.feasible = j.at("feasible").get<bool>();
     e.message = j.at("message").get<std::string>();
@@ -266,6 +279,16 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
   json summary = {{"program", "feran"},     {"format_version", 1},   {"analysis", "study"},
                   {"complete", complete},   {"evaluations", all.size()}, {"evaluated", evaluated},
                   {"feasible", feasible}};
+  // Per quantity clipped in any design: in how many, and the first design's reason.
+  json clipped = json::object();
+  for (const auto& e : all)
+    for (std::size_t i = 0; i < e.clipped.size() && i < study_.quantities.size(); ++i) {
+      if (e.clipped[i].empty()) continue;
+      json& c = clipped[study_.quantities[i].name];
+      if (c.is_null()) c = {{"designs", 0}, {"first", e.index}, {"reason", e.clipped[i]}};
+      c["designs"] = c["designs"].get<Index>() + 1;
+    }
+  summary["clipped"] = clipped;
   if (study_.objectives.size() == 1) {
     if (const auto best = best_design(study_, all)) {
       summary["best"] = json::parse(evaluation_json(study_, all[static_cast<std::size_t>(*best)]));

@@ -88,6 +88,8 @@ std::string pack_evaluations(std::span<const Evaluation> evaluations) {
     w.put_reals(e.quantities);
     w.put(static_cast<std::uint8_t>((e.evaluated ? 1 : 0) | (e.feasible ? 2 : 0) | (e.interrupted ? 4 : 0)));
     w.put_text(e.message);
+    w.put(static_cast<std::uint64_t>(e.clipped.size()));
+    for (const auto& c : e.clipped) w.put_text(c);
     w.put(e.seconds);
   }
   return std::move(w.out);
@@ -112,6 +114,11 @@ std::vector<Evaluation> unpack_evaluations(const std::string& bytes) {
     e.feasible = (flags & 2) != 0;
     e.interrupted = (flags & 4) != 0;
     e.message = r.get_text();
+    const auto n_clipped = r.get<std::uint64_t>();
+    if (n_clipped > e.quantities.size())
+      throw Error(fmt::format("packed evaluation {} has {} clipped notes for {} quantities", e.index, n_clipped,
+                              e.quantities.size()));
+    for (std::uint64_t i = 0; i < n_clipped; ++i) e.clipped.push_back(r.get_text());
     e.seconds = r.get<Real>();
     out.push_back(std::move(e));
   }

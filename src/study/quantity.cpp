@@ -74,7 +74,7 @@ std::string ordinal(int n) {
   return fmt::format("{}{}", n, suffix);
 }
 
-std::string rpm(Real speed) { return format_quantity(speed, Quantity::speed, "rpm"); }
+std::string rpm(Real speed) { return approximate_quantity(speed, Quantity::speed, "rpm"); }
 
 void check_solver(const SolverInfo& info, std::string_view analysis) {
   if (!info.converged()) throw Error(fmt::format("the {} failed: {}", analysis, info.message));
@@ -216,7 +216,7 @@ Curve probe_curve(Analyses& a, const QuantitySpec& q) {
   throw Error("the response has no such probe");
 }
 
-Real evaluate_one(Analyses& a, const QuantitySpec& q) {
+Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
   switch (q.kind) {
     case QuantityKind::critical_speed: {
       const auto& c = a.campbell();
@@ -235,9 +235,14 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
       Real margin = std::min(separation_margin(low, q.operating_low, q.operating_high),
                              separation_margin(high, q.operating_low, q.operating_high));
       if (low <= 0) margin = separation_margin(high, q.operating_low, q.operating_high);
+      Real nearest = std::numeric_limits<Real>::infinity();
       for (const Real s : selected_criticals(c, q, low, high))
-        margin = std::min(margin, separation_margin(s, q.operating_low, q.operating_high));
-      return margin;
+        nearest = std::min(nearest, separation_margin(s, q.operating_low, q.operating_high));
+      if (!(nearest <= margin))
+        clipped = fmt::format("a lower bound: no {}critical speed of order {} between {} and {} lies nearer the "
+                              "operating range than the range's {}; widen the Campbell range to find the margin",
+                              whirl_word(q.whirl), q.order, rpm(low), rpm(high), low > 0 ? "ends" : "end");
+      return std::min(margin, nearest);
     }
     case QuantityKind::min_damping_ratio:
     case QuantityKind::min_log_decrement: {
@@ -248,7 +253,11 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q) {
     case QuantityKind::stability_threshold: {
       const auto& c = a.campbell();
       // None in the range: the threshold lies above it; its end is a lower bound.
-      return c.stability_threshold ? c.stability_threshold->speed : c.speeds.back();
+      if (c.stability_threshold) return c.stability_threshold->speed;
+      clipped = fmt::format("a lower bound: the rotor is stable up to the Campbell range's end, {}; widen the range to "
+                            "find the threshold",
+                            rpm(c.speeds.back()));
+      return c.speeds.back();
     }
     case QuantityKind::natural_frequency:
     case QuantityKind::damping_ratio:
@@ -412,13 +421,17 @@ std::vector<std::string_view> quantity_kind_names() {
 }
 
 std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
-                                      std::span<const QuantitySpec> quantities, const StopToken& stop) {
+                                      std::span<const QuantitySpec> quantities, const StopToken& stop,
+                                      std::vector<std::string>* clipped) {
   Analyses analyses(spec, model, quantities, stop);
   std::vector<Real> values;
   values.reserve(quantities.size());
+  if (clipped) clipped->assign(quantities.size(), std::string());
   for (const auto& q : quantities) {
     try {
-      values.push_back(evaluate_one(analyses, q));
+      std::string note;
+      values.push_back(evaluate_one(analyses, q, note));
+      if (clipped) (*clipped)[values.size() - 1] = std::move(note);
     } catch (const Error& e) {
       throw Error(fmt::format("quantity '{}': {}", q.name, e.what()));
     }

@@ -57,11 +57,12 @@ Evaluation evaluate_design(const StudySpec& study, Index index, std::span<const 
   try {
     const ModelSpec spec = apply_design(study.base, study.variables, e.values);
     const Model model = build_model(spec);
-    e.quantities = evaluate_quantities(spec, model, study.quantities, stop);
+    e.quantities = evaluate_quantities(spec, model, study.quantities, stop, &e.clipped);
     e.evaluated = std::all_of(e.quantities.begin(), e.quantities.end(), [](Real v) { return std::isfinite(v); });
     if (!e.evaluated) e.message = "a quantity is not finite";
   } catch (const std::exception& error) {
     e.quantities.clear();
+    e.clipped.clear();
     e.message = error.what();
   }
   if (e.evaluated) {
@@ -69,6 +70,7 @@ Evaluation evaluate_design(const StudySpec& study, Index index, std::span<const 
     e.feasible = e.message.empty();
   } else {
     e.quantities.clear();
+    e.clipped.clear();
   }
   e.interrupted = stop.requested();
   e.seconds = std::chrono::duration<Real>(std::chrono::steady_clock::now() - start).count();

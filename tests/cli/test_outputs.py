@@ -220,6 +220,36 @@ class CsvFields(OutputTest):
                 self.assertIn("ext\ndamping_fx", rows[0])
 
 
+class SpeedUnit(OutputTest):
+    """--speed-unit rpm: the terminal tables' speed columns in rpm, each 60 times the
+    default's Hz (the frequencies of the motion stay in Hz)."""
+
+    def first_column(self, text, header):
+        lines = text.splitlines()
+        start = next(i for i, line in enumerate(lines) if line.strip().startswith(header))
+        rows = []
+        for line in lines[start + 1:]:
+            if not line.strip() or not line.split()[0][0].isdigit():
+                break
+            rows.append(line.split())
+        return rows
+
+    def test_campbell_and_response_tables_take_rpm(self):
+        for command in ("campbell", "response"):
+            hz = run(command, self.model, "--stop", "40Hz", "--points", "5")
+            rpm = run(command, self.model, "--stop", "40Hz", "--points", "5", "--speed-unit", "rpm")
+            self.assertEqual((hz.returncode, rpm.returncode), (0, 0), rpm.stderr)
+            a, b = self.first_column(hz.stdout, "speed [Hz]"), self.first_column(rpm.stdout, "speed [rpm]")
+            self.assertEqual(len(a), 5, hz.stdout)
+            self.assertEqual(len(a), len(b))
+            for x, y in zip(a, b):
+                self.assertAlmostEqual(float(y[0]), 60 * float(x[0]), delta=0.6)  # printed to 0.01 Hz, 0.1 rpm
+                self.assertEqual(x[1:], y[1:])  # the same values in the other columns
+        r = run("modal", self.model, "--speed", "30Hz", "--speed-unit", "krpm")
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("--speed-unit", r.stderr)
+
+
 class TerminalText(OutputTest):
     """Names that hold control characters are printed visibly: a model cannot move the
     cursor or change colours of the terminal that runs it."""

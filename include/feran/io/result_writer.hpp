@@ -22,6 +22,9 @@ struct ResultSource {
   /// What the analysis should be read with (e.g. a table evaluated beyond its range);
   /// written as the header's "warnings".
   std::vector<std::string> warnings = {};
+  /// The unit of speeds in the terminal reports' tables: "Hz" or "rpm" (the files
+  /// always hold their documented units).
+  std::string speed_unit = "Hz";
 };
 
 /// JSON text of a modal result. With @p shapes each mode carries its shape.

@@ -89,8 +89,12 @@ std::vector<std::string_view> quantity_kind_names();
 /// The values of @p quantities for the built @p model of @p spec, in order, in SI
 /// units. Throws Error when an analysis cannot give one: a solve that failed, no n-th
 /// critical speed in the range, an unknown probe; the study records the message and
-/// treats the design as failed. Analyses stop early through @p stop.
+/// treats the design as failed. Analyses stop early through @p stop. With @p clipped,
+/// sets it per quantity to why the value is only a bound set by the range an analysis
+/// covered (a separation margin or a stability threshold beyond the Campbell range's
+/// end), or "" when it is exact.
 std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
-                                      std::span<const QuantitySpec> quantities, const StopToken& stop = {});
+                                      std::span<const QuantitySpec> quantities, const StopToken& stop = {},
+                                      std::vector<std::string>* clipped = nullptr);
 
 }  // namespace feran

@@ -88,6 +88,9 @@ struct Evaluation {
   bool evaluated = false;        ///< every quantity was computed
   bool feasible = false;         ///< evaluated and every constraint holds
   std::string message;           ///< why it failed, or which constraint it violates
+  /// Per quantity (empty when the design failed): why its value is only a bound,
+  /// clipped by the range an analysis covered ("" when it is exact).
+  std::vector<std::string> clipped;
   Real seconds = 0;              ///< wall time of this evaluation
   bool interrupted = false;      ///< stopped by a StopToken: not a result, not recorded
 };

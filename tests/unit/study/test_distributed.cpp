@@ -75,6 +75,7 @@ void expect_same(const std::vector<Evaluation>& a, const std::vector<Evaluation>
     EXPECT_EQ(a[i].evaluated, b[i].evaluated);
     EXPECT_EQ(a[i].feasible, b[i].feasible);
     EXPECT_EQ(a[i].message, b[i].message);
+    EXPECT_EQ(a[i].clipped, b[i].clipped);
   }
 }
 
@@ -92,6 +93,7 @@ TEST(DistributedStudy, EvaluationsSurvivePackingExactly) {
   a.quantities = {std::numeric_limits<Real>::denorm_min(), 6.02214076e23};
   a.evaluated = a.feasible = true;
   a.message = "line one\nline \"two\" \xce\xb6";
+  a.clipped = {"", "a lower bound: the range ends"};
   a.seconds = 0.125;
   Evaluation b;
   b.index = 42;
