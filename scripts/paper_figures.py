@@ -35,16 +35,29 @@ def series(values):
     return np.array([np.nan if x is None else x for x in values], dtype=float)
 
 
-def mode(campbell, label):
+def paper_names(campbell):
+    """The paper's names of the tracked modes, by whirl alone ("forward 2": the second
+    forward mode by frequency at the first speed), keyed by feran's labels (which name
+    the shape too: "forward conical 1")."""
+    counts, names = {}, {}
     for m in campbell["modes"]:
-        if m["label"] == label:
+        counts[m["whirl"]] = counts.get(m["whirl"], 0) + 1
+        names[m["label"]] = f"{m['whirl']} {counts[m['whirl']]}"
+    return names
+
+
+def mode(campbell, label):
+    names = paper_names(campbell)
+    for m in campbell["modes"]:
+        if names[m["label"]] == label:
             return m
     raise KeyError(f"no mode {label} in {campbell['model']['path']}")
 
 
 def critical(campbell):
-    """First-order critical speeds by mode label [Hz]."""
-    return {c["mode"]: c["speed_hz"] for c in campbell["critical_speeds"] if c["order"] == 1}
+    """First-order critical speeds by the paper's mode name [Hz]."""
+    names = paper_names(campbell)
+    return {names[c["mode"]]: c["speed_hz"] for c in campbell["critical_speeds"] if c["order"] == 1}
 
 
 def curve(campbell, label, key="frequency_hz"):

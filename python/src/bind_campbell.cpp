@@ -73,7 +73,13 @@ void bind_campbell(py::module_& m) {
            })
       .def_property_readonly("labels", [](const PyCampbellResult& r) {
              return string_list(r.result.modes.size(), [&](std::size_t i) { return r.result.modes[i].label; });
-           }, "per mode: 'backward 1', 'forward 1', 'axial 1', …")
+           }, "per mode: 'forward bending 1', 'backward cylindrical 1', 'axial 1', …")
+      .def_property_readonly("shape", [](const PyCampbellResult& r) {
+             return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].shape_kind); });
+           }, "per mode: its prevailing shape ('cylindrical', 'conical', 'bending'; 'none' without lateral motion)")
+      .def_property_readonly("bending",
+                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.bending; }); },
+                             "the rotor's bending fraction per mode and speed (0 rigid, towards 1 bending), shape (modes, speeds)")
       .def_property_readonly("whirl", [](const PyCampbellResult& r) {
              return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].whirl); });
            }, "per mode: its prevailing whirl ('forward', 'backward', 'planar', 'none')")

@@ -80,6 +80,16 @@ void bind_modal(py::module_& m) {
                                for (const Mode& x : r.result.modes) out.append(to_string(x.type));
                                return out;
                              })
+      .def_property_readonly("shape",
+                             [](const PyModalResult& r) {
+                               py::list out;
+                               for (const Mode& x : r.result.modes) out.append(to_string(x.shape_kind));
+                               return out;
+                             }, "per mode: 'cylindrical', 'conical' (rigid on its supports) or 'bending'; 'none'")
+      .def_property_readonly("bending",
+                             [](const PyModalResult& r) {
+                               return array_1d(r.result.modes.size(), [&](std::size_t i) { return r.result.modes[i].bending; });
+                             }, "per mode: the rotor's bending fraction (0 rigid, towards 1 bending)")
       .def_property_readonly("shapes",
                              [](const PyModalResult& r) {
                                const auto& modes = r.result.modes;

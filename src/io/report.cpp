@@ -47,14 +47,15 @@ std::string modal_report(const ModalResult& result, const Model& model, const Re
   out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed, source.speed_unit), result.modes.size(),
                      to_string(result.info.method));
   (void)model;
-  out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {}\n", "mode", "frequency [Hz]",
-                     "damping [%]", "log. decr.", "whirl", "directivity", "type", "note");
+  out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {:<12} {}\n", "mode", "frequency [Hz]",
+                     "damping [%]", "log. decr.", "whirl", "directivity", "type", "shape", "note");
   int index = 0;
   for (const Mode& m : result.modes) {
     const char* note = m.rigid_body ? "rigid body" : (!m.oscillatory ? "non-oscillatory" : "");
-    out += fmt::format("{:>4}  {}  {}  {}  {:<9} {}  {:<10} {}\n", ++index, cell(m.frequency_hz, ".4f", 14, 4),
+    out += fmt::format("{:>4}  {}  {}  {}  {:<9} {}  {:<10} {:<12} {}\n", ++index, cell(m.frequency_hz, ".4f", 14, 4),
                        cell(100.0 * m.damping_ratio, ".3f", 12, 3), cell(m.log_decrement, ".4f", 10, 4),
-                       to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type), note);
+                       to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type),
+                       m.shape_kind == ModeShape::none ? "-" : to_string(m.shape_kind), note);
   }
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
@@ -75,7 +76,9 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
   auto row_index = [&](std::size_t r) { return rows == 1 ? 0 : r * (n - 1) / (rows - 1); };
   auto table = [&](const char* title, auto value, const char* spec) {
     out += fmt::format("{}\n{:>11}", title, speed_header(source.speed_unit));
-    for (const TrackedMode& m : result.modes) out += fmt::format(" {:>12}", m.label);
+    // Each column as wide as its label ("backward cylindrical 1"), at least 12.
+    const auto width = [](const TrackedMode& m) { return std::max<int>(12, static_cast<int>(printable(m.label).size())); };
+    for (const TrackedMode& m : result.modes) out += fmt::format(" {:>{}}", printable(m.label), width(m));
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t i = row_index(r);
@@ -83,7 +86,7 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
                                         : cell(rad_to_hz(result.speeds[i]), ".2f", 11, 2);
       for (const TrackedMode& m : result.modes) {
         out += ' ';
-        out += cell(value(m, i), spec, 12, 3);
+        out += cell(value(m, i), spec, width(m), 3);
       }
       out += '\n';
     }
@@ -99,7 +102,7 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
   out += fmt::format("Critical speeds (frequency = k x speed, k = {}):\n", fmt::join(orders, ", "));
   if (result.critical_speeds.empty()) out += "  none in the speed range\n";
   for (const CriticalSpeed& c : result.critical_speeds)
-    out += fmt::format("  {:<14} k = {}  at {}\n", result.modes[static_cast<std::size_t>(c.mode)].label,
+    out += fmt::format("  {:<24} k = {}  at {}\n", result.modes[static_cast<std::size_t>(c.mode)].label,
                        c.order, speed_text(c.speed, source.speed_unit));
   out += "\nStability threshold: ";
   if (!result.stability_threshold) {

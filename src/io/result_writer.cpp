@@ -463,6 +463,8 @@ std::string modal_json(const ModalResult& result, const Model& model, const Resu
                {"whirl", to_string(m.whirl)},
                {"directivity", json_number(m.directivity)},
                {"type", to_string(m.type)},
+               {"shape", to_string(m.shape_kind)},
+               {"bending", json_number(m.bending)},
                {"rigid_body", m.rigid_body},
                {"oscillatory", m.oscillatory}};
     if (shapes && m.shape.size() > 0) {
@@ -487,14 +489,15 @@ std::string modal_json(const ModalResult& result, const Model& model, const Resu
 std::string modal_csv(const ModalResult& result) {
   std::ostringstream out;
   out << "mode,frequency_hz,damping_ratio,log_decrement,eigenvalue_real,eigenvalue_imag,whirl,"
-         "directivity,type,rigid_body\n";
+         "directivity,type,rigid_body,shape,bending\n";
   int index = 0;
   for (const Mode& m : result.modes)
     out << ++index << ',' << csv_number(m.frequency_hz) << ',' << csv_number(m.damping_ratio) << ','
         << csv_number(m.log_decrement) << ',' << csv_number(m.eigenvalue.real()) << ','
         << csv_number(m.eigenvalue.imag()) << ',' << to_string(m.whirl) << ','
         << csv_number(m.directivity) << ',' << to_string(m.type) << ','
-        << (m.rigid_body ? "true" : "false") << '\n';
+        << (m.rigid_body ? "true" : "false") << ',' << to_string(m.shape_kind) << ',' << csv_number(m.bending)
+        << '\n';
   return out.str();
 }
 
@@ -515,6 +518,8 @@ std::string campbell_json(const CampbellResult& result, const CampbellOptions& o
     modes.push_back({{"label", m.label},
                      {"whirl", to_string(m.whirl)},
                      {"type", to_string(m.type)},
+                     {"shape", to_string(m.shape_kind)},
+                     {"bending", numbers(m.bending)},
                      {"frequency_hz", numbers(m.frequency_hz)},
                      {"damping_ratio", numbers(m.damping_ratio)},
                      {"log_decrement", numbers(m.log_decrement)},

@@ -1,5 +1,6 @@
 #pragma once
-// Lookups into a Campbell result by mode label, shared by the paper tests.
+// Lookups into a Campbell result by the papers' mode names ("forward 1": the first
+// forward mode, whirl_name()), shared by the paper tests.
 
 #include <limits>
 #include <stdexcept>
@@ -9,17 +10,18 @@
 
 namespace feran::test {
 
-/// The tracked mode labelled @p label; throws when there is none.
-inline const TrackedMode& mode(const CampbellResult& r, const std::string& label) {
-  for (const TrackedMode& m : r.modes)
-    if (m.label == label) return m;
-  throw std::runtime_error("no mode " + label);
+/// The tracked mode named @p name by its whirl; throws when there is none.
+inline const TrackedMode& mode(const CampbellResult& r, const std::string& name) {
+  for (std::size_t i = 0; i < r.modes.size(); ++i)
+    if (whirl_name(r, static_cast<Index>(i)) == name) return r.modes[i];
+  throw std::runtime_error("no mode " + name);
 }
 
-/// The first-order critical speed [Hz] of the mode labelled @p label; NaN when none.
-inline Real critical_hz(const CampbellResult& r, const std::string& label) {
+/// The first-order critical speed [Hz] of the mode named @p name by its whirl; NaN
+/// when none.
+inline Real critical_hz(const CampbellResult& r, const std::string& name) {
   for (const CriticalSpeed& c : r.critical_speeds)
-    if (r.modes[static_cast<std::size_t>(c.mode)].label == label && c.order == 1) return rad_to_hz(c.speed);
+    if (whirl_name(r, c.mode) == name && c.order == 1) return rad_to_hz(c.speed);
   return std::numeric_limits<Real>::quiet_NaN();
 }
 

@@ -25,10 +25,11 @@ CampbellOptions sweep() {
   return opt;
 }
 
-const TrackedMode& find(const CampbellResult& r, const std::string& label) {
-  for (const TrackedMode& m : r.modes)
-    if (m.label == label) return m;
-  throw std::runtime_error("no mode " + label);
+// The mode named @p name by its whirl ("forward 1", whirl_name()).
+const TrackedMode& find(const CampbellResult& r, const std::string& name) {
+  for (std::size_t i = 0; i < r.modes.size(); ++i)
+    if (whirl_name(r, static_cast<Index>(i)) == name) return r.modes[i];
+  throw std::runtime_error("no mode " + name);
 }
 
 std::vector<Real> lateral_frequencies(const Model& model, Real speed, Whirl whirl, bool any_whirl) {

@@ -120,6 +120,8 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     tm.log_decrement.push_back(m ? m->log_decrement : nan);
     tm.directivity.push_back(m ? m->directivity : nan);
     tm.whirl_at.push_back(m ? m->whirl : Whirl::none);
+    tm.bending.push_back(m ? m->bending : nan);
+    tm.shape_at.push_back(m ? m->shape_kind : ModeShape::none);
     tm.correlation.push_back(corr);
   };
 
@@ -305,8 +307,9 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
         [](const StabilityThreshold& a, const StabilityThreshold& b) { return a.speed < b.speed; });
 
   // Labels: the sense in which a mode whirls at most speeds of the sweep (a nearly
-  // straight-line orbit counts by the sign of its directivity), numbered by frequency
-  // at the first speed within each family; planar only when it whirls at no speed.
+  // straight-line orbit counts by the sign of its directivity) and the shape it has at
+  // the first speed (cylindrical, conical, bending), numbered by frequency at the first
+  // speed within each family; planar only when it whirls at no speed.
   std::map<std::string, int> counters;
   for (TrackedMode& tm : result.modes) {
     int forward = 0, backward = 0, mixed = 0;
@@ -320,15 +323,36 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
                : forward >= backward && forward >= mixed   ? Whirl::forward
                : backward >= mixed                         ? Whirl::backward
                                                            : Whirl::mixed;
+    // The shape at the first speed, where the labels are numbered (an oil-whirl mode,
+    // rigid in its films at low speed, keeps its name when it later bends the shaft
+    // far above the first bending mode).
+    tm.shape_kind = ModeShape::none;
+    for (const ModeShape s : tm.shape_at)
+      if (s != ModeShape::none) {
+        tm.shape_kind = s;
+        break;
+      }
     std::string family;
     switch (tm.type) {
-      case ModeType::axial: family = "axial"; tm.whirl = Whirl::none; break;
-      case ModeType::torsional: family = "torsional"; tm.whirl = Whirl::none; break;
-      default: family = to_string(tm.whirl);
+      case ModeType::axial: family = "axial"; tm.whirl = Whirl::none; tm.shape_kind = ModeShape::none; break;
+      case ModeType::torsional: family = "torsional"; tm.whirl = Whirl::none; tm.shape_kind = ModeShape::none; break;
+      default:
+        family = to_string(tm.whirl);
+        if (tm.shape_kind != ModeShape::none) family += std::string(" ") + to_string(tm.shape_kind);
     }
     tm.label = family + " " + std::to_string(++counters[family]);
   }
   return result;
+}
+
+std::string whirl_name(const CampbellResult& result, Index mode) {
+  const auto family = [](const TrackedMode& m) -> std::string {
+    return m.type == ModeType::axial ? "axial" : m.type == ModeType::torsional ? "torsional" : to_string(m.whirl);
+  };
+  const TrackedMode& target = result.modes.at(static_cast<std::size_t>(mode));
+  int count = 0;
+  for (Index i = 0; i <= mode; ++i) count += family(result.modes[static_cast<std::size_t>(i)]) == family(target);
+  return family(target) + " " + std::to_string(count);
 }
 
 std::string threshold_label(const CampbellResult& result, const StabilityThreshold& threshold) {

@@ -40,6 +40,16 @@ const char* to_string(ModeType t) {
   return "?";
 }
 
+const char* to_string(ModeShape s) {
+  switch (s) {
+    case ModeShape::none: return "none";
+    case ModeShape::cylindrical: return "cylindrical";
+    case ModeShape::conical: return "conical";
+    case ModeShape::bending: return "bending";
+  }
+  return "?";
+}
+
 namespace {
 
 int family_of(Index full_dof) {
@@ -359,6 +369,8 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options, std::shared_p
       cache_(std::make_shared<BlockCache>()) {
   for (const Force& f : model.forces)
     if (f.supports()) supports_.push_back(f);
+  for (Index i = 0; i < model.n_nodes(); ++i)
+    if (model.nodes[static_cast<std::size_t>(i)].rotating) rotor_nodes_.emplace_back(i, model.nodes[static_cast<std::size_t>(i)].x);
   const SystemMatrices sys = assembler_->at(0.0);
   lambda_max_ = 0.0;
   for (Index i = 0; i < sys.M.rows(); ++i)
@@ -743,6 +755,10 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
     if (mode.type == ModeType::axial || mode.type == ModeType::torsional) {
       mode.whirl = Whirl::none;
       mode.directivity = std::numeric_limits<Real>::quiet_NaN();
+    } else {
+      const ShapeResult shape = classify_shape(full, rotor_nodes_);
+      mode.bending = shape.bending;
+      mode.shape_kind = shape.kind;
     }
     mode.reduced_shape = phi;
     if (options_.shapes) mode.shape = normalise(full, mode.type);

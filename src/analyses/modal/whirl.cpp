@@ -76,6 +76,38 @@ ComplexMatrix node_form(const ComplexMatrix& shapes, Term term) {
 }
 }  // namespace
 
+ShapeResult classify_shape(const ComplexVector& shape, const std::vector<std::pair<Index, Real>>& nodes) {
+  ShapeResult out;
+  const auto n = static_cast<Real>(nodes.size());
+  if (nodes.empty()) return out;
+  Real mean_x = 0;
+  for (const auto& [node, x] : nodes) mean_x += x / n;
+  Real sxx = 0;
+  for (const auto& [node, x] : nodes) sxx += (x - mean_x) * (x - mean_x);
+  Real residual = 0, total = 0, translation = 0, tilt = 0;
+  for (const Dof d : {Dof::v, Dof::w}) {
+    Complex a = 0, b = 0;
+    for (const auto& [node, x] : nodes) {
+      const Complex y = shape(global_dof(node, d));
+      a += y / n;
+      if (sxx > 0) b += y * (x - mean_x) / sxx;
+    }
+    for (const auto& [node, x] : nodes) {
+      const Complex y = shape(global_dof(node, d));
+      residual += std::norm(y - a - b * (x - mean_x));
+      total += std::norm(y);
+    }
+    translation += n * std::norm(a);
+    tilt += std::norm(b) * sxx;
+  }
+  if (!(total > 0)) return out;
+  out.bending = std::clamp(residual / total, 0.0, 1.0);
+  out.kind = out.bending >= 0.1       ? ModeShape::bending
+             : translation >= tilt    ? ModeShape::cylindrical
+                                      : ModeShape::conical;
+  return out;
+}
+
 ComplexMatrix whirl_form(const ComplexMatrix& shapes) {
   return node_form(shapes, [](Complex Va, Complex Wa, Complex Vb, Complex Wb) {
     return Complex(0, 0.5) * (std::conj(Va) * Wb - std::conj(Wa) * Vb);

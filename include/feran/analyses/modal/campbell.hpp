@@ -37,7 +37,10 @@ struct CampbellOptions {
 /// One mode followed over the sweep. Vectors are indexed like CampbellResult::speeds;
 /// NaN where the mode could not be followed.
 struct TrackedMode {
-  std::string label;       ///< "backward 1", "forward 1", "torsional 1", …
+  /// "forward bending 1", "backward cylindrical 1", "forward conical 1", "torsional 1",
+  /// …: its whirl at most speeds and its shape at the first speed, numbered by
+  /// frequency at the first speed within them.
+  std::string label;
   /// The sense it whirls in at most speeds: forward, backward or mixed by its
   /// orbits, a nearly straight-line orbit counting by the sign of its directivity;
   /// planar only when it whirls at no speed of the sweep; none for axial and
@@ -49,6 +52,11 @@ struct TrackedMode {
   std::vector<Real> log_decrement;
   std::vector<Real> directivity;
   std::vector<Whirl> whirl_at;
+  std::vector<Real> bending;         ///< Mode::bending per speed
+  std::vector<ModeShape> shape_at;   ///< Mode::shape_kind per speed
+  /// The shape it has at the first speed it was found at (none for axial and
+  /// torsional modes).
+  ModeShape shape_kind = ModeShape::none;
   std::vector<Real> correlation;  ///< MAC with the same mode at the previous speed
 };
 
@@ -86,6 +94,11 @@ struct CampbellResult {
 /// How the threshold's unstable motion is named: the tracked mode's label, or
 /// "divergence (a real eigenvalue)".
 std::string threshold_label(const CampbellResult& result, const StabilityThreshold& threshold);
+
+/// Mode @p mode's name by its whirl alone, as the literature numbers whirl modes
+/// ("forward 2": the second forward mode by frequency at the first speed), whatever
+/// its shape; the type for axial and torsional modes ("torsional 1").
+std::string whirl_name(const CampbellResult& result, Index mode);
 
 /// Runs the sweep. Modes are matched from speed to speed by the complex MAC of their
 /// shapes with a predicted eigenvalue (linear extrapolation) as second criterion, by

@@ -28,8 +28,14 @@ enum class Whirl {
 /// Dominant motion of a mode, by kinetic-energy fraction.
 enum class ModeType { lateral, axial, torsional, coupled };
 
+/// How the rotor deforms in a lateral mode: it moves nearly as a rigid body on its
+/// supports, translating (cylindrical: a bearing or oil-film whirl mode) or tilting
+/// (conical), or it bends. See Mode::bending.
+enum class ModeShape { none, cylindrical, conical, bending };
+
 const char* to_string(Whirl w);
 const char* to_string(ModeType t);
+const char* to_string(ModeShape s);
 
 /// One eigenpair, represented by the eigenvalue with Im p ≥ 0.
 struct Mode {
@@ -44,6 +50,13 @@ struct Mode {
   /// components of each node's orbit). NaN for axial and torsional modes.
   Real directivity = 0;
   ModeType type = ModeType::lateral;
+  /// The fraction of the rotor's lateral motion (v, w at its rotating nodes, in the
+  /// least-squares sense) that no straight line along it holds: 0 for a rotor moving
+  /// as a rigid body, towards 1 as it bends. NaN without lateral motion.
+  Real bending = std::numeric_limits<Real>::quiet_NaN();
+  /// bending < 0.1: cylindrical or conical (whichever of translation and tilt holds
+  /// more of the straight line's motion); else bending. None for axial, torsional.
+  ModeShape shape_kind = ModeShape::none;
   bool rigid_body = false;   ///< no elastic deformation (strain energy ≈ 0)
   bool oscillatory = true;   ///< Im p > 0; false for real (overdamped or rigid) eigenvalues
   /// Shape over all unconstrained DOFs (global_dof order), scaled so that its largest
@@ -154,6 +167,7 @@ class ModalSolver {
   ModalOptions options_;
   std::shared_ptr<const Assembler> assembler_;
   std::vector<Force> supports_;  // the model's supports (solve() refuses speed 0 with them)
+  std::vector<std::pair<Index, Real>> rotor_nodes_;  // the rotating nodes and their x, for Mode::bending
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
   std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it
   // Per reduced DOF: the reduced DOF it pairs with in complex coordinates (v with w,
