@@ -8,6 +8,9 @@
   const unit = data.speed_unit === "Hz" ? "Hz" : "rpm";
   const fromHz = (hz) => (hz === null ? null : unit === "Hz" ? hz : 60 * hz);
   const fromRpm = (rpm) => (rpm === null ? null : unit === "Hz" ? rpm / 60 : rpm);
+  // Frequencies of the Campbell diagram in the speed's unit: Hz, or cycles per minute
+  // beside rpm, so that the excitation line 1× speed is the diagonal.
+  const freqUnit = unit === "Hz" ? "Hz" : "cpm";
   const speedTitle = `speed [${unit}]`;
   const config = { responsive: true, displaylogo: false, toImageButtonOptions: { format: "png", scale: 2 } };
   // A resonance peak's verdict: an unstable rotor fails there whatever its margin.
@@ -158,23 +161,23 @@
     const dampingScale = [[0, "#b2182b"], [0.25, "#ef8a62"], [0.5, "#f7f7f7"], [0.75, "#67a9cf"], [1, "#2166ac"]];
     const dmax = Math.max(0.05, ...allDelta.map(Math.abs));
     const traces = lateral.map((m, i) => ({
-      name: m.label, x: sp, y: m.frequency_hz, mode: "lines+markers", line: { color: "rgba(90,90,90,0.5)", width: 1 },
+      name: m.label, x: sp, y: m.frequency_hz.map(fromHz), mode: "lines+markers", line: { color: "rgba(90,90,90,0.5)", width: 1 },
       marker: { size: 6, color: m.log_decrement, cmin: -dmax, cmax: dmax, colorscale: dampingScale,
                 symbol: m.whirl_at.map((w) => (w === "forward" ? "triangle-up" : w === "backward" ? "triangle-down" : "circle")),
                 colorbar: i === 0 ? { title: { text: "log. decr." } } : undefined, showscale: i === 0 },
-      customdata: m.log_decrement, hovertemplate: `${m.label}<br>%{x:.4g} ${unit}<br>%{y:.4g} Hz<br>δ %{customdata:.4f}<extra></extra>` }));
-    const top = Math.max(...lateral.flatMap((m) => m.frequency_hz.filter((f) => f !== null)), 1);
+      customdata: m.log_decrement, hovertemplate: `${m.label}<br>%{x:.4g} ${unit}<br>%{y:.4g} ${freqUnit}<br>δ %{customdata:.4f}<extra></extra>` }));
+    const top = Math.max(...lateral.flatMap((m) => m.frequency_hz.filter((f) => f !== null).map(fromHz)), 1);
     for (const k of campbell.orders)
-      traces.push({ name: `${k}× speed`, x: [sp[0], sp[sp.length - 1]], y: [k * campbell.speeds_hz[0], k * campbell.speeds_hz[campbell.speeds_hz.length - 1]],
+      traces.push({ name: `${k}× speed`, x: [sp[0], sp[sp.length - 1]], y: [k * sp[0], k * sp[sp.length - 1]],
                     mode: "lines", line: { dash: "dash", color: "#444" }, hoverinfo: "skip" });
     const crit = campbell.critical_speeds;
-    traces.push({ name: "critical speeds", x: crit.map((c) => fromHz(c.speed_hz)), y: crit.map((c) => c.frequency_hz), mode: "markers",
+    traces.push({ name: "critical speeds", x: crit.map((c) => fromHz(c.speed_hz)), y: crit.map((c) => fromHz(c.frequency_hz)), mode: "markers",
                   marker: { symbol: "diamond", size: 11, color: "#000", line: { color: "#fff", width: 1 } },
                   text: crit.map((c) => `${c.mode}, order ${c.order}, ${c.whirl}`), hovertemplate: `%{text}<br>%{x:.5g} ${unit}<extra>critical speed</extra>` });
     const shapes = operatingShape();
     if (campbell.stability_threshold)
       shapes.push({ type: "line", x0: fromHz(campbell.stability_threshold.speed_hz), x1: fromHz(campbell.stability_threshold.speed_hz), y0: 0, y1: 1, yref: "paper", line: { color: "#d62728", width: 2 } });
-    figure(s, traces, { title: { text: "Campbell diagram" }, xaxis: axis(speedTitle), yaxis: axis("frequency [Hz]", { range: [0, 1.05 * top] }), shapes, height: 520 });
+    figure(s, traces, { title: { text: "Campbell diagram" }, xaxis: axis(speedTitle), yaxis: axis(`frequency [${freqUnit}]`, { range: [0, 1.05 * top] }), shapes, height: 520 });
     table(s, ["critical speed", `speed [${unit}]`, "order", "whirl"], crit.map((c) => [c.mode, fmt(fromHz(c.speed_hz), 6), c.order, c.whirl]));
     crit.forEach((c) => numbers.push([`critical speed (${c.mode}, ${c.order}×)`, fromHz(c.speed_hz), unit, "Campbell"]));
     numbers.push(["stability threshold", campbell.stability_threshold ? fromHz(campbell.stability_threshold.speed_hz) : null, unit, "Campbell"]);
@@ -232,8 +235,8 @@
         flat.push({ name: `${m.index}: w`, x, y: m.shape.w.im.map((y, i) => (rotating[i] ? y : null)), mode: "lines", line: { color: c, dash: "dot" } });
       });
       figure(sub, flat, { title: { text: `mode shapes at ${fmt(fromHz(r.speed_hz), 5)} ${unit}` }, xaxis: axis("x [m]"), yaxis: axis("Re v, Im w [–]"), height: 420 });
-      table(sub, ["mode", "frequency [Hz]", "damping ratio", "log. decr.", "whirl"],
-            r.modes.filter((m) => m.type === "lateral").map((m) => [m.index, fmt(m.frequency_hz, 6), fmt(m.damping_ratio), fmt(m.log_decrement), m.whirl]));
+      table(sub, ["mode", "frequency [Hz]", "damping ratio", "log. decr.", "whirl", "shape"],
+            r.modes.filter((m) => m.type === "lateral").map((m) => [m.index, fmt(m.frequency_hz, 6), fmt(m.damping_ratio), fmt(m.log_decrement), m.whirl, m.shape]));
     }
   }
 
