@@ -10,7 +10,9 @@ api684 (where the model gives an operating range) and report. Each cell either r
 with every number it writes finite (or null where the output format allows it), or is
 refused with one of the documented reasons below. Doors: the command line's JSON and
 CSV, Python (to_dict() equals the command line's JSON to 1e-12), and the report's
-embedded data (its sections equal the command line's JSON of the same analysis).
+embedded data (its sections equal the command line's JSON of the same analysis), and
+every study quantity kind on every family (test_study_quantities: the command line's
+evaluations.jsonl equals Python's Study.run() to the last bit).
 
 The lists FAMILIES and ANALYSES are built from the tree and from `feran --help`, so a
 new example, support family or command joins the matrix without editing this test;
@@ -180,3 +182,102 @@ def test_cell(tmp_path, family, analysis):
         result = getattr(feran, analysis)(feran.read_model(path), **keywords)
     if run.returncode == 0:
         same(json.loads(result.to_json()), cli)
+
+
+# The study door: every quantity kind of a design study on every family, one design
+# each (its analyses on coarse grids: 9 speeds, 20 ms of run-up). A kind either gives a
+# finite number, the same through the command line's evaluations.jsonl and Python's
+# feran.read_study(...).run() to the last bit, or the design is refused for that
+# quantity with one of the reasons below (the study records the message, and the
+# quantity leaves the cell's study). The kinds are read from the study reader's own
+# list, so a new kind joins the matrix without editing this test; 'function' takes a
+# Python function and is tested in test_study.py.
+STUDY_REFUSALS = REFUSALS + [
+    r"no \w+ (forward |backward )?critical speed",   # none in the analysed range
+    r"no \w+ resonance peak",                         # a response without a resolved peak
+    r"no \w+ (forward |backward )?lateral mode",
+    r"the response has no probe|no such probe",
+    r"unstable without|already unstable|log decrement .* negative",  # level I: unstable without Q
+    r"no Q₀: .* is stable up to",                     # level I: no cross-coupling destabilises it
+    r"no spring|has no spring",
+    r"the model has no unbalance|no \[\[unbalances\]\]",
+    r"failed",                                        # an analysis that did not converge, named
+]
+
+
+def quantity_kinds():
+    """The kinds the study reader lists for a kind it does not know."""
+    study = (f'model = "{JOURNAL}"\n[[variables]]\nname = "v"\npath = "materials[0].rho"\nlower = 1\nupper = 2\n'
+             '[[quantities]]\nname = "q"\nkind = "?"\n')
+    import tempfile
+    with tempfile.TemporaryDirectory() as d:
+        with open(os.path.join(d, "s.toml"), "w") as f:
+            f.write(study)
+        text = subprocess.run([FERAN, "study", os.path.join(d, "s.toml"), "-q"], capture_output=True, text=True).stderr
+    kinds = re.findall(r"'(\w+)'", text.split("the kinds are", 1)[1])
+    assert "critical_speed" in kinds, text
+    return [k for k in kinds if k != "function"]
+
+
+KINDS = quantity_kinds()
+
+
+def quantity_toml(kind, low, high, rho):
+    keys = {"separation_margin": f'operating = ["{low}", "{high}"]', "required_margin": f'operating = ["{low}", "{high}"]',
+            "margin_surplus": f'operating = ["{low}", "{high}"]', "min_margin_surplus": f'operating = ["{low}", "{high}"]',
+            "level1_q_zero": f'speed = "{high}"', "undamped_critical_speed": f'operating = ["{low}", "{high}"]', "parameter": f'path = "{rho}"'}
+    return f'[[quantities]]\nname = "{kind}"\nkind = "{kind}"\n{keys.get(kind, "")}\n'
+
+
+@pytest.mark.parametrize("family", FAMILIES, ids=[f[0] for f in FAMILIES])
+def test_study_quantities(tmp_path, family):
+    path = model_path(tmp_path, family)
+    model = feran.read_model(path)
+    densities = [p["path"] for p in model.params() if re.fullmatch(r"materials\[[^\]]+\]\.rho", p["path"])]
+    if not densities:
+        pytest.skip("no material: nothing for the design variable to set")
+    rho = densities[0]
+    api = model.to_toml()
+    m = re.search(r'min_speed = "([^"]+)"[\s\S]*?max_speed = "([^"]+)"', api.split("[api684]", 1)[1]) \
+        if "[api684]" in api else None
+    low, high = (m.group(1), m.group(2)) if m else ("1000 rpm", "2000 rpm")
+    kinds, refused_kinds = list(KINDS), {}
+    while kinds:
+        study = (f'model = "{path}"\n[settings]\n"campbell.points" = 9\n"response.points" = 9\n'
+                 f'[[variables]]\nname = "rho"\npath = "{rho}"\nlower = "7800 kg/m^3"\nupper = "7900 kg/m^3"\n'
+                 + "".join(quantity_toml(k, low, high, rho) for k in kinds) + '[explore]\nmethod = "grid"\nlevels = 1\n')
+        if "runup_peak" in kinds or "runup_spring_force" in kinds:
+            study = study.replace('"response.points" = 9\n', '"response.points" = 9\n"runup.duration" = "0.02 s"\n')
+        file = tmp_path / "s.toml"
+        file.write_text(study)
+        out = tmp_path / "out"
+        run = subprocess.run([FERAN, "study", str(file), "-o", str(out), "-q", "--threads", "1"],
+                             capture_output=True, text=True)
+        if run.returncode != 0 and "runup.duration" in run.stderr:
+            # A model without a run-up profile: the run-up quantities are refused.
+            for k in ("runup_peak", "runup_spring_force"):
+                if k in kinds:
+                    kinds.remove(k)
+                    refused_kinds[k] = run.stderr
+            continue
+        assert run.returncode == 0, run.stderr
+        with open(out / "evaluations.jsonl") as f:
+            (e,) = [json.loads(line) for line in f]
+        if e["evaluated"]:
+            break
+        failed = re.match(r"quantity '(\w+)': (.*)", e["message"], re.S)
+        assert failed, e["message"]
+        kind, why = failed.group(1), failed.group(2)
+        assert any(re.search(r, why) for r in STUDY_REFUSALS), f"{kind}: {why}"
+        kinds.remove(kind)
+        refused_kinds[kind] = why
+        import shutil
+        shutil.rmtree(out)
+    if not kinds:
+        return
+    finite_numbers(e["quantities"])
+    assert set(e["quantities"]) == set(kinds)
+    # The Python door: the same study, the same numbers to the last bit.
+    result = feran.read_study(str(file)).run(threads=1)
+    assert [float(q) for q in result.quantities[0]] == [e["quantities"][k] for k in kinds]
+    assert result.clipped == [e["clipped"]]

@@ -11,6 +11,7 @@
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/harmonic/api684.hpp>
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/error.hpp>
 #include <feran/spec/parameters.hpp>
 
@@ -313,8 +314,21 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
       return q.kind == QuantityKind::required_margin ? required(peak) : surplus(peak);
     }
     case QuantityKind::undamped_critical_speed: {
+      // As API 684's: journal and rolling bearings by their direct stiffness about
+      // the equilibrium at each critical speed, the search starting from the
+      // operating range's top (or the Campbell range's end) on an oil film.
       SolverInfo info;
-      const auto criticals = undamped_critical_speeds(a.model(), q.n, true, &info);
+      const Model lin = has_supports(a.model()) ? linearised(a.model()) : Model();
+      const Model* rotor = &a.model();
+      Model direct;
+      if (has_supports(a.model())) {
+        direct = with_direct_bearing_stiffness(lin, bearing_elements(lin));
+        rotor = &direct;
+      }
+      const Real start = !needs_speed(a.model()) ? 0.0
+                         : q.operating_high > 0  ? q.operating_high
+                                                 : a.campbell().speeds.back();
+      const auto criticals = undamped_critical_speeds(*rotor, q.n, true, &info, start);
       check_solver(info, "undamped critical speeds");
       if (static_cast<int>(criticals.size()) < q.n)
         throw Error(fmt::format("the rotor has {} forward undamped critical speeds, not {}", criticals.size(), q.n));
