@@ -276,6 +276,12 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
     s.stop = options.stop;
     result.stability = run_stability_sweep(model, s);
   }
+  // Stopped on request where no sweep was running to say so (before the first
+  // unbalance case, between cases): the result is incomplete all the same.
+  if (options.stop.requested() && result.info.status != SolverStatus::interrupted)
+    result.info.fail(SolverStatus::interrupted,
+                     fmt::format("stopped on request after {} unbalance case{}", result.cases.size(),
+                                 result.cases.size() == 1 ? "" : "s"));
   return result;
 }
 
