@@ -74,8 +74,8 @@ Runner add_campbell_command(CLI::App& app) {
                               speed_range_warnings(file.model, options.speeds.front(), options.speeds.back(),
                                                    frequency_span_hz(frequencies)),
                               args->out.speed_unit};
-    outputs.set_json([&] { return campbell_json(result, options, source); });
-    outputs.set_csv([&] { return campbell_csv(result); });
+    outputs.set_json([&] { return campbell_json(result, options, file.model, source); });
+    outputs.set_csv([&] { return campbell_csv(result, file.model); });
     outputs.files.commit();
     if (!args->out.quiet) std::fputs(campbell_report(result, options, file.model, source).c_str(), stdout);
     return finish(result.info);

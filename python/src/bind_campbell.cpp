@@ -71,6 +71,13 @@ void bind_campbell(py::module_& m) {
       .def_property_readonly("speeds_hz", [](const PyCampbellResult& r) {
              return array_1d(r.result.speeds.size(), [&](std::size_t i) { return rad_to_hz(r.result.speeds[i]); });
            })
+      .def_property_readonly("bearings", [](const PyCampbellResult& r) { return bearing_labels(r.result.operating, r.context.file->model); },
+                             "the bearings (journal and rolling) by their names")
+      .def_property_readonly("bearing_data", [](const PyCampbellResult& r) { return bearing_data(r.result.operating); },
+                             "per bearing (as bearings), its operating state at the equilibrium at each speed: a dict\n"
+              "of numpy arrays over speeds, named with their units as in static's bearing_data\n"
+              "(eccentricity_ratio, attitude_angle_deg, min_film_thickness_m, sommerfeld_number,\n"
+              "friction_torque_nm, power_loss_w, ...; max_element_load_n, ... for rolling bearings)")
       .def_property_readonly("labels", [](const PyCampbellResult& r) {
              return string_list(r.result.modes.size(), [&](std::size_t i) { return r.result.modes[i].label; });
            }, "per mode: 'forward bending 1', 'backward cylindrical 1', 'axial 1', …")
@@ -151,9 +158,9 @@ void bind_campbell(py::module_& m) {
       .def_property_readonly("message", [](const PyCampbellResult& r) { return r.result.info.message; })
       .def_property_readonly("n_solves", [](const PyCampbellResult& r) { return r.result.n_solves; })
       .def_property_readonly("warnings", [](const PyCampbellResult& r) { return r.context.source.warnings; })
-      .def("to_json", [](const PyCampbellResult& r) { return campbell_json(r.result, r.options, r.context.source); },
+      .def("to_json", [](const PyCampbellResult& r) { return campbell_json(r.result, r.options, r.context.file->model, r.context.source); },
            "The JSON text that feran campbell --json writes (docs/output-format.md)")
-      .def("to_csv", [](const PyCampbellResult& r) { return campbell_csv(r.result); },
+      .def("to_csv", [](const PyCampbellResult& r) { return campbell_csv(r.result, r.context.file->model); },
            "The CSV text that feran campbell --csv writes")
       .def("report", [](const PyCampbellResult& r) {
              return campbell_report(r.result, r.options, r.context.file->model, r.context.source);

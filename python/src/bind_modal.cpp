@@ -47,6 +47,11 @@ void bind_modal(py::module_& m) {
       .def_property_readonly("complete", [](const PyModalResult& r) { return r.result.info.converged(); },
                              "whether every mode asked for was computed")
       .def_property_readonly("message", [](const PyModalResult& r) { return r.result.info.message; })
+      .def_property_readonly("bearings", [](const PyModalResult& r) { return bearing_labels(r.result.operating, r.file->model); },
+                             "the bearings (journal and rolling) by their names")
+      .def_property_readonly("bearing_data", [](const PyModalResult& r) { return bearing_data(r.result.operating, true); },
+                             "per bearing (as bearings), its operating state at the equilibrium at this speed: a dict of\n"
+                             "numbers named with their units, as static's bearing_data")
       .def_property_readonly(
           "frequency_iterations", [](const PyModalResult& r) { return r.result.frequency_iterations; },
           "the most eigen solves one mode needed to settle on its own frequency (0 unless a coefficient "

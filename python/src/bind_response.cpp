@@ -118,6 +118,11 @@ void bind_response(py::module_& m) {
       .def_property_readonly("bearings", [](const PyResponseResult& r) {
              return string_list(r.result.supports.size(), [&](std::size_t i) { return r.model().forces[static_cast<std::size_t>(r.result.supports[i].force)].label(); });
            }, "journal bearings ([[journal_bearings]] names)")
+      .def_property_readonly("bearing_data", [](const PyResponseResult& r) { return bearing_data(r.result.operating); },
+                             "per bearing (as bearings), its operating state at the equilibrium at each point's speed: a dict\n"
+              "of numpy arrays over the points, named with their units as in static's bearing_data\n"
+              "(eccentricity_ratio, attitude_angle_deg, min_film_thickness_m, sommerfeld_number,\n"
+              "friction_torque_nm, power_loss_w, ...; max_element_load_n, ... for rolling bearings)")
       .def_property_readonly("bearing_force", [](const PyResponseResult& r) {
              return amplitudes(r, r.result.supports, [](const SupportForceResponse& s) -> const std::vector<NodeAmplitudes>& { return s.amplitude; });
            }, "complex dynamic force each journal bearing transmits [N], shape (bearings, points, 6)")

@@ -53,6 +53,28 @@ void bind_runup(py::module_& m) {
       .def_property_readonly("speed", [](const PyRunupResult& r) {
              return array_1d(r.samples(), [&](std::size_t k) { return r.result.samples[k].speed; });
            }, "rotor speed at each sample [rad/s]")
+      .def_property_readonly("bearings", [](const PyRunupResult& r) { return bearing_labels(r.result.operating, r.model()); },
+                             "the bearings (journal and rolling) by their names")
+      .def_property_readonly("bearing_data", [](const PyRunupResult& r) { return bearing_data(r.result.operating); },
+                             "per bearing (as bearings), its operating state in the motion at each sample: a dict of numpy\n"
+                             "arrays over the samples, named with their units as in static's bearing_data")
+      .def_property_readonly("bearing_clearance_ratio", [](const PyRunupResult& r) {
+             py::list out;
+             for (const ClearanceUse& u : r.result.clearance_use) {
+               py::dict d;
+               d["bearing"] = r.model().forces[static_cast<std::size_t>(u.force)].label();
+               d["clearance_m"] = u.clearance;
+               d["largest"] = u.largest;
+               d["time"] = u.time;
+               d["speed"] = u.speed;
+               d["speed_hz"] = rad_to_hz(u.speed);
+               d["speed_rpm"] = 60.0 * rad_to_hz(u.speed);
+               out.append(d);
+             }
+             return out;
+           }, "per bearing with a clearance: the largest excursion of its journal relative to its housing over\n"
+              "the run (every step), as a fraction of the clearance (largest), with when (time [s]) and at\n"
+              "which speed [rad/s]")
       .def_property_readonly("probes", [](const PyRunupResult& r) {
              return string_list(r.options.probes.size(), [&](std::size_t i) { return node_name(r.model(), r.options.probes[i]); });
            })

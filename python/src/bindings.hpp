@@ -3,6 +3,7 @@
 // add each area to the module.
 
 #include <atomic>
+#include <limits>
 #include <functional>
 #include <cstddef>
 #include <exception>
@@ -15,6 +16,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <feran/analyses/common/operating_state.hpp>
 #include <feran/core/stop.hpp>
 #include <feran/io/result_writer.hpp>
 
@@ -142,6 +144,29 @@ py::list string_list(std::size_t n, F&& f) {
   py::list out;
   for (std::size_t i = 0; i < n; ++i) out.append(py::str(std::string(f(i))));
   return out;
+}
+
+/// Per support of @p series (Force::supports(), as the result's bearings), a dict of
+/// its operating quantities by their names, which carry their units: a numpy array over
+/// the result's points, or with @p one_point a number.
+inline py::list bearing_data(const std::vector<OperatingSeries>& series, bool one_point = false) {
+  py::list out;
+  for (const OperatingSeries& s : series) {
+    py::dict d;
+    for (std::size_t q = 0; q < s.quantities.size(); ++q) {
+      if (one_point)
+        d[py::str(s.quantities[q])] = s.values.empty() ? std::numeric_limits<double>::quiet_NaN() : s.values.front()[q];
+      else
+        d[py::str(s.quantities[q])] = array_1d(s.values.size(), [&](std::size_t k) { return s.values[k][q]; });
+    }
+    out.append(d);
+  }
+  return out;
+}
+
+/// The bearings of @p series by their labels.
+inline py::list bearing_labels(const std::vector<OperatingSeries>& series, const Model& model) {
+  return string_list(series.size(), [&](std::size_t i) { return model.forces[static_cast<std::size_t>(series[i].force)].label(); });
 }
 
 }  // namespace feran::python

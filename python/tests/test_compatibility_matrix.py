@@ -26,6 +26,7 @@ import re
 import subprocess
 import warnings
 
+import numpy as np
 import pytest
 
 import feran
@@ -182,6 +183,24 @@ def test_cell(tmp_path, family, analysis):
         result = getattr(feran, analysis)(feran.read_model(path), **keywords)
     if run.returncode == 0:
         same(json.loads(result.to_json()), cli)
+        same_bearing_data(result, cli)
+
+
+def same_bearing_data(result, cli):
+    """Python's bearing_data is the JSON's supports[].operating, value for value (the JSON
+    writes NaN and infinity as null)."""
+    data = getattr(result, "bearing_data", None)
+    if data is None:
+        return
+    supports = [s for s in cli.get("supports", []) if "operating" in s]
+    assert len(data) == len(supports)
+    for got, support in zip(data, supports):
+        assert set(got) == set(support["operating"]), support["label"]
+        for name, values in got.items():
+            got_values = np.atleast_1d(np.asarray(values, dtype=float))
+            got_values = np.where(np.isfinite(got_values), got_values, np.nan)
+            expect = np.atleast_1d(np.array(support["operating"][name], dtype=float))
+            assert np.array_equal(got_values, expect, equal_nan=True), (support["label"], name)
 
 
 # The study door: every quantity kind of a design study on every family, one design

@@ -281,7 +281,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
   CampbellOptions co = campbell_settings(spec.campbell, campbell);
   co.stop = options.stop;
   const CampbellResult cr = run_campbell(model, co, file.assembler);
-  data["campbell"] = json::parse(campbell_json(cr, co, source));
+  data["campbell"] = json::parse(campbell_json(cr, co, model, source));
 
   // Mode shapes at the chosen speeds.
   std::vector<Real> speeds = options.mode_speeds;

@@ -32,6 +32,11 @@ std::string speed_short(Real speed, const std::string& unit) {
   return unit == "rpm" ? fmt::format("{:.0f} rpm", speed_value(speed, unit)) : fmt::format("{:.4g} Hz", rad_to_hz(speed));
 }
 
+// The same without the unit (under a speed_header()).
+std::string speed_number(Real speed, const std::string& unit) {
+  return unit == "rpm" ? fmt::format("{:.0f}", speed_value(speed, unit)) : fmt::format("{:.4g}", rad_to_hz(speed));
+}
+
 // A right-aligned number; "-" when it does not exist. Values that would print as
 // "-0.000" print as "0.000".
 std::string cell(Real x, const char* format_spec, int width, int decimals) {
@@ -42,11 +47,141 @@ std::string cell(Real x, const char* format_spec, int width, int decimals) {
 
 }  // namespace
 
+namespace {
+
+// Names as the model gives them, made printable (core/text.hpp).
+std::string node_name(const Model& model, Index node) { return printable(model.node_label(node)); }
+
+// Also for the elements of linearised(model) that stand for its journal and rolling
+// bearings (numbered after its own).
+std::string element_name(const Model& model, Index element) {
+  return printable(linearised_element_name(model, element));
+}
+
+// A steady-state result's stability (modal/stability.hpp), in a few lines: nothing
+// when stable everywhere; else where it is unstable and what that means.
+std::string stability_text(const HarmonicResult& result, const std::string& unit) {
+  const Index first = first_unstable_point(result);
+  std::string out;
+  Index unknown = 0;
+  for (const StabilityPoint& p : result.stability) unknown += p.known ? 0 : 1;
+  if (first >= 0) {
+    const StabilityPoint& p = result.stability[static_cast<std::size_t>(first)];
+    out += fmt::format("WARNING: the rotor is UNSTABLE at {} of {} points, from {}: {}.\n"
+                       "         There the response is no steady state the rotor reaches: any disturbance grows.\n\n",
+                       unstable_points(result), result.stability.size(), speed_text(p.speed, unit),
+                       p.divergence ? fmt::format("divergence, a real eigenvalue {:.4g} 1/s", p.growth_rate)
+                                    : fmt::format("a mode at {:.4g} Hz grows at {:.4g} 1/s", p.frequency_hz, p.growth_rate));
+  }
+  if (unknown > 0)
+    out += fmt::format("note: the stability is unknown at {} of {} points\n\n", unknown, result.stability.size());
+  return out;
+}
+
+std::string force_name(const Model& model, Index force);
+
+// A table of the supports' operating state (Force::operating_data()) with units in the
+// headers: a journal bearing's eccentricity ratio, attitude angle, minimum film
+// thickness and where it is, Sommerfeld number, friction torque and power loss, peak
+// film pressure; a rolling bearing's most loaded element. One row per (label, names,
+// values); only the columns some row has.
+struct OperatingRow {
+  std::string label;
+  const std::vector<std::string>* names;
+  const std::vector<Real>* values;
+};
+
+std::string operating_block(const std::string& title, const std::string& first, const std::vector<OperatingRow>& rows) {
+  struct Column {
+    const char* name;
+    const char* head;
+    Real scale;
+    const char* format;
+  };
+  static const Column columns[] = {
+      {"eccentricity_ratio", "eps [-]", 1, ".4f"},        {"attitude_angle_deg", "attitude [deg]", 1, ".2f"},
+      {"min_film_thickness_m", "h_min [um]", 1e6, ".3f"}, {"min_film_angle_deg", "at [deg]", 1, ".1f"},
+      {"specific_load_pa", "W/(LD) [MPa]", 1e-6, ".4g"},  {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},
+      {"friction_torque_nm", "torque [N m]", 1, ".4g"},
+      {"power_loss_w", "loss [W]", 1, ".4g"},             {"peak_pressure_pa", "p_max [MPa]", 1e-6, ".4g"},
+      {"max_element_load_n", "Q_max [N]", 1, ".4g"},      {"loaded_elements", "loaded", 1, ".0f"},
+      {"max_contact_stress_pa", "p_Hertz [MPa]", 1e-6, ".4g"}};
+  std::vector<const Column*> used;
+  for (const Column& c : columns)
+    for (const OperatingRow& r : rows)
+      if (std::find(r.names->begin(), r.names->end(), c.name) != r.names->end()) {
+        used.push_back(&c);
+        break;
+      }
+  if (used.empty()) return {};
+  std::string out = fmt::format("\n{}\n{:>30}", title, first);
+  for (const Column* c : used) out += fmt::format(" {:>14}", c->head);
+  out += '\n';
+  for (const OperatingRow& r : rows) {
+    out += fmt::format("{:>30}", r.label);
+    for (const Column* c : used) {
+      std::string text = "-";
+      const auto it = std::find(r.names->begin(), r.names->end(), c->name);
+      if (it != r.names->end()) {
+        const Real v = (*r.values)[static_cast<std::size_t>(it - r.names->begin())];
+        if (std::isfinite(v)) text = fmt::format(fmt::runtime("{:" + std::string(c->format) + "}"), v * c->scale);
+      }
+      out += fmt::format(" {:>14}", text);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+// The supports' state at the equilibrium of a static analysis: one row per support.
+std::string operating_table(const StaticResult& result, const Model& model) {
+  std::vector<std::vector<std::string>> names(result.support_data.size());
+  std::vector<std::vector<Real>> values(result.support_data.size());
+  std::vector<OperatingRow> rows;
+  for (std::size_t i = 0; i < result.supports.size(); ++i) {
+    for (const OperatingValue& o : result.support_data[i]) names[i].push_back(o.name), values[i].push_back(o.value);
+    rows.push_back({force_name(model, result.supports[i].first), &names[i], &values[i]});
+  }
+  return operating_block("Bearing operating data at the equilibrium", "", rows);
+}
+
+// The supports' state over the points of an analysis: per support, rows at (at most)
+// 11 evenly spread points, as the analyses' other tables; @p label names point k.
+template <class Label>
+std::string operating_tables(const std::vector<OperatingSeries>& series, const Model& model, const std::string& what,
+                             const std::string& first, Label label) {
+  std::string out;
+  for (const OperatingSeries& s : series) {
+    const std::size_t n = s.values.size();
+    if (n == 0 || s.quantities.empty()) continue;
+    const std::size_t count = std::min<std::size_t>(n, 11);
+    std::vector<OperatingRow> rows;
+    for (std::size_t r = 0; r < count; ++r) {
+      const std::size_t k = count == 1 ? 0 : r * (n - 1) / (count - 1);
+      rows.push_back({label(k), &s.quantities, &s.values[k]});
+    }
+    out += operating_block(fmt::format("Operating data of {} {}", force_name(model, s.force), what), first, rows);
+  }
+  return out;
+}
+
+std::string force_name(const Model& model, Index force) {
+  const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
+  return label.empty() ? fmt::format("force {}", force + 1) : printable(label);
+}
+
+std::string point_text(const HarmonicResult& r, Index k, const std::string& unit) {
+  const auto i = static_cast<std::size_t>(k);
+  if (r.frequency_sweep) return fmt::format("{:.4g} Hz excitation", rad_to_hz(r.frequencies[i]));
+  return speed_text(r.speeds[i], unit);
+}
+
+}  // namespace
+
 std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source) {
   std::string out = source_line("modal", source);
   out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed, source.speed_unit), result.modes.size(),
                      to_string(result.info.method));
-  (void)model;
   out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {:<12} {}\n", "mode", "frequency [Hz]",
                      "damping [%]", "log. decr.", "whirl", "directivity", "type", "shape", "note");
   int index = 0;
@@ -57,13 +192,16 @@ std::string modal_report(const ModalResult& result, const Model& model, const Re
                        to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type),
                        m.shape_kind == ModeShape::none ? "-" : to_string(m.shape_kind), note);
   }
+  std::vector<OperatingRow> rows;
+  for (const OperatingSeries& s : result.operating)
+    if (!s.values.empty()) rows.push_back({force_name(model, s.force), &s.quantities, &s.values.front()});
+  out += operating_block("Bearing operating data at the equilibrium", "", rows);
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
 }
 
 std::string campbell_report(const CampbellResult& result, const CampbellOptions& options,
                             const Model& model, const ResultSource& source) {
-  (void)model;
   std::string out = source_line("campbell", source);
   const std::size_t n = result.speeds.size();
   if (n == 0) return out + "no speed could be solved\n";
@@ -120,99 +258,11 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
       out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {:.4g} Hz natural frequency\n",
                          speed_text(t.speed, source.speed_unit), label, t.frequency_hz);
   }
+  out += operating_tables(result.operating, model, "at the equilibrium", speed_header(source.speed_unit),
+                          [&](std::size_t k) { return speed_number(result.speeds[k], source.speed_unit); });
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
 }
-
-namespace {
-
-// Names as the model gives them, made printable (core/text.hpp).
-std::string node_name(const Model& model, Index node) { return printable(model.node_label(node)); }
-
-// Also for the elements of linearised(model) that stand for its journal and rolling
-// bearings (numbered after its own).
-std::string element_name(const Model& model, Index element) {
-  return printable(linearised_element_name(model, element));
-}
-
-// A steady-state result's stability (modal/stability.hpp), in a few lines: nothing
-// when stable everywhere; else where it is unstable and what that means.
-std::string stability_text(const HarmonicResult& result, const std::string& unit) {
-  const Index first = first_unstable_point(result);
-  std::string out;
-  Index unknown = 0;
-  for (const StabilityPoint& p : result.stability) unknown += p.known ? 0 : 1;
-  if (first >= 0) {
-    const StabilityPoint& p = result.stability[static_cast<std::size_t>(first)];
-    out += fmt::format("WARNING: the rotor is UNSTABLE at {} of {} points, from {}: {}.\n"
-                       "         There the response is no steady state the rotor reaches: any disturbance grows.\n\n",
-                       unstable_points(result), result.stability.size(), speed_text(p.speed, unit),
-                       p.divergence ? fmt::format("divergence, a real eigenvalue {:.4g} 1/s", p.growth_rate)
-                                    : fmt::format("a mode at {:.4g} Hz grows at {:.4g} 1/s", p.frequency_hz, p.growth_rate));
-  }
-  if (unknown > 0)
-    out += fmt::format("note: the stability is unknown at {} of {} points\n\n", unknown, result.stability.size());
-  return out;
-}
-
-std::string force_name(const Model& model, Index force);
-
-// The supports' operating state at the equilibrium (Force::operating_data()), one row
-// per support, with units in the headers: a journal bearing's eccentricity ratio,
-// attitude angle, minimum film thickness and where it is, Sommerfeld number, friction
-// torque and power loss, peak film pressure; a rolling bearing's most loaded element.
-std::string operating_table(const StaticResult& result, const Model& model) {
-  struct Column {
-    const char* name;
-    const char* head;
-    Real scale;
-    const char* format;
-  };
-  static const Column columns[] = {
-      {"eccentricity_ratio", "eps [-]", 1, ".4f"},        {"attitude_angle_deg", "attitude [deg]", 1, ".2f"},
-      {"min_film_thickness_m", "h_min [um]", 1e6, ".3f"}, {"min_film_angle_deg", "at [deg]", 1, ".1f"},
-      {"specific_load_pa", "W/(LD) [MPa]", 1e-6, ".4g"},  {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},
-      {"friction_torque_nm", "torque [N m]", 1, ".4g"},
-      {"power_loss_w", "loss [W]", 1, ".4g"},             {"peak_pressure_pa", "p_max [MPa]", 1e-6, ".4g"},
-      {"max_element_load_n", "Q_max [N]", 1, ".4g"},      {"loaded_elements", "loaded", 1, ".0f"},
-      {"max_contact_stress_pa", "p_Hertz [MPa]", 1e-6, ".4g"}};
-  std::vector<const Column*> used;
-  for (const Column& c : columns)
-    for (const auto& data : result.support_data)
-      if (std::any_of(data.begin(), data.end(), [&](const OperatingValue& o) { return o.name == c.name; })) {
-        used.push_back(&c);
-        break;
-      }
-  if (used.empty()) return {};
-  std::string out = fmt::format("\nBearing operating data at the equilibrium\n{:>30}", "");
-  for (const Column* c : used) out += fmt::format(" {:>14}", c->head);
-  out += '\n';
-  for (std::size_t i = 0; i < result.supports.size(); ++i) {
-    out += fmt::format("{:>30}", force_name(model, result.supports[i].first));
-    for (const Column* c : used) {
-      std::string text = "-";
-      for (const OperatingValue& o : result.support_data[i])
-        if (o.name == c->name && std::isfinite(o.value))
-          text = fmt::format(fmt::runtime("{:" + std::string(c->format) + "}"), o.value * c->scale);
-      out += fmt::format(" {:>14}", text);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-std::string force_name(const Model& model, Index force) {
-  const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
-  return label.empty() ? fmt::format("force {}", force + 1) : printable(label);
-}
-
-std::string point_text(const HarmonicResult& r, Index k, const std::string& unit) {
-  const auto i = static_cast<std::size_t>(k);
-  if (r.frequency_sweep) return fmt::format("{:.4g} Hz excitation", rad_to_hz(r.frequencies[i]));
-  return speed_text(r.speeds[i], unit);
-}
-
-}  // namespace
 
 std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
                             const ResultSource& source) {
@@ -280,6 +330,26 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
     out += fmt::format("  largest equivalent stress: {:.5g} MPa at x = {:.4g} mm ({} {}), at {}\n", 1e-6 * sum.stress.value,
                        1e3 * st.x, element_name(model, st.element), st.end == 0 ? "start" : "end",
                        point_text(result, sum.stress.point, source.speed_unit));
+  }
+  for (const SupportForceResponse& sr : result.supports) {
+    std::size_t at = sr.orbit_clearance_ratio.size();
+    for (std::size_t k = 0; k < sr.orbit_clearance_ratio.size(); ++k)
+      if (std::isfinite(sr.orbit_clearance_ratio[k]) && (at == sr.orbit_clearance_ratio.size() ||
+                                                          sr.orbit_clearance_ratio[k] > sr.orbit_clearance_ratio[at]))
+        at = k;
+    if (at < sr.orbit_clearance_ratio.size())
+      out += fmt::format("  largest journal orbit in {}: {:.4g} x its clearance ({:.4g} um) at {}\n",
+                         force_name(model, sr.force), sr.orbit_clearance_ratio[at], 1e6 * sr.orbit[at],
+                         point_text(result, static_cast<Index>(at), source.speed_unit));
+  }
+  if (result.frequency_sweep) {
+    std::vector<OperatingRow> rows;
+    for (const OperatingSeries& s : result.operating)
+      if (!s.values.empty()) rows.push_back({force_name(model, s.force), &s.quantities, &s.values.front()});
+    out += operating_block("Bearing operating data at the equilibrium", "", rows);
+  } else {
+    out += operating_tables(result.operating, model, "at the equilibrium", speed_header(source.speed_unit),
+                            [&](std::size_t k) { return speed_number(result.speeds[k], source.speed_unit); });
   }
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
@@ -365,6 +435,12 @@ std::string runup_report(const TransientResult& result, const TransientOptions& 
                        printable(model.node_label(options.probes[p])), 1e3 * e.peak, e.peak_time,
                        speed_short(e.peak_speed, source.speed_unit));
   }
+  for (const ClearanceUse& u : result.clearance_use)
+    out += fmt::format("  {:<21} largest journal excursion {:.4g} x its clearance at t = {:.4g} s, speed {}\n",
+                       force_name(model, u.force), u.largest, u.time, speed_short(u.speed, source.speed_unit));
+  if (!result.samples.empty())
+    out += operating_tables(result.operating, model, "in the motion", "time [s]",
+                            [&](std::size_t k) { return fmt::format("{:.4g}", result.samples[k].t); });
   if (!result.warning.empty()) out += "warning: " + printable(result.warning, true) + "\n";
   return out;
 }

@@ -9,6 +9,7 @@
 #include <feran/analyses/static/equilibrium.hpp>
 
 #include "csv_text.hpp"
+#include "operating_text.hpp"
 #include "json_text.hpp"
 
 #include <feran/core/error.hpp>
@@ -80,10 +81,7 @@ constexpr std::array<bool, dofs_per_node> lateral_dofs{false, true, true, false,
 // bearings (numbered after its own).
 std::string element_label(const Model& model, Index element) { return linearised_element_name(model, element); }
 
-std::string force_label(const Model& model, Index force) {
-  const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
-  return label.empty() ? fmt::format("force {}", force + 1) : label;
-}
+using detail::force_label;
 
 // The rotor's stability at each point of a steady-state result (modal/stability.hpp):
 // per point whether it is unstable (null: unknown), the largest growth rate where
@@ -186,6 +184,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
   j["springs"] = springs;
 
   json supports = json::array();
+  const json operating = detail::operating_json(result.operating, model);
   for (const SupportForceResponse& s : result.supports) {
     const std::vector<Index> at = model.forces[static_cast<std::size_t>(s.force)].nodes();
     json js = {{"label", force_label(model, s.force)},
@@ -199,6 +198,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
     for (const Real r : s.orbit_clearance_ratio)
       if (r > largest) largest = r;
     js["largest_orbit_clearance_ratio"] = largest >= 0 ? json(largest) : json(nullptr);
+    if (supports.size() < operating.size()) js["operating"] = operating[supports.size()]["operating"];
     supports.push_back(js);
   }
   j["supports"] = supports;
@@ -321,6 +321,7 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
     out << ',' << detail::csv_column(force_label(model, s.force), "_peak_lateral_force_n");
   for (const ReactionResponse& r : result.reactions)
     out << ',' << detail::csv_column(node_tag(r.node), "_support_peak_lateral_force_n");
+  out << detail::operating_csv_header(result.operating, model);
   const bool peaks = !result.shaft_stations.empty();
   const bool stability = !result.stability.empty();
   out << (peaks ? ",max_von_mises_pa,max_von_mises_x_m" : "") << (stability ? ",unstable,growth_rate_per_s\n" : "\n");
@@ -334,6 +335,7 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
     for (const SpringForceResponse& s : result.springs) out << ',' << csv_number(s.peak_lateral[k]);
     for (const SupportForceResponse& s : result.supports) out << ',' << csv_number(s.peak_lateral[k]);
     for (const ReactionResponse& r : result.reactions) out << ',' << csv_number(r.peak_lateral[k]);
+    out << detail::operating_csv_row(result.operating, k);
     if (peaks) {
       const StationPeak& vm = result.station_peaks[k].von_mises;
       out << ',' << csv_number(vm.value) << ','
@@ -483,6 +485,7 @@ std::string modal_json(const ModalResult& result, const Model& model, const Resu
     modes.push_back(jm);
   }
   j["modes"] = modes;
+  j["supports"] = detail::operating_json(result.operating, model, true);
   return detail::json_text(j, 2);
 }
 
@@ -501,7 +504,7 @@ std::string modal_csv(const ModalResult& result) {
   return out.str();
 }
 
-std::string campbell_json(const CampbellResult& result, const CampbellOptions& options,
+std::string campbell_json(const CampbellResult& result, const CampbellOptions& options, const Model& model,
                           const ResultSource& source) {
   json j = header("campbell", source);
   std::vector<Real> hz;
@@ -550,20 +553,21 @@ std::string campbell_json(const CampbellResult& result, const CampbellOptions& o
     j["stability_threshold_hz"] = nullptr;
     j["stability_threshold"] = nullptr;
   }
+  j["supports"] = detail::operating_json(result.operating, model);
   return detail::json_text(j, 2);
 }
 
-std::string campbell_csv(const CampbellResult& result) {
+std::string campbell_csv(const CampbellResult& result, const Model& model) {
   std::ostringstream out;
   out << "speed_hz,speed_rpm";
   for (const TrackedMode& m : result.modes)
     out << ',' << detail::csv_column(m.label, "_frequency_hz") << ',' << detail::csv_column(m.label, "_damping_ratio");
-  out << '\n';
+  out << detail::operating_csv_header(result.operating, model) << '\n';
   for (std::size_t i = 0; i < result.speeds.size(); ++i) {
     out << csv_number(rad_to_hz(result.speeds[i])) << ',' << csv_number(rad_to_hz(result.speeds[i]) * 60);
     for (const TrackedMode& m : result.modes)
       out << ',' << csv_number(m.frequency_hz[i]) << ',' << csv_number(m.damping_ratio[i]);
-    out << '\n';
+    out << detail::operating_csv_row(result.operating, i) << '\n';
   }
   return out.str();
 }

@@ -7,6 +7,7 @@
 
 #include "csv_text.hpp"
 #include "json_text.hpp"
+#include "operating_text.hpp"
 
 #include <feran/core/error.hpp>
 
@@ -31,6 +32,7 @@ RunupCsvWriter::RunupCsvWriter(OutputFiles& files, int output, const Model& mode
   }
   for (Index e : options.springs)
     for (const char* d : direction_names) header += ',' + detail::csv_column(detail::csv_element_tag(model, e), std::string("_f") + d);
+  header += detail::operating_csv_header(operating_series(model), model);
   header += '\n';
   files_.append(output_, header);
 }
@@ -52,6 +54,9 @@ void RunupCsvWriter::write(const TransientSample& s) {
       row_ += ',';
       row_ += csv_number(c);
     }
+  std::vector<const std::vector<Real>*> rows;
+  for (const std::vector<Real>& r : s.operating) rows.push_back(&r);
+  detail::append_operating_csv(row_, rows);
   row_ += '\n';
   files_.append(output_, row_);
 }
@@ -122,6 +127,22 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
     springs.push_back(js);
   }
   j["springs"] = springs;
+  // The supports' state at the output times, and their largest excursion at any step.
+  json supports = detail::operating_json(result.operating, model);
+  for (json& js : supports) {
+    js["largest_clearance_ratio"] = nullptr;
+    js["largest_clearance_ratio_time_s"] = nullptr;
+    js["largest_clearance_ratio_speed_hz"] = nullptr;
+  }
+  for (const ClearanceUse& u : result.clearance_use)
+    for (std::size_t k = 0; k < result.operating.size(); ++k)
+      if (result.operating[k].force == u.force) {
+        supports[k]["clearance_m"] = u.clearance;
+        supports[k]["largest_clearance_ratio"] = u.largest;
+        supports[k]["largest_clearance_ratio_time_s"] = u.time;
+        supports[k]["largest_clearance_ratio_speed_hz"] = rad_to_hz(u.speed);
+      }
+  j["supports"] = supports;
   return detail::json_text(j, 1);
 }
 

@@ -3,6 +3,7 @@
 /// The operating point at which element matrices are evaluated.
 
 #include <optional>
+#include <string>
 
 #include <feran/core/types.hpp>
 
@@ -25,6 +26,14 @@ struct OperatingPoint {
 
   /// ω, or Ω when no frequency is given.
   Real motion_frequency() const { return frequency.value_or(speed); }
+};
+
+/// One number of a support's operating state: a machine-readable name that carries its
+/// unit ("min_film_thickness_m", "eccentricity_ratio"), and its value (NaN where the
+/// support's theory does not give it).
+struct OperatingValue {
+  std::string name;
+  Real value = 0.0;
 };
 
 }  // namespace feran

@@ -30,15 +30,16 @@ struct ResultSource {
 /// JSON text of a modal result. With @p shapes each mode carries its shape.
 std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source,
                        bool shapes);
-/// CSV text of a modal result: one row per mode.
+/// CSV text of a modal result: one row per mode (the supports' state is in the JSON).
 std::string modal_csv(const ModalResult& result);
 
-/// JSON text of a Campbell result.
-std::string campbell_json(const CampbellResult& result, const CampbellOptions& options,
+/// JSON text of a Campbell result (with the supports' operating state over the speeds;
+/// @p model is the one analysed).
+std::string campbell_json(const CampbellResult& result, const CampbellOptions& options, const Model& model,
                           const ResultSource& source);
 /// CSV text of a Campbell result: one row per speed, frequency and damping ratio of
-/// every tracked mode.
-std::string campbell_csv(const CampbellResult& result);
+/// every tracked mode, then the supports' operating state.
+std::string campbell_csv(const CampbellResult& result, const Model& model);
 
 /// JSON text of a steady-state response (speed or frequency sweep).
 std::string response_json(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,

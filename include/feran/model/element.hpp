@@ -27,6 +27,9 @@
 ///   dofs() -> std::vector<Index>               its DOFs without evaluating its matrices
 ///                                              (an element whose matrices need work,
 ///                                              or exist only at some speeds)
+///   operating_data(Real speed)                 the operating state at @p speed of the
+///     -> std::vector<OperatingValue>           support it stands for (a bearing
+///                                              linearised about its equilibrium)
 ///
 /// To add an element: a header and a source in elements/, its spec type and field
 /// table (spec/), its build step, a test, and its matrices in docs/theory/.
@@ -135,6 +138,10 @@ concept HasConnection = requires(const E& e) {
 };
 
 template <class E>
+concept HasOperatingState = requires(const E& e, Real speed) {
+  { e.operating_data(speed) } -> std::same_as<std::vector<OperatingValue>>;
+};
+template <class E>
 concept HasDofs = requires(const E& e) {
   { e.dofs() } -> std::same_as<std::vector<Index>>;
 };
@@ -185,6 +192,9 @@ class Element {
   std::vector<SpeedRange> frequency_ranges() const { return self_->frequency_ranges(); }
   /// Its shaft segment, if it is a piece of shaft.
   std::optional<ShaftSegment> shaft_segment() const { return self_->shaft_segment(); }
+  /// The operating state at @p speed [rad/s] of the support it stands for, if it
+  /// stands for one (a bearing linearised about its equilibrium).
+  std::optional<std::vector<OperatingValue>> operating_data(Real speed) const { return self_->operating_data(speed); }
 
   /// The wrapped element if it is an E, else nullptr (for inspection: analyses and
   /// writers ask for abilities instead).
@@ -208,6 +218,7 @@ class Element {
     virtual std::optional<ShaftSegment> shaft_segment() const = 0;
     virtual std::optional<Connection> connection() const = 0;
     virtual std::vector<SpeedRange> speed_ranges() const = 0;
+    virtual std::optional<std::vector<OperatingValue>> operating_data(Real speed) const = 0;
     virtual const std::type_info& type() const = 0;
     virtual const void* data() const = 0;
   };
@@ -250,6 +261,10 @@ class Element {
     }
     std::optional<ShaftSegment> shaft_segment() const override {
       if constexpr (HasShaftSegment<E>) return value.shaft_segment();
+      else return std::nullopt;
+    }
+    std::optional<std::vector<OperatingValue>> operating_data(Real speed) const override {
+      if constexpr (HasOperatingState<E>) return value.operating_data(speed);
       else return std::nullopt;
     }
     const std::type_info& type() const override { return typeid(E); }

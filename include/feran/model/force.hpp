@@ -54,6 +54,7 @@
 #include <utility>
 #include <vector>
 
+#include <feran/core/operating_point.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran {
@@ -80,14 +81,6 @@ struct NonlinearForceValue {
   Vector f;
   Matrix dfdx;
   Matrix dfdv;
-};
-
-/// One number of a support's operating state: a machine-readable name that carries its
-/// unit ("min_film_thickness_m", "eccentricity_ratio"), and its value (NaN where the
-/// support's theory does not give it).
-struct OperatingValue {
-  std::string name;
-  Real value = 0.0;
 };
 
 /// What every force type provides.

@@ -433,6 +433,16 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     }
     pt = PointResult{};  // free as we go
   }
+  // The supports' state at each speed's equilibrium (found above for the tangents);
+  // a frequency sweep runs at one speed.
+  if (supported) {
+    result.operating = operating_series(model);
+    for (std::size_t k = 0; k < result.speeds.size(); ++k) {
+      if (k > 0 && result.speeds[k] == result.speeds[k - 1])
+        for (OperatingSeries& s : result.operating) s.values.push_back(s.values.back());
+      else append_at_equilibrium(result.operating, linear, result.speeds[k]);
+    }
+  }
   return result;
 }
 

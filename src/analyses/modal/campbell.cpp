@@ -342,6 +342,8 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     }
     tm.label = family + " " + std::to_string(++counters[family]);
   }
+  // The supports' state at the grid speeds' equilibria, which the solves found and kept.
+  result.operating = solver.operating_at(result.speeds);
   return result;
 }
 

@@ -363,9 +363,11 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options, std::shared_p
     : options_(options),
       // Supports (fluid-film bearings) enter as their tangent about the equilibrium at
       // each speed, which an assembly of the model itself does not hold.
-      assembler_(has_supports(model) ? std::make_shared<const Assembler>(linearised(model))
-                 : assembled         ? std::move(assembled)
-                                     : std::make_shared<const Assembler>(model)),
+      linear_(has_supports(model) ? std::make_shared<const Model>(linearised(model)) : nullptr),
+      assembler_(linear_      ? std::make_shared<const Assembler>(*linear_)
+                 : assembled ? std::move(assembled)
+                             : std::make_shared<const Assembler>(model)),
+      operating_(operating_series(model)),
       cache_(std::make_shared<BlockCache>()) {
   for (const Force& f : model.forces)
     if (f.supports()) supports_.push_back(f);
@@ -792,9 +794,19 @@ Real mac(const ComplexVector& a, const ComplexVector& b) {
   return abs2(a.dot(b)) / (na * nb);
 }
 
+std::vector<OperatingSeries> ModalSolver::operating_at(const std::vector<Real>& speeds) const {
+  std::vector<OperatingSeries> out = operating_;
+  if (linear_)
+    for (const Real speed : speeds) append_at_equilibrium(out, *linear_, speed);
+  return out;
+}
+
 ModalResult run_modal(const Model& model, Real speed, const ModalOptions& options,
                       std::shared_ptr<const Assembler> assembled) {
-  return ModalSolver(model, options, std::move(assembled)).solve(speed);
+  const ModalSolver solver(model, options, std::move(assembled));
+  ModalResult result = solver.solve(speed);
+  if (result.info.converged()) result.operating = solver.operating_at({speed});
+  return result;
 }
 
 }  // namespace feran

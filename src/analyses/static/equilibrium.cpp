@@ -345,6 +345,19 @@ class LinearisedSupport {
     return lm;
   }
 
+  // The support's state at the equilibrium at @p speed (none at rest for a film,
+  // which carries nothing then).
+  std::vector<OperatingValue> operating_data(Real speed) const {
+    const Force& force = path_->model().forces[force_];
+    const std::vector<Index> dofs = force.dofs();
+    const auto n = static_cast<Index>(dofs.size());
+    if (!(speed > 0) && force.needs_speed()) return {};
+    Vector x(n);
+    const Vector& q = path_->at(speed);
+    for (Index k = 0; k < n; ++k) x(k) = q(dofs[static_cast<std::size_t>(k)]);
+    return force.operating_data({.speed = speed}, x, Vector::Zero(n));
+  }
+
   // The block of the tangent on the first node's own DOFs, as 6×6 matrices of the
   // relative motion (the force depends on the journal's motion relative to its housing).
   Transmission transmission(Real speed) const {

@@ -177,6 +177,29 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     e.magnitude.assign(static_cast<std::size_t>(bins), nan);
     result.envelopes.push_back(e);
   }
+  // The supports' clearances, watched at every step: (v, w) of the journal, then of its
+  // housing if it has one (the supports' DOFs, Force::dofs()).
+  result.operating = operating_series(model);
+  std::vector<OperatingSeries> operating_now = result.operating;
+  std::vector<std::vector<Index>> clearance_dofs;
+  for (const OperatingSeries& os : result.operating) {
+    const Force& force = model.forces[static_cast<std::size_t>(os.force)];
+    if (const std::optional<Real> c = force.clearance(); c && *c > 0) {
+      result.clearance_use.push_back({.force = os.force, .clearance = *c});
+      clearance_dofs.push_back(force.dofs());
+    }
+  }
+  auto update_clearance_use = [&](const Vector& x, Real t, Real w) {
+    for (std::size_t k = 0; k < clearance_dofs.size(); ++k) {
+      const std::vector<Index>& d = clearance_dofs[k];
+      Real dy = x(d[0]), dz = x(d[1]);
+      if (d.size() >= 4) dy -= x(d[2]), dz -= x(d[3]);
+      ClearanceUse& u = result.clearance_use[k];
+      const Real ratio = std::hypot(dy, dz) / u.clearance;
+      if (ratio > u.largest) u.largest = ratio, u.time = t, u.speed = w;
+    }
+  };
+
   auto update_envelopes = [&](const State& s) {
     const Vector x = rotor.expand(model_coordinates(s.x, x_model));
     const Real w = rotor.speed(s.t, s.v);
@@ -188,6 +211,7 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
       if (std::isnan(m) || r > m) m = r;
       if (r > e.peak) e.peak = r, e.peak_time = s.t, e.peak_speed = w;
     }
+    update_clearance_use(x, s.t, w);
   };
 
   Vector x_full, v_full;
@@ -215,6 +239,14 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
       std::array<Real, dofs_per_node> out{};
       for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = f(d);
       sample.springs.push_back(out);
+    }
+    if (!operating_now.empty()) {
+      append_in_motion(operating_now, model, rotor.motion(t, x, v), x_full, v_full);
+      for (std::size_t k = 0; k < operating_now.size(); ++k) {
+        sample.operating.push_back(std::move(operating_now[k].values.back()));
+        operating_now[k].values.clear();
+        if (options.keep_samples) result.operating[k].values.push_back(sample.operating.back());
+      }
     }
     if (sink) sink(sample);
     if (options.keep_samples) result.samples.push_back(std::move(sample));

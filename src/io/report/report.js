@@ -188,6 +188,39 @@
     figure(d, lateral.map((m, i) => ({ name: m.label, x: sp, y: m.log_decrement, mode: "lines", line: { color: palette[i % palette.length] },
                                        hovertemplate: `${m.label}<br>%{x:.4g} ${unit}<br>δ %{y:.4f}<extra></extra>` })),
            { title: { text: "logarithmic decrement" }, xaxis: axis(speedTitle), yaxis: axis("log. decrement [–]"), shapes: operatingShape(), height: 420 });
+
+    // Each bearing's state at the equilibrium at each speed of the diagram, about which
+    // its coefficients are linearised: one figure per quantity some bearing has.
+    const bearings = (campbell.supports || []).filter((b) => b.operating && Object.keys(b.operating).length);
+    if (bearings.length) {
+      const b = sectionEl("bearings", "Bearings over speed", "Each bearing's operating state at the static equilibrium at each speed of the Campbell diagram, about which its stiffness and damping are linearised. Dotted: Trumpler's design limits (minimum film thickness 5.08 µm + 4·10⁻⁵·D; unit load 2.07 MPa).");
+      const plotted = [["eccentricity_ratio", "eccentricity ratio [–]", 1, null],
+                       ["min_film_thickness_m", "minimum film thickness [µm]", 1e6, "min_film_limit_m"],
+                       ["sommerfeld_number", "Sommerfeld number [–]", 1, null],
+                       ["power_loss_w", "friction power loss [W]", 1, null],
+                       ["max_element_load_n", "most loaded element [N]", 1, null],
+                       ["max_contact_stress_pa", "Hertz contact stress [MPa]", 1e-6, "contact_stress_limit_pa"]];
+      for (const [name, title, scale, limit] of plotted) {
+        const having = bearings.filter((x) => x.operating[name]);
+        if (!having.length) continue;
+        const traces = having.map((x, i) => ({ name: x.label, x: sp, y: x.operating[name].map((v) => (v === null ? null : v * scale)), mode: "lines",
+                                               line: { color: palette[i % palette.length] }, hovertemplate: `${x.label}<br>%{x:.4g} ${unit}<br>%{y:.4g}<extra></extra>` }));
+        having.forEach((x, i) => {
+          const l = limit && x.operating[limit] ? x.operating[limit].find((v) => v !== null) : null;
+          if (l) traces.push({ name: `${x.label} limit`, x: [sp[0], sp[sp.length - 1]], y: [l * scale, l * scale], mode: "lines",
+                               line: { dash: "dot", color: palette[i % palette.length] }, hoverinfo: "skip" });
+        });
+        figure(b, traces, { title: { text: title }, xaxis: axis(speedTitle), yaxis: axis(title), shapes: operatingShape(), height: 340 });
+      }
+      if (data.operating) {
+        // The thinnest film within the operating range, for the numbers table.
+        const lo = data.operating.min_rpm / 60, hi = data.operating.max_rpm / 60;
+        bearings.forEach((x) => {
+          const h = (x.operating.min_film_thickness_m || []).filter((v, k) => v !== null && campbell.speeds_hz[k] >= lo && campbell.speeds_hz[k] <= hi);
+          if (h.length) numbers.push([`thinnest film of ${x.label} in the operating range`, Math.min(...h) * 1e6, "µm", "Campbell"]);
+        });
+      }
+    }
   }
 
   // ---------------------------------------------------------------- mode shapes

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <feran/analyses/common/operating_state.hpp>
 #include <feran/analyses/common/orbit.hpp>
 #include <feran/analyses/common/shaft_sections.hpp>
 #include <feran/analyses/modal/modal.hpp>
@@ -125,6 +126,9 @@ struct HarmonicResult {
   std::vector<ProbeResponse> probes;
   std::vector<SpringForceResponse> springs;
   std::vector<SupportForceResponse> supports;  ///< journal bearings, in Model::forces order
+  /// Per support (in the order of supports), its operating state at the equilibrium at
+  /// each point's speed, about which the response is linear.
+  std::vector<OperatingSeries> operating;
   std::vector<ReactionResponse> reactions;
   /// Both ends of every shaft element (empty with StationOutput::none).
   std::vector<ShaftStation> shaft_stations;

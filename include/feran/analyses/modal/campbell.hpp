@@ -89,6 +89,9 @@ struct CampbellResult {
   std::optional<StabilityThreshold> stability_threshold;
   SolverInfo info;  ///< method used; converged() is false if a solve failed (results so far kept)
   Index n_solves = 0;  ///< eigen solves, grid and refinement
+  /// Per support (Force::supports()), its operating state at the equilibrium at each
+  /// of speeds.
+  std::vector<OperatingSeries> operating;
 };
 
 /// How the threshold's unstable motion is named: the tracked mode's label, or

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <feran/assembly/assembler.hpp>
+#include <feran/analyses/common/operating_state.hpp>
 #include <feran/analyses/common/solver_info.hpp>
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
@@ -123,6 +124,9 @@ struct ModalResult {
   /// shaft beyond its buckling load), among the eigenvalues the solver computed (all
   /// of them in a dense solve), although such a mode is not listed; 0: none.
   Real divergence = 0;
+  /// Per support (Force::supports()), its operating state at the equilibrium at this
+  /// speed: one point.
+  std::vector<OperatingSeries> operating;
 };
 
 /// Modal solver for one model: assembles the speed-independent matrices once and
@@ -153,6 +157,9 @@ class ModalSolver {
   /// Changes the number of modes wanted (see ModalOptions::n_modes).
   void set_n_modes(Index n_modes) { options_.n_modes = n_modes; }
   const Assembler& assembler() const { return *assembler_; }
+  /// The supports' operating state at the equilibria at @p speeds [rad/s] about which
+  /// solve() linearises them (Force::operating_data(); empty without supports).
+  std::vector<OperatingSeries> operating_at(const std::vector<Real>& speeds) const;
 
  private:
   // dense or sparse for every block, or each decoupled block by the cost model
@@ -165,8 +172,10 @@ class ModalSolver {
   ModalResult solve_self_consistent(Real speed) const;
 
   ModalOptions options_;
+  std::shared_ptr<const Model> linear_;  // linearised(model) with supports, else null
   std::shared_ptr<const Assembler> assembler_;
   std::vector<Force> supports_;  // the model's supports (solve() refuses speed 0 with them)
+  std::vector<OperatingSeries> operating_;  // operating_series(model): names, no points
   std::vector<std::pair<Index, Real>> rotor_nodes_;  // the rotating nodes and their x, for Mode::bending
   Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
   std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it

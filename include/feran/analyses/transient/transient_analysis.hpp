@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/common/operating_state.hpp>
 #include <feran/analyses/transient/integrator.hpp>
 #include <feran/analyses/transient/speed_profile.hpp>
 #include <feran/core/stop.hpp>
@@ -66,6 +67,18 @@ struct TransientSample {
   std::vector<std::array<Real, dofs_per_node>> probes;    ///< per probe node: u, v, w, rx, ry, rz
   std::vector<Real> magnitude;                            ///< per probe: |r| = √(v² + w²)
   std::vector<std::array<Real, dofs_per_node>> springs;   ///< per recorded spring: K·Δq + C·Δq'
+  /// Per support (TransientResult::operating), its operating state in this motion.
+  std::vector<std::vector<Real>> operating;
+};
+
+/// The largest excursion of a support's journal within its clearance over a run
+/// (evaluated at every step, not only at the output times).
+struct ClearanceUse {
+  Index force = 0;       ///< index into Model::forces
+  Real clearance = 0;    ///< its radial clearance [m]
+  Real largest = 0;      ///< largest |journal − housing| (v, w) over the clearance
+  Real time = 0;         ///< when [s]
+  Real speed = 0;        ///< at which speed [rad/s]
 };
 
 /// Largest |r| of a probe within speed bins (evaluated at every step, not only at
@@ -81,6 +94,11 @@ struct Envelope {
 struct TransientResult {
   std::vector<TransientSample> samples;  ///< when keep_samples
   std::vector<Envelope> envelopes;       ///< per probe
+  /// Per support (Force::supports()), its operating state at the output times (the
+  /// values only when keep_samples; the samples carry them too).
+  std::vector<OperatingSeries> operating;
+  /// Per support with a clearance (Force::clearance()).
+  std::vector<ClearanceUse> clearance_use;
   /// converged() is false when the run stopped early (integrator failure, blow-up,
   /// non-finite values); message says when and where. Results up to then are kept.
   SolverInfo info;
