@@ -69,9 +69,7 @@ Runner add_report_command(CLI::App& app, int argc, char** argv) {
     files.add_input(args->config, "the report configuration");
     if (!args->config.empty()) read_report_config_file(args->config, file.model, options);
     if (!args->study.empty()) options.study_directory = args->study;
-    if (!options.study_directory.empty())
-      for (const char* name : {"study.json", "evaluations.jsonl", "summary.json"})
-        files.add_input((std::filesystem::path(options.study_directory) / name).string(), "a file of the study shown");
+    for (const std::string& input : report_study_files(options)) files.add_input(input, "a file of the study shown");
     if (!args->speed_unit.empty()) options.speed_unit = args->speed_unit;
     options.stop = interrupt_token();
     std::string verdicts;

@@ -34,9 +34,7 @@ void bind_report(py::module_& m) {
         if (config) files.add_input(*config, "the report configuration");
         if (config) read_report_config_file(*config, file.model, options);
         if (study) options.study_directory = *study;
-        if (!options.study_directory.empty())
-          for (const char* name : {"study.json", "evaluations.jsonl", "summary.json"})
-            files.add_input((std::filesystem::path(options.study_directory) / name).string(), "a file of the study shown");
+        for (const std::string& input : report_study_files(options)) files.add_input(input, "a file of the study shown");
         if (speed_unit) options.speed_unit = *speed_unit;
         if (title) options.title = *title;
         std::atomic<bool> flag{false};

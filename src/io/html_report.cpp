@@ -23,6 +23,7 @@
 #include <feran/io/model_writer.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/io/runup_writer.hpp>
+#include <feran/io/study_log.hpp>
 
 #include "json_text.hpp"
 #include "report_assets.hpp"
@@ -180,16 +181,16 @@ json study_results(const std::string& directory) {
   namespace fs = std::filesystem;
   const fs::path dir(directory);
   if (!fs::is_directory(dir)) throw Error(fmt::format("study directory '{}' does not exist", directory));
-  for (const char* name : {"study.json", "evaluations.jsonl"})
+  for (const char* name : {study_files::study, study_files::evaluations})
     if (!fs::exists(dir / name))
       throw Error(fmt::format("'{}' holds no study results: '{}' is missing (the output of feran study -o DIR)",
                               directory, name));
   json out;
   try {
-    out["study"] = json::parse(read_text(dir / "study.json"));
-    out["summary"] = fs::exists(dir / "summary.json") ? json::parse(read_text(dir / "summary.json")) : json(nullptr);
+    out["study"] = json::parse(read_text(dir / study_files::study));
+    out["summary"] = fs::exists(dir / study_files::summary) ? json::parse(read_text(dir / study_files::summary)) : json(nullptr);
     json evaluations = json::array();
-    std::istringstream lines(read_text(dir / "evaluations.jsonl"));
+    std::istringstream lines(read_text(dir / study_files::evaluations));
     std::string line;
     while (std::getline(lines, line))
       if (!line.empty()) evaluations.push_back(json::parse(line));
@@ -246,6 +247,14 @@ std::string html_escape(const std::string& text) {
 }  // namespace
 
 bool report_available() { return detail::report_assets_built(); }
+
+std::vector<std::string> report_study_files(const ReportOptions& options) {
+  if (options.study_directory.empty()) return {};
+  std::vector<std::string> out;
+  for (const char* name : {study_files::study, study_files::evaluations, study_files::summary})
+    out.push_back((std::filesystem::path(options.study_directory) / name).string());
+  return out;
+}
 
 std::string html_report(const ModelFile& file, const ReportOptions& options, std::string* summary) {
   if (!report_available())

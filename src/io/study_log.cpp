@@ -165,8 +165,8 @@ bool written_by_study(const std::string& name) {
     if (n <= 12 || name.rfind("pareto-", 0) != 0 || name.compare(n - 5, 5, ".toml") != 0) return false;
     return name.find_first_not_of("0123456789", 7) == n - 5;
   };
-  return name == "evaluations.jsonl" || name == "evaluations.csv" || name == "study.json" || name == "summary.json" ||
-         name == "best.toml" || pareto();
+  return name == study_files::evaluations || name == study_files::evaluations_csv || name == study_files::study ||
+         name == study_files::summary || name == "best.toml" || pareto();
 }
 
 // Refuses @p directory if a file the study writes there is one of @p inputs: the
@@ -199,9 +199,9 @@ StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume, s
   if (!fs::is_directory(directory_))
     throw Error(fmt::format("cannot make the output directory '{}'{}", directory_, ec ? ": " + ec.message() : ""));
   refuse_inputs(directory_, inputs);
-  const auto jsonl_path = (fs::path(directory_) / "evaluations.jsonl").string();
-  const auto csv_path = (fs::path(directory_) / "evaluations.csv").string();
-  const auto study_path = (fs::path(directory_) / "study.json").string();
+  const auto jsonl_path = (fs::path(directory_) / study_files::evaluations).string();
+  const auto csv_path = (fs::path(directory_) / study_files::evaluations_csv).string();
+  const auto study_path = (fs::path(directory_) / study_files::study).string();
   const std::string description = study_json(study);
   const bool has_results = fs::exists(jsonl_path) && fs::file_size(jsonl_path, ec) > 0;
   if (has_results && !resume)
@@ -255,8 +255,8 @@ void StudyLog::append(std::span<const Evaluation> evaluations) {
     lines += evaluation_json(study_, e);
     rows += csv_row(study_, e);
   }
-  write_all(jsonl_, lines, directory_ + "/evaluations.jsonl");
-  write_all(csv_, rows, directory_ + "/evaluations.csv");
+  write_all(jsonl_, lines, (fs::path(directory_) / study_files::evaluations).string());
+  write_all(csv_, rows, (fs::path(directory_) / study_files::evaluations_csv).string());
 }
 
 std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool complete) {
@@ -325,7 +325,7 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
     }
     summary["sensitivity"] = table;
   }
-  const auto path = (fs::path(directory_) / "summary.json").string();
+  const auto path = (fs::path(directory_) / study_files::summary).string();
   std::ofstream(path, std::ios::binary | std::ios::trunc) << summary.dump(1) << "\n";
   return written;
 }

@@ -50,6 +50,10 @@ struct ReportOptions {
 /// verdicts the report opens with as terminal lines (docs/report.md, "Verdicts").
 std::string html_report(const ModelFile& file, const ReportOptions& options, std::string* summary = nullptr);
 
+/// The files of options.study_directory the report reads (none without one): a front
+/// end keeps its outputs from replacing them (OutputFiles::add_input).
+std::vector<std::string> report_study_files(const ReportOptions& options);
+
 /// True when the report's scripts were built in (the front-end packages were installed
 /// by scripts/setup.sh when feran was built).
 bool report_available();

@@ -15,6 +15,15 @@
 
 namespace feran {
 
+/// The names of the files a study writes in its output directory, besides the models
+/// of its optima (best.toml, pareto-INDEX.toml).
+namespace study_files {
+inline constexpr const char* study = "study.json";
+inline constexpr const char* evaluations = "evaluations.jsonl";
+inline constexpr const char* evaluations_csv = "evaluations.csv";
+inline constexpr const char* summary = "summary.json";
+}  // namespace study_files
+
 class StudyLog {
  public:
   /// Opens @p directory for @p study (created if missing). Without @p resume the

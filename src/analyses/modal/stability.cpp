@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
@@ -65,24 +66,23 @@ bool energy_stable(const Model& linear, Real speed) {
   return true;
 }
 
-StabilityPoint stability_at(const Model& model, Real speed) {
+StabilityPoint StabilityPoint::unknown(Real at_speed, std::string why) {
   StabilityPoint out;
-  out.speed = speed;
+  out.speed = at_speed;
+  out.known = false;
+  out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
+  out.message = std::move(why);
+  return out;
+}
+
+StabilityPoint stability_at(const Model& model, Real speed) {
   const bool supported = has_supports(model);
-  if (!(speed > 0) && needs_speed(model)) {
-    out.known = false;
-    out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
-    out.message = "at rest an oil film carries nothing";
-    return out;
-  }
+  if (!(speed > 0) && needs_speed(model)) return StabilityPoint::unknown(speed, "at rest an oil film carries nothing");
   try {
     return supported ? stability_of_linear(linearised(model), speed) : stability_of_linear(model, speed);
   } catch (const Error& e) {
-    out.known = false;
-    out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
-    out.message = e.what();
+    return StabilityPoint::unknown(speed, e.what());
   }
-  return out;
 }
 
 StabilityPoint stability_of_linear(const Model& linear, Real speed) {
@@ -98,12 +98,7 @@ StabilityPoint stability_of_linear(const Model& linear, Real speed) {
     options.shapes = false;
     options.n_modes = stability_modes;
     const ModalResult r = run_modal(linear, speed, options);
-    if (!r.info.converged()) {
-      out.known = false;
-      out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
-      out.message = fmt::format("the modal analysis failed: {}", r.info.message);
-      return out;
-    }
+    if (!r.info.converged()) return StabilityPoint::unknown(speed, fmt::format("the modal analysis failed: {}", r.info.message));
     Real largest = 0;
     for (const Mode& m : r.modes) largest = std::max(largest, std::abs(m.eigenvalue));
     out.growth_rate = -std::numeric_limits<Real>::infinity();
@@ -119,9 +114,7 @@ StabilityPoint stability_of_linear(const Model& linear, Real speed) {
     out.unstable = out.growth_rate > 1e-9 * largest;
     if (!out.unstable) out.divergence = false;
   } catch (const Error& e) {
-    out.known = false;
-    out.growth_rate = std::numeric_limits<Real>::quiet_NaN();
-    out.message = e.what();
+    return StabilityPoint::unknown(speed, e.what());
   }
   return out;
 }

@@ -180,17 +180,13 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
         result.stability = stability_of_linear(
             linearised(model, EquilibriumOptions{.gravity = options.gravity, .loads = options.loads}), options.speed);
       } catch (const Error& e) {
-        result.stability.known = false;
-        result.stability.growth_rate = std::numeric_limits<Real>::quiet_NaN();
-        result.stability.message = e.what();
+        result.stability = StabilityPoint::unknown(options.speed, e.what());
       }
     } else {
       result.stability = stability_of_linear(model, options.speed);
     }
   } else {
-    result.stability.known = false;
-    result.stability.growth_rate = std::numeric_limits<Real>::quiet_NaN();
-    result.stability.message = "not asked for";
+    result.stability = StabilityPoint::unknown(options.speed, "not asked for");
   }
   return result;
 }

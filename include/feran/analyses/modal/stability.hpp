@@ -41,6 +41,9 @@ struct StabilityPoint {
   /// The growing mode is a real eigenvalue: divergence, not flutter.
   bool divergence = false;
   std::string message;  ///< why unknown
+
+  /// Stability unknown at @p at_speed, for the reason @p why.
+  static StabilityPoint unknown(Real at_speed, std::string why);
 };
 
 /// The stability of @p model at @p speed [rad/s]. An oil film needs speed > 0: at rest
