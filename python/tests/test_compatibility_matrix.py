@@ -220,6 +220,7 @@ STUDY_REFUSALS = REFUSALS + [
     r"no Q₀: .* is stable up to",                     # level I: no cross-coupling destabilises it
     r"no spring|has no spring",
     r"the model has no unbalance|no \[\[unbalances\]\]",
+    r"the model has no journal or rolling bearing",
     r"failed",                                        # an analysis that did not converge, named
 ]
 
@@ -241,10 +242,11 @@ def quantity_kinds():
 KINDS = quantity_kinds()
 
 
-def quantity_toml(kind, low, high, rho):
+def quantity_toml(kind, low, high, rho, bearing_value):
     keys = {"separation_margin": f'operating = ["{low}", "{high}"]', "required_margin": f'operating = ["{low}", "{high}"]',
             "margin_surplus": f'operating = ["{low}", "{high}"]', "min_margin_surplus": f'operating = ["{low}", "{high}"]',
-            "level1_q_zero": f'speed = "{high}"', "undamped_critical_speed": f'operating = ["{low}", "{high}"]', "parameter": f'path = "{rho}"'}
+            "level1_q_zero": f'speed = "{high}"',
+            "min_bearing_value": f'value = "{bearing_value}"', "max_bearing_value": f'value = "{bearing_value}"', "undamped_critical_speed": f'operating = ["{low}", "{high}"]', "parameter": f'path = "{rho}"'}
     return f'[[quantities]]\nname = "{kind}"\nkind = "{kind}"\n{keys.get(kind, "")}\n'
 
 
@@ -261,10 +263,13 @@ def test_study_quantities(tmp_path, family):
         if "[api684]" in api else None
     low, high = (m.group(1), m.group(2)) if m else ("1000 rpm", "2000 rpm")
     kinds, refused_kinds = list(KINDS), {}
+    # A quantity every bearing of the family has: rolling bearings have no film.
+    bearing_value = "max_element_load_n" if "[[rolling_bearings]]" in api and "[[journal_bearings]]" not in api \
+        else "eccentricity_ratio"
     while kinds:
         study = (f'model = "{path}"\n[settings]\n"campbell.points" = 9\n"response.points" = 9\n'
                  f'[[variables]]\nname = "rho"\npath = "{rho}"\nlower = "7800 kg/m^3"\nupper = "7900 kg/m^3"\n'
-                 + "".join(quantity_toml(k, low, high, rho) for k in kinds) + '[explore]\nmethod = "grid"\nlevels = 1\n')
+                 + "".join(quantity_toml(k, low, high, rho, bearing_value) for k in kinds) + '[explore]\nmethod = "grid"\nlevels = 1\n')
         if "runup_peak" in kinds or "runup_spring_force" in kinds:
             study = study.replace('"response.points" = 9\n', '"response.points" = 9\n"runup.duration" = "0.02 s"\n')
         file = tmp_path / "s.toml"

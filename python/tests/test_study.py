@@ -83,6 +83,37 @@ def test_a_quantity_clipped_by_the_campbell_range_says_so_through_every_door(tmp
         assert q == pytest.approx(700 / 3300, rel=1e-12)
 
 
+def test_bearing_values_are_the_extremes_of_the_campbell_diagrams_bearing_data():
+    # The two-disk rotor on journal bearings, two designs (steel densities): each
+    # design's thinnest film of bearing A, largest power loss of any bearing and largest
+    # attitude angle (in rad) are the extremes of what feran.campbell gives for that
+    # design's model, to the last bit (one Campbell diagram, two doors).
+    path = os.path.join(SOURCE, "tests", "models", "valid", "journal_rotor.toml")
+    study = feran.Study(path, variables=[{"name": "rho", "path": "materials[0].rho", "lower": "7800 kg/m^3",
+                                          "upper": "7900 kg/m^3"}],
+                        quantities=[{"name": "hmin", "kind": "min_bearing_value", "value": "min_film_thickness_m",
+                                     "bearing": "bearing A"},
+                                    {"name": "loss", "kind": "max_bearing_value", "value": "power_loss_w"},
+                                    {"name": "attitude", "kind": "max_bearing_value", "value": "attitude_angle_deg"}],
+                        explore={"method": "grid", "levels": 2}, settings={"campbell.points": 9})
+    result = study.run(threads=1)
+    assert list(result.evaluated) == [True, True], result.messages
+    for (rho,), (hmin, loss, attitude) in zip(result.values, result.quantities):
+        model = feran.read_model(path)
+        model["materials[0].rho"] = f"{rho} kg/m^3"
+        campbell = feran.campbell(model, points=9)
+        assert campbell.bearings == ["bearing A", "bearing B"]
+        data = campbell.bearing_data
+        assert hmin == np.min(data[0]["min_film_thickness_m"])
+        assert loss == max(np.max(d["power_loss_w"]) for d in data)
+        assert attitude == pytest.approx(np.radians(max(np.max(d["attitude_angle_deg"]) for d in data)), rel=1e-15)
+        # h_min = c(1 - eps) at the largest eccentricity, c = 0.06 mm.
+        assert hmin == pytest.approx(0.06e-3 * (1 - np.max(data[0]["eccentricity_ratio"])), rel=1e-12)
+    with pytest.raises(feran.Error, match="did you mean 'min_film_thickness_m'"):
+        feran.Study(path, variables=[{"name": "rho", "path": "materials[0].rho", "lower": 7800, "upper": 7900}],
+                    quantities=[{"name": "h", "kind": "min_bearing_value", "value": "min_film_thicknes_m"}])
+
+
 def test_a_study_read_from_a_file_rebuilds_where_it_is_sent():
     # What a dask worker receives: the study pickled and rebuilt from its text.
     import pickle

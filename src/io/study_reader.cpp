@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include <feran/analyses/common/operating_state.hpp>
+#include <feran/spec/build_model.hpp>
 #include <feran/spec/parameters.hpp>
 
 #include "suggestions.hpp"
@@ -214,7 +216,8 @@ class StudyReader {
 
   void read_quantities(StudySpec& study) {
     each_table("quantities", "quantity", [&](const TableReader& t, int) {
-      t.check_keys({"name", "kind", "whirl", "order", "n", "range", "operating", "speed", "probe", "spring", "path", "unit"});
+      t.check_keys({"name", "kind", "whirl", "order", "n", "range", "operating", "speed", "probe", "spring", "bearing",
+                    "value", "path", "unit"});
       QuantitySpec q;
       q.name = t.required_string("name", "the quantity's name, a string");
       for (const auto& other : study.quantities)
@@ -274,6 +277,7 @@ class StudyReader {
         else t.fail(*p, fmt::format("'probe' must be a node name or number, got {}", detail::type_name(*p)));
       }
       if (const auto s = t.string("spring")) q.spring = *s;
+      read_bearing_value(t, study, q);
       if (q.kind == QuantityKind::parameter) {
         q.path = t.required_string("path", "the parameter path of the number");
         try {
@@ -295,6 +299,48 @@ class StudyReader {
       study.quantities.push_back(std::move(q));
     });
     if (study.quantities.empty()) root_.fail_here("a study needs at least one [[quantities]] entry");
+  }
+
+  // min_bearing_value and max_bearing_value: 'value', the name of a bearing's operating
+  // quantity, checked against the bearings of the base model (a model without bearings
+  // leaves it to the evaluation, which fails the design with the reason); 'bearing'.
+  void read_bearing_value(const TableReader& t, const StudySpec& study, QuantitySpec& q) {
+    const bool bearing_kind = q.kind == QuantityKind::min_bearing_value || q.kind == QuantityKind::max_bearing_value;
+    for (const char* key : {"value", "bearing"})
+      if (!bearing_kind && t.has(key))
+        t.fail(*t.find(key), fmt::format("'{}' belongs to quantities of kind \"min_bearing_value\" or "
+                                         "\"max_bearing_value\"", key));
+    if (!bearing_kind) return;
+    q.value = t.required_string("value", "the bearing's operating quantity, e.g. \"min_film_thickness_m\"");
+    if (const auto b = t.string("bearing")) q.bearing = *b;
+    std::vector<OperatingSeries> series;
+    Model model;
+    try {
+      model = build_model(study.base);
+      series = operating_series(model);
+    } catch (const Error&) {
+      return;  // the base model's own mistakes are reported where it is read
+    }
+    if (series.empty()) return;
+    std::vector<std::string> labels, names;
+    for (const OperatingSeries& s : series) {
+      labels.push_back(model.forces[static_cast<std::size_t>(s.force)].label());
+      if (!q.bearing || *q.bearing == labels.back())
+        for (const std::string& n : s.quantities)
+          if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+    }
+    if (q.bearing && std::find(labels.begin(), labels.end(), *q.bearing) == labels.end()) {
+      std::string message = fmt::format("no bearing named '{}'", *q.bearing);
+      if (const auto m = closest_match(*q.bearing, labels, 3)) message += fmt::format("; did you mean '{}'?", *m);
+      else message += fmt::format("; the bearings are {}", join_list(labels, "and", '\''));
+      t.fail(*t.find("bearing"), message);
+    }
+    if (std::find(names.begin(), names.end(), q.value) == names.end()) {
+      std::string message = fmt::format("unknown bearing quantity '{}'", q.value);
+      if (const auto m = closest_match(q.value, names, 4)) message += fmt::format("; did you mean '{}'?", *m);
+      else message += fmt::format("; the quantities are {}", join_list(names, "and", '\''));
+      t.fail(*t.find("value"), message);
+    }
   }
 
   Index quantity_named(const TableReader& t) {

@@ -19,7 +19,7 @@ namespace feran {
 
 namespace {
 
-constexpr std::array<std::pair<QuantityKind, std::string_view>, 22> kind_names{{
+constexpr std::array<std::pair<QuantityKind, std::string_view>, 24> kind_names{{
     {QuantityKind::critical_speed, "critical_speed"},
     {QuantityKind::separation_margin, "separation_margin"},
     {QuantityKind::min_damping_ratio, "min_damping_ratio"},
@@ -40,6 +40,8 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 22> kind_names{{
     {QuantityKind::runup_peak, "runup_peak"},
     {QuantityKind::runup_spring_force, "runup_spring_force"},
     {QuantityKind::rotor_mass, "rotor_mass"},
+    {QuantityKind::min_bearing_value, "min_bearing_value"},
+    {QuantityKind::max_bearing_value, "max_bearing_value"},
     {QuantityKind::parameter, "parameter"},
     {QuantityKind::function, "function"},
 }};
@@ -385,6 +387,37 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
       return peak;
     }
     case QuantityKind::rotor_mass: return rotating_mass(a.model());
+    case QuantityKind::min_bearing_value:
+    case QuantityKind::max_bearing_value: {
+      // Over the Campbell diagram's speeds within the range: each bearing's state at
+      // the equilibrium about which the diagram linearises it.
+      const auto& c = a.campbell();
+      const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
+      const bool smallest = q.kind == QuantityKind::min_bearing_value;
+      const Real scale = q.value.ends_with("_deg") ? pi / 180 : 1.0;
+      Real best = std::numeric_limits<Real>::quiet_NaN();
+      bool named = false;
+      std::vector<std::string> bearings;
+      for (const OperatingSeries& s : c.operating) {
+        const std::string label = a.model().forces[static_cast<std::size_t>(s.force)].label();
+        bearings.push_back(label);
+        if (q.bearing && *q.bearing != label) continue;
+        named = true;
+        const std::vector<Real> values = s.series(q.value);
+        if (values.empty())
+          throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", label, q.value,
+                                  fmt::join(s.quantities, ", ")));
+        for (std::size_t k = 0; k < values.size(); ++k)
+          if (c.speeds[k] >= low && c.speeds[k] <= high && std::isfinite(values[k]))
+            if (std::isnan(best) || (smallest ? values[k] < best : values[k] > best)) best = values[k];
+      }
+      if (c.operating.empty()) throw Error("the model has no journal or rolling bearing");
+      if (!named)
+        throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(bearings, ", ")));
+      if (std::isnan(best))
+        throw Error(fmt::format("no value of '{}' between {} and {}", q.value, rpm(low), rpm(high)));
+      return best * scale;
+    }
     case QuantityKind::parameter: return get_parameter(a.spec(), q.path).value;
     case QuantityKind::function:
       if (!q.function || !*q.function) throw Error("no function is given for it (a quantity of kind \"function\" is computed by code, e.g. feran.Study's quantities)");
@@ -412,7 +445,18 @@ std::optional<Quantity> quantity_kind_unit(QuantityKind kind) {
   }
 }
 
+std::optional<Quantity> operating_value_unit(std::string_view name) {
+  if (name.ends_with("_nm")) return Quantity::moment;
+  if (name.ends_with("_pa")) return Quantity::pressure;
+  if (name.ends_with("_deg")) return Quantity::angle;
+  if (name.ends_with("_m")) return Quantity::length;
+  if (name.ends_with("_n")) return Quantity::force;
+  return std::nullopt;
+}
+
 std::optional<Quantity> quantity_unit(const QuantitySpec& q) {
+  if (q.kind == QuantityKind::min_bearing_value || q.kind == QuantityKind::max_bearing_value)
+    return operating_value_unit(q.value);
   return q.kind == QuantityKind::parameter ? q.value_kind : quantity_kind_unit(q.kind);
 }
 

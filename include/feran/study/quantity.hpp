@@ -44,6 +44,8 @@ enum class QuantityKind {
   runup_peak,           ///< largest |r| at a probe during the run-up [m]
   runup_spring_force,   ///< largest lateral force of a spring (or of all) during the run-up [N]
   rotor_mass,           ///< mass of the rotating parts [kg]
+  min_bearing_value,    ///< smallest value of a bearing's operating quantity over the Campbell speeds [its unit]
+  max_bearing_value,    ///< largest value of it [its unit]
   parameter,            ///< a number of the design's model, by its parameter path (its SI unit)
   function,             ///< a function given in code (the Python package's feran.Study) [its own unit]
 };
@@ -68,13 +70,21 @@ struct QuantitySpec {
   std::optional<Real> speed;     ///< natural_frequency, damping_ratio, log_decrement: the rotor speed [rad/s]
   std::optional<NodeRef> probe;  ///< peak_response, runup_peak
   std::optional<std::string> spring;  ///< *_spring_force: a spring's name; empty: all
+  std::optional<std::string> bearing;  ///< *_bearing_value: a bearing's name; empty: all
+  std::string value;             ///< *_bearing_value: the operating quantity ("min_film_thickness_m")
   std::string path;              ///< parameter: the parameter path
   std::optional<Quantity> value_kind;  ///< parameter: the kind of its value (none: a number)
   std::string unit;              ///< unit the value is shown in ("rpm", "mm"); empty: SI
   std::shared_ptr<const QuantityFunction> function;  ///< function: the code computing it
 };
 
-/// The kind of @p q's value: quantity_kind_unit(q.kind), or for a parameter its kind.
+/// The kind of a bearing's operating quantity @p name by the unit its name ends with
+/// (_m, _pa, _n, _nm, _deg; a study gives angles in rad), or nullopt for a number
+/// (ratios, counts, and the power loss, in W).
+std::optional<Quantity> operating_value_unit(std::string_view name);
+
+/// The kind of @p q's value: quantity_kind_unit(q.kind), for a parameter its kind, for
+/// a bearing value its quantity's.
 std::optional<Quantity> quantity_unit(const QuantitySpec& q);
 
 /// The kind a quantity's value has (for units), or nullopt for a pure number.
