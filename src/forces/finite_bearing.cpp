@@ -157,6 +157,7 @@ FilmForce finite_bearing_force(const JournalBearingGeometry& g, const FiniteBear
   // f = −R·L·(6μR²/c²)·Σ w·P⁺·(cos θ, sin θ).
   const Real scale = -R * g.length * 6.0 * g.viscosity * R * R / (c * c);
   FilmForce out;
+  out.peak_pressure = std::max(0.0, P.maxCoeff()) * 6.0 * g.viscosity * R * R / (c * c);
   for (int i = 0; i < film.n(); ++i) {
     const Real th = film.theta(i);
     const Eigen::Vector2d normal(std::cos(th), std::sin(th));

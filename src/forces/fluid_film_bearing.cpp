@@ -369,7 +369,7 @@ std::vector<OperatingValue> FluidFilmBearing::operating_data(const MotionState& 
   const Real attitude = std::atan2(load(0) * e(1) - load(1) * e(0), load.dot(e));
   const Real N = s.speed / (2 * pi);
   const Real torque = drag_torque(s, x, v);
-  Real peak = std::numeric_limits<Real>::quiet_NaN();
+  Real peak = F.peak_pressure;  // the finite bearing's largest nodal pressure
   if (theory == FilmTheory::short_bearing) {
     peak = short_bearing_peak_pressure(geometry, s.speed, e, ev);
   } else if (theory == FilmTheory::long_bearing && ev.isZero(0.0)) {

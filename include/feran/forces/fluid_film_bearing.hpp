@@ -5,6 +5,7 @@
 /// closed forms of the short bearing at its static equilibrium.
 /// Theory: docs/theory/fluid_film_bearings.md.
 
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -48,6 +49,10 @@ struct FilmForce {
   Eigen::Vector2d f = Eigen::Vector2d::Zero();      ///< [N]
   Eigen::Matrix2d dfdx = Eigen::Matrix2d::Zero();   ///< ∂f/∂(y, z) [N/m]
   Eigen::Matrix2d dfdv = Eigen::Matrix2d::Zero();   ///< ∂f/∂(ẏ, ż) [N s/m]
+  /// The largest film pressure [Pa] where the solution gives the pressure field (the
+  /// finite bearing: its largest nodal value); NaN else (the closed forms give it in
+  /// operating_data()).
+  Real peak_pressure = std::numeric_limits<Real>::quiet_NaN();
 };
 
 /// The film force on a journal at @p x = (y, z) from the housing's centre, moving at

@@ -109,6 +109,32 @@ TEST(FiniteBearing, OperatingDataOfTheSquareBearingMatchesRaimondiAndBoydsTable)
   }
 }
 
+TEST(FiniteBearing, PeakPressureTendsToTheShortBearingsAndMatchesRaimondiAndBoyd) {
+  // As L/D → 0 the largest nodal pressure tends to the short bearing's closed-form peak
+  // (3μΩL²/(4c²)·ε sin θ*/(1 + ε cos θ*)³): at L/D = 0.05, ε = 0.3, 0.5, 0.8, 576 × 8 cells
+  // (a node within 0.3° of the peak), within 6(L/D)²/(1 − ε²) + 1e-3 as the load above
+  // (measured 2.3e-3, 4.7e-3, 1.7e-2 below it). At L/D = 1 (Reynolds' condition,
+  // 144 × 16 cells) the unit load over the peak, W/(L·D)/p_max, against Raimondi &
+  // Boyd's 0.484, 0.415, 0.313, 0.247 at ε = 0.4, 0.6, 0.8, 0.9, to 3 % (measured 0.480,
+  // 0.412, 0.318, 0.247: the table's three digits and its coarse mesh, as its angles).
+  for (const Real eps : {0.3, 0.5, 0.8}) {
+    const JournalBearingGeometry g = bearing(0.05);
+    const Eigen::Vector2d x(eps * c, 0.0);
+    const FilmForce f = finite_bearing_force(g, {.circumferential = 576, .axial = 8}, speed, x, Eigen::Vector2d::Zero());
+    const Real exact = short_bearing_peak_pressure(g, speed, x, Eigen::Vector2d::Zero());
+    EXPECT_NEAR(f.peak_pressure, exact, (6 * 0.05 * 0.05 / (1 - eps * eps) + 1e-3) * exact) << "ε = " << eps;
+  }
+  FluidFilmBearing b{.node_a = 0, .node_b = {}, .geometry = bearing(1.0), .theory = FilmTheory::finite_length,
+                     .grid = {.circumferential = 144, .axial = 16, .cavitation = Cavitation::reynolds}};
+  for (const auto& [eps, ratio] : {std::pair{0.4, 0.484}, std::pair{0.6, 0.415}, std::pair{0.8, 0.313}, std::pair{0.9, 0.247}}) {
+    Vector x(2);
+    x << 0.0, eps * c;
+    std::map<std::string, Real> d;
+    for (const OperatingValue& o : b.operating_data({.speed = speed}, x, Vector::Zero(2))) d[o.name] = o.value;
+    EXPECT_NEAR(d["specific_load_pa"] / d["peak_pressure_pa"], ratio, 0.03 * ratio) << "ε = " << eps;
+  }
+}
+
 TEST(FiniteBearing, JacobianEqualsCentralDifferences) {
   // Whirling and squeezing states, both conditions, L/D = 0.5, 48 × 6 cells. The
   // Jacobian holds the cavitated region fixed; a step of 1e-7 c moves its boundary by
