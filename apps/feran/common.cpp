@@ -56,7 +56,7 @@ void add_output_options(CLI::App& cmd, OutputOptions& out) {
   cmd.add_option("--json", out.json_path, "Write the results as JSON to this file (docs/output-format.md)");
   cmd.add_option("--csv", out.csv_path, "Write the results as CSV to this file (docs/output-format.md)");
   cmd.add_flag("-q,--quiet", out.quiet, "Do not print the table on standard output");
-  cmd.add_option("--speed-unit", out.speed_unit, "Speeds in the terminal tables: Hz or rpm (default Hz; api684: rpm); files keep their units")
+  cmd.add_option("--speed-unit", out.speed_unit, "Speeds in the terminal tables: Hz or rpm (default Hz; api684: rpm), frequencies then in Hz or cpm; files keep their units")
       ->check(CLI::IsMember({"Hz", "rpm"}));
 }
 

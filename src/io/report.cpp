@@ -37,6 +37,14 @@ std::string speed_number(Real speed, const std::string& unit) {
   return unit == "rpm" ? fmt::format("{:.0f}", speed_value(speed, unit)) : fmt::format("{:.4g}", rad_to_hz(speed));
 }
 
+// Frequencies of the motion follow the speed unit, as in the report: Hz with Hz,
+// cycles per minute with rpm (a synchronous mode's frequency then reads as its speed).
+std::string frequency_unit(const std::string& unit) { return unit == "rpm" ? "cpm" : "Hz"; }
+Real frequency_value(Real hz, const std::string& unit) { return hz * (unit == "rpm" ? 60.0 : 1.0); }
+std::string frequency_text(Real hz, const std::string& unit) {
+  return fmt::format("{:.4g} {}", frequency_value(hz, unit), frequency_unit(unit));
+}
+
 // A right-aligned number; "-" when it does not exist. Values that would print as
 // "-0.000" print as "0.000".
 std::string cell(Real x, const char* format_spec, int width, int decimals) {
@@ -71,7 +79,7 @@ std::string stability_text(const HarmonicResult& result, const std::string& unit
                        "         There the response is no steady state the rotor reaches: any disturbance grows.\n\n",
                        unstable_points(result), result.stability.size(), speed_text(p.speed, unit),
                        p.divergence ? fmt::format("divergence, a real eigenvalue {:.4g} 1/s", p.growth_rate)
-                                    : fmt::format("a mode at {:.4g} Hz grows at {:.4g} 1/s", p.frequency_hz, p.growth_rate));
+                                    : fmt::format("a mode at {} grows at {:.4g} 1/s", frequency_text(p.frequency_hz, unit), p.growth_rate));
   }
   if (unknown > 0)
     out += fmt::format("note: the stability is unknown at {} of {} points\n\n", unknown, result.stability.size());
@@ -172,7 +180,7 @@ std::string force_name(const Model& model, Index force) {
 
 std::string point_text(const HarmonicResult& r, Index k, const std::string& unit) {
   const auto i = static_cast<std::size_t>(k);
-  if (r.frequency_sweep) return fmt::format("{:.4g} Hz excitation", rad_to_hz(r.frequencies[i]));
+  if (r.frequency_sweep) return frequency_text(rad_to_hz(r.frequencies[i]), unit) + " excitation";
   return speed_text(r.speeds[i], unit);
 }
 
@@ -182,12 +190,15 @@ std::string modal_report(const ModalResult& result, const Model& model, const Re
   std::string out = source_line("modal", source);
   out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed, source.speed_unit), result.modes.size(),
                      to_string(result.info.method));
-  out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {:<12} {}\n", "mode", "frequency [Hz]",
+  const std::string& unit = source.speed_unit;
+  out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {:<12} {}\n", "mode",
+                     fmt::format("frequency [{}]", frequency_unit(unit)),
                      "damping [%]", "log. decr.", "whirl", "directivity", "type", "shape", "note");
   int index = 0;
   for (const Mode& m : result.modes) {
     const char* note = m.rigid_body ? "rigid body" : (!m.oscillatory ? "non-oscillatory" : "");
-    out += fmt::format("{:>4}  {}  {}  {}  {:<9} {}  {:<10} {:<12} {}\n", ++index, cell(m.frequency_hz, ".4f", 14, 4),
+    out += fmt::format("{:>4}  {}  {}  {}  {:<9} {}  {:<10} {:<12} {}\n", ++index,
+                       cell(frequency_value(m.frequency_hz, unit), unit == "rpm" ? ".2f" : ".4f", 14, unit == "rpm" ? 2 : 4),
                        cell(100.0 * m.damping_ratio, ".3f", 12, 3), cell(m.log_decrement, ".4f", 10, 4),
                        to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type),
                        m.shape_kind == ModeShape::none ? "-" : to_string(m.shape_kind), note);
@@ -230,8 +241,10 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
     }
     out += '\n';
   };
-  table("Natural frequencies [Hz]", [](const TrackedMode& m, std::size_t i) { return m.frequency_hz[i]; },
-        ".3f");
+  const std::string& unit = source.speed_unit;
+  table(fmt::format("Natural frequencies [{}]", frequency_unit(unit)).c_str(),
+        [&](const TrackedMode& m, std::size_t i) { return frequency_value(m.frequency_hz[i], unit); },
+        unit == "rpm" ? ".1f" : ".3f");
   table("Damping ratios [%]", [](const TrackedMode& m, std::size_t i) { return 100.0 * m.damping_ratio[i]; },
         ".3f");
 
@@ -255,8 +268,8 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
                          "a negative support stiffness or an axial load beyond buckling)\n",
                          speed_text(t.speed, source.speed_unit));
     else
-      out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {:.4g} Hz natural frequency\n",
-                         speed_text(t.speed, source.speed_unit), label, t.frequency_hz);
+      out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {} natural frequency\n",
+                         speed_text(t.speed, source.speed_unit), label, frequency_text(t.frequency_hz, unit));
   }
   out += operating_tables(result.operating, model, "at the equilibrium", speed_header(source.speed_unit),
                           [&](std::size_t k) { return speed_number(result.speeds[k], source.speed_unit); });
@@ -270,8 +283,10 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
   const std::size_t n = result.speeds.size();
   if (n == 0) return out + "no point could be solved\n";
   if (result.frequency_sweep)
-    out += fmt::format("frequency sweep {:.4g} to {:.4g} Hz ({} points) at rotor speed {}", rad_to_hz(result.frequencies.front()),
-                       rad_to_hz(result.frequencies.back()), n, speed_text(options.speed, source.speed_unit));
+    out += fmt::format("frequency sweep {:.4g} to {} ({} points) at rotor speed {}",
+                       frequency_value(rad_to_hz(result.frequencies.front()), source.speed_unit),
+                       frequency_text(rad_to_hz(result.frequencies.back()), source.speed_unit), n,
+                       speed_text(options.speed, source.speed_unit));
   else if (n == 1)
     out += fmt::format("at speed {}, synchronous excitation", speed_text(result.speeds.front(), source.speed_unit));
   else
@@ -285,13 +300,15 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
   if (!result.probes.empty()) {
     const std::size_t rows = std::min<std::size_t>(n, 11);
     out += "Orbit size (major semi-axis, = largest |r|) [mm] and phase of v [deg]\n";
-    out += fmt::format("{:>12}", result.frequency_sweep ? "freq. [Hz]" : speed_header(source.speed_unit));
+    out += fmt::format("{:>12}", result.frequency_sweep ? fmt::format("freq. [{}]", frequency_unit(source.speed_unit))
+                                                        : speed_header(source.speed_unit));
     for (const ProbeResponse& p : result.probes) out += fmt::format(" {:>14} {:>7}", node_name(model, p.node), "phase");
     if (unstable_points(result) > 0) out += "  rotor";
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t k = rows == 1 ? 0 : r * (n - 1) / (rows - 1);
-      out += result.frequency_sweep          ? cell(rad_to_hz(result.frequencies[k]), ".2f", 12, 2)
+      out += result.frequency_sweep
+                 ? cell(frequency_value(rad_to_hz(result.frequencies[k]), source.speed_unit), source.speed_unit == "rpm" ? ".1f" : ".2f", 12, 2)
              : source.speed_unit == "rpm" ? cell(speed_value(result.speeds[k], "rpm"), ".1f", 12, 1)
                                           : cell(rad_to_hz(result.speeds[k]), ".2f", 12, 2);
       for (const ProbeResponse& p : result.probes) {
@@ -468,7 +485,9 @@ std::string api684_cases(const Api684Result& result, const Model& model, const s
   std::string out;
   for (const Api684Case& c : result.cases) {
     out += fmt::format("\n{}", c.name);
-    if (c.mode) out += fmt::format(" ({:.2f} Hz at the maximum continuous speed, log. decr. {:.3f})", c.mode->frequency_hz, c.mode->log_decrement);
+    if (c.mode)
+      out += fmt::format(" ({} at the maximum continuous speed, log. decr. {:.3f})", frequency_text(c.mode->frequency_hz, unit),
+                         c.mode->log_decrement);
     out += fmt::format(": {}\n", c.passes ? "passes" : "FAILS");
     for (const PlacedUnbalance& u : c.unbalances)
       out += fmt::format("  unbalance {:.4g} g mm at node {}, {:.0f} deg (W = {:.4g} kg, {})\n", u.amount * 1e6,

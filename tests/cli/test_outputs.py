@@ -222,7 +222,8 @@ class CsvFields(OutputTest):
 
 class SpeedUnit(OutputTest):
     """--speed-unit rpm: the terminal tables' speed columns in rpm, each 60 times the
-    default's Hz (the frequencies of the motion stay in Hz)."""
+    default's Hz, and the frequencies of the motion in cycles per minute (as the
+    report's); other columns unchanged."""
 
     def first_column(self, text, header):
         lines = text.splitlines()
@@ -244,7 +245,21 @@ class SpeedUnit(OutputTest):
             self.assertEqual(len(a), len(b))
             for x, y in zip(a, b):
                 self.assertAlmostEqual(float(y[0]), 60 * float(x[0]), delta=0.6)  # printed to 0.01 Hz, 0.1 rpm
-                self.assertEqual(x[1:], y[1:])  # the same values in the other columns
+                if command == "campbell":  # natural frequencies: 0.001 Hz against 0.1 cpm
+                    for f, g in zip(x[1:], y[1:]):
+                        self.assertAlmostEqual(float(g), 60 * float(f), delta=0.1)
+                else:
+                    self.assertEqual(x[1:], y[1:])  # orbits and phases
+            if command == "campbell":
+                self.assertIn("Natural frequencies [cpm]", rpm.stdout)
+        hz = run("modal", self.model, "--speed", "30Hz")
+        rpm = run("modal", self.model, "--speed", "30Hz", "--speed-unit", "rpm")
+        self.assertIn("frequency [cpm]", rpm.stdout)
+        f_hz = [float(line.split()[1]) for line in hz.stdout.splitlines() if line.split()[:1] and line.split()[0].isdigit()]
+        f_cpm = [float(line.split()[1]) for line in rpm.stdout.splitlines() if line.split()[:1] and line.split()[0].isdigit()]
+        self.assertEqual(len(f_hz), len(f_cpm))
+        for f, g in zip(f_hz, f_cpm):
+            self.assertAlmostEqual(g, 60 * f, delta=0.01)  # 1e-4 Hz against 0.01 cpm
         r = run("modal", self.model, "--speed", "30Hz", "--speed-unit", "krpm")
         self.assertNotEqual(r.returncode, 0)
         self.assertIn("--speed-unit", r.stderr)
