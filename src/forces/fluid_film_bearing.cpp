@@ -331,17 +331,25 @@ NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& 
 
 namespace {
 
-// The largest value of p over α ∈ [0, 2π), by sampling and a parabola through the top.
+// The largest value of p over α ∈ [0, 2π): the best of 180 samples (p has one
+// positive lobe, far wider than 2°), then golden-section search between its neighbours
+// to 1e-10 rad (50 steps): 230 evaluations per call, cheap enough for every sample of
+// a run-up.
 template <class P>
 Real peak_over_angle(P&& p) {
-  constexpr int n = 3600;
+  constexpr int n = 180;
   int best = 0;
   Real top = p(0.0);
   for (int i = 1; i < n; ++i)
     if (const Real v = p(2 * pi * i / n); v > top) top = v, best = i;
-  const Real h = 2 * pi / n, a = best * h;
-  const Real f0 = p(a - h), f1 = top, f2 = p(a + h), d = f0 - 2 * f1 + f2;
-  return d < 0 ? f1 - (f2 - f0) * (f2 - f0) / (8 * d) : f1;
+  const Real h = 2 * pi / n, ratio = 0.5 * (std::sqrt(5.0) - 1);
+  Real lo = best * h - h, hi = best * h + h;
+  Real x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo), f1 = p(x1), f2 = p(x2);
+  for (int k = 0; k < 50; ++k) {
+    if (f1 < f2) lo = x1, x1 = x2, f1 = f2, x2 = lo + ratio * (hi - lo), f2 = p(x2);
+    else hi = x2, x2 = x1, f2 = f1, x1 = hi - ratio * (hi - lo), f1 = p(x1);
+  }
+  return std::max({top, f1, f2});
 }
 
 }  // namespace
