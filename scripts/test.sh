@@ -10,7 +10,8 @@
 #     tests 3.4 times slower (491 s against 146 s on two cores) for a build 1.2 to
 #     1.5 times faster. The full-length example run-ups and the long study tests
 #     (the command-line studies, with and without MPI, and the Friswell study; label
-#     long_runup, minutes each when instrumented) run in the Release pass only; the run-up code itself is covered in both. It is built without debug
+#     long_runup, minutes each when instrumented) and four heavy numerical tests (listed
+#     below) run in the Release pass only; the run-up code itself is covered in both. It is built without debug
 #     information (-g0): the sanitizers' reports still name the functions (rebuild
 #     with -DCMAKE_CXX_FLAGS_DEBUG=-g for file and line). clang compiles this
 #     instrumented build in half g++'s time;
@@ -35,7 +36,15 @@ CC=clang-14 CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug
   -DFERAN_WARNINGS_AS_ERRORS=ON -DFERAN_UNITY_BUILD=ON "${feran_launcher[@]}" >/dev/null
 cmake --build build-sanitize -j "$jobs" >/dev/null
 stage "the sanitizer build"
-ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long_runup
+# Besides the long run-ups, four numerical tests of 16 to 39 s each when instrumented
+# (seconds in Release, where they run) whose code the sanitizer pass runs in smaller
+# tests: the pedestal example's Campbell diagram (frequency tables: a self-consistent
+# solve per mode and speed), API 684's worst-peak check, the report's Trumpler verdicts
+# and the run-up growth rate about the equilibrium. About 45 s of the pass.
+heavy='^(example\.07_pedestal\.model\.campbell|verification\.Api684\.TheSmallestSurplusIsThatOfTheWorstPeak'
+heavy+='|unit_io\.HtmlReport\.JudgesTheJournalBearingsFilmAndLoadByTrumplersLimits'
+heavy+='|unit_analyses_static\.Supports\.RunupGrowthRateAboutTheEquilibriumIsTheEigenvaluesRealPart)$'
+ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long_runup -E "$heavy"
 stage "the sanitizer tests"
 
 bash scripts/fuzz.sh 30 build-sanitize
