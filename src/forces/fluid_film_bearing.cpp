@@ -313,14 +313,22 @@ std::vector<Index> FluidFilmBearing::nodes() const { return detail::lateral_node
 
 std::vector<Index> FluidFilmBearing::dofs() const { return detail::lateral_dofs(node_a, node_b); }
 
+namespace {
+
+// The drag torque of a film whose force on the journal at e is F (above): the Couette
+// shear over the whole film and the pressure's share.
+Real film_drag_torque(const JournalBearingGeometry& g, Real speed, const Eigen::Vector2d& e, const FilmForce& F) {
+  const Real R = g.diameter / 2, eps = e.norm() / g.clearance;
+  const Real couette = 2 * pi * g.viscosity * R * R * R * g.length * speed / (g.clearance * std::sqrt(1 - eps * eps));
+  return couette + 0.5 * (e(0) * F.f(1) - e(1) * F.f(0));
+}
+
+}  // namespace
+
 Real FluidFilmBearing::drag_torque(const MotionState& s, const Vector& x, const Vector& v) const {
   const bool housing = node_b.has_value();
   const Eigen::Vector2d e = detail::relative(x, housing);
-  const FilmForce F = film_force(geometry, theory, s.speed, e, detail::relative(v, housing), grid);
-  const Real R = geometry.diameter / 2, eps = e.norm() / geometry.clearance;
-  const Real couette =
-      2 * pi * geometry.viscosity * R * R * R * geometry.length * s.speed / (geometry.clearance * std::sqrt(1 - eps * eps));
-  return couette + 0.5 * (e(0) * F.f(1) - e(1) * F.f(0));
+  return film_drag_torque(geometry, s.speed, e, film_force(geometry, theory, s.speed, e, detail::relative(v, housing), grid));
 }
 
 NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& x, const Vector& v) const {
@@ -376,7 +384,7 @@ std::vector<OperatingValue> FluidFilmBearing::operating_data(const MotionState& 
   const Real W = load.norm();
   const Real attitude = std::atan2(load(0) * e(1) - load(1) * e(0), load.dot(e));
   const Real N = s.speed / (2 * pi);
-  const Real torque = drag_torque(s, x, v);
+  const Real torque = film_drag_torque(geometry, s.speed, e, F);  // from the same film force
   Real peak = F.peak_pressure;  // the finite bearing's largest nodal pressure
   if (theory == FilmTheory::short_bearing) {
     peak = short_bearing_peak_pressure(geometry, s.speed, e, ev);
