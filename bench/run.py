@@ -4,6 +4,7 @@ writes bench/results.json (case, model size, median wall time over repeated runs
 peak memory) and a scaling table with fitted exponents.
 
 Usage: bench/run.py [--feran PATH] [--repeats N] [--out FILE] [--only SUBSTRING]
+       bench/run.py --compare [--against FILE] [--from FILE] [--margin F] [--floor-ms MS]
 (see bench/README.md). Needs only the Python standard library.
 """
 import argparse
@@ -136,13 +137,59 @@ def fit_exponent(xs, ys):
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx
 
 
+def compare(reference, cases, margin, floor_ms):
+    """Prints each case of @p cases against the same case of @p reference (a results
+    document): both medians per unit, their ratio, and a verdict — 'slower' or 'faster'
+    when the ratio is beyond 1 ± margin and the difference beyond floor_ms (a machine's
+    noise on short runs), else 'same'. Returns the number of cases found slower."""
+    old = {c["case"]: c for c in reference["cases"]}
+    slower = 0
+    print(f"against the results of {reference.get('date', '?')} ({reference.get('machine', {}).get('platform', '?')}); "
+          f"verdict beyond ±{100 * margin:.0f} % and {floor_ms:g} ms")
+    print(f"{'case':36s} {'before':>11s} {'now':>11s} {'ratio':>7s}  verdict")
+    for c in cases:
+        o = old.get(c["case"])
+        if o is None:
+            print(f"{c['case']:36s} {'-':>11s} {c['median_per_unit_ms']:11.3f} {'-':>7s}  new case")
+            continue
+        a, b = o["median_per_unit_ms"], c["median_per_unit_ms"]
+        ratio = b / a if a > 0 else math.inf
+        verdict = "same"
+        if abs(b - a) > floor_ms and ratio > 1 + margin:
+            verdict, slower = "SLOWER", slower + 1
+        elif abs(b - a) > floor_ms and ratio < 1 / (1 + margin):
+            verdict = "faster"
+        print(f"{c['case']:36s} {a:11.3f} {b:11.3f} {ratio:7.2f}  {verdict}")
+    return slower
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--feran", default=os.path.join(ROOT, "build", "feran"), help="the feran program")
     ap.add_argument("--repeats", type=int, default=7, help="runs per case (median reported)")
-    ap.add_argument("--out", default=os.path.join(HERE, "results.json"))
+    ap.add_argument("--out", default=None, help="results file to write (default bench/results.json; "
+                    "with --compare none unless given)")
     ap.add_argument("--only", default="", help="run only cases whose name contains this")
+    ap.add_argument("--compare", action="store_true",
+                    help="print each case against --against (ratio and verdict) instead of replacing it")
+    ap.add_argument("--against", default=os.path.join(HERE, "results.json"), help="the results compared with")
+    ap.add_argument("--from", dest="source", default=None,
+                    help="with --compare: take the cases from this results file instead of running them")
+    ap.add_argument("--margin", type=float, default=0.15, help="relative noise margin of a verdict (0.15)")
+    ap.add_argument("--floor-ms", type=float, default=2.0, help="absolute noise floor of a verdict in ms (2)")
     args = ap.parse_args()
+    if args.compare:
+        with open(args.against) as f:
+            reference = json.load(f)
+        if args.source:
+            with open(args.source) as f:
+                cases_now = [c for c in json.load(f)["cases"] if args.only in c["case"]]
+            compare(reference, cases_now, args.margin, args.floor_ms)
+            return
+    elif args.source:
+        ap.error("--from compares a results file: give --compare too")
+    if args.out is None and not args.compare:
+        args.out = os.path.join(HERE, "results.json")
     if not os.path.exists(model_path(SIZES[-1])):
         subprocess.run([sys.executable, os.path.join(HERE, "make_models.py")], check=True)
 
@@ -219,6 +266,10 @@ def main():
         print(f"{name:32s} {1e3 * r['median_s']:10.2f} ms  (in one Python process, CPU "
               f"{1e3 * r['median_cpu_s']:.1f} ms)", flush=True)
 
+    if args.compare:
+        compare(reference, results, args.margin, args.floor_ms)
+        if args.out is None:
+            return
     if args.only and os.path.exists(args.out):
         # A partial run updates its cases in the existing results and keeps the rest.
         with open(args.out) as f:
