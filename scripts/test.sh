@@ -30,6 +30,12 @@ bash scripts/build.sh
 stage "the Release build"
 ctest --test-dir build --output-on-failure -j "$jobs"
 stage "the Release tests"
+# Informative, never failing: the program's start-up and a few quick cases against the
+# committed bench/results.json (bench/README.md), where a slowdown shows before anyone
+# measures; a machine's noise is no test failure.
+/usr/bin/python3 bench/run.py --compare --repeats 3 \
+  --only startup,modal_12_6,response_100_201,runup_trapezoidal_201 || echo "test.sh: the speed check did not run"
+stage "the speed check"
 
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g0 -O1" \
   -DFERAN_SANITIZE=ON -DFERAN_FUZZ=ON -DFERAN_LONG_TESTS=OFF -DFERAN_BUILD_PYTHON=OFF -DFERAN_BROWSER_TESTS=OFF \
