@@ -153,6 +153,14 @@ std::string operating_table(const StaticResult& result, const Model& model) {
   return operating_block("Bearing operating data at the equilibrium", "", rows);
 }
 
+// The supports' state at an analysis' one speed (its first point): one row per support.
+std::string operating_at_one_speed(const std::vector<OperatingSeries>& series, const Model& model) {
+  std::vector<OperatingRow> rows;
+  for (const OperatingSeries& s : series)
+    if (!s.values.empty()) rows.push_back({force_name(model, s.force), &s.quantities, &s.values.front()});
+  return operating_block("Bearing operating data at the equilibrium", "", rows);
+}
+
 // The supports' state over the points of an analysis: per support, rows at (at most)
 // 11 evenly spread points, as the analyses' other tables; @p label names point k.
 template <class Label>
@@ -203,10 +211,7 @@ std::string modal_report(const ModalResult& result, const Model& model, const Re
                        to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type),
                        m.shape_kind == ModeShape::none ? "-" : to_string(m.shape_kind), note);
   }
-  std::vector<OperatingRow> rows;
-  for (const OperatingSeries& s : result.operating)
-    if (!s.values.empty()) rows.push_back({force_name(model, s.force), &s.quantities, &s.values.front()});
-  out += operating_block("Bearing operating data at the equilibrium", "", rows);
+  out += operating_at_one_speed(result.operating, model);
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
 }
@@ -360,10 +365,7 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
                          point_text(result, static_cast<Index>(at), source.speed_unit));
   }
   if (result.frequency_sweep) {
-    std::vector<OperatingRow> rows;
-    for (const OperatingSeries& s : result.operating)
-      if (!s.values.empty()) rows.push_back({force_name(model, s.force), &s.quantities, &s.values.front()});
-    out += operating_block("Bearing operating data at the equilibrium", "", rows);
+    out += operating_at_one_speed(result.operating, model);
   } else {
     out += operating_tables(result.operating, model, "at the equilibrium", speed_header(source.speed_unit),
                             [&](std::size_t k) { return speed_number(result.speeds[k], source.speed_unit); });

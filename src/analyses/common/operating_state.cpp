@@ -80,12 +80,4 @@ void append_in_motion(std::vector<OperatingSeries>& series, const Model& model, 
   }
 }
 
-std::vector<OperatingSeries> operating_at_equilibria(const Model& model, const Model& linear,
-                                                     const std::vector<Real>& speeds) {
-  std::vector<OperatingSeries> out = operating_series(model);
-  if (out.empty()) return out;
-  for (const Real speed : speeds) append_at_equilibrium(out, linear, speed);
-  return out;
-}
-
 }  // namespace feran

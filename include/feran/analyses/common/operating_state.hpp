@@ -41,13 +41,9 @@ std::vector<OperatingSeries> operating_series(const Model& model);
 void append_at_equilibrium(std::vector<OperatingSeries>& series, const Model& linear, Real speed);
 
 /// Appends the supports' state in the motion @p x, @p v (all unconstrained DOFs,
-/// global_dof order) at @p state: a run-up's output time.
+/// global_dof order) at @p state: a run-up's output time. A support that cannot be
+/// evaluated there (its journal at the wall) gets a row of NaN.
 void append_in_motion(std::vector<OperatingSeries>& series, const Model& model, const MotionState& state,
                       const Vector& x, const Vector& v);
-
-/// The operating state of every support over @p speeds, at the equilibria of
-/// @p linear = linearised(@p model) (empty for a model without supports).
-std::vector<OperatingSeries> operating_at_equilibria(const Model& model, const Model& linear,
-                                                     const std::vector<Real>& speeds);
 
 }  // namespace feran
