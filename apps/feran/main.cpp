@@ -1,7 +1,11 @@
 // feran: finite-element rotor dynamics from the command line.
 #include <cstdio>
+#include <algorithm>
 #include <exception>
 #include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <malloc.h>
 
@@ -81,16 +85,30 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "feran " FERAN_VERSION);
   app.require_subcommand(1);
 
+  // The commands, each registered only when it may run: a command line naming one
+  // registers that one (building every command's options took about a millisecond
+  // of each run, a fifth of a small model's whole analysis), '--version' none, and
+  // anything else (help, a mistyped command) all of them, for the help and the error.
+  using Adder = feran::app::Runner (*)(CLI::App&, int, char**);
+  static constexpr std::pair<const char*, Adder> commands[] = {
+      {"modal", [](CLI::App& a, int, char**) { return feran::app::add_modal_command(a); }},
+      {"campbell", [](CLI::App& a, int, char**) { return feran::app::add_campbell_command(a); }},
+      {"response", [](CLI::App& a, int, char**) { return feran::app::add_response_command(a); }},
+      {"static", [](CLI::App& a, int, char**) { return feran::app::add_static_command(a); }},
+      {"runup", [](CLI::App& a, int, char**) { return feran::app::add_runup_command(a); }},
+      {"params", [](CLI::App& a, int, char**) { return feran::app::add_params_command(a); }},
+      {"study", [](CLI::App& a, int, char**) { return feran::app::add_study_command(a); }},
+      {"api684", [](CLI::App& a, int, char**) { return feran::app::add_api684_command(a); }},
+      {"report", [](CLI::App& a, int argc_, char** argv_) { return feran::app::add_report_command(a, argc_, argv_); }},
+  };
+  std::vector<std::string> names;
+  for (const auto& [name, add] : commands) names.emplace_back(name);
+  const std::string first = argc > 1 ? argv[1] : "";
+  const bool named = std::find(names.begin(), names.end(), first) != names.end();
+  const bool version_only = argc == 2 && first == "--version";
   std::map<std::string, feran::app::Runner> runners;
-  runners["modal"] = feran::app::add_modal_command(app);
-  runners["campbell"] = feran::app::add_campbell_command(app);
-  runners["response"] = feran::app::add_response_command(app);
-  runners["static"] = feran::app::add_static_command(app);
-  runners["runup"] = feran::app::add_runup_command(app);
-  runners["params"] = feran::app::add_params_command(app);
-  runners["study"] = feran::app::add_study_command(app);
-  runners["api684"] = feran::app::add_api684_command(app);
-  runners["report"] = feran::app::add_report_command(app, argc, argv);
+  for (const auto& [name, add] : commands)
+    if (!version_only && (!named || first == name)) runners[name] = add(app, argc, argv);
   // An option given an empty value ('--json ""', '--speed ""') is an error, not the
   // option left out.
   const CLI::Validator non_empty(
@@ -102,9 +120,8 @@ int main(int argc, char** argv) {
 
   // A first argument that is neither an option nor a command is a mistyped command
   // (CLI11 would only say that a command is required).
-  if (argc > 1 && argv[1][0] != '-' && runners.count(argv[1]) == 0) {
-    std::vector<std::string> names;
-    for (const auto& [name, runner] : runners) names.push_back(name);
+  if (argc > 1 && argv[1][0] != '-' && !named) {
+    std::sort(names.begin(), names.end());
     std::string message = fmt::format("unknown command '{}'", feran::printable(argv[1]));
     if (const auto match = feran::detail::closest_match(argv[1], names, 2)) message += fmt::format("; did you mean '{}'?", *match);
     std::fprintf(stderr, "feran: error: %s (the commands are %s)\n", message.c_str(),

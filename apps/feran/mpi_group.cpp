@@ -3,16 +3,14 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 #include <string>
-#include <system_error>
 
-#include <dlfcn.h>
 #include <sched.h>
 
 #include <fmt/format.h>
 
 #include <feran/core/error.hpp>
+#include <feran/core/module.hpp>
 #include <feran/core/parallel.hpp>
 
 namespace feran::app {
@@ -30,50 +28,24 @@ struct MpiModule {
   void (*abort)(int) = nullptr;
 };
 
-constexpr const char* module_name = "libferan_mpi.so";
-
-std::string program_directory() {
-  std::error_code error;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  return error ? std::string() : exe.parent_path().string();
-}
-
 template <class F>
-void bind_symbol(void* handle, const char* name, F& f, const std::string& path) {
-  void* symbol = dlsym(handle, name);
-  if (symbol == nullptr) throw Error(fmt::format("the MPI module {} has no function {}", path, name));
-  f = reinterpret_cast<F>(symbol);
+void bind_symbol(const LoadedModule& module, const char* name, F& f) {
+  f = reinterpret_cast<F>(module_function(module, name));
 }
 
 class Mpi : public Communicator {
  public:
   Mpi() {
-    std::vector<std::string> tried;
-    std::string reason;
-    for (const std::string& dir : {program_directory(), std::string(FERAN_MPI_MODULE_DIR)}) {
-      if (dir.empty()) continue;
-      const std::string path = (std::filesystem::path(dir) / module_name).string();
-      tried.push_back(path);
-      // Global: Open MPI's own plug-ins look up its symbols in the global scope.
-      handle_ = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
-      if (handle_ != nullptr) {
-        path_ = path;
-        break;
-      }
-      if (const char* e = dlerror(); e != nullptr && std::filesystem::exists(path)) reason = e;
-    }
-    if (handle_ == nullptr)
-      throw Error(fmt::format("an MPI launcher started feran, but its MPI module could not be loaded ({}{}); "
-                              "build feran with Open MPI installed (libopenmpi-dev), or run without mpirun",
-                              reason.empty() ? "not found as " : reason + "; tried ",
-                              fmt::join(tried, " or ")));
-    bind_symbol(handle_, "feran_mpi_init", f_.init, path_);
-    bind_symbol(handle_, "feran_mpi_allgather_sizes", f_.allgather_sizes, path_);
-    bind_symbol(handle_, "feran_mpi_allgatherv", f_.allgatherv, path_);
-    bind_symbol(handle_, "feran_mpi_broadcast_size", f_.broadcast_size, path_);
-    bind_symbol(handle_, "feran_mpi_broadcast", f_.broadcast, path_);
-    bind_symbol(handle_, "feran_mpi_finalize", f_.finalize, path_);
-    bind_symbol(handle_, "feran_mpi_abort", f_.abort, path_);
+    // Global: Open MPI's own plug-ins look up its symbols in the global scope.
+    module_ = load_module("libferan_mpi.so", true, "feran study under an MPI launcher",
+                          "build feran with Open MPI installed (libopenmpi-dev), or run without mpirun");
+    bind_symbol(module_, "feran_mpi_init", f_.init);
+    bind_symbol(module_, "feran_mpi_allgather_sizes", f_.allgather_sizes);
+    bind_symbol(module_, "feran_mpi_allgatherv", f_.allgatherv);
+    bind_symbol(module_, "feran_mpi_broadcast_size", f_.broadcast_size);
+    bind_symbol(module_, "feran_mpi_broadcast", f_.broadcast);
+    bind_symbol(module_, "feran_mpi_finalize", f_.finalize);
+    bind_symbol(module_, "feran_mpi_abort", f_.abort);
     if (f_.init(&rank_, &size_) != 0) throw Error("MPI could not be initialised");
   }
   ~Mpi() override {
@@ -117,8 +89,7 @@ class Mpi : public Communicator {
     if (status == 2) throw Error(fmt::format("MPI {}: more than 2 GiB of results in one batch; use a smaller --batch", what));
     if (status != 0) throw Error(fmt::format("MPI {} failed", what));
   }
-  void* handle_ = nullptr;
-  std::string path_;
+  LoadedModule module_;
   MpiModule f_;
   int rank_ = 0, size_ = 1;
 };
