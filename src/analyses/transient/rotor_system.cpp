@@ -20,6 +20,7 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector consta
       jacobian_speed_(std::numeric_limits<Real>::quiet_NaN()) {
   const SystemMatrices& c = assembler_.constant();
   M_ = c.M, C_ = c.C, K_ = c.K, G_ = c.G, Ci_ = c.Ci, Ki_ = c.Ki;
+  M_.makeCompressed();
   Cc_ = C_ + Ci_;
   Cc_.prune(0.0);
   mass_.compute(M_);
@@ -41,7 +42,19 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector consta
   f_full_.resize(model.n_dofs());
   n_ = M_.rows();
   update_speed(profile_.speed(0.0));
+  damping_sum_ = SparseSum(damping_terms());
+  stiffness_sum_ = SparseSum(stiffness_terms());
   if (drive != nullptr) set_up_drive(*drive);
+}
+
+std::vector<const SparseMatrix*> RotorSystem::damping_terms() const {
+  if (assembler_.speed_dependent()) return {&Cc_, &G_, &variable_.C};
+  return {&Cc_, &G_};
+}
+
+std::vector<const SparseMatrix*> RotorSystem::stiffness_terms() const {
+  if (assembler_.speed_dependent()) return {&K_, &Ki_, &variable_.K};
+  return {&K_, &Ki_};
 }
 
 void RotorSystem::set_up_drive(const Drive& drive) {
@@ -225,12 +238,11 @@ void RotorSystem::model_jacobian(const MotionState& state, const Vector& x, cons
   const Real W = state.speed;
   update_speed(W);
   jacobian_speed_ = W;
-  DT_ = C_ + Ci_ + W * G_;
-  KT_ = K_ + W * Ki_;
-  if (assembler_.speed_dependent()) {
-    DT_ += variable_.C;
-    KT_ += variable_.K;
-  }
+  // D_T = C + C_i + Ω·G (+ the speed-dependent elements' C), K_T = K + Ω·K_i (+ their
+  // K), in place in the patterns' union: a ramp sets them at every step.
+  const bool variable = assembler_.speed_dependent();
+  damping_sum_.evaluate(variable ? std::vector<Real>{1.0, W, 1.0} : std::vector<Real>{1.0, W}, damping_terms(), DT_);
+  stiffness_sum_.evaluate(variable ? std::vector<Real>{1.0, W, 1.0} : std::vector<Real>{1.0, W}, stiffness_terms(), KT_);
   for (std::size_t i = 0; i < forces_.size(); ++i) {
     const SparseMatrix& S = selectors_[i];
     NonlinearForceValue f = evaluate(i, state, x, v);
@@ -241,6 +253,38 @@ void RotorSystem::model_jacobian(const MotionState& state, const Vector& x, cons
 }
 
 bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
+  // A driven run's speed row and column border the whole matrix: sparse LU.
+  if (!driven_) {
+    const Index nonzeros = M_.nonZeros() + DT_.nonZeros() + KT_.nonZeros();
+    if (nonzeros != band_pattern_) {
+      const Index b = std::max({BandedLU::half_bandwidth(M_), BandedLU::half_bandwidth(DT_),
+                                BandedLU::half_bandwidth(KT_)});
+      band_fits_ = b <= max_band;
+      band_positions_.clear();
+      if (band_fits_) {
+        band_.resize(n_, b);
+        // A linear model's D_T and K_T keep their patterns (SparseSum): where their
+        // entries land in the band is found once.
+        if (forces_.empty()) band_positions_ = {band_.positions(M_), band_.positions(DT_), band_.positions(KT_)};
+      }
+      band_pattern_ = nonzeros;
+    }
+    if (band_fits_) {
+      band_.set_zero();
+      if (band_positions_.empty()) {
+        band_.add(c_a, M_);
+        band_.add(c_v, DT_);
+        band_.add(c_x, KT_);
+      } else {
+        band_.add(c_a, M_, band_positions_[0]);
+        band_.add(c_v, DT_, band_positions_[1]);
+        band_.add(c_x, KT_, band_positions_[2]);
+      }
+      banded_factors_ = band_.factorize();
+      if (banded_factors_) return true;
+    }
+  }
+  banded_factors_ = false;
   SparseMatrix S = c_a * (driven_ ? mass_ext_ : M_) + c_v * DT_ + c_x * KT_;
   S.makeCompressed();
   if (S.nonZeros() != pattern_nonzeros_) {
@@ -249,6 +293,15 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
   }
   lu_.factorize(S);
   return lu_.info() == Eigen::Success;
+}
+
+void RotorSystem::solve_tangent(const Vector& rhs, Vector& delta) {
+  if (banded_factors_) {
+    delta = rhs;
+    band_.solve_in_place(delta);
+    return;
+  }
+  delta = lu_.solve(rhs);
 }
 
 Real RotorSystem::highest_frequency() {

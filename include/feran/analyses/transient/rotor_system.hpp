@@ -10,7 +10,9 @@
 
 #include <feran/analyses/transient/second_order_system.hpp>
 #include <feran/analyses/transient/speed_profile.hpp>
+#include <feran/core/banded_lu.hpp>
 #include <feran/assembly/assembler.hpp>
+#include <feran/assembly/sparse_sum.hpp>
 #include <feran/model/model.hpp>
 
 namespace feran {
@@ -56,11 +58,16 @@ class RotorSystem final : public SecondOrderSystem {
   void stiffness_times(const Vector& u, Vector& y) const override { y.noalias() = KT_ * u; }
   void damping_times(const Vector& u, Vector& y) const override { y.noalias() = DT_ * u; }
   bool factor_tangent(Real c_x, Real c_v, Real c_a) override;
-  void solve_tangent(const Vector& rhs, Vector& delta) override { delta = lu_.solve(rhs); }
+  void solve_tangent(const Vector& rhs, Vector& delta) override;
   /// Without nonlinear forces the system is linear in (x, v), and the Jacobian is
   /// exact at every time whose speed equals the speed it was set at.
   bool tangent_exact_at(Real t) const override {
     return !driven_ && forces_.empty() && profile_.speed(t) == jacobian_speed_;
+  }
+  /// A linear model whose tangent was factorised banded (the last factorisation).
+  bool refresh_pays_at(Real t) const override {
+    static_cast<void>(t);
+    return !driven_ && forces_.empty() && banded_factors_;
   }
   Real highest_frequency() override;
 
@@ -85,6 +92,9 @@ class RotorSystem final : public SecondOrderSystem {
   /// The model's damping and stiffness tangents at @p state into DT_, KT_.
   void model_jacobian(const MotionState& state, const Vector& x, const Vector& v, bool exact);
   void set_up_drive(const Drive& drive);
+  /// The terms of D_T and K_T without the forces (for damping_sum_, stiffness_sum_).
+  std::vector<const SparseMatrix*> damping_terms() const;
+  std::vector<const SparseMatrix*> stiffness_terms() const;
 
   const Model& model_;
   Assembler assembler_;
@@ -99,7 +109,16 @@ class RotorSystem final : public SecondOrderSystem {
   std::vector<Force> forces_;  ///< the model's nonlinear forces
   std::vector<SparseMatrix> selectors_;  // per force: rows of T for its DOFs
   SparseMatrix DT_, KT_;
+  SparseSum damping_sum_, stiffness_sum_;  // D_T, K_T without the forces, in place
   Real jacobian_speed_;  // the speed of DT_, KT_ (NaN before the first)
+  // The tangent's factors: banded (BandedLU, without pivoting) while the pattern's
+  // half-bandwidth is at most max_band and the pivots allow it, else a sparse LU.
+  static constexpr Index max_band = 64;
+  BandedLU band_;
+  Index band_pattern_ = -1;    // nonzeros of the patterns the band was sized for
+  bool band_fits_ = false;     // their half-bandwidth is at most max_band
+  bool banded_factors_ = false;  // the last factorisation is band_'s
+  std::vector<std::vector<Index>> band_positions_;  // of M_, DT_, KT_ in band_ (a linear model's)
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
   Index pattern_nonzeros_ = -1;
   Vector f_full_;

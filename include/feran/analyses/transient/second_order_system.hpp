@@ -54,6 +54,17 @@ class SecondOrderSystem {
     return false;
   }
 
+  /// True when a Jacobian set at @p t would be exact there (see tangent_exact_at) and
+  /// setting and factorising it costs about one Newton iteration (a banded
+  /// factorisation): an implicit step whose tangent is not exact at its time then
+  /// refreshes it instead of iterating with the old one, as on a speed ramp, where
+  /// the old tangent's speed-dependent terms (gyroscopic, internal damping, bearing
+  /// coefficients) lag behind. The default, false, keeps the tangent.
+  virtual bool refresh_pays_at(Real t) const {
+    static_cast<void>(t);
+    return false;
+  }
+
   /// An estimate, from above, of the highest undamped natural frequency [rad/s]
   /// (for the stability limit of explicit methods).
   virtual Real highest_frequency() = 0;

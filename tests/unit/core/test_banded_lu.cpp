@@ -1,0 +1,97 @@
+// The banded LU without pivoting (core/banded_lu.hpp) against a dense LU with
+// pivoting, its refusal of a matrix that needs pivoting, and the sums of sparse
+// matrices in place (assembly/sparse_sum.hpp) against Eigen's.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <Eigen/Dense>
+
+#include <feran/assembly/sparse_sum.hpp>
+#include <feran/core/banded_lu.hpp>
+#include <feran/core/error.hpp>
+
+namespace feran {
+namespace {
+
+// A random n × n matrix of half-bandwidth b: a symmetric positive definite part
+// (diagonally dominant) plus a skew part of comparable size, like a step's tangent
+// c_a·M + c_v·(C + Ω·G) + K.
+SparseMatrix random_band(Index n, Index b, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  std::vector<Eigen::Triplet<Real>> trip;
+  for (Index i = 0; i < n; ++i) {
+    trip.emplace_back(i, i, 2.0 * static_cast<Real>(b) + 1.0);
+    for (Index j = i + 1; j <= std::min(n - 1, i + b); ++j) {
+      const Real s = u(rng), k = u(rng);
+      trip.emplace_back(i, j, s + k);
+      trip.emplace_back(j, i, s - k);
+    }
+  }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  A.makeCompressed();
+  return A;
+}
+
+TEST(BandedLU, SolvesLikeADenseLUWithPivoting) {
+  for (const Index b : {1, 3, 10}) {
+    const Index n = 57;
+    const SparseMatrix A = random_band(n, b, 7u + static_cast<unsigned>(b));
+    ASSERT_EQ(BandedLU::half_bandwidth(A), b);
+    BandedLU lu;
+    lu.resize(n, b);
+    lu.set_zero();
+    lu.add(0.5, A);
+    lu.add(0.5, A, lu.positions(A));  // the two ways of adding give A
+    ASSERT_TRUE(lu.factorize());
+    const Vector rhs = Vector::LinSpaced(n, -1.0, 2.0);
+    Vector x = rhs;
+    lu.solve_in_place(x);
+    const Vector expected = Eigen::MatrixXd(A).partialPivLu().solve(rhs);
+    // Both backward stable on a well-conditioned matrix: agreement to round-off.
+    EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm()) << "b = " << b;
+  }
+}
+
+TEST(BandedLU, RefusesAMatrixThatNeedsPivoting) {
+  SparseMatrix A(3, 3);
+  A.insert(0, 1) = 1.0;
+  A.insert(1, 0) = 1.0;
+  A.insert(1, 1) = 1.0;
+  A.insert(2, 2) = 1.0;
+  A.makeCompressed();
+  BandedLU lu;
+  lu.resize(3, 1);
+  lu.set_zero();
+  lu.add(1.0, A);
+  EXPECT_FALSE(lu.factorize());  // a zero first pivot
+}
+
+TEST(BandedLU, RefusesEntriesOutsideTheBand) {
+  const SparseMatrix A = random_band(10, 3, 1u);
+  BandedLU lu;
+  lu.resize(10, 2);
+  EXPECT_THROW(lu.add(1.0, A), Error);
+  EXPECT_THROW(static_cast<void>(lu.positions(A)), Error);
+}
+
+TEST(SparseSum, EqualsEigensSumInThePatternsUnion) {
+  const SparseMatrix A = random_band(30, 2, 3u), B = random_band(30, 4, 5u);
+  SparseMatrix C(30, 30);
+  C.insert(29, 0) = 3.0;  // outside both
+  C.makeCompressed();
+  const SparseSum sum({&A, &B, &C});
+  SparseMatrix out;
+  for (const Real w : {0.0, 2.5, -1.0}) {
+    sum.evaluate({1.0, w, 2.0}, {&A, &B, &C}, out);
+    const SparseMatrix expected = A + w * B + 2.0 * C;
+    EXPECT_EQ(Eigen::MatrixXd(out), Eigen::MatrixXd(expected)) << "w = " << w;
+    EXPECT_EQ(out.nonZeros(), SparseMatrix(A + B + C).nonZeros());  // the union, zeros kept
+  }
+  EXPECT_THROW(sum.evaluate({1.0, 1.0}, {&A, &B}, out), Error);
+}
+
+}  // namespace
+}  // namespace feran
