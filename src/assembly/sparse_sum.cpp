@@ -41,6 +41,15 @@ SparseSum::SparseSum(const std::vector<const SparseMatrix*>& terms) {
   }
 }
 
+Index SparseSum::position(Index row, Index col) const {
+  const int* outer = pattern_.outerIndexPtr();
+  const int* inner = pattern_.innerIndexPtr();
+  if (col < 0 || col >= pattern_.cols()) throw Error("SparseSum::position: no such column");
+  const int* at = std::lower_bound(inner + outer[col], inner + outer[col + 1], static_cast<int>(row));
+  if (at == inner + outer[col + 1] || *at != row) throw Error("SparseSum::position: no such entry");
+  return at - inner;
+}
+
 void SparseSum::evaluate(const std::vector<Real>& c, const std::vector<const SparseMatrix*>& terms,
                          SparseMatrix& out) const {
   if (c.size() != where_.size() || terms.size() != where_.size())

@@ -20,6 +20,9 @@ class SparseSum {
 
   /// out = Σ c[k]·terms[k]; @p out takes the union's pattern when it has another.
   void evaluate(const std::vector<Real>& c, const std::vector<const SparseMatrix*>& terms, SparseMatrix& out) const;
+  /// Where entry (@p row, @p col) of the union lies in the values of evaluate()'s
+  /// result; throws when the union has no such entry.
+  Index position(Index row, Index col) const;
 
  private:
   SparseMatrix pattern_;                  // the union, values zero

@@ -67,9 +67,10 @@ StepReport Newmark::step(SecondOrderSystem& sys, State& s, Real dt) {
 
   // Predictor x_n + Δt·v_n + Δt²/2·a_n, for which Newmark's a_{n+1} equals a_n.
   x1_ = s.x + dt * s.v + (0.5 * dt * dt) * s.a;
-  // A linear model off the speed its tangent was set at (a speed ramp): a banded
-  // refactorisation at t1 costs about one iteration and makes the first solve exact,
-  // where the old tangent needs four to six iterations (docs/theory/time_integration.md).
+  // Where a refactorisation costs about one iteration (banded), a step starts from a
+  // tangent at its predicted state: exact for a linear model on a speed ramp (one
+  // solve, where the kept tangent needs four to six iterations), and 2–3 iterations
+  // instead of 6–8 for journal bearings and friction (docs/theory/time_integration.md).
   bool refresh = !factored_ || dt != dt_factored_ || (!sys.tangent_exact_at(t1) && sys.refresh_pays_at(t1));
   bool full_newton = false;
   Real previous_norm = 0.0;

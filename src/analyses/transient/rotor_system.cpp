@@ -42,19 +42,53 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector consta
   f_full_.resize(model.n_dofs());
   n_ = M_.rows();
   update_speed(profile_.speed(0.0));
+  // The forces' Jacobians land in D_T and K_T at the entries of Sᵀ·1·S.
+  for (const SparseMatrix& S : selectors_) {
+    const Matrix ones = Matrix::Ones(S.rows(), S.rows());
+    SparseMatrix pattern = S.transpose() * ones.sparseView(0.0, 0.0) * S;
+    for (Index k = 0; k < pattern.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(pattern, k); it; ++it) it.valueRef() = 1.0;
+    pattern.makeCompressed();
+    force_patterns_.push_back(std::move(pattern));
+  }
   damping_sum_ = SparseSum(damping_terms());
   stiffness_sum_ = SparseSum(stiffness_terms());
+  // Sᵀ·J·S entry (r, c) = Σ S(p, r)·J(p, q)·S(q, c); D_T and K_T share one union
+  // pattern only when their terms do, so each gets its positions.
+  for (const SparseMatrix& S : selectors_) {
+    std::vector<ForceScatter> scatter;
+    const Eigen::SparseMatrix<Real, Eigen::RowMajor> Sr = S;
+    for (Index p = 0; p < Sr.rows(); ++p)
+      for (Eigen::SparseMatrix<Real, Eigen::RowMajor>::InnerIterator a(Sr, p); a; ++a)
+        for (Index q = 0; q < Sr.rows(); ++q)
+          for (Eigen::SparseMatrix<Real, Eigen::RowMajor>::InnerIterator b(Sr, q); b; ++b)
+            scatter.push_back({p, q, damping_sum_.position(a.col(), b.col()), stiffness_sum_.position(a.col(), b.col()),
+                               a.value() * b.value()});
+    force_scatter_.push_back(std::move(scatter));
+  }
+  force_cache_.resize(forces_.size());
   if (drive != nullptr) set_up_drive(*drive);
 }
 
 std::vector<const SparseMatrix*> RotorSystem::damping_terms() const {
-  if (assembler_.speed_dependent()) return {&Cc_, &G_, &variable_.C};
-  return {&Cc_, &G_};
+  std::vector<const SparseMatrix*> terms{&Cc_, &G_};
+  if (assembler_.speed_dependent()) terms.push_back(&variable_.C);
+  for (const SparseMatrix& P : force_patterns_) terms.push_back(&P);
+  return terms;
 }
 
 std::vector<const SparseMatrix*> RotorSystem::stiffness_terms() const {
-  if (assembler_.speed_dependent()) return {&K_, &Ki_, &variable_.K};
-  return {&K_, &Ki_};
+  std::vector<const SparseMatrix*> terms{&K_, &Ki_};
+  if (assembler_.speed_dependent()) terms.push_back(&variable_.K);
+  for (const SparseMatrix& P : force_patterns_) terms.push_back(&P);
+  return terms;
+}
+
+std::vector<Real> RotorSystem::tangent_coefficients(Real speed) const {
+  std::vector<Real> c{1.0, speed};
+  if (assembler_.speed_dependent()) c.push_back(1.0);
+  c.resize(c.size() + force_patterns_.size(), 0.0);  // the forces' entries: zero, then scattered
+  return c;
 }
 
 void RotorSystem::set_up_drive(const Drive& drive) {
@@ -192,10 +226,23 @@ void RotorSystem::model_rhs(const MotionState& external, const MotionState& nonl
   for (std::size_t i = 0; i < forces_.size(); ++i) r += selectors_[i].transpose() * evaluate(i, nonlinear, x, v).f;
 }
 
-NonlinearForceValue RotorSystem::evaluate(std::size_t i, const MotionState& state, const Vector& x,
-                                          const Vector& v) const {
+const NonlinearForceValue& RotorSystem::evaluate(std::size_t i, const MotionState& state, const Vector& x,
+                                                 const Vector& v) const {
+  ForceCache& cache = force_cache_[i];
+  xl_.noalias() = selectors_[i] * x;
+  vl_.noalias() = selectors_[i] * v;
+  if (cache.valid && cache.state.t == state.t && cache.state.speed == state.speed &&
+      cache.state.acceleration == state.acceleration && cache.state.angle == state.angle && cache.x == xl_ &&
+      cache.v == vl_)
+    return cache.value;
   try {
-    return forces_[i].force(state, selectors_[i] * x, selectors_[i] * v);
+    cache.valid = false;
+    cache.value = forces_[i].force(state, xl_, vl_);
+    cache.state = state;
+    cache.x = xl_;
+    cache.v = vl_;
+    cache.valid = true;
+    return cache.value;
   } catch (const Error& e) {
     // Name the force: "journal bearing 'A': the journal has reached the bearing: …".
     std::string kind(forces_[i].kind());
@@ -238,17 +285,20 @@ void RotorSystem::model_jacobian(const MotionState& state, const Vector& x, cons
   const Real W = state.speed;
   update_speed(W);
   jacobian_speed_ = W;
-  // D_T = C + C_i + Ω·G (+ the speed-dependent elements' C), K_T = K + Ω·K_i (+ their
-  // K), in place in the patterns' union: a ramp sets them at every step.
-  const bool variable = assembler_.speed_dependent();
-  damping_sum_.evaluate(variable ? std::vector<Real>{1.0, W, 1.0} : std::vector<Real>{1.0, W}, damping_terms(), DT_);
-  stiffness_sum_.evaluate(variable ? std::vector<Real>{1.0, W, 1.0} : std::vector<Real>{1.0, W}, stiffness_terms(), KT_);
+  // D_T = C + C_i + Ω·G (+ the speed-dependent elements' C) − Sᵀ·∂f/∂v·S, K_T = K + Ω·K_i
+  // (+ their K) − Sᵀ·∂f/∂x·S, in place in one pattern: a run sets them at every step.
+  const std::vector<Real> c = tangent_coefficients(W);
+  damping_sum_.evaluate(c, damping_terms(), DT_);
+  stiffness_sum_.evaluate(c, stiffness_terms(), KT_);
+  if (forces_.empty() || !exact) return;  // without: the forces' entries stay zero
+  Real* d = DT_.valuePtr();
+  Real* k = KT_.valuePtr();
   for (std::size_t i = 0; i < forces_.size(); ++i) {
-    const SparseMatrix& S = selectors_[i];
-    NonlinearForceValue f = evaluate(i, state, x, v);
-    if (!exact) f.dfdx.setZero(), f.dfdv.setZero();  // keep the pattern, drop the values
-    DT_ -= SparseMatrix(S.transpose() * f.dfdv.sparseView(0.0, 0.0) * S);
-    KT_ -= SparseMatrix(S.transpose() * f.dfdx.sparseView(0.0, 0.0) * S);
+    const NonlinearForceValue& f = evaluate(i, state, x, v);
+    for (const ForceScatter& s : force_scatter_[i]) {
+      d[s.in_damping] -= s.weight * f.dfdv(s.p, s.q);
+      k[s.in_stiffness] -= s.weight * f.dfdx(s.p, s.q);
+    }
   }
 }
 
@@ -263,9 +313,9 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
       band_positions_.clear();
       if (band_fits_) {
         band_.resize(n_, b);
-        // A linear model's D_T and K_T keep their patterns (SparseSum): where their
-        // entries land in the band is found once.
-        if (forces_.empty()) band_positions_ = {band_.positions(M_), band_.positions(DT_), band_.positions(KT_)};
+        // D_T and K_T keep their patterns (SparseSum, the forces' entries included):
+        // where their entries land in the band is found once.
+        band_positions_ = {band_.positions(M_), band_.positions(DT_), band_.positions(KT_)};
       }
       band_pattern_ = nonzeros;
     }

@@ -64,10 +64,10 @@ class RotorSystem final : public SecondOrderSystem {
   bool tangent_exact_at(Real t) const override {
     return !driven_ && forces_.empty() && profile_.speed(t) == jacobian_speed_;
   }
-  /// A linear model whose tangent was factorised banded (the last factorisation).
+  /// A tangent factorised banded (the last factorisation), without a drive.
   bool refresh_pays_at(Real t) const override {
     static_cast<void>(t);
-    return !driven_ && forces_.empty() && banded_factors_;
+    return !driven_ && banded_factors_;
   }
   Real highest_frequency() override;
 
@@ -82,7 +82,8 @@ class RotorSystem final : public SecondOrderSystem {
 
  private:
   /// Nonlinear force @p i at the state; an Error it throws is rethrown naming the force.
-  NonlinearForceValue evaluate(std::size_t i, const MotionState& state, const Vector& x, const Vector& v) const;
+  /// (The last evaluation at the same state is returned again, not recomputed.)
+  const NonlinearForceValue& evaluate(std::size_t i, const MotionState& state, const Vector& x, const Vector& v) const;
   void update_speed(Real speed);
   void external_forces(const MotionState& state, Vector& f_full) const;
   /// r of the model's equations at displacements @p x, velocities @p v (model size):
@@ -109,7 +110,27 @@ class RotorSystem final : public SecondOrderSystem {
   std::vector<Force> forces_;  ///< the model's nonlinear forces
   std::vector<SparseMatrix> selectors_;  // per force: rows of T for its DOFs
   SparseMatrix DT_, KT_;
-  SparseSum damping_sum_, stiffness_sum_;  // D_T, K_T without the forces, in place
+  SparseSum damping_sum_, stiffness_sum_;  // D_T, K_T in place (the forces' entries included, zero)
+  std::vector<SparseMatrix> force_patterns_;  // per force: the pattern of Sᵀ·J·S
+  // Per force: (local row p, local column q, position in D_T's and K_T's values,
+  // weight S(p, r)·S(q, c)) for each contribution of its Jacobian blocks.
+  struct ForceScatter {
+    Index p, q, in_damping, in_stiffness;
+    Real weight;
+  };
+  std::vector<std::vector<ForceScatter>> force_scatter_;
+  // The last evaluation of each force, reused at the same state (a step's first
+  // iteration evaluates the forces for the Jacobian and the residual at one state).
+  struct ForceCache {
+    MotionState state;
+    Vector x, v;
+    NonlinearForceValue value;
+    bool valid = false;
+  };
+  mutable std::vector<ForceCache> force_cache_;
+  mutable Vector xl_, vl_;  // a force's local displacements and velocities (evaluate())
+  /// The coefficients of damping_terms() and stiffness_terms() at @p speed.
+  std::vector<Real> tangent_coefficients(Real speed) const;
   Real jacobian_speed_;  // the speed of DT_, KT_ (NaN before the first)
   // The tangent's factors: banded (BandedLU, without pivoting) while the pattern's
   // half-bandwidth is at most max_band and the pivots allow it, else a sparse LU.

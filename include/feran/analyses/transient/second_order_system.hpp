@@ -54,12 +54,13 @@ class SecondOrderSystem {
     return false;
   }
 
-  /// True when a Jacobian set at @p t would be exact there (see tangent_exact_at) and
-  /// setting and factorising it costs about one Newton iteration (a banded
-  /// factorisation): an implicit step whose tangent is not exact at its time then
-  /// refreshes it instead of iterating with the old one, as on a speed ramp, where
-  /// the old tangent's speed-dependent terms (gyroscopic, internal damping, bearing
-  /// coefficients) lag behind. The default, false, keeps the tangent.
+  /// True when setting the Jacobian at a step's predicted state and factorising it
+  /// costs about one Newton iteration (a banded factorisation): an implicit step then
+  /// starts from a fresh tangent instead of one kept from an earlier state and speed
+  /// (on a speed ramp the kept tangent's speed-dependent terms lag behind, and a
+  /// nonlinear force's Jacobian belongs to another state). For a linear system the
+  /// fresh tangent is exact, and one solve ends the step. The default, false, keeps the
+  /// tangent while Newton's iteration contracts.
   virtual bool refresh_pays_at(Real t) const {
     static_cast<void>(t);
     return false;
