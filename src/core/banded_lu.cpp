@@ -1,6 +1,8 @@
 #include <feran/core/banded_lu.hpp>
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 #include <cstdlib>
 
@@ -52,45 +54,153 @@ void BandedLU::add(Real c, const SparseMatrix& S, const std::vector<Index>& posi
   for (std::size_t e = 0; e < n; ++e) a[positions[e]] += c * v[e];
 }
 
-bool BandedLU::factorize() {
-  constexpr Real smallest_pivot = 1e-10;
-  for (Index k = 0; k < n_; ++k) {
-    Real* ck = a_.data() + k * ld_;
-    const Index m = std::min(b_, n_ - 1 - k);  // rows below the diagonal in the band
-    const Real p = ck[b_];
-    Real largest = std::abs(p);
-    for (Index i = 1; i <= m; ++i) largest = std::max(largest, std::abs(ck[b_ + i]));
-    if (!std::isfinite(p) || !(std::abs(p) > smallest_pivot * largest)) return false;
-    const Real inverse = 1.0 / p;
-    Real* l = ck + b_ + 1;  // L(k + 1 … k + m, k)
-    for (Index i = 0; i < m; ++i) l[i] *= inverse;
-    // The trailing block: column k + j, rows k + 1 … k + m, less L·U(k, k + j).
-    for (Index j = 1; j <= m; ++j) {
-      Real* cj = a_.data() + (k + j) * ld_;
-      const Real u = cj[b_ - j];  // U(k, k + j)
-      if (u == 0.0) continue;
-      Real* d = cj + (b_ - j + 1);
-      for (Index i = 0; i < m; ++i) d[i] -= l[i] * u;
-    }
+namespace {
+
+constexpr Real smallest_pivot = 1e-10;
+
+// Column k of the elimination, m rows below the diagonal in the band (m ≤ b):
+// L(k + 1 … k + m, k) scaled, the trailing block updated. False on a small pivot.
+inline bool eliminate(Real* a, Index ld, Index b, Index k, Index m, Real* inverse) {
+  Real* ck = a + k * ld;
+  const Real p = ck[b];
+  Real largest = std::abs(p);
+  for (Index i = 1; i <= m; ++i) largest = std::max(largest, std::abs(ck[b + i]));
+  if (!std::isfinite(p) || !(std::abs(p) > smallest_pivot * largest)) return false;
+  const Real r = 1.0 / p;
+  inverse[k] = r;
+  Real* l = ck + b + 1;
+  for (Index i = 0; i < m; ++i) l[i] *= r;
+  for (Index j = 1; j <= m; ++j) {
+    Real* d = a + (k + j) * ld + (b - j + 1);
+    const Real u = d[-1];  // U(k, k + j); the band is not full (a rotor's: about half)
+    if (u == 0.0) continue;
+    for (Index i = 0; i < m; ++i) d[i] -= l[i] * u;
   }
   return true;
 }
 
-void BandedLU::solve_in_place(Vector& x) const {
-  Real* y = x.data();
-  for (Index k = 0; k < n_; ++k) {  // L·y = b, unit diagonal
-    const Real* l = a_.data() + k * ld_ + b_ + 1;
-    const Index m = std::min(b_, n_ - 1 - k);
+// The same with the half-bandwidth B known when compiling, for the columns with B
+// rows below the diagonal: the loops unrolled.
+template <int B>
+bool factorize_fixed(Real* a, Index n, Real* inverse) {
+  constexpr Index ld = 2 * B + 1;
+  Index k = 0;
+  for (; k + B < n; ++k) {
+    Real* ck = a + k * ld;
+    const Real p = ck[B];
+    Real largest = std::abs(p);
+    for (int i = 1; i <= B; ++i) largest = std::max(largest, std::abs(ck[B + i]));
+    if (!std::isfinite(p) || !(std::abs(p) > smallest_pivot * largest)) return false;
+    const Real r = 1.0 / p;
+    inverse[k] = r;
+    std::array<Real, B> l;
+    for (int i = 0; i < B; ++i) l[i] = ck[B + 1 + i] *= r;
+    for (int j = 1; j <= B; ++j) {
+      Real* d = a + (k + j) * ld + (B - j + 1);
+      const Real u = d[-1];
+      if (u == 0.0) continue;
+      for (int i = 0; i < B; ++i) d[i] -= l[i] * u;
+    }
+  }
+  for (; k < n; ++k)
+    if (!eliminate(a, ld, B, k, n - 1 - k, inverse)) return false;
+  return true;
+}
+
+bool factorize_any(Real* a, Index n, Index b, Real* inverse) {
+  const Index ld = 2 * b + 1;
+  for (Index k = 0; k < n; ++k)
+    if (!eliminate(a, ld, b, k, std::min(b, n - 1 - k), inverse)) return false;
+  return true;
+}
+
+// Forward and back substitution. A column sweep (y(k+1 … k+b) −= L·y(k)) stalls on
+// each column reading what the previous one just wrote; here the corrections still
+// owed to the next B unknowns are carried in a small array the compiler keeps in
+// registers, so that one column's critical path is a subtraction and a product
+// (at 1210 DOF, b = 10: 9 µs against 20 µs).
+template <int B>
+void substitute_fixed(const Real* a, const Real* inverse, Index n, Real* y) {
+  constexpr Index ld = 2 * B + 1;
+  std::array<Real, B> owed{};
+  Index k = 0;
+  for (; k + B < n; ++k) {
+    const Real yk = y[k] - owed[0];
+    y[k] = yk;
+    const Real* l = a + k * ld + B + 1;
+    for (int i = 0; i < B - 1; ++i) owed[i] = owed[i + 1] + l[i] * yk;
+    owed[B - 1] = l[B - 1] * yk;
+  }
+  for (int i = 0; i < B && k + i < n; ++i) y[k + i] -= owed[i];
+  for (; k < n; ++k) {
+    const Real* l = a + k * ld + B + 1;
+    const Real yk = y[k];
+    for (Index i = 0; i < n - 1 - k; ++i) y[k + 1 + i] -= l[i] * yk;
+  }
+  owed.fill(0.0);
+  k = n - 1;
+  for (; k >= B; --k) {
+    const Real* ck = a + k * ld;
+    const Real xk = (y[k] - owed[0]) * inverse[k];
+    y[k] = xk;
+    for (int i = 0; i < B - 1; ++i) owed[i] = owed[i + 1] + ck[B - 1 - i] * xk;
+    owed[B - 1] = ck[0] * xk;
+  }
+  for (int i = 0; i < B && k - i >= 0; ++i) y[k - i] -= owed[i];
+  for (; k >= 0; --k) {
+    const Real* ck = a + k * ld;
+    const Real xk = y[k] * inverse[k];
+    y[k] = xk;
+    for (Index i = 1; i <= k; ++i) y[k - i] -= ck[B - i] * xk;
+  }
+}
+
+void substitute_any(const Real* a, const Real* inverse, Index n, Index b, Real* y) {
+  const Index ld = 2 * b + 1;
+  for (Index k = 0; k < n; ++k) {  // L·y = b, unit diagonal
+    const Real* l = a + k * ld + b + 1;
+    const Index m = std::min(b, n - 1 - k);
     const Real yk = y[k];
     for (Index i = 0; i < m; ++i) y[k + 1 + i] -= l[i] * yk;
   }
-  for (Index k = n_ - 1; k >= 0; --k) {  // U·x = y
-    const Real* ck = a_.data() + k * ld_;
-    y[k] /= ck[b_];
-    const Index m = std::min(b_, k);
+  for (Index k = n - 1; k >= 0; --k) {  // U·x = y
+    const Real* ck = a + k * ld;
+    y[k] *= inverse[k];
+    const Index m = std::min(b, k);
     const Real xk = y[k];
-    for (Index i = 1; i <= m; ++i) y[k - i] -= ck[b_ - i] * xk;
+    for (Index i = 1; i <= m; ++i) y[k - i] -= ck[b - i] * xk;
   }
+}
+
+// Kernels for half-bandwidths 1 … 16 (a rotor's are 4 … 12), the general ones beyond.
+constexpr int fixed_bands = 16;
+
+template <std::size_t... I>
+constexpr auto factor_kernels(std::index_sequence<I...>) {
+  return std::array<bool (*)(Real*, Index, Real*), sizeof...(I)>{&factorize_fixed<static_cast<int>(I) + 1>...};
+}
+template <std::size_t... I>
+constexpr auto substitute_kernels(std::index_sequence<I...>) {
+  return std::array<void (*)(const Real*, const Real*, Index, Real*), sizeof...(I)>{
+      &substitute_fixed<static_cast<int>(I) + 1>...};
+}
+constexpr auto factor_fixed = factor_kernels(std::make_index_sequence<fixed_bands>{});
+constexpr auto substitute_fixed_kernels = substitute_kernels(std::make_index_sequence<fixed_bands>{});
+
+}  // namespace
+
+bool BandedLU::factorize() {
+  inverse_.resize(static_cast<std::size_t>(n_));
+  if (b_ >= 1 && b_ <= fixed_bands) return factor_fixed[static_cast<std::size_t>(b_ - 1)](a_.data(), n_, inverse_.data());
+  return factorize_any(a_.data(), n_, b_, inverse_.data());
+}
+
+void BandedLU::solve_in_place(Vector& x) const {
+  if (b_ >= 1 && b_ <= fixed_bands) {
+    substitute_fixed_kernels[static_cast<std::size_t>(b_ - 1)](a_.data(), inverse_.data(), n_, x.data());
+    return;
+  }
+  substitute_any(a_.data(), inverse_.data(), n_, b_, x.data());
 }
 
 }  // namespace feran

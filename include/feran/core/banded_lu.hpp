@@ -11,8 +11,9 @@
 /// and the caller falls back to a pivoting sparse LU.
 ///
 /// Cost at a half-bandwidth b: factorisation 2·n·b² flops, solve 4·n·b, storage
-/// n·(2b + 1); at 1210 DOF (b = 10) about 20 µs and 18 µs on the benchmark machine,
-/// against 850 µs and 26 µs for Eigen's supernodal SparseLU (docs/performance.md).
+/// n·(2b + 1); kernels compiled for each b up to 16 (a rotor's are 4 … 12). At 1210 DOF
+/// (b = 10) about 15 µs and 9 µs on the benchmark machine, against 850 µs and 26 µs for
+/// Eigen's supernodal SparseLU (docs/performance.md).
 
 #include <vector>
 
@@ -51,6 +52,7 @@ class BandedLU {
 
   Index n_ = 0, b_ = 0, ld_ = 1;
   std::vector<Real> a_;  // column j: rows j − b … j + b, at j·ld + (i − j + b)
+  std::vector<Real> inverse_;  // 1 / U(k, k)
 };
 
 }  // namespace feran
