@@ -8,7 +8,6 @@ packages=(
   build-essential cmake
   ccache  # a second build of the same sources (CI on the same machine, a new clone) compiles only what changed
   libeigen3-dev libspectra-dev liblapack-dev libopenblas-dev
-  libopenblas-serial-dev  # the single-threaded OpenBLAS linked into the feran program (apps/feran/CMakeLists.txt)
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib
