@@ -321,15 +321,9 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
     }
     if (band_fits_) {
       band_.set_zero();
-      if (band_positions_.empty()) {
-        band_.add(c_a, M_);
-        band_.add(c_v, DT_);
-        band_.add(c_x, KT_);
-      } else {
-        band_.add(c_a, M_, band_positions_[0]);
-        band_.add(c_v, DT_, band_positions_[1]);
-        band_.add(c_x, KT_, band_positions_[2]);
-      }
+      band_.add(c_a, M_, band_positions_[0]);
+      band_.add(c_v, DT_, band_positions_[1]);
+      band_.add(c_x, KT_, band_positions_[2]);
       banded_factors_ = band_.factorize();
       if (banded_factors_) return true;
     }
