@@ -13,6 +13,8 @@
 #include <feran/analyses/transient/rotor_system.hpp>
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/banded_lu.hpp>
+#include <feran/forces/finite_bearing_table.hpp>
+#include <feran/forces/fluid_film_bearing.hpp>
 #include <feran/io/model_reader.hpp>
 
 namespace feran {
@@ -187,6 +189,30 @@ void BM_BandedSolve(benchmark::State& state) {
   state.counters["dofs"] = static_cast<double>(S.rows());
 }
 BENCHMARK(BM_BandedSolve)->Apply(sizes)->Unit(benchmark::kMicrosecond);
+
+// The finite-length bearing's film force with its Jacobian (example 06's bearing,
+// L/D = 0.5, 72 × 8 cells, Reynolds' condition) at 64 states of a whirling journal,
+// ε from 0.1 to 0.9: by the solver (argument 0) and from the table (1; built before
+// the timing).
+void BM_FiniteBearingForce(benchmark::State& state) {
+  const JournalBearingGeometry g{.diameter = 0.04, .length = 0.02, .clearance = 40e-6, .viscosity = 0.02};
+  FiniteBearingGrid grid;
+  grid.evaluation = state.range(0) == 0 ? FilmEvaluation::exact : FilmEvaluation::table;
+  if (state.range(0) == 1) (void)FiniteBearingTable::shared(0.5, grid);
+  const Real speed = 600.0;
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> states;
+  for (int k = 0; k < 64; ++k) {
+    const Real eps = 0.1 + 0.8 * (k % 9) / 8.0, a = 0.7 * k;
+    const Eigen::Vector2d x = eps * g.clearance * Eigen::Vector2d(std::cos(a), std::sin(a));
+    states.emplace_back(x, 0.3 * speed * Eigen::Vector2d(-x(1), x(0)) + 0.05 * speed * x);
+  }
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const auto& [x, v] = states[k++ % states.size()];
+    benchmark::DoNotOptimize(film_force(g, FilmTheory::finite_length, speed, x, v, grid));
+  }
+}
+BENCHMARK(BM_FiniteBearingForce)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace feran

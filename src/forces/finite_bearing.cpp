@@ -7,6 +7,7 @@
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
 
+#include <feran/core/banded_lu.hpp>
 #include <feran/core/error.hpp>
 #include <feran/forces/fluid_film_bearing.hpp>
 
@@ -18,7 +19,10 @@ namespace {
 //   [A₊(P_{i+1} − P_i) − A₋(P_i − P_{i−1})]/Δθ² + β·B_i·(P_{j+1} − 2P_j + P_{j−1})/Δζ² = F_i,
 // A± = H³ at θ_i ± Δθ/2, B_i = H³ at θ_i, H = 1 − a cos θ − b sin θ, β = (2R/L)²,
 // ζ = 2z/L from the mid-plane (P_{−1} = P_1) to the end (P_m = 0), periodic in θ,
-// F = Ω(a sin θ − b cos θ) − 2(ẏ cos θ + ż sin θ)/c. Unknown k = i·m + j.
+// F = Ω(a sin θ − b cos θ) − 2(ẏ cos θ + ż sin θ)/c. The unknowns are numbered ring
+// by ring in the folded order 0, n−1, 1, n−2, … of the rings (k = fold(i)·m + j), so
+// that neighbouring rings, the periodic pair 0 and n−1 included, are at most two rings
+// apart: the matrix is banded, of half-bandwidth 2m.
 class Film {
  public:
   Film(const JournalBearingGeometry& g, const FiniteBearingGrid& grid, const Eigen::Vector2d& x)
@@ -26,7 +30,10 @@ class Film {
         beta_(std::pow(g.diameter / g.length, 2)), a_(x(0) / g.clearance), b_(x(1) / g.clearance) {}
 
   Index size() const { return static_cast<Index>(n_) * m_; }
-  Index k(int i, int j) const { return static_cast<Index>(((i % n_) + n_) % n_) * m_ + j; }
+  Index k(int i, int j) const {
+    const int r = ((i % n_) + n_) % n_;
+    return static_cast<Index>(2 * r < n_ ? 2 * r : 2 * (n_ - 1 - r) + 1) * m_ + j;
+  }
   Real theta(Real i) const { return i * dt_; }
   Real H(Real th) const { return 1.0 - a_ * std::cos(th) - b_ * std::sin(th); }
   // ∂(H³)/∂(a, b) at θ: 3H²·(−cos θ, −sin θ).
@@ -88,6 +95,63 @@ class Film {
   Real dt_, dz_, beta_, a_, b_;
 };
 
+// −L with the rows of the cavitated nodes replaced by the identity, factorised: by
+// the banded LU without pivoting where the half-bandwidth is small (−L is an
+// irreducibly diagonally dominant M-matrix, and so is it with identity rows, for which
+// Gaussian elimination without pivoting is stable; Golub & Van Loan 2013, §4.4), by
+// Eigen's sparse LU otherwise or should a pivot nevertheless be small.
+class FilmSolver {
+ public:
+  FilmSolver(const SparseMatrix& full, Index bandwidth) : matrix_(full) {
+    if (bandwidth <= 64) {
+      // The band's storage (150 kB on the default grid) is kept by each thread:
+      // allocated per call it would be mapped and faulted in anew every time.
+      thread_local BandedLU band;
+      band_ = &band;
+      band_->resize(full.rows(), bandwidth);
+      positions_ = band_->positions(matrix_);
+    }
+  }
+  void factorize(const std::vector<char>& active) {
+    // Rows of active (cavitated) nodes: the identity, the other entries kept as
+    // explicit zeros so that one pattern (and one symbolic analysis) serves all.
+    const Real* value = matrix_.valuePtr();
+    for (Index col = 0; col < matrix_.outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(matrix_, col); it; ++it) {
+        const auto e = static_cast<std::size_t>(&it.valueRef() - value);
+        it.valueRef() = active[static_cast<std::size_t>(it.row())] ? (it.row() == col ? 1.0 : 0.0) : values_[e];
+      }
+    banded_ = false;
+    if (!positions_.empty()) {
+      band_->set_zero();
+      band_->add(1.0, matrix_, positions_);
+      banded_ = band_->factorize();
+    }
+    if (!banded_) {
+      if (!analysed_) {
+        sparse_.analyzePattern(matrix_);
+        analysed_ = true;
+      }
+      sparse_.factorize(matrix_);
+      if (sparse_.info() != Eigen::Success) throw Error("finite-length bearing: the discrete Reynolds equation is singular");
+    }
+  }
+  Vector solve(const Vector& rhs) const {
+    if (!banded_) return sparse_.solve(rhs);
+    Vector x = rhs;
+    band_->solve_in_place(x);
+    return x;
+  }
+
+ private:
+  SparseMatrix matrix_;
+  std::vector<Real> values_{matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros()};
+  BandedLU* band_ = nullptr;
+  std::vector<Index> positions_;
+  bool banded_ = false, analysed_ = false;
+  mutable Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> sparse_;
+};
+
 }  // namespace
 
 FilmForce finite_bearing_force(const JournalBearingGeometry& g, const FiniteBearingGrid& grid, Real speed,
@@ -121,13 +185,11 @@ FilmForce finite_bearing_force(const JournalBearingGeometry& g, const FiniteBear
   std::vector<char> active(static_cast<std::size_t>(N), 0);
   if (reynolds)
     for (Index k = 0; k < N; ++k) active[static_cast<std::size_t>(k)] = F(k) > 0 ? 1 : 0;
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   Vector P;
   const SparseMatrix full = film.system(std::vector<char>(static_cast<std::size_t>(N), 0));
-  lu.analyzePattern(full);
+  FilmSolver lu(full, 2 * static_cast<Index>(film.m()));
   for (int iteration = 0;; ++iteration) {
-    lu.factorize(film.system(active));
-    if (lu.info() != Eigen::Success) throw Error("finite-length bearing: the discrete Reynolds equation is singular");
+    lu.factorize(active);
     Vector rhs = -F;
     for (Index k = 0; k < N; ++k)
       if (active[static_cast<std::size_t>(k)]) rhs(k) = 0.0;
@@ -153,7 +215,8 @@ FilmForce finite_bearing_force(const JournalBearingGeometry& g, const FiniteBear
   for (int d = 0; d < 2; ++d) rhs.col(d) += film.derivative_times(d, P) / c;
   for (Index k = 0; k < N; ++k)
     if (active[static_cast<std::size_t>(k)]) rhs.row(k).setZero();
-  const Matrix dP = lu.solve(rhs);
+  Matrix dP(N, 4);
+  for (int col = 0; col < 4; ++col) dP.col(col) = lu.solve(rhs.col(col));
   // f = −R·L·(6μR²/c²)·Σ w·P⁺·(cos θ, sin θ).
   const Real scale = -R * g.length * 6.0 * g.viscosity * R * R / (c * c);
   FilmForce out;

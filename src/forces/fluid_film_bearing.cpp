@@ -11,6 +11,7 @@
 #include <feran/core/error.hpp>
 #include <feran/core/quadrature.hpp>
 #include <feran/core/root_finding.hpp>
+#include <feran/forces/finite_bearing_table.hpp>
 
 #include "dual.hpp"
 #include "lateral_pair.hpp"
@@ -234,7 +235,7 @@ Real load_scale(const JournalBearingGeometry& g, FilmTheory theory, Real speed) 
 }  // namespace
 
 FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real speed, const Vec2& x, const Vec2& v,
-                     const FiniteBearingGrid& grid) {
+                     const FiniteBearingGrid& grid, bool trajectory) {
   const Real eps = x.norm() / g.clearance;
   if (!(eps < 1.0))
     throw Error(fmt::format("the journal has reached the bearing: eccentricity ratio {:.4g} (it must stay below 1)",
@@ -242,7 +243,13 @@ FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real sp
   switch (theory) {
     case FilmTheory::short_bearing: return short_bearing_force(g, speed, x, v);
     case FilmTheory::long_bearing: return long_bearing_force(g, speed, x, v);
-    case FilmTheory::finite_length: return finite_bearing_force(g, grid, speed, x, v);
+    case FilmTheory::finite_length:
+      if (grid.evaluation == FilmEvaluation::table || (grid.evaluation == FilmEvaluation::automatic && trajectory)) {
+        const auto table = FiniteBearingTable::shared(g.length / g.diameter, grid);
+        FilmForce f;
+        if (table->usable() && table->force(g, speed, x, v, f)) return f;
+      }
+      return finite_bearing_force(g, grid, speed, x, v);
   }
   return {};
 }
@@ -328,12 +335,13 @@ Real film_drag_torque(const JournalBearingGeometry& g, Real speed, const Eigen::
 Real FluidFilmBearing::drag_torque(const MotionState& s, const Vector& x, const Vector& v) const {
   const bool housing = node_b.has_value();
   const Eigen::Vector2d e = detail::relative(x, housing);
-  return film_drag_torque(geometry, s.speed, e, film_force(geometry, theory, s.speed, e, detail::relative(v, housing), grid));
+  return film_drag_torque(geometry, s.speed, e, film_force(geometry, theory, s.speed, e, detail::relative(v, housing), grid, s.trajectory));
 }
 
 NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& x, const Vector& v) const {
   const bool housing = node_b.has_value();
-  const FilmForce F = film_force(geometry, theory, s.speed, detail::relative(x, housing), detail::relative(v, housing), grid);
+  const FilmForce F =
+      film_force(geometry, theory, s.speed, detail::relative(x, housing), detail::relative(v, housing), grid, s.trajectory);
   return detail::pair_force(F.f, F.dfdx, F.dfdv, housing);
 }
 
@@ -378,14 +386,14 @@ std::vector<OperatingValue> FluidFilmBearing::operating_data(const MotionState& 
                                                              const Vector& v) const {
   const bool housing = node_b.has_value();
   const Eigen::Vector2d e = detail::relative(x, housing), ev = detail::relative(v, housing);
-  const FilmForce F = film_force(geometry, theory, s.speed, e, ev, grid);
+  const FilmForce F = film_force(geometry, theory, s.speed, e, ev, grid, s.trajectory);
   const Real c = geometry.clearance, R = geometry.diameter / 2, eps = e.norm() / c;
   const Eigen::Vector2d load = -F.f;  // what the journal puts on the film
   const Real W = load.norm();
   const Real attitude = std::atan2(load(0) * e(1) - load(1) * e(0), load.dot(e));
   const Real N = s.speed / (2 * pi);
   const Real torque = film_drag_torque(geometry, s.speed, e, F);  // from the same film force
-  Real peak = F.peak_pressure;  // the finite bearing's largest nodal pressure
+  Real peak = F.peak_pressure;  // the finite bearing's largest nodal pressure (or its table's)
   if (theory == FilmTheory::short_bearing) {
     peak = short_bearing_peak_pressure(geometry, s.speed, e, ev);
   } else if (theory == FilmTheory::long_bearing && ev.isZero(0.0)) {

@@ -883,7 +883,8 @@ void Builder::build_journal_bearings() {
     if (b.theory != FilmTheory::finite_length) {
       for (const auto& [key, given] : {std::pair{"cavitation", s.cavitation.has_value()},
                                        std::pair{"circumferential_cells", s.circumferential_cells.has_value()},
-                                       std::pair{"axial_cells", s.axial_cells.has_value()}})
+                                       std::pair{"axial_cells", s.axial_cells.has_value()},
+                                       std::pair{"evaluation", s.evaluation.has_value()}})
         if (given)
           fail(child(path, key), fmt::format("'{}' applies only to theory = \"finite\" (the {} bearing's closed "
                                              "form has its own cavitation condition and no grid)",
@@ -896,6 +897,13 @@ void Builder::build_journal_bearings() {
     }
     if (s.circumferential_cells) b.grid.circumferential = *s.circumferential_cells;
     if (s.axial_cells) b.grid.axial = *s.axial_cells;
+    if (s.evaluation) {
+      check_choice(*s.evaluation, child(path, "evaluation"), "evaluation",
+                   spec::choices_of<JournalBearingSpec>("evaluation"));
+      b.grid.evaluation = *s.evaluation == "exact"   ? FilmEvaluation::exact
+                          : *s.evaluation == "table" ? FilmEvaluation::table
+                                                     : FilmEvaluation::automatic;
+    }
     // Each count within its bounds, their product bounded too: every force evaluation
     // factorises the Reynolds equation on the whole grid.
     constexpr long long max_cells = 250000;

@@ -58,9 +58,11 @@ struct FilmForce {
 /// The film force on a journal at @p x = (y, z) from the housing's centre, moving at
 /// @p v = (ẏ, ż), spinning at @p speed [rad/s] about +x relative to the housing.
 /// Throws Error when |x| is not below the clearance. @p grid: the finite-length
-/// bearing's grid and cavitation condition (ignored by the closed forms).
+/// bearing's grid, cavitation condition and evaluation (ignored by the closed forms);
+/// @p trajectory: evaluated along a trajectory (MotionState::trajectory), where the
+/// automatic evaluation takes the table.
 FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real speed, const Eigen::Vector2d& x,
-                     const Eigen::Vector2d& v, const FiniteBearingGrid& grid = {});
+                     const Eigen::Vector2d& v, const FiniteBearingGrid& grid = {}, bool trajectory = false);
 
 /// The steady load W [N] the film carries at eccentricity ratio @p eps, in closed
 /// form (docs/theory/fluid_film_bearings.md): with W₀ = μΩDL³/(8c²) for the short

@@ -73,6 +73,10 @@ struct MotionState {
   Real speed = 0.0;         ///< Ω [rad/s]
   Real acceleration = 0.0;  ///< Ω' [rad/s²]
   Real angle = 0.0;         ///< rotation angle φ = ∫Ω dt [rad]
+  /// The caller evaluates the force along a trajectory, thousands of times (run-ups):
+  /// a force may then answer from a table it builds once, within a stated error (the
+  /// finite-length journal bearing does, forces/finite_bearing_table.hpp).
+  bool trajectory = false;
 };
 
 /// A nonlinear force on a few DOFs and its Jacobian blocks ∂f/∂x and ∂f/∂v (local,

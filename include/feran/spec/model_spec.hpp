@@ -152,6 +152,7 @@ struct JournalBearingSpec {
   std::string theory = "short";  ///< "short" (Ocvirk), "long" (Sommerfeld) or "finite"
   std::optional<std::string> cavitation;  ///< "reynolds" or "gumbel" (finite only)
   std::optional<int> circumferential_cells, axial_cells;  ///< the finite bearing's grid
+  std::optional<std::string> evaluation;  ///< "auto", "table" or "exact" (finite only)
   bool operator==(const JournalBearingSpec&) const = default;
 };
 

@@ -184,7 +184,7 @@ void RotorSystem::external_forces(const MotionState& state, Vector& f) const {
 
 void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
   if (!driven_) {
-    const MotionState state{t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)};
+    const MotionState state{t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t), true};
     model_rhs(state, state, x, v, r);
     return;
   }
@@ -192,8 +192,8 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
   xq_ = x.head(n_);
   vq_ = v.head(n_);
   // The unbalances' Ω' part is the border below: the external forces see Ω' = 0.
-  const MotionState nonlinear{t, W, acceleration_, phi};
-  model_rhs({t, W, 0.0, phi}, nonlinear, xq_, vq_, rq_);
+  const MotionState nonlinear{t, W, acceleration_, phi, true};
+  model_rhs({t, W, 0.0, phi, true}, nonlinear, xq_, vq_, rq_);
   Real torque = drive_.net_torque(W);
   for (const std::size_t i : drag_)
     torque -= forces_[i].drag_torque(nonlinear, selectors_[i] * xq_, selectors_[i] * vq_);
@@ -254,13 +254,13 @@ const NonlinearForceValue& RotorSystem::evaluate(std::size_t i, const MotionStat
 
 void RotorSystem::set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) {
   if (!driven_) {
-    model_jacobian({t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)}, x, v, exact);
+    model_jacobian({t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t), true}, x, v, exact);
     return;
   }
   const Real W = v(n_), phi = x(n_);
   xq_ = x.head(n_);
   vq_ = v.head(n_);
-  model_jacobian({t, W, acceleration_, phi}, xq_, vq_, exact);
+  model_jacobian({t, W, acceleration_, phi, true}, xq_, vq_, exact);
   // Bordered by the speed: −∂r_q/∂Ω = G q' + K_i q − 2Ω c(φ) (the speed-dependent
   // coefficients' and the forces' own dependence on Ω left out: an approximation the
   // W-methods and Newton's iteration accept), and −∂T/∂Ω on the diagonal.

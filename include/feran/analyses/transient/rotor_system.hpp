@@ -46,10 +46,10 @@ class RotorSystem final : public SecondOrderSystem {
   /// The speed at (t, v): the profile's, or the drive's state v(n).
   Real speed(Real t, const Vector& v) const { return driven_ ? v(n_) : profile_.speed(t); }
   /// Where and how fast the rotor is at (t, x, v) (the integrated state; a driven run's
-  /// angle is x(n), its acceleration the last one computed).
+  /// angle is x(n), its acceleration the last one computed), on a trajectory.
   MotionState motion(Real t, const Vector& x, const Vector& v) const {
-    if (driven_) return {t, v(n_), acceleration_, x(n_)};
-    return {t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t)};
+    if (driven_) return {t, v(n_), acceleration_, x(n_), true};
+    return {t, profile_.speed(t), profile_.acceleration(t), profile_.angle(t), true};
   }
   void rhs(Real t, const Vector& x, const Vector& v, Vector& r) override;
   void mass_times(const Vector& u, Vector& y) const override;
