@@ -4,6 +4,8 @@
 #include <benchmark/benchmark.h>
 
 #include <map>
+
+#include <Eigen/SparseLU>
 #include <string>
 
 #include <feran/core/parallel.hpp>
@@ -36,6 +38,14 @@ const Model& model(Index n_elements) {
 void sizes(benchmark::internal::Benchmark* b) {
   for (Index n : {6, 48, 99, 201, 501}) b->Arg(n);
 }
+// The banded kernels also at 5001 elements (30 006 DOF).
+void band_sizes(benchmark::internal::Benchmark* b) {
+  for (Index n : {6, 48, 99, 201, 501, 5001}) b->Arg(n);
+}
+
+// This CPU's double-precision rate (AVX2 FMA, one core), for the bounds of the
+// banded kernels' counters: measured 46–49 GFLOP/s (docs/performance.md).
+constexpr double flops_per_second = 47.5e9;
 
 void dofs_counter(benchmark::State& state, const Assembler& a) {
   state.counters["dofs"] = static_cast<double>(a.dof_map().n_reduced());
@@ -170,7 +180,7 @@ void BM_BandedFactor(benchmark::State& state) {
   state.counters["dofs"] = static_cast<double>(S.rows());
   state.counters["half_bandwidth"] = static_cast<double>(lu.bandwidth());
 }
-BENCHMARK(BM_BandedFactor)->Apply(sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BandedFactor)->Apply(band_sizes)->Unit(benchmark::kMicrosecond);
 
 void BM_BandedSolve(benchmark::State& state) {
   const SparseMatrix S = step_tangent(model(state.range(0)));
@@ -187,8 +197,56 @@ void BM_BandedSolve(benchmark::State& state) {
     benchmark::DoNotOptimize(x.data());
   }
   state.counters["dofs"] = static_cast<double>(S.rows());
+  // The bound: reading the factors (n·(2b + 1) values) once.
+  state.counters["factor_bytes"] = static_cast<double>(S.rows() * (2 * lu.bandwidth() + 1) * 8);
 }
-BENCHMARK(BM_BandedSolve)->Apply(sizes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BandedSolve)->Apply(band_sizes)->Unit(benchmark::kMicrosecond);
+
+// A response point's dynamic stiffness K + iω(C + ΩG) − ω²M at Ω = ω = 4000 rpm, as
+// run_harmonic_response assembles it.
+ComplexBandedLU::ComplexSparse dynamic_stiffness(const Model& m) {
+  const Assembler a(m);
+  const SystemMatrices s = a.at(speed_4000rpm);
+  const Real w = speed_4000rpm;
+  ComplexBandedLU::ComplexSparse A = s.stiffness(w).cast<Complex>() + Complex(0, w) * s.damping(w).cast<Complex>() -
+                                     Complex(w * w) * s.M.cast<Complex>();
+  A.makeCompressed();
+  return A;
+}
+
+// Its factorisation: banded with partial pivoting (core/banded_lu.hpp), against the
+// flops bound 8·n·b² (complex multiply–adds of the elimination without row
+// interchanges) and that of the interchanges it made, at flops_per_second.
+void BM_ResponseFactorBanded(benchmark::State& state) {
+  const auto A = dynamic_stiffness(model(state.range(0)));
+  ComplexBandedLU lu;
+  if (!lu.analyse(A, 64)) state.SkipWithError("bandwidth above 64");
+  for (auto _ : state)
+    if (!lu.factorize(A)) state.SkipWithError("singular");
+  const double n = static_cast<double>(A.rows()), b = static_cast<double>(lu.bandwidth());
+  state.counters["dofs"] = n;
+  state.counters["bound_us"] = 8 * n * b * b / flops_per_second * 1e6;
+  // The flops of this matrix's elimination: the row interchanges widen each step's
+  // update from b to up to 2b columns (LAPACK's ju).
+  double flops = 0;
+  for (Index j = 0, ju = 0; j < A.rows(); ++j) {
+    const Index m = std::min<Index>(lu.bandwidth(), A.rows() - 1 - j);
+    ju = std::max<Index>(ju, std::min<Index>(lu.pivots()[static_cast<std::size_t>(j)] + lu.bandwidth(), A.rows() - 1));
+    flops += 8.0 * static_cast<double>(m * (ju - j));
+  }
+  state.counters["pivoted_bound_us"] = flops / flops_per_second * 1e6;
+}
+BENCHMARK(BM_ResponseFactorBanded)->Apply(band_sizes)->Unit(benchmark::kMicrosecond);
+
+// The same by Eigen's supernodal sparse LU (the pattern analysed once), as before.
+void BM_ResponseFactorSparse(benchmark::State& state) {
+  const auto A = dynamic_stiffness(model(state.range(0)));
+  Eigen::SparseLU<ComplexBandedLU::ComplexSparse, Eigen::COLAMDOrdering<int>> lu;
+  lu.analyzePattern(A);
+  for (auto _ : state) lu.factorize(A);
+  state.counters["dofs"] = static_cast<double>(A.rows());
+}
+BENCHMARK(BM_ResponseFactorSparse)->Apply(band_sizes)->Unit(benchmark::kMicrosecond);
 
 // The finite-length bearing's film force with its Jacobian (example 06's bearing,
 // L/D = 0.5, 72 × 8 cells, Reynolds' condition) at 64 states of a whirling journal,

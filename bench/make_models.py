@@ -91,7 +91,7 @@ SECTION = """\
 
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "models")
-    sizes = [int(a) for a in sys.argv[2:]] or [6, 48, 99, 201, 501]
+    sizes = [int(a) for a in sys.argv[2:]] or [6, 48, 99, 201, 501, 5001]
     os.makedirs(outdir, exist_ok=True)
     for n in sizes:
         if n % 3:

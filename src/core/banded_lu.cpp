@@ -203,4 +203,151 @@ void BandedLU::solve_in_place(Vector& x) const {
   substitute_any(a_.data(), inverse_.data(), n_, b_, x.data());
 }
 
+namespace {
+
+// The complex band LU with partial pivoting, as LAPACK's zgbtf2/zgbtrs compute it
+// (row interchanges within the band, the upper triangle widened to 2b by them), on
+// interleaved (re, im) doubles written out as real arithmetic (std::complex's
+// operator* guards against NaN through a library call; the parts stored apart
+// measured 1.2–1.4 times slower). B > 0: the half-bandwidth known when compiling, its
+// loops unrolled; B = 0: @p b at run time. A(i, c) is at c·ld + 2b + i − c,
+// ld = 3b + 1.
+//
+// The matrix is read in as the elimination reaches it: column c (zeroed, then its
+// stored entries @p values placed at @p positions, those of @p starts[c] …
+// starts[c+1]) just before step c − 2b, so that each column is written, updated and
+// finished while in cache (at 30 000 DOF, whose factors take 15 MB, filling the
+// whole band first made the time vary from 2 to 3.6 ms between runs).
+template <int B>
+bool complex_factorize(Complex* ab, Index n, Index b_run, int* pivots, Complex* inverse, const Complex* values,
+                       const int* starts, const Index* positions) {
+  const Index b = B > 0 ? B : b_run, ld = 3 * b + 1, kv = 2 * b;
+  auto at = [&](Index i, Index c) { return reinterpret_cast<Real*>(ab + c * ld + kv + i - c); };
+  Index filled = 0;
+  auto fill_to = [&](Index last) {
+    for (; filled <= last; ++filled) {
+      std::fill(ab + filled * ld, ab + (filled + 1) * ld, Complex(0.0));
+      for (int e = starts[filled]; e < starts[filled + 1]; ++e) ab[positions[e]] = values[e];
+    }
+  };
+  Index ju = 0;
+  for (Index j = 0; j < n; ++j) {
+    fill_to(std::min(j + kv, n - 1));
+    const Index km = std::min(b, n - 1 - j);
+    Real* col = at(j, j);
+    Index p = 0;
+    Real best = std::abs(col[0]) + std::abs(col[1]);
+    for (Index i = 1; i <= km; ++i)
+      if (const Real m = std::abs(col[2 * i]) + std::abs(col[2 * i + 1]); m > best) best = m, p = i;
+    pivots[j] = static_cast<int>(j + p);
+    if (!(best > 0.0) || !std::isfinite(best)) return false;
+    ju = std::max(ju, std::min(j + b + p, n - 1));
+    if (p != 0)
+      for (Index c = j; c <= ju; ++c) std::swap(ab[c * ld + kv + j - c], ab[c * ld + kv + j + p - c]);
+    const Real pr = col[0], pi = col[1], d = pr * pr + pi * pi, rr = pr / d, ri = -pi / d;  // 1/pivot
+    inverse[j] = Complex(rr, ri);
+    Real* l = col + 2;
+    const Index m = B > 0 && j + B < n ? B : km;
+    for (Index i = 0; i < m; ++i) {
+      const Real x = l[2 * i], y = l[2 * i + 1];
+      l[2 * i] = x * rr - y * ri;
+      l[2 * i + 1] = x * ri + y * rr;
+    }
+    for (Index c = j + 1; c <= ju; ++c) {
+      Real* u = at(j, c);
+      const Real ur = u[0], ui = u[1];
+      if (ur == 0.0 && ui == 0.0) continue;
+      Real* t = u + 2;
+      for (Index i = 0; i < m; ++i) {
+        const Real x = l[2 * i], y = l[2 * i + 1];
+        t[2 * i] -= x * ur - y * ui;
+        t[2 * i + 1] -= x * ui + y * ur;
+      }
+    }
+  }
+  return true;
+}
+
+template <int B>
+void complex_substitute(const Complex* ab, Index n, Index b_run, const int* pivots, const Complex* inverse, Complex* x) {
+  const Index b = B > 0 ? B : b_run, ld = 3 * b + 1, kv = 2 * b;
+  Real* y = reinterpret_cast<Real*>(x);
+  for (Index j = 0; j < n; ++j) {  // L·y = P·b, unit diagonal
+    if (pivots[j] != j) std::swap(x[j], x[pivots[j]]);
+    const Index m = B > 0 && j + B < n ? B : std::min(b, n - 1 - j);
+    const Real* l = reinterpret_cast<const Real*>(ab + j * ld + kv + 1);
+    const Real yr = y[2 * j], yi = y[2 * j + 1];
+    Real* t = y + 2 * (j + 1);
+    for (Index i = 0; i < m; ++i) {
+      t[2 * i] -= l[2 * i] * yr - l[2 * i + 1] * yi;
+      t[2 * i + 1] -= l[2 * i] * yi + l[2 * i + 1] * yr;
+    }
+  }
+  for (Index j = n - 1; j >= 0; --j) {  // U·x = y, upper bandwidth 2b
+    const Real vr = y[2 * j], vi = y[2 * j + 1], ir = inverse[j].real(), ii = inverse[j].imag();
+    const Real xr = vr * ir - vi * ii, xi = vr * ii + vi * ir;
+    y[2 * j] = xr;
+    y[2 * j + 1] = xi;
+    const Index m = std::min(kv, j);
+    const Real* u = reinterpret_cast<const Real*>(ab + j * ld + kv - m);  // A(j − m … j − 1, j)
+    Real* t = y + 2 * (j - m);
+    for (Index i = 0; i < m; ++i) {
+      t[2 * i] -= u[2 * i] * xr - u[2 * i + 1] * xi;
+      t[2 * i + 1] -= u[2 * i] * xi + u[2 * i + 1] * xr;
+    }
+  }
+}
+
+template <std::size_t... I>
+constexpr auto complex_factor_kernels(std::index_sequence<I...>) {
+  return std::array<bool (*)(Complex*, Index, Index, int*, Complex*, const Complex*, const int*, const Index*),
+                    sizeof...(I)>{
+      &complex_factorize<static_cast<int>(I)>...};
+}
+template <std::size_t... I>
+constexpr auto complex_substitute_kernels(std::index_sequence<I...>) {
+  return std::array<void (*)(const Complex*, Index, Index, const int*, const Complex*, Complex*), sizeof...(I)>{
+      &complex_substitute<static_cast<int>(I)>...};
+}
+// Index 0: the run-time half-bandwidth; 1 … 16 compiled.
+constexpr auto complex_factor = complex_factor_kernels(std::make_index_sequence<fixed_bands + 1>{});
+constexpr auto complex_substitute_fixed = complex_substitute_kernels(std::make_index_sequence<fixed_bands + 1>{});
+
+}  // namespace
+
+bool ComplexBandedLU::analyse(const ComplexSparse& pattern, Index largest_bandwidth) {
+  if (pattern.rows() != pattern.cols() || !pattern.isCompressed())
+    throw Error("ComplexBandedLU::analyse: a matrix that is not square, or not compressed");
+  Index b = 0;
+  for (Index k = 0; k < pattern.outerSize(); ++k)
+    for (ComplexSparse::InnerIterator it(pattern, k); it; ++it) b = std::max(b, std::abs(it.row() - it.col()));
+  n_ = 0;
+  if (b > largest_bandwidth) return false;
+  n_ = pattern.rows();
+  b_ = b;
+  ld_ = 3 * b_ + 1;
+  ab_.resize(static_cast<std::size_t>(n_ * ld_));
+  pivots_.assign(static_cast<std::size_t>(n_), 0);
+  inverse_.assign(static_cast<std::size_t>(n_), Complex(0.0));
+  positions_.clear();
+  positions_.reserve(static_cast<std::size_t>(pattern.nonZeros()));
+  for (Index k = 0; k < pattern.outerSize(); ++k)
+    for (ComplexSparse::InnerIterator it(pattern, k); it; ++it)
+      positions_.push_back(it.col() * ld_ + (2 * b_ + it.row() - it.col()));
+  return true;
+}
+
+bool ComplexBandedLU::factorize(const ComplexSparse& A) {
+  if (A.rows() != n_ || !A.isCompressed() || A.nonZeros() != static_cast<Index>(positions_.size()))
+    throw Error("ComplexBandedLU::factorize: a matrix of another size or pattern than analysed");
+  const std::size_t kernel = b_ <= fixed_bands ? static_cast<std::size_t>(b_) : 0;
+  return n_ == 0 || complex_factor[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), A.valuePtr(),
+                                           A.outerIndexPtr(), positions_.data());
+}
+
+void ComplexBandedLU::solve_in_place(ComplexVector& x) const {
+  const std::size_t kernel = b_ <= fixed_bands ? static_cast<std::size_t>(b_) : 0;
+  complex_substitute_fixed[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), x.data());
+}
+
 }  // namespace feran

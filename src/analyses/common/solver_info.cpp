@@ -10,6 +10,7 @@ std::string_view to_string(SolverMethod method) {
     case SolverMethod::shift_invert_lanczos: return "shift-invert-lanczos";
     case SolverMethod::shift_invert_arnoldi: return "shift-invert-arnoldi";
     case SolverMethod::sparse_lu: return "sparse-lu";
+    case SolverMethod::banded_lu: return "banded-lu";
     case SolverMethod::time_integration: return "time-integration";
   }
   return "none";

@@ -18,6 +18,7 @@ enum class SolverMethod {
   shift_invert_lanczos,  ///< undamped blocks without gyroscopic terms: symmetric Lanczos
   shift_invert_arnoldi,  ///< the lowest modes: shift-invert Arnoldi
   sparse_lu,             ///< a linear system: sparse LU
+  banded_lu,             ///< a linear system of small bandwidth: banded LU with partial pivoting (LAPACK)
   time_integration,      ///< a time integrator (TransientResult names which)
 };
 
