@@ -274,6 +274,8 @@ def cases():
     add(in_text("bearings", "cavitation_unknown", J, visc, finite + '\ncavitation = "swift"', 'must be "reynolds" or "gumbel"', 'cavitation = "swift"'))
     add(in_text("bearings", "cavitation_without_finite", J, visc, visc + '\ncavitation = "gumbel"', "applies only to theory = \"finite\"", 'cavitation = "gumbel"'))
     add(in_text("bearings", "cells_without_finite", J, visc, visc + "\naxial_cells = 4", "applies only to theory", "axial_cells = 4"))
+    add(in_text("bearings", "evaluation_unknown", J, visc, finite + '\nevaluation = "fast"', 'must be "auto", "table" or "exact"', 'evaluation = "fast"'))
+    add(in_text("bearings", "evaluation_without_finite", J, visc, visc + '\nevaluation = "table"', "applies only to theory = \"finite\"", 'evaluation = "table"'))
     add(in_text("bearings", "axial_cells_zero", J, visc, finite + "\naxial_cells = 0", "'axial_cells' must be at least 1", "axial_cells = 0"))
     add(in_text("bearings", "axial_cells_fraction", J, visc, finite + "\naxial_cells = 2.5", "'axial_cells' must be an integer", "axial_cells = 2.5"))
     add(in_text("bearings", "circumferential_cells_few", J, visc, finite + "\ncircumferential_cells = 4", "'circumferential_cells' must be at least 8", "circumferential_cells = 4"))
