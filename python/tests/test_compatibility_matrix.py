@@ -1,7 +1,8 @@
 """The compatibility matrix: every entry family × every analysis × every door.
 
 Families are every shipped example model and one small rotor per kind of support
-(journal bearings in the short, long and finite theories, rolling bearings, a tapered
+(journal bearings in the short, long and finite theories, the finite one also with its
+film force from its table in every analysis, rolling bearings, a tapered
 shaft under axial load), generated here from the journal-bearing rotor of the tests
 (tests/models/valid/journal_rotor.toml); the examples bring frequency tables (07), a
 torque drive (02, model_motor) and dry friction (03). Analyses are the command
@@ -46,6 +47,8 @@ def journal_variant(text, kind):
     if kind == "journal_finite":
         return text.replace('viscosity = "20 mPa*s"',
                             'viscosity = "20 mPa*s"\ntheory = "finite"\ncircumferential_cells = 24\naxial_cells = 4')
+    if kind == "journal_finite_table":  # the film force from its table in every analysis, not only run-ups
+        return journal_variant(text, "journal_finite").replace('axial_cells = 4', 'axial_cells = 4\nevaluation = "table"')
     if kind == "rolling":
         blocks = re.findall(r"\[\[journal_bearings\]\]\nname = \"([^\"]+)\"\nnode = \"([^\"]+)\"\n(?:[^\[\n][^\n]*\n)*", text)
         out = re.sub(r"\[\[journal_bearings\]\]\n(?:[^\[\n][^\n]*\n)*\n?", "", text)
@@ -61,7 +64,7 @@ def journal_variant(text, kind):
     raise ValueError(kind)
 
 
-SUPPORT_FAMILIES = ["journal_short", "journal_long", "journal_finite", "rolling", "tapered_axial"]
+SUPPORT_FAMILIES = ["journal_short", "journal_long", "journal_finite", "journal_finite_table", "rolling", "tapered_axial"]
 EXAMPLES = sorted(p for p in glob.glob(os.path.join(SOURCE, "examples", "*", "*.toml"))
                   if not p.endswith(".study.toml"))
 FAMILIES = [("example:" + os.path.relpath(p, os.path.join(SOURCE, "examples")), p) for p in EXAMPLES] + \

@@ -41,10 +41,9 @@ class Film {
     const Real h = H(th);
     return {-3.0 * h * h * std::cos(th), -3.0 * h * h * std::sin(th)};
   }
-  // Triplets of −L with coefficients c(θ) in place of H³ (c = H³ for the operator
-  // itself, a derivative of H³ for its derivative), rows of `active` replaced by the
-  // identity (P = 0 there).
-  SparseMatrix system(const std::vector<char>& active) const {
+  // −L, the discrete operator of the whole film (FilmSolver replaces the cavitated
+  // rows by the identity).
+  SparseMatrix system() const {
     std::vector<Eigen::Triplet<Real>> t;
     t.reserve(static_cast<std::size_t>(5 * size()));
     for (int i = 0; i < n_; ++i) {
@@ -52,14 +51,11 @@ class Film {
       const Real bz = beta_ * std::pow(H(theta(i)), 3) / (dz_ * dz_);
       for (int j = 0; j < m_; ++j) {
         const Index row = k(i, j);
-        // An active (cavitated) row keeps the pattern with explicit zeros, so that
-        // one symbolic analysis serves every active set.
-        const Real on = active[static_cast<std::size_t>(row)] ? 0.0 : 1.0;
-        t.emplace_back(row, row, on > 0 ? (ap + am) / (dt_ * dt_) + 2.0 * bz : 1.0);
-        t.emplace_back(row, k(i + 1, j), -on * ap / (dt_ * dt_));
-        t.emplace_back(row, k(i - 1, j), -on * am / (dt_ * dt_));
-        if (j + 1 < m_) t.emplace_back(row, k(i, j + 1), on * (j == 0 ? -2.0 * bz : -bz));
-        if (j > 0) t.emplace_back(row, k(i, j - 1), -on * bz);
+        t.emplace_back(row, row, (ap + am) / (dt_ * dt_) + 2.0 * bz);
+        t.emplace_back(row, k(i + 1, j), -ap / (dt_ * dt_));
+        t.emplace_back(row, k(i - 1, j), -am / (dt_ * dt_));
+        if (j + 1 < m_) t.emplace_back(row, k(i, j + 1), j == 0 ? -2.0 * bz : -bz);
+        if (j > 0) t.emplace_back(row, k(i, j - 1), -bz);
       }
     }
     SparseMatrix S(size(), size());
@@ -186,7 +182,7 @@ FilmForce finite_bearing_force(const JournalBearingGeometry& g, const FiniteBear
   if (reynolds)
     for (Index k = 0; k < N; ++k) active[static_cast<std::size_t>(k)] = F(k) > 0 ? 1 : 0;
   Vector P;
-  const SparseMatrix full = film.system(std::vector<char>(static_cast<std::size_t>(N), 0));
+  const SparseMatrix full = film.system();
   FilmSolver lu(full, 2 * static_cast<Index>(film.m()));
   for (int iteration = 0;; ++iteration) {
     lu.factorize(active);

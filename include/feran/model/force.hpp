@@ -77,6 +77,7 @@ struct MotionState {
   /// a force may then answer from a table it builds once, within a stated error (the
   /// finite-length journal bearing does, forces/finite_bearing_table.hpp).
   bool trajectory = false;
+  bool operator==(const MotionState&) const = default;
 };
 
 /// A nonlinear force on a few DOFs and its Jacobian blocks ∂f/∂x and ∂f/∂v (local,

@@ -231,9 +231,7 @@ const NonlinearForceValue& RotorSystem::evaluate(std::size_t i, const MotionStat
   ForceCache& cache = force_cache_[i];
   xl_.noalias() = selectors_[i] * x;
   vl_.noalias() = selectors_[i] * v;
-  if (cache.valid && cache.state.t == state.t && cache.state.speed == state.speed &&
-      cache.state.acceleration == state.acceleration && cache.state.angle == state.angle && cache.x == xl_ &&
-      cache.v == vl_)
+  if (cache.valid && cache.state == state && cache.x == xl_ && cache.v == vl_)
     return cache.value;
   try {
     cache.valid = false;
