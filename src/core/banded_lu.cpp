@@ -26,6 +26,15 @@ void BandedLU::resize(Index n, Index b) {
 
 void BandedLU::set_zero() { std::fill(a_.begin(), a_.end(), 0.0); }
 
+void BandedLU::set_combination(const std::vector<Real>& A, Real c, const std::vector<Real>& B) {
+  if (A.size() != a_.size() || B.size() != a_.size()) throw Error("BandedLU::set_combination: values of another band");
+  const std::size_t m = a_.size();
+  Real* out = a_.data();
+  const Real* a = A.data();
+  const Real* b = B.data();
+  for (std::size_t i = 0; i < m; ++i) out[i] = a[i] + c * b[i];
+}
+
 void BandedLU::add(Real c, const SparseMatrix& S) {
   if (S.rows() != n_ || S.cols() != n_) throw Error("BandedLU::add: a matrix of another size");
   for (Index k = 0; k < S.outerSize(); ++k)

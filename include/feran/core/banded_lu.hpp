@@ -41,6 +41,13 @@ class BandedLU {
   /// The same as add(c, S) for a compressed S of the pattern @p positions were made for.
   void add(Real c, const SparseMatrix& S, const std::vector<Index>& positions);
 
+  /// The matrix set, in the band's storage (n·(2b + 1) numbers: column j's rows
+  /// j − b … j + b at j·(2b + 1) + i − j + b), to be kept and combined by
+  /// set_combination().
+  const std::vector<Real>& values() const { return a_; }
+  /// Sets the matrix to A + c·B, both values() of this band's size.
+  void set_combination(const std::vector<Real>& A, Real c, const std::vector<Real>& B);
+
   /// Factorises the matrix set; false when a pivot is below 1e-10 of the largest
   /// entry of its column (or not finite): the matrix then needs pivoting.
   bool factorize();

@@ -170,7 +170,7 @@ void RotorSystem::solve_mass(const Vector& r, Vector& a) {
   a(n_) = r(n_) / inertia_;
 }
 
-void RotorSystem::update_speed(Real speed) {
+void RotorSystem::update_speed(Real speed) const {
   if (!assembler_.speed_dependent() || speed == cached_speed_) return;
   assembler_.variable_values(speed, variable_);
   cached_speed_ = speed;
@@ -283,6 +283,12 @@ void RotorSystem::model_jacobian(const MotionState& state, const Vector& x, cons
   const Real W = state.speed;
   update_speed(W);
   jacobian_speed_ = W;
+  if (linear()) {
+    // Set when something asks for them (tangent_values()); the banded factorisation
+    // combines its kept parts instead.
+    tangent_pending_ = true;
+    return;
+  }
   // D_T = C + C_i + Ω·G (+ the speed-dependent elements' C) − Sᵀ·∂f/∂v·S, K_T = K + Ω·K_i
   // (+ their K) − Sᵀ·∂f/∂x·S, in place in one pattern: a run sets them at every step.
   const std::vector<Real> c = tangent_coefficients(W);
@@ -300,9 +306,19 @@ void RotorSystem::model_jacobian(const MotionState& state, const Vector& x, cons
   }
 }
 
+void RotorSystem::tangent_values() const {
+  if (!tangent_pending_) return;
+  update_speed(jacobian_speed_);
+  const std::vector<Real> c = tangent_coefficients(jacobian_speed_);
+  damping_sum_.evaluate(c, damping_terms(), DT_);
+  stiffness_sum_.evaluate(c, stiffness_terms(), KT_);
+  tangent_pending_ = false;
+}
+
 bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
   // A driven run's speed row and column border the whole matrix: sparse LU.
   if (!driven_) {
+    if (band_pattern_ < 0) tangent_values();  // the patterns (set once) for the band's size
     const Index nonzeros = M_.nonZeros() + DT_.nonZeros() + KT_.nonZeros();
     if (nonzeros != band_pattern_) {
       const Index b = std::max({BandedLU::half_bandwidth(M_), BandedLU::half_bandwidth(DT_),
@@ -316,8 +332,38 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
         band_positions_ = {band_.positions(M_), band_.positions(DT_), band_.positions(KT_)};
       }
       band_pattern_ = nonzeros;
+      band_constant_.clear();
     }
-    if (band_fits_) {
+    if (band_fits_ && linear()) {
+      // The kept constant and speed parts for these coefficients (set again when Δt
+      // changes), combined at the tangent's speed; then the speed-dependent elements.
+      const std::array<Real, 3> coefficients{c_x, c_v, c_a};
+      if (band_constant_.empty() || coefficients != band_coefficients_) {
+        band_.set_zero();
+        band_.add(c_a, M_);
+        band_.add(c_v, Cc_);
+        band_.add(c_x, K_);
+        band_constant_ = band_.values();
+        band_.set_zero();
+        band_.add(c_v, G_);
+        band_.add(c_x, Ki_);
+        band_speed_ = band_.values();
+        band_coefficients_ = coefficients;
+      }
+      band_.set_combination(band_constant_, jacobian_speed_, band_speed_);
+      if (assembler_.speed_dependent()) {
+        update_speed(jacobian_speed_);
+        if (variable_.C.nonZeros() + variable_.K.nonZeros() != variable_pattern_) {
+          variable_positions_[0] = band_.positions(variable_.C);
+          variable_positions_[1] = band_.positions(variable_.K);
+          variable_pattern_ = variable_.C.nonZeros() + variable_.K.nonZeros();
+        }
+        band_.add(c_v, variable_.C, variable_positions_[0]);
+        band_.add(c_x, variable_.K, variable_positions_[1]);
+      }
+      banded_factors_ = band_.factorize();
+      if (banded_factors_) return true;
+    } else if (band_fits_) {
       band_.set_zero();
       band_.add(c_a, M_, band_positions_[0]);
       band_.add(c_v, DT_, band_positions_[1]);
@@ -327,6 +373,7 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
     }
   }
   banded_factors_ = false;
+  tangent_values();
   SparseMatrix S = c_a * (driven_ ? mass_ext_ : M_) + c_v * DT_ + c_x * KT_;
   S.makeCompressed();
   if (S.nonZeros() != pattern_nonzeros_) {

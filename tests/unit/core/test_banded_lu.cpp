@@ -58,6 +58,32 @@ TEST(BandedLU, SolvesLikeADenseLUWithPivoting) {
   }
 }
 
+TEST(BandedLU, KeptPartsCombineIntoTheMatrixAtAnySpeed) {
+  // A run on a speed ramp keeps A and B in the band's storage and sets A + Ω·B before
+  // each factorisation: the same solution as the matrix added entry by entry.
+  const Index n = 40, b = 6;
+  const SparseMatrix A = random_band(n, b, 3u), B = random_band(n, b, 4u);
+  BandedLU lu;
+  lu.resize(n, b);
+  lu.set_zero();
+  lu.add(1.0, A);
+  const std::vector<Real> kept_a = lu.values();
+  lu.set_zero();
+  lu.add(1.0, B);
+  const std::vector<Real> kept_b = lu.values();
+  const Vector rhs = Vector::LinSpaced(n, 1.0, -3.0);
+  for (const Real speed : {0.0, 0.25, -0.5}) {
+    lu.set_combination(kept_a, speed, kept_b);
+    ASSERT_TRUE(lu.factorize());
+    Vector x = rhs;
+    lu.solve_in_place(x);
+    const SparseMatrix S = A + speed * B;
+    const Vector expected = Eigen::MatrixXd(S).partialPivLu().solve(rhs);
+    EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm()) << "speed " << speed;
+  }
+  EXPECT_THROW(lu.set_combination(kept_a, 1.0, std::vector<Real>(3, 0.0)), Error);
+}
+
 // A random complex n × n matrix of half-bandwidth b whose diagonal is small against
 // its off-diagonal entries (a dynamic stiffness near a resonance): elimination
 // without row interchanges would be unstable on it.

@@ -2,6 +2,7 @@
 /// @file
 /// A feran model as a SecondOrderSystem for the time integrators.
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -55,8 +56,14 @@ class RotorSystem final : public SecondOrderSystem {
   void mass_times(const Vector& u, Vector& y) const override;
   void solve_mass(const Vector& r, Vector& a) override;
   void set_jacobian(Real t, const Vector& x, const Vector& v, bool exact) override;
-  void stiffness_times(const Vector& u, Vector& y) const override { y.noalias() = KT_ * u; }
-  void damping_times(const Vector& u, Vector& y) const override { y.noalias() = DT_ * u; }
+  void stiffness_times(const Vector& u, Vector& y) const override {
+    tangent_values();
+    y.noalias() = KT_ * u;
+  }
+  void damping_times(const Vector& u, Vector& y) const override {
+    tangent_values();
+    y.noalias() = DT_ * u;
+  }
   bool factor_tangent(Real c_x, Real c_v, Real c_a) override;
   void solve_tangent(const Vector& rhs, Vector& delta) override;
   /// Without nonlinear forces the system is linear in (x, v), and the Jacobian is
@@ -84,7 +91,14 @@ class RotorSystem final : public SecondOrderSystem {
   /// Nonlinear force @p i at the state; an Error it throws is rethrown naming the force.
   /// (The last evaluation at the same state is returned again, not recomputed.)
   const NonlinearForceValue& evaluate(std::size_t i, const MotionState& state, const Vector& x, const Vector& v) const;
-  void update_speed(Real speed);
+  void update_speed(Real speed) const;
+  /// D_T and K_T of a linear model, set_jacobian() having left them for later: its
+  /// banded factorisation needs neither (factor_tangent()), only the W-methods'
+  /// products and the sparse LU do.
+  void tangent_values() const;
+  /// True when the tangent is c_a·M + c_v·(C + C_i + Ω·G) + c_x·(K + Ω·K_i) plus the
+  /// speed-dependent elements' terms: no drive, no nonlinear force.
+  bool linear() const { return !driven_ && forces_.empty(); }
   void external_forces(const MotionState& state, Vector& f_full) const;
   /// r of the model's equations at displacements @p x, velocities @p v (model size):
   /// external forces at @p external, nonlinear ones at @p nonlinear.
@@ -104,12 +118,13 @@ class RotorSystem final : public SecondOrderSystem {
   SparseMatrix M_, C_, K_, G_, Ci_, Ki_;  // speed-independent parts
   SparseMatrix Cc_;                       // C_ + Ci_
   Vector work_;                           // rhs() scratch
-  SystemMatrices variable_;               // speed-dependent parts at cached_speed_
-  Real cached_speed_;
+  mutable SystemMatrices variable_;       // speed-dependent parts at cached_speed_
+  mutable Real cached_speed_;
   Eigen::SimplicialLDLT<SparseMatrix> mass_;
   std::vector<Force> forces_;  ///< the model's nonlinear forces
   std::vector<SparseMatrix> selectors_;  // per force: rows of T for its DOFs
-  SparseMatrix DT_, KT_;
+  mutable SparseMatrix DT_, KT_;
+  mutable bool tangent_pending_ = false;  // a linear model's D_T, K_T not yet set at jacobian_speed_
   SparseSum damping_sum_, stiffness_sum_;  // D_T, K_T in place (the forces' entries included, zero)
   std::vector<SparseMatrix> force_patterns_;  // per force: the pattern of Sᵀ·J·S
   // Per force: (local row p, local column q, position in D_T's and K_T's values,
@@ -139,7 +154,15 @@ class RotorSystem final : public SecondOrderSystem {
   Index band_pattern_ = -1;    // nonzeros of the patterns the band was sized for
   bool band_fits_ = false;     // their half-bandwidth is at most max_band
   bool banded_factors_ = false;  // the last factorisation is band_'s
-  std::vector<std::vector<Index>> band_positions_;  // of M_, DT_, KT_ in band_ (a linear model's)
+  std::vector<std::vector<Index>> band_positions_;  // of M_, DT_, KT_ in band_
+  // A linear model's tangent in the band's storage, kept: its constant part
+  // c_a·M + c_v·(C + C_i) + c_x·K and its speed part c_v·G + c_x·K_i for the
+  // coefficients band_coefficients_, so that a step on a speed ramp sets the band as
+  // one combination of the two (plus the speed-dependent elements) before factorising.
+  std::vector<Real> band_constant_, band_speed_;
+  std::array<Real, 3> band_coefficients_{};  // (c_x, c_v, c_a) of band_constant_, band_speed_
+  std::vector<Index> variable_positions_[2];  // of variable_.C and variable_.K in band_
+  Index variable_pattern_ = -1;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
   Index pattern_nonzeros_ = -1;
   Vector f_full_;
