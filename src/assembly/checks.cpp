@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <feran/core/components.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/tolerances.hpp>
 
@@ -79,26 +80,8 @@ std::string describe_plane_motion(const Model& model, const Vector& q, int famil
 // The number of separate parts of a system: connected groups of DOFs, two DOFs
 // joined when K or M couples them (union–find over the non-zeros).
 Index connected_parts(const SparseMatrix& K, const SparseMatrix& M) {
-  const Index n = K.rows();
-  std::vector<Index> parent(static_cast<std::size_t>(n));
-  for (Index i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
-  const auto root = [&](Index i) {
-    while (parent[static_cast<std::size_t>(i)] != i) {
-      parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-      i = parent[static_cast<std::size_t>(i)];
-    }
-    return i;
-  };
-  for (const SparseMatrix* A : {&K, &M})
-    for (Index j = 0; j < A->outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(*A, j); it; ++it)
-        if (it.value() != 0.0) {
-          const Index a = root(it.row()), b = root(it.col());
-          if (a != b) parent[static_cast<std::size_t>(a)] = b;
-        }
-  Index parts = 0;
-  for (Index i = 0; i < n; ++i) parts += root(i) == i ? 1 : 0;
-  return parts;
+  const std::vector<Index> component = connected_components(K.rows(), {&K, &M}, true);
+  return component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
 }
 
 }  // namespace

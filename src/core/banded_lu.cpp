@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <feran/core/components.hpp>
 #include <feran/core/error.hpp>
 
 namespace feran {
@@ -20,8 +21,72 @@ Index BandedLU::half_bandwidth(const SparseMatrix& pattern) {
 void BandedLU::resize(Index n, Index b) {
   n_ = n;
   b_ = std::min(b, std::max<Index>(n - 1, 0));
-  ld_ = 2 * b_ + 1;
-  a_.assign(static_cast<std::size_t>(n_ * ld_), 0.0);
+  blocks_ = {Block{n_, b_, 0, 0}};
+  block_of_.clear();
+  local_of_.clear();
+  order_.clear();
+  a_.assign(static_cast<std::size_t>(n_ * (2 * b_ + 1)), 0.0);
+}
+
+bool BandedLU::partition(Index n, const std::vector<const SparseMatrix*>& patterns, Index largest_bandwidth) {
+  if (n == 0) {
+    resize(0, 0);
+    return true;
+  }
+  for (const SparseMatrix* S : patterns)
+    if (S->rows() != n || S->cols() != n) throw Error("BandedLU::partition: a matrix of another size");
+  // Each component keeps the unknowns' order.
+  block_of_ = connected_components(n, patterns, false);
+  local_of_.assign(static_cast<std::size_t>(n), 0);
+  std::vector<Index> count;
+  for (Index i = 0; i < n; ++i) {
+    const auto c = static_cast<std::size_t>(block_of_[static_cast<std::size_t>(i)]);
+    if (c == count.size()) count.push_back(0);
+    local_of_[static_cast<std::size_t>(i)] = count[c]++;
+  }
+  std::vector<Index> bandwidth(count.size(), 0);
+  for (const SparseMatrix* S : patterns)
+    for (Index k = 0; k < S->outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(*S, k); it; ++it) {
+        Index& b = bandwidth[static_cast<std::size_t>(block_of_[static_cast<std::size_t>(it.row())])];
+        b = std::max(b, std::abs(local_of_[static_cast<std::size_t>(it.row())] -
+                                 local_of_[static_cast<std::size_t>(it.col())]));
+      }
+  if (*std::max_element(bandwidth.begin(), bandwidth.end()) > largest_bandwidth) {
+    resize(0, 0);
+    return false;
+  }
+  n_ = n;
+  b_ = 0;
+  blocks_.clear();
+  Index offset = 0, first = 0;
+  for (std::size_t c = 0; c < count.size(); ++c) {
+    blocks_.push_back(Block{count[c], bandwidth[c], offset, first});
+    offset += count[c] * (2 * bandwidth[c] + 1);
+    first += count[c];
+    b_ = std::max(b_, bandwidth[c]);
+  }
+  order_.assign(static_cast<std::size_t>(n), 0);
+  for (Index i = 0; i < n; ++i)
+    order_[static_cast<std::size_t>(blocks_[static_cast<std::size_t>(block_of_[static_cast<std::size_t>(i)])].first +
+                                    local_of_[static_cast<std::size_t>(i)])] = i;
+  if (blocks_.size() == 1) {  // one component: the unknowns in order, no gathering
+    block_of_.clear();
+    local_of_.clear();
+    order_.clear();
+  }
+  a_.assign(static_cast<std::size_t>(offset), 0.0);
+  work_.assign(static_cast<std::size_t>(n), 0.0);
+  return true;
+}
+
+Index BandedLU::index(Index i, Index j) const {
+  if (block_of_.empty()) return std::abs(i - j) > b_ ? -1 : j * (2 * b_ + 1) + (i - j + b_);
+  const Index c = block_of_[static_cast<std::size_t>(i)];
+  if (block_of_[static_cast<std::size_t>(j)] != c) return -1;
+  const Block& blk = blocks_[static_cast<std::size_t>(c)];
+  const Index li = local_of_[static_cast<std::size_t>(i)], lj = local_of_[static_cast<std::size_t>(j)];
+  return std::abs(li - lj) > blk.b ? -1 : blk.offset + lj * (2 * blk.b + 1) + (li - lj + blk.b);
 }
 
 void BandedLU::set_zero() { std::fill(a_.begin(), a_.end(), 0.0); }
@@ -39,8 +104,9 @@ void BandedLU::add(Real c, const SparseMatrix& S) {
   if (S.rows() != n_ || S.cols() != n_) throw Error("BandedLU::add: a matrix of another size");
   for (Index k = 0; k < S.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(S, k); it; ++it) {
-      if (std::abs(it.row() - it.col()) > b_) throw Error("BandedLU::add: an entry outside the band");
-      at(it.row(), it.col()) += c * it.value();
+      const Index at = index(it.row(), it.col());
+      if (at < 0) throw Error("BandedLU::add: an entry outside the band");
+      a_[static_cast<std::size_t>(at)] += c * it.value();
     }
 }
 
@@ -50,8 +116,9 @@ std::vector<Index> BandedLU::positions(const SparseMatrix& S) const {
   out.reserve(static_cast<std::size_t>(S.nonZeros()));
   for (Index k = 0; k < S.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(S, k); it; ++it) {
-      if (std::abs(it.row() - it.col()) > b_) throw Error("BandedLU::positions: an entry outside the band");
-      out.push_back(it.col() * ld_ + (it.row() - it.col() + b_));
+      const Index at = index(it.row(), it.col());
+      if (at < 0) throw Error("BandedLU::positions: an entry outside the band");
+      out.push_back(at);
     }
   return out;
 }
@@ -200,16 +267,33 @@ constexpr auto substitute_fixed_kernels = substitute_kernels(std::make_index_seq
 
 bool BandedLU::factorize() {
   inverse_.resize(static_cast<std::size_t>(n_));
-  if (b_ >= 1 && b_ <= fixed_bands) return factor_fixed[static_cast<std::size_t>(b_ - 1)](a_.data(), n_, inverse_.data());
-  return factorize_any(a_.data(), n_, b_, inverse_.data());
+  for (const Block& blk : blocks_) {
+    Real* a = a_.data() + blk.offset;
+    Real* inverse = inverse_.data() + blk.first;
+    const bool ok = blk.b >= 1 && blk.b <= fixed_bands
+                        ? factor_fixed[static_cast<std::size_t>(blk.b - 1)](a, blk.n, inverse)
+                        : factorize_any(a, blk.n, blk.b, inverse);
+    if (!ok) return false;
+  }
+  return true;
 }
 
 void BandedLU::solve_in_place(Vector& x) const {
-  if (b_ >= 1 && b_ <= fixed_bands) {
-    substitute_fixed_kernels[static_cast<std::size_t>(b_ - 1)](a_.data(), inverse_.data(), n_, x.data());
-    return;
+  Real* y = x.data();
+  if (!order_.empty()) {
+    for (std::size_t k = 0; k < order_.size(); ++k) work_[k] = y[order_[k]];
+    y = work_.data();
   }
-  substitute_any(a_.data(), inverse_.data(), n_, b_, x.data());
+  for (const Block& blk : blocks_) {
+    const Real* a = a_.data() + blk.offset;
+    const Real* inverse = inverse_.data() + blk.first;
+    if (blk.b >= 1 && blk.b <= fixed_bands)
+      substitute_fixed_kernels[static_cast<std::size_t>(blk.b - 1)](a, inverse, blk.n, y + blk.first);
+    else
+      substitute_any(a, inverse, blk.n, blk.b, y + blk.first);
+  }
+  if (!order_.empty())
+    for (std::size_t k = 0; k < order_.size(); ++k) x[static_cast<Index>(order_[k])] = work_[k];
 }
 
 namespace {

@@ -13,6 +13,7 @@
 
 #include <feran/analyses/modal/whirl.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
+#include <feran/core/components.hpp>
 
 #include "solver_choice.hpp"
 #include "state_eigen.hpp"
@@ -122,30 +123,12 @@ ComplexVector normalise(const ComplexVector& full, ModeType type) {
 // increasing order, the groups ordered by their first DOF (union–find).
 std::vector<std::vector<Index>> decoupled_blocks(const SparseMatrix& M, const SparseMatrix& D,
                                                  const SparseMatrix& K) {
-  const Index n = M.rows();
-  std::vector<Index> parent(static_cast<std::size_t>(n));
-  for (Index i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
-  auto root = [&](Index i) {
-    while (parent[static_cast<std::size_t>(i)] != i)
-      i = parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-    return i;
-  };
-  for (const SparseMatrix* A : {&M, &D, &K})
-    for (Index j = 0; j < A->outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(*A, j); it; ++it) {
-        if (it.value() == 0.0) continue;
-        const Index a = root(it.row()), b = root(j);
-        if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-      }
-  std::vector<Index> block_of(static_cast<std::size_t>(n), -1);
+  const std::vector<Index> component = connected_components(M.rows(), {&M, &D, &K}, true);
   std::vector<std::vector<Index>> blocks;
-  for (Index i = 0; i < n; ++i) {
-    Index& b = block_of[static_cast<std::size_t>(root(i))];
-    if (b < 0) {
-      b = static_cast<Index>(blocks.size());
-      blocks.emplace_back();
-    }
-    blocks[static_cast<std::size_t>(b)].push_back(i);
+  for (Index i = 0; i < M.rows(); ++i) {
+    const auto c = static_cast<std::size_t>(component[static_cast<std::size_t>(i)]);
+    if (c == blocks.size()) blocks.emplace_back();
+    blocks[c].push_back(i);
   }
   return blocks;
 }

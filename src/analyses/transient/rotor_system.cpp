@@ -321,12 +321,10 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
     if (band_pattern_ < 0) tangent_values();  // the patterns (set once) for the band's size
     const Index nonzeros = M_.nonZeros() + DT_.nonZeros() + KT_.nonZeros();
     if (nonzeros != band_pattern_) {
-      const Index b = std::max({BandedLU::half_bandwidth(M_), BandedLU::half_bandwidth(DT_),
-                                BandedLU::half_bandwidth(KT_)});
-      band_fits_ = b <= max_band;
+      // A band for each set of unknowns no entry couples (lateral, axial, torsional).
+      band_fits_ = band_.partition(n_, {&M_, &DT_, &KT_}, max_band);
       band_positions_.clear();
       if (band_fits_) {
-        band_.resize(n_, b);
         // D_T and K_T keep their patterns (SparseSum, the forces' entries included):
         // where their entries land in the band is found once.
         band_positions_ = {band_.positions(M_), band_.positions(DT_), band_.positions(KT_)};

@@ -1,7 +1,8 @@
 // The banded LU without pivoting (core/banded_lu.hpp) against a dense LU with
 // pivoting, its refusal of a matrix that needs pivoting, the complex banded LU with
 // partial pivoting against the dense one, and the sums of sparse matrices in place
-// (assembly/sparse_sum.hpp) against Eigen's.
+// (assembly/sparse_sum.hpp) against Eigen's; the connected components that split a
+// step's tangent into bands (core/components.hpp).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -11,6 +12,7 @@
 
 #include <feran/assembly/sparse_sum.hpp>
 #include <feran/core/banded_lu.hpp>
+#include <feran/core/components.hpp>
 #include <feran/core/error.hpp>
 
 namespace feran {
@@ -82,6 +84,63 @@ TEST(BandedLU, KeptPartsCombineIntoTheMatrixAtAnySpeed) {
     EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm()) << "speed " << speed;
   }
   EXPECT_THROW(lu.set_combination(kept_a, 1.0, std::vector<Real>(3, 0.0)), Error);
+}
+
+TEST(BandedLU, SplitsUncoupledUnknownsIntoBandsOfTheirOwn) {
+  // Three sets of unknowns interleaved as a rotor's are (four lateral, one axial, one
+  // torsional DOF per node): the lateral set a band of half-bandwidth 3 in its own
+  // numbering (5 in the whole), the axial and torsional ones tridiagonal (6 in the
+  // whole). Each set is factorised on its own; the solution is the whole matrix's.
+  const Index nodes = 9, n = 6 * nodes;
+  const SparseMatrix lateral = random_band(4 * nodes, 3, 11u), axial = random_band(nodes, 1, 12u),
+                     torsional = random_band(nodes, 1, 13u);
+  std::vector<Eigen::Triplet<Real>> trip;
+  const auto lateral_dof = [](Index i) { return 6 * (i / 4) + 1 + i % 4; };
+  for (Index k = 0; k < lateral.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(lateral, k); it; ++it)
+      trip.emplace_back(lateral_dof(it.row()), lateral_dof(it.col()), it.value());
+  for (Index k = 0; k < axial.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(axial, k); it; ++it) trip.emplace_back(6 * it.row(), 6 * it.col(), it.value());
+  for (Index k = 0; k < torsional.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(torsional, k); it; ++it)
+      trip.emplace_back(6 * it.row() + 5, 6 * it.col() + 5, it.value());
+  SparseMatrix A(n, n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  A.makeCompressed();
+  ASSERT_EQ(BandedLU::half_bandwidth(A), 6);
+
+  BandedLU lu;
+  EXPECT_FALSE(lu.partition(n, {&A}, 2));  // the lateral band is 3 wide
+  ASSERT_TRUE(lu.partition(n, {&A}, 64));
+  EXPECT_EQ(lu.blocks(), 3);
+  EXPECT_EQ(lu.bandwidth(), 3);
+  // Storage: 36·7 + 2·9·3 numbers, against 54·13 for the whole band.
+  EXPECT_EQ(lu.values().size(), std::size_t{36 * 7 + 2 * 9 * 3});
+  lu.set_zero();
+  lu.add(1.0, A, lu.positions(A));
+  ASSERT_TRUE(lu.factorize());
+  const Vector rhs = Vector::LinSpaced(n, -2.0, 1.0);
+  Vector x = rhs;
+  lu.solve_in_place(x);
+  const Vector expected = Eigen::MatrixXd(A).partialPivLu().solve(rhs);
+  EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm());
+  // An entry coupling two sets lies outside every band.
+  SparseMatrix coupling(n, n);
+  coupling.insert(0, 1) = 1.0;
+  coupling.makeCompressed();
+  EXPECT_THROW(lu.positions(coupling), Error);
+}
+
+TEST(ConnectedComponents, NumberedByTheirFirstUnknownWithZerosJoiningOnlyAsPattern) {
+  // 0–3 and 1–4 coupled, 2 alone; the entry (2, 4) stored as an explicit zero.
+  SparseMatrix A(5, 5);
+  A.insert(3, 0) = 1.0;
+  A.insert(1, 4) = -2.0;
+  A.insert(2, 4) = 0.0;
+  A.makeCompressed();
+  EXPECT_EQ(connected_components(5, {&A}, true), (std::vector<Index>{0, 1, 2, 0, 1}));
+  EXPECT_EQ(connected_components(5, {&A}, false), (std::vector<Index>{0, 1, 1, 0, 1}));
+  EXPECT_THROW(connected_components(4, {&A}, false), Error);
 }
 
 // A random complex n × n matrix of half-bandwidth b whose diagonal is small against
