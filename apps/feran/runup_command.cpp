@@ -144,6 +144,7 @@ Runner add_runup_command(CLI::App& app) {
     }
     TransientOptions options = runup_settings(model, file.spec.runup, request);
     options.stop = interrupt_token();
+    options.assembled = file.assembler;  // the check's assembly of this model
     const auto [low, high] = speed_span(model, options);
     const ResultSource source{file.path, file.title, speed_range_warnings(model, low, high), args->out.speed_unit};
 

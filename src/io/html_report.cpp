@@ -396,6 +396,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
     section(data, "runup", [&] {
       TransientOptions to = runup_settings(model, r, {});
       to.stop = options.stop;
+      to.assembled = file.assembler;
       const TransientResult tr = run_transient(model, to);
       return json::parse(runup_json(tr, to, model, source));
     }, options.stop);

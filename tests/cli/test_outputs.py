@@ -283,6 +283,35 @@ class TerminalText(OutputTest):
             self.assertNotIn("\x1b", out)
 
 
+class LargeModel(OutputTest):
+    """A model of 30 000 DOF or more is read by the program started again with
+    glibc's malloc on transparent huge pages (apps/feran/common.cpp): the run is the
+    same as without, its outputs are written once, no temporary file stays behind."""
+
+    def test_the_restarted_program_runs_the_same_command(self):
+        # The benchmarks' rotor of 5001 elements (30 006 DOF), beside the examples.
+        root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(EXAMPLE))))
+        with open(self.model, "w") as f:
+            f.write(read(os.path.join(root, "bench", "models", "friswell_5_9_1_5001.toml")))
+        outputs = {}
+        for name, tunables in (("restarted", None), ("as_is", "glibc.malloc.hugetlb=0")):
+            env = dict(os.environ)
+            env.pop("GLIBC_TUNABLES", None)
+            if tunables:
+                env["GLIBC_TUNABLES"] = tunables  # names the tunable: no restart
+            r = run("runup", self.model, "--speed", "10Hz", "--duration", "3e-4s", "--dt", "1e-4s",
+                    "--output-interval", "1e-4s", "--json", self.path(name + ".json"),
+                    "--csv", self.path(name + ".csv"), "--quiet", env=env)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(self.temporaries(), [])
+            data = read_json(self.path(name + ".json"))
+            data.pop("inputs", None)
+            outputs[name] = (data, read(self.path(name + ".csv")))
+        self.assertEqual(outputs["restarted"][1], outputs["as_is"][1])
+        self.assertEqual(outputs["restarted"][0]["statistics"], outputs["as_is"][0]["statistics"])
+        self.assertEqual(outputs["restarted"][0]["probes"], outputs["as_is"][0]["probes"])
+
+
 if __name__ == "__main__":
     FERAN, EXAMPLE = sys.argv[1], sys.argv[2]
     unittest.main(argv=[sys.argv[0], *sys.argv[3:]], verbosity=2)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -11,14 +12,15 @@
 
 namespace feran {
 
-RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load, const Drive* drive)
+RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load, const Drive* drive,
+                         std::shared_ptr<const Assembler> assembled)
     : model_(model),
-      assembler_(model),
+      assembler_(assembled ? std::move(assembled) : std::make_shared<const Assembler>(model)),
       profile_(std::move(profile)),
       constant_load_(std::move(constant_load)),
       cached_speed_(std::numeric_limits<Real>::quiet_NaN()),
       jacobian_speed_(std::numeric_limits<Real>::quiet_NaN()) {
-  const SystemMatrices& c = assembler_.constant();
+  const SystemMatrices& c = assembler_->constant();
   M_ = c.M, C_ = c.C, K_ = c.K, G_ = c.G, Ci_ = c.Ci, Ki_ = c.Ki;
   M_.makeCompressed();
   Cc_ = C_ + Ci_;
@@ -26,7 +28,7 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector consta
   mass_.compute(M_);
   if (mass_.info() != Eigen::Success) throw Error("transient: the mass matrix is not positive definite");
   // The rows of T for a force's DOFs map reduced coordinates to its local ones.
-  const Eigen::SparseMatrix<Real, Eigen::RowMajor> Tr = assembler_.dof_map().transformation();
+  const Eigen::SparseMatrix<Real, Eigen::RowMajor> Tr = assembler_->dof_map().transformation();
   for (const Force& f : model.forces) {
     if (!f.is_nonlinear()) continue;
     const std::vector<Index> dofs = f.dofs();
@@ -72,21 +74,21 @@ RotorSystem::RotorSystem(const Model& model, SpeedProfile profile, Vector consta
 
 std::vector<const SparseMatrix*> RotorSystem::damping_terms() const {
   std::vector<const SparseMatrix*> terms{&Cc_, &G_};
-  if (assembler_.speed_dependent()) terms.push_back(&variable_.C);
+  if (assembler_->speed_dependent()) terms.push_back(&variable_.C);
   for (const SparseMatrix& P : force_patterns_) terms.push_back(&P);
   return terms;
 }
 
 std::vector<const SparseMatrix*> RotorSystem::stiffness_terms() const {
   std::vector<const SparseMatrix*> terms{&K_, &Ki_};
-  if (assembler_.speed_dependent()) terms.push_back(&variable_.K);
+  if (assembler_->speed_dependent()) terms.push_back(&variable_.K);
   for (const SparseMatrix& P : force_patterns_) terms.push_back(&P);
   return terms;
 }
 
 std::vector<Real> RotorSystem::tangent_coefficients(Real speed) const {
   std::vector<Real> c{1.0, speed};
-  if (assembler_.speed_dependent()) c.push_back(1.0);
+  if (assembler_->speed_dependent()) c.push_back(1.0);
   c.resize(c.size() + force_patterns_.size(), 0.0);  // the forces' entries: zero, then scattered
   return c;
 }
@@ -94,7 +96,7 @@ std::vector<Real> RotorSystem::tangent_coefficients(Real speed) const {
 void RotorSystem::set_up_drive(const Drive& drive) {
   driven_ = true;
   drive_ = drive;
-  const SparseMatrix Tt = assembler_.dof_map().transformation().transpose();
+  const SparseMatrix Tt = assembler_->dof_map().transformation().transpose();
   // The unbalances' coupling: their force is Ω²·c(φ) + Ω'·s(φ), each a combination of
   // its values at φ = 0 and φ = 90° (the force turns with e^{iφ}).
   Real unbalance_inertia = 0.0;
@@ -171,8 +173,8 @@ void RotorSystem::solve_mass(const Vector& r, Vector& a) {
 }
 
 void RotorSystem::update_speed(Real speed) const {
-  if (!assembler_.speed_dependent() || speed == cached_speed_) return;
-  assembler_.variable_values(speed, variable_);
+  if (!assembler_->speed_dependent() || speed == cached_speed_) return;
+  assembler_->variable_values(speed, variable_);
   cached_speed_ = speed;
 }
 
@@ -213,13 +215,13 @@ void RotorSystem::model_rhs(const MotionState& external, const MotionState& nonl
   update_speed(W);
   external_forces(external, f_full_);
   // Products accumulate in place (noalias): no temporaries in the step loop.
-  r.noalias() = assembler_.dof_map().transformation().transpose() * f_full_;
+  r.noalias() = assembler_->dof_map().transformation().transpose() * f_full_;
   r.noalias() -= K_ * x;
   r.noalias() -= Cc_ * v;
   work_.noalias() = G_ * v;
   work_.noalias() += Ki_ * x;
   r -= W * work_;
-  if (assembler_.speed_dependent()) {
+  if (assembler_->speed_dependent()) {
     r.noalias() -= variable_.C * v;
     r.noalias() -= variable_.K * x;
   }
@@ -349,7 +351,7 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
         band_coefficients_ = coefficients;
       }
       band_.set_combination(band_constant_, jacobian_speed_, band_speed_);
-      if (assembler_.speed_dependent()) {
+      if (assembler_->speed_dependent()) {
         update_speed(jacobian_speed_);
         if (variable_.C.nonZeros() + variable_.K.nonZeros() != variable_pattern_) {
           variable_positions_[0] = band_.positions(variable_.C);
@@ -396,7 +398,7 @@ Real RotorSystem::highest_frequency() {
   // 60 iterations from a fixed start vector, then 10 % margin, since the iteration
   // approaches the largest eigenvalue from below.
   SparseMatrix K = K_;
-  if (assembler_.speed_dependent()) K += variable_.K;
+  if (assembler_->speed_dependent()) K += variable_.K;
   const SparseMatrix Ks = 0.5 * (K + SparseMatrix(K.transpose()));
   Vector u = Vector::LinSpaced(n_, 1.0, 2.0);
   Real lambda = 0.0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -86,7 +87,9 @@ std::pair<Vector, Vector> start_state(const Model& model, const TransientOptions
   at_start.gravity = options.gravity;
   at_start.loads = options.static_loads;
   at_start.frequency = std::nullopt;  // the coefficients the run-up integrates (synchronous)
-  const Equilibrium e = solve_equilibrium(model, Assembler(model), speed, at_start);
+  std::optional<Assembler> own;
+  const Assembler& assembler = options.assembled ? *options.assembled : own.emplace(model);
+  const Equilibrium e = solve_equilibrium(model, assembler, speed, at_start);
   if (!e.info.converged()) throw Error("runup: no start at the equilibrium: " + e.info.message);
   Vector x = e.q, v = Vector::Zero(model.n_dofs());
   if (options.start == RunupStart::steady_state) {
@@ -135,7 +138,8 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
                               start, d.friction_torque));
   }
   const auto [x_start, v_start] = start_state(model, options);
-  RotorSystem rotor(model, options.profile, constant_load, options.driven ? &*model.drive : nullptr);
+  RotorSystem rotor(model, options.profile, constant_load, options.driven ? &*model.drive : nullptr,
+                    options.assembled);
   std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
   result.info.method = SolverMethod::time_integration;
   const DofMap& dofs = rotor.dof_map();

@@ -35,8 +35,10 @@ class RotorSystem final : public SecondOrderSystem {
  public:
   /// @p model must outlive the system. @p constant_load: over all unconstrained DOFs
   /// (global_dof order), or empty. With @p drive (copied) the speed is a state and
-  /// @p profile is not used.
-  RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load = {}, const Drive* drive = nullptr);
+  /// @p profile is not used. @p assembled: @p model's assembly when the caller has it
+  /// (ModelFile::assembler), else the system assembles the model itself.
+  RotorSystem(const Model& model, SpeedProfile profile, Vector constant_load = {}, const Drive* drive = nullptr,
+              std::shared_ptr<const Assembler> assembled = nullptr);
 
   Index size() const override { return driven_ ? n_ + 1 : n_; }
   /// The model's reduced unknowns (size() without the drive's angle).
@@ -78,13 +80,13 @@ class RotorSystem final : public SecondOrderSystem {
   }
   Real highest_frequency() override;
 
-  const DofMap& dof_map() const { return assembler_.dof_map(); }
-  const Assembler& assembler() const { return assembler_; }
+  const DofMap& dof_map() const { return assembler_->dof_map(); }
+  const Assembler& assembler() const { return *assembler_; }
   const SpeedProfile& profile() const { return profile_; }
   /// Displacements (or velocities) of all unconstrained DOFs (of the model's part of a
   /// driven state).
   Vector expand(const Vector& reduced) const {
-    return assembler_.dof_map().expand(reduced.size() == n_ ? reduced : Vector(reduced.head(n_)));
+    return assembler_->dof_map().expand(reduced.size() == n_ ? reduced : Vector(reduced.head(n_)));
   }
 
  private:
@@ -112,7 +114,7 @@ class RotorSystem final : public SecondOrderSystem {
   std::vector<const SparseMatrix*> stiffness_terms() const;
 
   const Model& model_;
-  Assembler assembler_;
+  std::shared_ptr<const Assembler> assembler_;
   SpeedProfile profile_;
   Vector constant_load_;  // over all unconstrained DOFs; empty: none
   SparseMatrix M_, C_, K_, G_, Ci_, Ki_;  // speed-independent parts

@@ -4,6 +4,7 @@
 /// model along a speed profile, with output sampled at a fixed interval.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include <feran/analyses/common/operating_state.hpp>
 #include <feran/analyses/transient/integrator.hpp>
 #include <feran/analyses/transient/speed_profile.hpp>
+#include <feran/assembly/assembler.hpp>
 #include <feran/core/stop.hpp>
 #include <feran/model/model.hpp>
 
@@ -54,6 +56,9 @@ struct TransientOptions {
   Index reduced_modes = 0;
   /// Asked before each step; the run then ends as interrupted at the last step taken.
   StopToken stop;
+  /// The model's assembly when the caller has it (ModelFile::assembler): used instead
+  /// of assembling the model again. It must be the assembly of the model run.
+  std::shared_ptr<const Assembler> assembled;
 };
 
 /// Number of speeds, evenly spaced in time over the run, at which the basis of a
