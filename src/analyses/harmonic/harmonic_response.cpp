@@ -246,8 +246,12 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   std::vector<Workspace> workspaces(static_cast<std::size_t>(resolve_threads(options.n_threads)));
   std::vector<PointResult> points(n_points);
   // A frequency sweep turns at one speed: its stability once.
+  // The stability of the linearised model itself (its supports' equilibrium solved
+  // once per speed for both), with what no speed changes judged once.
+  std::optional<StabilityScan> scan;
+  if (options.stability) scan.emplace(linear, needs_speed(model));
   std::optional<StabilityPoint> fixed_speed_stability;
-  if (options.stability && result.frequency_sweep && n_points > 0) fixed_speed_stability = stability_at(model, options.speed);
+  if (options.stability && result.frequency_sweep && n_points > 0) fixed_speed_stability = scan->at(options.speed);
 
   auto solve_point = [&](std::size_t k, Workspace& ws) {
     if (options.stop.requested()) {
@@ -308,7 +312,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     }
     out.solved = true;
     if (options.stability)
-      out.stability = fixed_speed_stability ? *fixed_speed_stability : stability_at(model, speed);
+      out.stability = fixed_speed_stability ? *fixed_speed_stability : scan->at(speed);
     if (!q_full.allFinite()) {
       out.finite = false;
       return;

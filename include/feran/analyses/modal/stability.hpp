@@ -18,7 +18,10 @@
 ///    (flutter: oil whirl, internal damping) or a real positive eigenvalue
 ///    (divergence: a negative stiffness, a shaft loaded beyond buckling).
 
+#include <memory>
+#include <mutex>
 #include <string>
+#include <vector>
 
 #include <feran/core/types.hpp>
 #include <feran/model/model.hpp>
@@ -64,5 +67,35 @@ std::string stability_kind(const StabilityPoint& point);
 /// True when the energy test alone shows @p model stable at @p speed (see above); the
 /// supports must already be linearised.
 bool energy_stable(const Model& linear, Real speed);
+
+class ModalSolver;  // feran/analyses/modal/modal.hpp
+
+/// stability_of_linear() at many speeds of one model, for the analyses that judge every
+/// point of a sweep: what does not depend on speed is done once — the energy test of
+/// the elements whose matrices do not change with speed or frequency (their K_i
+/// decides at every speed above 0), and the modal solver, made on first need and
+/// reused (its assembly, and the blocks of modes that no speed changes). at() gives
+/// what stability_of_linear() gives at that speed, and may be called from several
+/// threads.
+class StabilityScan {
+ public:
+  /// @p linear: the model with its supports linearised (or without supports); it must
+  /// outlive the scan. @p needs_speed: the model's supports are oil films
+  /// (needs_speed() of the model before linearising): at rest the stability is unknown.
+  explicit StabilityScan(const Model& linear, bool needs_speed = false);
+  StabilityPoint at(Real speed) const;
+
+ private:
+  bool energy_stable_at(Real speed) const;
+  const ModalSolver& solver() const;
+
+  const Model& linear_;
+  bool needs_speed_ = false;
+  bool constant_stable_ = true;        // the constant elements pass the energy test
+  bool constant_circulatory_ = false;  // some constant element has a non-zero K_i
+  std::vector<std::size_t> varying_;   // the elements that depend on speed or frequency
+  mutable std::once_flag solver_once_;
+  mutable std::shared_ptr<const ModalSolver> solver_;
+};
 
 }  // namespace feran

@@ -7,12 +7,14 @@
 // diverges at the real rate (−c + √(c² + 4m|k|))/(2m).
 #include <cmath>
 #include <complex>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/modal/stability.hpp>
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/io/model_reader.hpp>
 
@@ -146,6 +148,41 @@ TEST(Stability, AStaticEquilibriumPastTheDivergenceIsFlaggedWithItsRate) {
   EXPECT_FALSE(below.stability.unstable);
   options.stability = false;
   EXPECT_FALSE(run_static(model, options).stability.known);
+}
+
+// A scan (what no speed changes judged once, one modal solver) gives at each speed
+// what the point alone gives: the same computation, so the same numbers.
+void expect_scan_as_each_point(const Model& model, const std::vector<Real>& speeds) {
+  const Model linear = linearised(model);
+  const StabilityScan scan(linear, needs_speed(model));
+  for (const Real speed : speeds) {
+    const StabilityPoint alone = stability_at(model, speed), scanned = scan.at(speed);
+    EXPECT_EQ(scanned.known, alone.known) << speed << ": " << scanned.message << " / " << alone.message;
+    EXPECT_EQ(scanned.message, alone.message) << speed;
+    EXPECT_EQ(scanned.unstable, alone.unstable) << speed;
+    EXPECT_EQ(scanned.by_energy, alone.by_energy) << speed;
+    EXPECT_EQ(scanned.divergence, alone.divergence) << speed;
+    if (!std::isnan(alone.growth_rate))
+      EXPECT_NEAR(scanned.growth_rate, alone.growth_rate, 1e-12 * std::max(1.0, std::abs(alone.growth_rate))) << speed;
+    else
+      EXPECT_TRUE(std::isnan(scanned.growth_rate)) << speed;
+    EXPECT_NEAR(scanned.frequency_hz, alone.frequency_hz, 1e-12 * std::max(1.0, alone.frequency_hz)) << speed;
+  }
+}
+
+TEST(Stability, AScanGivesAtEachSpeedWhatThePointAloneGives) {
+  // Rotating damping through its threshold (eigenvalues; circulatory above rest).
+  const Real threshold = std::sqrt(k / m) * (1 + ca / ci);
+  expect_scan_as_each_point(test::jeffcott(m, k, ca, ci), {0.0, 0.5 * threshold, 0.95 * threshold, 1.05 * threshold});
+  // Conservative (the energy test alone).
+  expect_scan_as_each_point(test::friswell_5_9_1(), {0.0, 500.0, 2000.0});
+  // A spring table over speed, through its divergence (a varying element).
+  expect_scan_as_each_point(softening_jeffcott(k, 100.0, ca), {50.0, 99.0, 150.0});
+  // Frequency tables (a varying element, passive).
+  expect_scan_as_each_point(read_model_file(FERAN_SOURCE_DIR "/examples/07_pedestal/model.toml").model, {100.0, 314.0});
+  // Oil films: linearised about their equilibrium at each speed; at rest unknown.
+  expect_scan_as_each_point(read_model_file(FERAN_SOURCE_DIR "/examples/06_oil_whip/model.toml").model,
+                            {0.0, 300.0, 900.0});
 }
 
 }  // namespace
