@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -498,7 +499,11 @@ std::string shown_character(std::string_view text, std::size_t at) {
 // - a table header whose name does not start with a bare-key character or a quote:
 //   toml++ 3.3.0 calls parse_key() without checking, which assumes one
 //   (TOML_ASSERT_ASSUME, undefined behaviour without assertions; found by fuzzing
-//   with the two bytes "[@").
+//   with the two bytes "[@");
+// - '}' where an array expects a value (after its '[' or a comma: `a = [1, }`):
+//   toml++ 3.3.0 calls parse_value() there, which assumes no value terminator
+//   follows (TOML_ASSERT_ASSUME: an assertion in a build with them, undefined
+//   behaviour without; found by fuzzing).
 // The contents of strings (basic, literal, multi-line) and comments are skipped.
 void check_before_parsing(std::string_view text, const std::string& path) {
   int line = 1;
@@ -510,9 +515,11 @@ void check_before_parsing(std::string_view text, const std::string& path) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
   };
   int parts = 1;
-  int value_depth = 0;     // arrays and inline tables open in a value (they span lines)
+  std::vector<char> open;  // arrays ('[') and inline tables ('{') open in a value (they span lines)
   bool in_value = false;   // after the '=' of this line's key–value pair
   bool line_begins = true; // nothing but spaces and tabs yet on this line
+  std::size_t awaiting = std::string_view::npos;  // where the innermost open array's '[' or last comma was, while it awaits a value
+  int awaiting_line = 0;
   const std::size_t n = text.size();
   for (std::size_t i = 0; i < n; ++i) {
     const char c = text[i];
@@ -520,13 +527,13 @@ void check_before_parsing(std::string_view text, const std::string& path) {
       ++line;
       line_start = i + 1;
       parts = 1;
-      in_value = value_depth > 0;
+      in_value = !open.empty();
       line_begins = true;
       continue;
     }
     if (line_begins && c != ' ' && c != '\t') {
       line_begins = false;
-      if (c == '[' && value_depth == 0) {
+      if (c == '[' && open.empty()) {
         std::size_t k = i + 1;
         if (k < n && text[k] == '[') ++k;
         while (k < n && (text[k] == ' ' || text[k] == '\t')) ++k;
@@ -536,6 +543,12 @@ void check_before_parsing(std::string_view text, const std::string& path) {
                               static_cast<unsigned char>(text[k]) < 0x80 ? fmt::format("'{}'", text[k])
                                                                         : shown_character(text, k)));
       }
+    }
+    if (c != ' ' && c != '\t' && c != '\r' && c != '#' && awaiting != std::string_view::npos) {
+      if (c == '}')
+        fail(i, fmt::format("'}}' where the array opened or continued at line {} expects a value or ']'",
+                            awaiting_line));
+      awaiting = std::string_view::npos;
     }
     if (c == '"' || c == '\'') {
       // A string: skip to its end (a multi-line one may span lines).
@@ -580,9 +593,13 @@ void check_before_parsing(std::string_view text, const std::string& path) {
                             max_key_parts));
     } else if (c == '=' || c == ',' || c == '{' || c == '}' || c == '[' || c == ']') {
       parts = 1;
-      if (c == '=' && value_depth == 0) in_value = true;
-      if ((c == '[' || c == '{') && (in_value || value_depth > 0)) ++value_depth;
-      if ((c == ']' || c == '}') && value_depth > 0) --value_depth;
+      if (c == '=' && open.empty()) in_value = true;
+      if ((c == '[' || c == '{') && (in_value || !open.empty())) open.push_back(c);
+      else if ((c == ']' || c == '}') && !open.empty()) open.pop_back();
+      if ((c == '[' || c == ',') && !open.empty() && open.back() == '[') {
+        awaiting = i;
+        awaiting_line = line;
+      }
     }
   }
 }
