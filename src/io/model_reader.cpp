@@ -11,7 +11,7 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <toml++/toml.h>
+#include "toml.hpp"
 
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/suggestions.hpp>
@@ -502,9 +502,13 @@ std::string shown_character(std::string_view text, std::size_t at) {
 //   with the two bytes "[@");
 // - '}' where an array expects a value (after its '[' or a comma: `a = [1, }`):
 //   toml++ 3.3.0 calls parse_value() there, which assumes no value terminator
-//   follows (TOML_ASSERT_ASSUME: an assertion in a build with them, undefined
-//   behaviour without; found by fuzzing).
-// The contents of strings (basic, literal, multi-line) and comments are skipped.
+//   follows (TOML_ASSERT_ASSUME: undefined behaviour where the compiler takes the
+//   assumption, as clang does; found by fuzzing).
+// The contents of strings (basic, literal, multi-line) and comments are skipped. A
+// quote opens a string only where TOML lets one begin (at a line's start, after white
+// space, '=', '[', '{' or ',', or after a key's '.'): in `1"µ"` toml++ reads the
+// number on through the quote, and meets the 'µ' outside any string (found by
+// fuzzing).
 void check_before_parsing(std::string_view text, const std::string& path) {
   int line = 1;
   std::size_t line_start = 0;
@@ -518,6 +522,7 @@ void check_before_parsing(std::string_view text, const std::string& path) {
   std::vector<char> open;  // arrays ('[') and inline tables ('{') open in a value (they span lines)
   bool in_value = false;   // after the '=' of this line's key–value pair
   bool line_begins = true; // nothing but spaces and tabs yet on this line
+  bool key_position = true; // where a key, not a value, comes (a '.' there separates a dotted key's parts)
   std::size_t awaiting = std::string_view::npos;  // where the innermost open array's '[' or last comma was, while it awaits a value
   int awaiting_line = 0;
   const std::size_t n = text.size();
@@ -529,6 +534,7 @@ void check_before_parsing(std::string_view text, const std::string& path) {
       parts = 1;
       in_value = !open.empty();
       line_begins = true;
+      key_position = open.empty();
       continue;
     }
     if (line_begins && c != ' ' && c != '\t') {
@@ -550,7 +556,10 @@ void check_before_parsing(std::string_view text, const std::string& path) {
                             awaiting_line));
       awaiting = std::string_view::npos;
     }
-    if (c == '"' || c == '\'') {
+    const char before = i > line_start ? text[i - 1] : '\n';
+    const bool string_may_begin = before == '\n' || before == ' ' || before == '\t' || before == '=' ||
+                                  before == '[' || before == '{' || before == ',' || (before == '.' && key_position);
+    if ((c == '"' || c == '\'') && string_may_begin) {
       // A string: skip to its end (a multi-line one may span lines).
       const bool multi = text.substr(i, 3) == std::string_view(c == '"' ? "\"\"\"" : "\'\'\'");
       const std::string_view close = multi ? text.substr(i, 3) : text.substr(i, 1);
@@ -596,6 +605,8 @@ void check_before_parsing(std::string_view text, const std::string& path) {
       if (c == '=' && open.empty()) in_value = true;
       if ((c == '[' || c == '{') && (in_value || !open.empty())) open.push_back(c);
       else if ((c == ']' || c == '}') && !open.empty()) open.pop_back();
+      key_position = (c == '{' || c == ',') && !open.empty() && open.back() == '{';
+      if (open.empty() && !in_value) key_position = true;  // a table header's name
       if ((c == '[' || c == ',') && !open.empty() && open.back() == '[') {
         awaiting = i;
         awaiting_line = line;

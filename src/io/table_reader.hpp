@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include <toml++/toml.h>
+#include "toml.hpp"
 
 #include <feran/core/error.hpp>
 #include <feran/core/types.hpp>
