@@ -204,6 +204,44 @@ void BM_BandedSolve(benchmark::State& state) {
 }
 BENCHMARK(BM_BandedSolve)->Apply(band_sizes)->Unit(benchmark::kMicrosecond);
 
+// Four tangents factorised at once, one in each lane (a ramp's next four steps):
+// the time of the four, against BM_BandedFactor's one.
+void BM_BandedFactorLanes(benchmark::State& state) {
+  const SparseMatrix S = step_tangent(model(state.range(0)));
+  BandedLU lu;
+  if (!lu.partition(S.rows(), {&S}, 64)) state.SkipWithError("bandwidth above 64");
+  lu.set_zero();
+  lu.add(1.0, S);
+  const std::vector<Real> A = lu.values();
+  for (auto _ : state)
+    if (lu.factorize_lanes(A, {0.0, 1e-3, 2e-3, 3e-3}, A, {}) != (1u << BandedLU::lanes) - 1)
+      state.SkipWithError("a small pivot");
+  state.counters["dofs"] = static_cast<double>(S.rows());
+  state.counters["per_matrix_us"] = benchmark::Counter(static_cast<double>(state.iterations()) * BandedLU::lanes,
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_BandedFactorLanes)->Apply(band_sizes)->Unit(benchmark::kMicrosecond);
+
+// A solve with one lane's factors (their entries four apart).
+void BM_BandedSolveLane(benchmark::State& state) {
+  const SparseMatrix S = step_tangent(model(state.range(0)));
+  BandedLU lu;
+  if (!lu.partition(S.rows(), {&S}, 64)) state.SkipWithError("bandwidth above 64");
+  lu.set_zero();
+  lu.add(1.0, S);
+  if (lu.factorize_lanes(lu.values(), {0.0, 1e-3, 2e-3, 3e-3}, lu.values(), {}) != (1u << BandedLU::lanes) - 1)
+    state.SkipWithError("a small pivot");
+  const Vector b = Vector::Ones(S.rows());
+  Vector x;
+  for (auto _ : state) {
+    x = b;
+    lu.solve_in_place(x, 2);
+    benchmark::DoNotOptimize(x.data());
+  }
+  state.counters["dofs"] = static_cast<double>(S.rows());
+}
+BENCHMARK(BM_BandedSolveLane)->Apply(band_sizes)->Unit(benchmark::kMicrosecond);
+
 // A response point's dynamic stiffness K + iω(C + ΩG) − ω²M at Ω = ω = 4000 rpm, as
 // run_harmonic_response assembles it.
 ComplexBandedLU::ComplexSparse dynamic_stiffness(const Model& m) {

@@ -15,6 +15,7 @@
 /// (b = 10) about 15 µs and 9 µs on the benchmark machine, against 850 µs and 26 µs for
 /// Eigen's supernodal SparseLU (docs/performance.md).
 
+#include <array>
 #include <vector>
 
 #include <feran/core/types.hpp>
@@ -66,9 +67,31 @@ class BandedLU {
   /// object split into components: they share a workspace.)
   void solve_in_place(Vector& x) const;
 
+  /// Matrices of this band factorised together, one in each lane of a vector: a run's
+  /// tangents at its next steps' speeds. A factorisation's chain through its pivots
+  /// (a division, the multipliers, the next column's update) bounds one matrix's
+  /// time, not the arithmetic, so that four take about the time of one.
+  static constexpr int lanes = 4;
+  /// An entry added to the lanes' matrices: lane L's value[L] at @p position in the
+  /// band's storage (as positions() gives).
+  struct LaneAddition {
+    Index position;
+    std::array<Real, lanes> value;
+  };
+  /// Factorises, one in each lane, the matrices A + c[L]·B plus @p additions (sorted
+  /// by position; A and B values() of this band's size), in storage of their own: the
+  /// single matrix and its factors are left as they are. A bit for each lane that
+  /// factorised (as factorize()'s true).
+  unsigned factorize_lanes(const std::vector<Real>& A, const std::array<Real, lanes>& c, const std::vector<Real>& B,
+                           const std::vector<LaneAddition>& additions);
+  /// Solves A·x = b in place with lane @p lane's factors.
+  void solve_in_place(Vector& x, int lane) const;
+
  private:
   /// Where entry (i, j) lies in a_, or −1 outside the band (or between components).
   Index index(Index i, Index j) const;
+  /// Forward and back substitution with factors whose entries lie @p stride apart.
+  void substitute(const Real* values, const Real* inverse, int stride, Vector& x) const;
 
   struct Block {
     Index n, b;    // unknowns, half-bandwidth
@@ -82,6 +105,9 @@ class BandedLU {
   std::vector<Real> a_;        // each component's column j: rows j − b … j + b, at offset + j·(2b + 1) + (i − j + b)
   std::vector<Real> inverse_;  // 1 / U(k, k)
   mutable std::vector<Real> work_;  // solve_in_place's gathered right-hand side
+  // The lanes' matrices and 1 / U(k, k), lane-interleaved (entry e of lane L at
+  // e·lanes + L from a vector-aligned start).
+  std::vector<Real> lane_values_, lane_inverse_;
 };
 
 /// LU factorisation with partial pivoting of a complex banded sparse matrix, for the

@@ -285,6 +285,7 @@ void RotorSystem::model_jacobian(const MotionState& state, const Vector& x, cons
   const Real W = state.speed;
   update_speed(W);
   jacobian_speed_ = W;
+  jacobian_time_ = state.t;
   if (linear()) {
     // Set when something asks for them (tangent_values()); the banded factorisation
     // combines its kept parts instead.
@@ -318,6 +319,7 @@ void RotorSystem::tangent_values() const {
 }
 
 bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
+  lane_ = -1;
   // A driven run's speed row and column border the whole matrix: sparse LU.
   if (!driven_) {
     if (band_pattern_ < 0) tangent_values();  // the patterns (set once) for the band's size
@@ -349,6 +351,27 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
         band_.add(c_x, Ki_);
         band_speed_ = band_.values();
         band_coefficients_ = coefficients;
+        lanes_good_ = lanes_used_ = 0;
+      }
+      lane_ = lane_at(jacobian_speed_);
+      if (lane_ >= 0) {
+        lanes_used_ |= 1u << lane_;
+        factored_time_ = jacobian_time_;
+        banded_factors_ = true;
+        return true;
+      }
+      // A ramp: the speed changed since the last factorisation, whose time gives the
+      // spacing of the steps to come. Where the last lanes went unused (steps of
+      // changing size), the next 16 factorisations are single.
+      const Real spacing = jacobian_time_ - factored_time_;
+      if (lanes_good_ != 0 && (lanes_used_ & ~1u) == 0) lane_pause_ = 16;
+      factored_time_ = jacobian_time_;
+      if (lane_pause_ > 0) {
+        --lane_pause_;
+      } else if (spacing > 0.0 && std::isfinite(spacing) && factor_lanes(jacobian_speed_, spacing, c_x, c_v)) {
+        lane_ = 0;
+        banded_factors_ = true;
+        return true;
       }
       band_.set_combination(band_constant_, jacobian_speed_, band_speed_);
       if (assembler_->speed_dependent()) {
@@ -384,10 +407,60 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
   return lu_.info() == Eigen::Success;
 }
 
+int RotorSystem::lane_at(Real speed) const {
+  // The lanes' speeds come from times a few units of round-off away from the step's
+  // own (t + j·h against the integrator's sums of Δt): a lane within 4ε of the speed
+  // is its tangent to round-off, as the factorisation itself is.
+  for (int l = 0; l < BandedLU::lanes; ++l)
+    if ((lanes_good_ >> l & 1u) != 0 &&
+        std::abs(lane_speeds_[static_cast<std::size_t>(l)] - speed) <=
+            4 * std::numeric_limits<Real>::epsilon() * std::abs(speed))
+      return l;
+  return -1;
+}
+
+bool RotorSystem::factor_lanes(Real speed, Real spacing, Real c_x, Real c_v) {
+  for (int l = 0; l < BandedLU::lanes; ++l)
+    lane_speeds_[static_cast<std::size_t>(l)] = l == 0 ? speed : profile_.speed(jacobian_time_ + l * spacing);
+  lane_additions_.clear();
+  if (assembler_->speed_dependent()) {
+    // The speed-dependent elements' entries at each lane's speed, merged by position.
+    for (int l = 0; l < BandedLU::lanes; ++l) {
+      update_speed(lane_speeds_[static_cast<std::size_t>(l)]);
+      if (variable_.C.nonZeros() + variable_.K.nonZeros() != variable_pattern_) {
+        variable_positions_[0] = band_.positions(variable_.C);
+        variable_positions_[1] = band_.positions(variable_.K);
+        variable_pattern_ = variable_.C.nonZeros() + variable_.K.nonZeros();
+        if (l > 0) return false;  // the pattern changed with the speed: one at a time
+      }
+      std::size_t e = 0;
+      for (int part = 0; part < 2; ++part) {
+        const SparseMatrix& S = part == 0 ? variable_.C : variable_.K;
+        const Real c = part == 0 ? c_v : c_x;
+        const std::vector<Index>& at = variable_positions_[part];
+        for (std::size_t i = 0; i < at.size(); ++i, ++e) {
+          if (l == 0) lane_additions_.push_back({at[i], {}});
+          lane_additions_[e].value[static_cast<std::size_t>(l)] = c * S.valuePtr()[i];
+        }
+      }
+    }
+    update_speed(speed);
+    std::stable_sort(lane_additions_.begin(), lane_additions_.end(),
+                     [](const BandedLU::LaneAddition& a, const BandedLU::LaneAddition& b) { return a.position < b.position; });
+  }
+  lanes_good_ = band_.factorize_lanes(band_constant_, lane_speeds_, band_speed_, lane_additions_);
+  lanes_used_ = 1u;
+  if ((lanes_good_ & 1u) == 0) lanes_good_ = 0;
+  return lanes_good_ != 0;
+}
+
 void RotorSystem::solve_tangent(const Vector& rhs, Vector& delta) {
   if (banded_factors_) {
     delta = rhs;
-    band_.solve_in_place(delta);
+    if (lane_ >= 0)
+      band_.solve_in_place(delta, lane_);
+    else
+      band_.solve_in_place(delta);
     return;
   }
   delta = lu_.solve(rhs);

@@ -5,6 +5,8 @@
 // step's tangent into bands (core/components.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <random>
 #include <utility>
 
@@ -39,6 +41,13 @@ SparseMatrix random_band(Index n, Index b, unsigned seed) {
   return A;
 }
 
+// S in the band's storage of @p lu (its values() after setting S).
+std::vector<Real> kept(BandedLU& lu, const SparseMatrix& S) {
+  lu.set_zero();
+  lu.add(1.0, S);
+  return lu.values();
+}
+
 TEST(BandedLU, SolvesLikeADenseLUWithPivoting) {
   // Half-bandwidths of the kernels compiled for one (1 … 16), of the general one (20),
   // and a matrix narrower than its band (n = 5).
@@ -67,12 +76,7 @@ TEST(BandedLU, KeptPartsCombineIntoTheMatrixAtAnySpeed) {
   const SparseMatrix A = random_band(n, b, 3u), B = random_band(n, b, 4u);
   BandedLU lu;
   lu.resize(n, b);
-  lu.set_zero();
-  lu.add(1.0, A);
-  const std::vector<Real> kept_a = lu.values();
-  lu.set_zero();
-  lu.add(1.0, B);
-  const std::vector<Real> kept_b = lu.values();
+  const std::vector<Real> kept_a = kept(lu, A), kept_b = kept(lu, B);
   const Vector rhs = Vector::LinSpaced(n, 1.0, -3.0);
   for (const Real speed : {0.0, 0.25, -0.5}) {
     lu.set_combination(kept_a, speed, kept_b);
@@ -124,11 +128,102 @@ TEST(BandedLU, SplitsUncoupledUnknownsIntoBandsOfTheirOwn) {
   lu.solve_in_place(x);
   const Vector expected = Eigen::MatrixXd(A).partialPivLu().solve(rhs);
   EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm());
+  // The lanes in the split band: lane L holds A + L·A, plus 1 at the torsional set's
+  // last diagonal entry (its block's offset counted), and solves as the single matrix.
+  SparseMatrix corner(n, n);
+  corner.insert(n - 1, n - 1) = 1.0;
+  corner.makeCompressed();
+  const std::vector<Real> kept_a = kept(lu, A);
+  const std::vector<BandedLU::LaneAddition> additions{{lu.positions(corner)[0], {1.0, 1.0, 1.0, 1.0}}};
+  ASSERT_EQ(lu.factorize_lanes(kept_a, {0.0, 1.0, 2.0, 3.0}, kept_a, additions), 0b1111u);
+  for (int lane = 0; lane < BandedLU::lanes; ++lane) {
+    Vector z = rhs;
+    lu.solve_in_place(z, lane);
+    const SparseMatrix S = (1.0 + lane) * A + corner;
+    const Vector exact = Eigen::MatrixXd(S).partialPivLu().solve(rhs);
+    EXPECT_LT((z - exact).norm(), 1e-13 * exact.norm()) << "lane " << lane;
+  }
   // An entry coupling two sets lies outside every band.
   SparseMatrix coupling(n, n);
   coupling.insert(0, 1) = 1.0;
   coupling.makeCompressed();
   EXPECT_THROW(lu.positions(coupling), Error);
+}
+
+TEST(BandedLU, LanesFactoriseFourSpeedsAsTheSingleMatrixDoes) {
+  // A ramp's next four tangents A + Ω_L·B (plus entries that change with speed, as a
+  // speed-dependent bearing's), factorised together one per lane: each lane's solution
+  // is the one factorize() gives for that matrix alone, to the last bit (the same
+  // operations in the same order), and the dense LU's to round-off. Kernels compiled
+  // for a band (3, 7, 16), the general one (20) and a matrix narrower than its band
+  // (a rotor's split into components: SplitsUncoupledUnknownsIntoBandsOfTheirOwn).
+  for (const auto& [n, b] : {std::pair<Index, Index>{57, 3}, {57, 7}, {57, 16}, {57, 20}, {5, 4}, {6, 1}}) {
+    const SparseMatrix A = random_band(n, b, 21u + static_cast<unsigned>(b)),
+                       B = random_band(n, b, 31u + static_cast<unsigned>(b));
+    BandedLU lu;
+    lu.resize(n, b);
+    const std::vector<Real> kept_a = kept(lu, A), kept_b = kept(lu, B);
+    const std::array<Real, BandedLU::lanes> speeds{0.1, 0.35, -0.2, 0.6};
+    // Two entries, one of them twice (they add), sorted by position.
+    SparseMatrix extra(n, n);
+    extra.insert(n - 1, n - 2) = 1.0;
+    extra.insert(0, 0) = 1.0;
+    extra.makeCompressed();
+    std::vector<Index> at = lu.positions(extra);  // (0, 0) first
+    SparseMatrix unit_first(n, n), unit_last(n, n);
+    unit_first.insert(0, 0) = 1.0;
+    unit_last.insert(n - 1, n - 2) = 1.0;
+    std::vector<BandedLU::LaneAddition> additions;
+    for (const Index p : at) additions.push_back({p, {0.5, -0.25, 1.5, 0.0}});
+    additions.push_back(additions.back());
+    std::sort(additions.begin(), additions.end(),
+              [](const BandedLU::LaneAddition& x, const BandedLU::LaneAddition& y) { return x.position < y.position; });
+    ASSERT_EQ(lu.factorize_lanes(kept_a, speeds, kept_b, additions), 0b1111u);
+    const Vector rhs = Vector::LinSpaced(n, -1.0, 2.0);
+    for (int lane = 0; lane < BandedLU::lanes; ++lane) {
+      Vector x = rhs;
+      lu.solve_in_place(x, lane);
+      BandedLU single;
+      single.resize(n, b);
+      single.set_combination(kept_a, speeds[static_cast<std::size_t>(lane)], kept_b);
+      for (const auto& add : additions)  // each entry as a single-entry matrix, in order
+        single.add(add.value[static_cast<std::size_t>(lane)], add.position == at[0] ? unit_first : unit_last);
+      SparseMatrix S = A + speeds[static_cast<std::size_t>(lane)] * B;
+      for (const auto& add : additions) {
+        const Real v = add.value[static_cast<std::size_t>(lane)];
+        S.coeffRef(add.position == at[0] ? 0 : n - 1, add.position == at[0] ? 0 : n - 2) += v;
+      }
+      ASSERT_TRUE(single.factorize());
+      Vector y = rhs;
+      single.solve_in_place(y);
+      EXPECT_EQ(x, y) << "n = " << n << ", b = " << b << ", lane " << lane;
+      const Vector expected = Eigen::MatrixXd(S).partialPivLu().solve(rhs);
+      EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm()) << "n = " << n << ", b = " << b << ", lane " << lane;
+    }
+    EXPECT_THROW(lu.factorize_lanes(kept_a, speeds, std::vector<Real>(3, 0.0), {}), Error);
+    std::reverse(additions.begin(), additions.end());
+    if (additions.front().position != additions.back().position) {
+      EXPECT_THROW(lu.factorize_lanes(kept_a, speeds, kept_b, additions), Error);  // not sorted
+    }
+  }
+}
+
+TEST(BandedLU, LanesReportEachLaneThatNeedsPivoting) {
+  // Lane 2's matrix has a zero first pivot (A + Ω·B with Ω = −1 cancels it); the
+  // others factorise.
+  SparseMatrix A(3, 3), B(3, 3);
+  A.insert(0, 0) = 1.0, A.insert(0, 1) = 1.0, A.insert(1, 0) = 1.0, A.insert(1, 1) = 2.0, A.insert(2, 2) = 1.0;
+  B.insert(0, 0) = 1.0;
+  A.makeCompressed();
+  B.makeCompressed();
+  BandedLU lu;
+  lu.resize(3, 1);
+  lu.set_zero();
+  lu.add(1.0, A);
+  const std::vector<Real> kept_a = lu.values();
+  lu.set_zero();
+  lu.add(1.0, B);
+  EXPECT_EQ(lu.factorize_lanes(kept_a, {0.0, 1.0, -1.0, 2.0}, lu.values(), {}), 0b1011u);
 }
 
 TEST(ConnectedComponents, NumberedByTheirFirstUnknownWithZerosJoiningOnlyAsPattern) {

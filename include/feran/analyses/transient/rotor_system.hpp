@@ -3,6 +3,7 @@
 /// A feran model as a SecondOrderSystem for the time integrators.
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -165,6 +166,23 @@ class RotorSystem final : public SecondOrderSystem {
   std::array<Real, 3> band_coefficients_{};  // (c_x, c_v, c_a) of band_constant_, band_speed_
   std::vector<Index> variable_positions_[2];  // of variable_.C and variable_.K in band_
   Index variable_pattern_ = -1;
+  // On a speed ramp the next steps' tangents are factorised four at a time, one in each
+  // lane of band_ (BandedLU::factorize_lanes), at the speeds of the times that follow
+  // this one at the spacing of the last two factorisations: a later step whose speed
+  // is one of them (to round-off) solves with that lane's factors.
+  Real jacobian_time_ = 0.0;  // the time of DT_, KT_
+  Real factored_time_ = std::numeric_limits<Real>::quiet_NaN();  // of the last factorisation
+  std::array<Real, BandedLU::lanes> lane_speeds_{};
+  unsigned lanes_good_ = 0;       // a bit for each lane factorised for band_coefficients_
+  unsigned lanes_used_ = 0;       // a bit for each lane a step solved with
+  int lane_ = -1;                 // the lane the last factorisation is, −1: band_'s single matrix
+  int lane_pause_ = 0;            // factorisations left before predicting again (after a miss)
+  std::vector<BandedLU::LaneAddition> lane_additions_;
+  /// The lane factorised at @p speed (to round-off) for the coefficients kept, or −1.
+  int lane_at(Real speed) const;
+  /// Factorises band_'s lanes at @p speed and the next predicted speeds; false when
+  /// lane 0 (at @p speed) does not factorise.
+  bool factor_lanes(Real speed, Real spacing, Real c_x, Real c_v);
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
   Index pattern_nonzeros_ = -1;
   Vector f_full_;
