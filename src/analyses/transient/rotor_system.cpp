@@ -364,7 +364,10 @@ bool RotorSystem::factor_tangent(Real c_x, Real c_v, Real c_a) {
       // spacing of the steps to come. Where the last lanes went unused (steps of
       // changing size), the next 16 factorisations are single.
       const Real spacing = jacobian_time_ - factored_time_;
-      if (lanes_good_ != 0 && (lanes_used_ & ~1u) == 0) lane_pause_ = 16;
+      if (lanes_good_ != 0 && (lanes_used_ & ~1u) == 0) {
+        lane_pause_ = 16;
+        lanes_good_ = 0;
+      }
       factored_time_ = jacobian_time_;
       if (lane_pause_ > 0) {
         --lane_pause_;
