@@ -369,18 +369,9 @@ LaneBits factorize_lanes_fixed(LaneVector* a, Index n, LaneVector* inverse, Lane
   for (; k + B < n; ++k) {
     if (k > 0) source.set_column(a, ld, k + B);
     LaneVector* ck = a + k * ld;
-    const LaneVector p = ck[B];
-    LaneVector largest = lane_abs(p);
-    LaneVector l[B];
-    for (int i = 0; i < B; ++i) {
-      l[i] = ck[B + 1 + i];
-      const LaneVector e = lane_abs(l[i]);
-      largest = largest > e ? largest : e;
-    }
-    good &= good_pivots(p, largest);
-    const LaneVector r = 1.0 / p;
-    inverse[k] = r;
-    for (int i = 0; i < B; ++i) ck[B + 1 + i] = l[i] = l[i] * r;
+    good &= finish_lane_column(ck, B, B, inverse[k]);
+    LaneVector l[B];  // in registers: the stores below cannot change them
+    for (int i = 0; i < B; ++i) l[i] = ck[B + 1 + i];
     for (int j = 1; j <= B; ++j) {
       LaneVector* d = a + (k + j) * ld + (B - j + 1);
       const LaneVector u = d[-1];

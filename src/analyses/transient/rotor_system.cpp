@@ -423,6 +423,7 @@ int RotorSystem::lane_at(Real speed) const {
 }
 
 bool RotorSystem::factor_lanes(Real speed, Real spacing, Real c_x, Real c_v) {
+  lanes_good_ = 0;  // the speeds below are not yet the lanes' factors
   for (int l = 0; l < BandedLU::lanes; ++l)
     lane_speeds_[static_cast<std::size_t>(l)] = l == 0 ? speed : profile_.speed(jacobian_time_ + l * spacing);
   lane_additions_.clear();
