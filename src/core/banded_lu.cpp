@@ -521,6 +521,17 @@ namespace {
 // starts[c+1]) just before step c − 2b, so that each column is written, updated and
 // finished while in cache (at 30 000 DOF, whose factors take 15 MB, filling the
 // whole band first made the time vary from 2 to 3.6 ms between runs).
+// Sets a column of @p count complex entries to zero by vector stores of two entries
+// (std::fill became `rep stos`, whose start-up took 7 % of the factorisation).
+using ComplexPair = Real __attribute__((vector_size(4 * sizeof(Real)), aligned(sizeof(Real))));
+inline void zero_column(Complex* column, Index count) {
+  auto* pairs = reinterpret_cast<ComplexPair*>(column);
+  Index i = 0;
+#pragma GCC unroll 4
+  for (; i + 2 <= count; i += 2) pairs[i / 2] = ComplexPair{};
+  if (i < count) column[i] = Complex(0.0);
+}
+
 template <int B>
 bool complex_factorize(Complex* ab, Index n, Index b_run, int* pivots, Complex* inverse, const Complex* values,
                        const int* starts, const Index* positions) {
@@ -529,7 +540,7 @@ bool complex_factorize(Complex* ab, Index n, Index b_run, int* pivots, Complex* 
   Index filled = 0;
   auto fill_to = [&](Index last) {
     for (; filled <= last; ++filled) {
-      std::fill(ab + filled * ld, ab + (filled + 1) * ld, Complex(0.0));
+      zero_column(ab + filled * ld, ld);
       for (int e = starts[filled]; e < starts[filled + 1]; ++e) ab[positions[e]] = values[e];
     }
   };
