@@ -11,6 +11,7 @@
 
 #include <feran/core/components.hpp>
 #include <feran/core/error.hpp>
+#include <feran/core/ordering.hpp>
 
 namespace feran {
 
@@ -55,6 +56,27 @@ bool BandedLU::partition(Index n, const std::vector<const SparseMatrix*>& patter
         b = std::max(b, std::abs(local_of_[static_cast<std::size_t>(it.row())] -
                                  local_of_[static_cast<std::size_t>(it.col())]));
       }
+  // A component too wide in the unknowns' order: the reverse Cuthill–McKee order
+  // within it (the order numbers each component in one run).
+  bool reordered = false;
+  if (*std::max_element(bandwidth.begin(), bandwidth.end()) > largest_bandwidth) {
+    const std::vector<std::vector<Index>> graph = pattern_graph(n, patterns);
+    std::vector<Index> next(count.size(), 0);
+    for (const Index i : reverse_cuthill_mckee(graph)) {
+      const auto c = static_cast<std::size_t>(block_of_[static_cast<std::size_t>(i)]);
+      if (bandwidth[c] > largest_bandwidth) local_of_[static_cast<std::size_t>(i)] = next[c]++;
+    }
+    for (std::size_t c = 0; c < count.size(); ++c)
+      if (bandwidth[c] > largest_bandwidth) bandwidth[c] = -1;  // to be measured again
+    for (std::size_t i = 0; i < graph.size(); ++i) {
+      const auto c = static_cast<std::size_t>(block_of_[i]);
+      if (next[c] == 0) continue;
+      for (const Index j : graph[i])
+        bandwidth[c] = std::max(bandwidth[c], std::abs(local_of_[i] - local_of_[static_cast<std::size_t>(j)]));
+    }
+    for (std::size_t c = 0; c < count.size(); ++c) bandwidth[c] = std::max<Index>(bandwidth[c], 0);
+    reordered = true;
+  }
   if (*std::max_element(bandwidth.begin(), bandwidth.end()) > largest_bandwidth) {
     resize(0, 0);
     return false;
@@ -73,7 +95,7 @@ bool BandedLU::partition(Index n, const std::vector<const SparseMatrix*>& patter
   for (Index i = 0; i < n; ++i)
     order_[static_cast<std::size_t>(blocks_[static_cast<std::size_t>(block_of_[static_cast<std::size_t>(i)])].first +
                                     local_of_[static_cast<std::size_t>(i)])] = i;
-  if (blocks_.size() == 1) {  // one component: the unknowns in order, no gathering
+  if (blocks_.size() == 1 && !reordered) {  // one component in the unknowns' order: no gathering
     block_of_.clear();
     local_of_.clear();
     order_.clear();
@@ -636,8 +658,22 @@ bool ComplexBandedLU::analyse(const ComplexSparse& pattern, Index largest_bandwi
   for (Index k = 0; k < pattern.outerSize(); ++k)
     for (ComplexSparse::InnerIterator it(pattern, k); it; ++it) b = std::max(b, std::abs(it.row() - it.col()));
   n_ = 0;
-  if (b > largest_bandwidth) return false;
-  n_ = pattern.rows();
+  order_.clear();
+  const Index n = pattern.rows();
+  std::vector<Index> position_of;  // of each unknown; empty: the unknowns' own order
+  if (b > largest_bandwidth) {
+    // Too wide in the given order: the reverse Cuthill–McKee order may fit.
+    const std::vector<std::vector<Index>> graph = pattern_graph(pattern);
+    order_ = reverse_cuthill_mckee(graph);
+    position_of.resize(static_cast<std::size_t>(n));
+    for (Index k = 0; k < n; ++k) position_of[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
+    b = ordered_bandwidth(graph, position_of);
+    if (b > largest_bandwidth) {
+      order_.clear();
+      return false;
+    }
+  }
+  n_ = n;
   b_ = b;
   ld_ = 3 * b_ + 1;
   ab_.resize(static_cast<std::size_t>(n_ * ld_));
@@ -645,9 +681,28 @@ bool ComplexBandedLU::analyse(const ComplexSparse& pattern, Index largest_bandwi
   inverse_.assign(static_cast<std::size_t>(n_), Complex(0.0));
   positions_.clear();
   positions_.reserve(static_cast<std::size_t>(pattern.nonZeros()));
-  for (Index k = 0; k < pattern.outerSize(); ++k)
-    for (ComplexSparse::InnerIterator it(pattern, k); it; ++it)
-      positions_.push_back(it.col() * ld_ + (2 * b_ + it.row() - it.col()));
+  gather_.clear();
+  starts_.clear();
+  if (order_.empty()) {
+    for (Index k = 0; k < pattern.outerSize(); ++k)
+      for (ComplexSparse::InnerIterator it(pattern, k); it; ++it)
+        positions_.push_back(it.col() * ld_ + (2 * b_ + it.row() - it.col()));
+    return true;
+  }
+  // Reordered: the entries gathered column by column of the new order.
+  const int* outer = pattern.outerIndexPtr();
+  const int* inner = pattern.innerIndexPtr();
+  starts_.push_back(0);
+  for (Index c = 0; c < n_; ++c) {
+    const Index q = order_[static_cast<std::size_t>(c)];
+    for (int e = outer[q]; e < outer[q + 1]; ++e) {
+      gather_.push_back(e);
+      positions_.push_back(c * ld_ + (2 * b_ + position_of[static_cast<std::size_t>(inner[e])] - c));
+    }
+    starts_.push_back(static_cast<int>(gather_.size()));
+  }
+  values_.resize(gather_.size());
+  work_.resize(n_);
   return true;
 }
 
@@ -655,13 +710,24 @@ bool ComplexBandedLU::factorize(const ComplexSparse& A) {
   if (A.rows() != n_ || !A.isCompressed() || A.nonZeros() != static_cast<Index>(positions_.size()))
     throw Error("ComplexBandedLU::factorize: a matrix of another size or pattern than analysed");
   const std::size_t kernel = b_ <= fixed_bands ? static_cast<std::size_t>(b_) : 0;
-  return n_ == 0 || complex_factor[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), A.valuePtr(),
-                                           A.outerIndexPtr(), positions_.data());
+  if (n_ == 0) return true;
+  if (order_.empty())
+    return complex_factor[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), A.valuePtr(),
+                                  A.outerIndexPtr(), positions_.data());
+  for (std::size_t k = 0; k < gather_.size(); ++k) values_[k] = A.valuePtr()[gather_[k]];
+  return complex_factor[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), values_.data(), starts_.data(),
+                                positions_.data());
 }
 
 void ComplexBandedLU::solve_in_place(ComplexVector& x) const {
   const std::size_t kernel = b_ <= fixed_bands ? static_cast<std::size_t>(b_) : 0;
-  complex_substitute_fixed[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), x.data());
+  if (order_.empty()) {
+    complex_substitute_fixed[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), x.data());
+    return;
+  }
+  for (Index k = 0; k < n_; ++k) work_(k) = x(order_[static_cast<std::size_t>(k)]);
+  complex_substitute_fixed[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), work_.data());
+  for (Index k = 0; k < n_; ++k) x(order_[static_cast<std::size_t>(k)]) = work_(k);
 }
 
 }  // namespace feran

@@ -34,8 +34,10 @@ class BandedLU {
   /// graph — a rotor's lateral, axial and torsional motions, which no matrix of a
   /// straight shaft line couples: each component is a band of its own in the
   /// unknowns' order, narrower than the whole (lateral: 7 against 10), so that the
-  /// factorisation costs about a third and the solve half. False (and nothing
-  /// allocated) when a component's half-bandwidth exceeds @p largest_bandwidth.
+  /// factorisation costs about a third and the solve half. A component whose
+  /// half-bandwidth in that order exceeds @p largest_bandwidth is taken in the reverse
+  /// Cuthill–McKee order (core/ordering.hpp); false (and nothing allocated) when it is
+  /// wider in that order too.
   bool partition(Index n, const std::vector<const SparseMatrix*>& patterns, Index largest_bandwidth);
   Index size() const { return n_; }
   /// The largest half-bandwidth of a component (the band's with one).
@@ -122,10 +124,15 @@ class ComplexBandedLU {
   using ComplexSparse = Eigen::SparseMatrix<Complex>;
 
   /// Prepares for matrices of @p pattern's size, half-bandwidth and pattern
-  /// (compressed); refuses (false) a half-bandwidth above @p largest_bandwidth.
+  /// (compressed). Where the unknowns' own order has a half-bandwidth above @p
+  /// largest_bandwidth, they are taken in the reverse Cuthill–McKee order
+  /// (core/ordering.hpp; the same for rows and columns); false when that too is wider.
   bool analyse(const ComplexSparse& pattern, Index largest_bandwidth);
   Index size() const { return n_; }
+  /// The half-bandwidth in the order factorised.
   Index bandwidth() const { return b_; }
+  /// The unknowns were reordered to fit the band.
+  bool reordered() const { return !order_.empty(); }
 
   /// Factorises @p A (the pattern analysed); false when a column has no non-zero
   /// pivot (exactly singular) or is not finite.
@@ -141,6 +148,14 @@ class ComplexBandedLU {
   std::vector<Index> positions_;  // of the pattern's stored entries in ab_
   std::vector<int> pivots_;      // row interchanged with each row, as LAPACK's ipiv (0-based)
   std::vector<Complex> inverse_;  // 1 / U(k, k)
+  // Where the given order is too wide: the unknown at each position of the reverse
+  // Cuthill–McKee order (core/ordering.hpp), the matrix's entries in that order
+  // (gathered from @c gather_, each column's from @c starts_), and the solve's
+  // reordered right-hand side. Empty in the given order.
+  std::vector<Index> order_;
+  std::vector<int> gather_, starts_;
+  std::vector<Complex> values_;
+  mutable ComplexVector work_;
 };
 
 }  // namespace feran

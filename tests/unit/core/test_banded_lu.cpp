@@ -2,7 +2,8 @@
 // pivoting, its refusal of a matrix that needs pivoting, the complex banded LU with
 // partial pivoting against the dense one, and the sums of sparse matrices in place
 // (assembly/sparse_sum.hpp) against Eigen's; the connected components that split a
-// step's tangent into bands (core/components.hpp).
+// step's tangent into bands (core/components.hpp); the reverse Cuthill–McKee order
+// that gives a band to unknowns numbered far apart (core/ordering.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <feran/core/banded_lu.hpp>
 #include <feran/core/components.hpp>
 #include <feran/core/error.hpp>
+#include <feran/core/ordering.hpp>
 
 namespace feran {
 namespace {
@@ -46,6 +48,20 @@ std::vector<Real> kept(BandedLU& lu, const SparseMatrix& S) {
   lu.set_zero();
   lu.add(1.0, S);
   return lu.values();
+}
+
+// A set in @p lu (partitioned for its pattern), factorised and solved for @p rhs: the
+// dense LU's solution to round-off (1e-13: these matrices are well conditioned), which
+// is returned.
+Vector expect_solves_as_dense(BandedLU& lu, const SparseMatrix& A, const Vector& rhs) {
+  lu.set_zero();
+  lu.add(1.0, A, lu.positions(A));
+  EXPECT_TRUE(lu.factorize());
+  Vector x = rhs;
+  lu.solve_in_place(x);
+  const Vector expected = Eigen::MatrixXd(A).partialPivLu().solve(rhs);
+  EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm());
+  return expected;
 }
 
 TEST(BandedLU, SolvesLikeADenseLUWithPivoting) {
@@ -120,14 +136,8 @@ TEST(BandedLU, SplitsUncoupledUnknownsIntoBandsOfTheirOwn) {
   EXPECT_EQ(lu.bandwidth(), 3);
   // Storage: 36·7 + 2·9·3 numbers, against 54·13 for the whole band.
   EXPECT_EQ(lu.values().size(), std::size_t{36 * 7 + 2 * 9 * 3});
-  lu.set_zero();
-  lu.add(1.0, A, lu.positions(A));
-  ASSERT_TRUE(lu.factorize());
   const Vector rhs = Vector::LinSpaced(n, -2.0, 1.0);
-  Vector x = rhs;
-  lu.solve_in_place(x);
-  const Vector expected = Eigen::MatrixXd(A).partialPivLu().solve(rhs);
-  EXPECT_LT((x - expected).norm(), 1e-13 * expected.norm());
+  const Vector expected = expect_solves_as_dense(lu, A, rhs);
   // The lanes in the split band: lane L holds A + L·A, plus 1 at the torsional set's
   // last diagonal entry (its block's offset counted), and solves as the single matrix.
   SparseMatrix corner(n, n);
@@ -226,6 +236,102 @@ TEST(BandedLU, LanesReportEachLaneThatNeedsPivoting) {
   EXPECT_EQ(lu.factorize_lanes(kept_a, {0.0, 1.0, -1.0, 2.0}, lu.values(), {}), 0b1011u);
 }
 
+// A random permutation of 0 … n − 1 (the unknown at each position).
+std::vector<Index> shuffled(Index n, unsigned seed) {
+  std::vector<Index> p(static_cast<std::size_t>(n));
+  for (Index i = 0; i < n; ++i) p[static_cast<std::size_t>(i)] = i;
+  std::shuffle(p.begin(), p.end(), std::mt19937(seed));
+  return p;
+}
+
+// P·A·Pᵀ: row and column position k of the result is unknown @p order[k] of A.
+template <class Sparse>
+Sparse permuted(const Sparse& A, const std::vector<Index>& order) {
+  std::vector<Index> position(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) position[static_cast<std::size_t>(order[k])] = static_cast<Index>(k);
+  std::vector<Eigen::Triplet<typename Sparse::Scalar>> trip;
+  for (Index k = 0; k < A.outerSize(); ++k)
+    for (typename Sparse::InnerIterator it(A, k); it; ++it)
+      trip.emplace_back(position[static_cast<std::size_t>(it.row())], position[static_cast<std::size_t>(it.col())],
+                        it.value());
+  Sparse B(A.rows(), A.cols());
+  B.setFromTriplets(trip.begin(), trip.end());
+  B.makeCompressed();
+  return B;
+}
+
+std::vector<Index> positions_of(const std::vector<Index>& order) {
+  std::vector<Index> position(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) position[static_cast<std::size_t>(order[k])] = static_cast<Index>(k);
+  return position;
+}
+
+TEST(ReverseCuthillMcKee, GivesScrambledBandsABandAgain) {
+  // A band of half-bandwidth b with its unknowns scrambled has a half-bandwidth near
+  // n; the ordering must be a permutation and give at most 2b − 1 (Cuthill–McKee's
+  // bound: an entry joins two nodes of one level or of adjacent levels, and a level
+  // of a band's graph started at its end holds at most b nodes). Two bands, one
+  // with an entry joining its ends (a ring), make two components: each numbered in
+  // one run.
+  const Index n = 300, b = 5;
+  const SparseMatrix band = random_band(n, b, 21u);
+  const SparseMatrix scrambled = permuted(band, shuffled(n, 22u));
+  ASSERT_GT(BandedLU::half_bandwidth(scrambled), 250);
+  const auto graph = pattern_graph(n, {&scrambled});
+  const std::vector<Index> order = reverse_cuthill_mckee(graph);
+  std::vector<Index> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (Index k = 0; k < n; ++k) ASSERT_EQ(sorted[static_cast<std::size_t>(k)], k);
+  EXPECT_LE(ordered_bandwidth(graph, positions_of(order)), 2 * b - 1);
+  EXPECT_EQ(BandedLU::half_bandwidth(permuted(scrambled, order)), ordered_bandwidth(graph, positions_of(order)));
+
+  // Two components, interleaved: a chain of 40 nodes and a ring of 30 (each node
+  // joined to its two neighbours, the last to the first).
+  std::vector<Eigen::Triplet<Real>> trip;
+  std::vector<Index> chain_nodes, ring_nodes;
+  for (Index i = 0; i < 70; ++i) {
+    trip.emplace_back(i, i, 1.0);
+    (i % 7 < 3 ? ring_nodes : chain_nodes).push_back(i);
+  }
+  for (std::size_t k = 0; k + 1 < chain_nodes.size(); ++k) trip.emplace_back(chain_nodes[k], chain_nodes[k + 1], 1.0);
+  for (std::size_t k = 0; k < ring_nodes.size(); ++k)
+    trip.emplace_back(ring_nodes[k], ring_nodes[(k + 1) % ring_nodes.size()], 1.0);
+  SparseMatrix two(70, 70);
+  two.setFromTriplets(trip.begin(), trip.end());
+  const auto g2 = pattern_graph(70, {&two});
+  const std::vector<Index> order2 = reverse_cuthill_mckee(g2);
+  const std::vector<Index> component = connected_components(70, {&two}, false);
+  ASSERT_EQ(*std::max_element(component.begin(), component.end()), 1);
+  Index changes = 0;
+  for (std::size_t k = 1; k < order2.size(); ++k)
+    changes += component[static_cast<std::size_t>(order2[k])] != component[static_cast<std::size_t>(order2[k - 1])];
+  EXPECT_EQ(changes, 1);
+  // A ring numbered from one node outwards: neighbours at most 2 apart.
+  EXPECT_LE(ordered_bandwidth(g2, positions_of(order2)), 2);
+}
+
+TEST(BandedLU, ReordersAComponentTooWideInTheUnknownsOrder) {
+  // The scrambled band: too wide as numbered, a band again in the reverse
+  // Cuthill–McKee order; factorised and solved there, the solution is the matrix's,
+  // to round-off (1e-13: well conditioned, as above), and so are the lanes'.
+  const Index n = 200, b = 4;
+  const SparseMatrix A = permuted(random_band(n, b, 31u), shuffled(n, 32u));
+  BandedLU lu;
+  ASSERT_TRUE(lu.partition(n, {&A}, 64));
+  EXPECT_LE(lu.bandwidth(), 2 * b - 1);
+  EXPECT_FALSE(lu.partition(n, {&A}, b - 1));  // no order is narrower than the band itself
+  ASSERT_TRUE(lu.partition(n, {&A}, 64));
+  const Vector rhs = Vector::LinSpaced(n, -2.0, 1.0);
+  const Vector expected = expect_solves_as_dense(lu, A, rhs);
+  const std::vector<Real> kept_a = kept(lu, A);
+  ASSERT_EQ(lu.factorize_lanes(kept_a, {1.0, 2.0, 3.0, 4.0}, kept_a, {}), 0b1111u);
+  for (int lane = 0; lane < BandedLU::lanes; ++lane) {
+    Vector z = rhs;
+    lu.solve_in_place(z, lane);
+    EXPECT_LT(((2.0 + lane) * z - expected).norm(), 1e-13 * expected.norm()) << "lane " << lane;
+  }
+}
+
 TEST(ConnectedComponents, NumberedByTheirFirstUnknownWithZerosJoiningOnlyAsPattern) {
   // 0–3 and 1–4 coupled, 2 alone; the entry (2, 4) stored as an explicit zero.
   SparseMatrix A(5, 5);
@@ -275,6 +381,32 @@ TEST(ComplexBandedLU, SolvesLikeADenseLUWithPartialPivoting) {
     // And the residual itself, independent of the dense LU: backward stable.
     EXPECT_LT((dense * x - rhs).norm(), 1e-12 * (dense.norm() * x.norm())) << "n = " << n << ", b = " << b;
   }
+}
+
+TEST(ComplexBandedLU, ReordersABandTooWideInTheUnknownsOrder) {
+  // A dynamic stiffness whose unknowns are numbered far apart (a support node last,
+  // joined to the first journal): too wide as given, banded in the reverse
+  // Cuthill–McKee order, and solved there with partial pivoting as the dense LU
+  // solves it (1e-9 relative, as above; residual 1e-12 backward).
+  const Index n = 120, b = 6;
+  const auto A = permuted(random_complex_band(n, b, 41u), shuffled(n, 42u));
+  ComplexBandedLU lu;
+  ASSERT_TRUE(lu.analyse(A, 64));
+  EXPECT_TRUE(lu.reordered());
+  EXPECT_LE(lu.bandwidth(), 2 * b - 1);
+  ASSERT_TRUE(lu.factorize(A));
+  const ComplexVector rhs = ComplexVector::LinSpaced(n, Complex(1.0, -0.5), Complex(-2.0, 3.0));
+  ComplexVector x = rhs;
+  lu.solve_in_place(x);
+  const Eigen::MatrixXcd dense(A);
+  const ComplexVector expected = dense.partialPivLu().solve(rhs);
+  EXPECT_LT((x - expected).norm(), 1e-9 * expected.norm());
+  EXPECT_LT((dense * x - rhs).norm(), 1e-12 * (dense.norm() * x.norm()));
+  // A band that fits as given keeps its order.
+  const auto narrow = random_complex_band(n, b, 43u);
+  ASSERT_TRUE(lu.analyse(narrow, 64));
+  EXPECT_FALSE(lu.reordered());
+  EXPECT_EQ(lu.bandwidth(), b);
 }
 
 TEST(ComplexBandedLU, RefusesASingularMatrixAndAWideBand) {
