@@ -9,6 +9,12 @@
 #include <cstdlib>
 #include <limits>
 
+#if defined(__AVX__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <feran/core/components.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/ordering.hpp>
@@ -530,6 +536,22 @@ void BandedLU::substitute(const Real* values, const Real* inverse, int stride, V
 
 namespace {
 
+// Sets a column of @p count complex entries to zero by unaligned vector stores
+// (std::fill became `rep stos`, whose start-up took 7 % of the factorisation; so did
+// memcpy from a zero vector, which GCC recognises as memset). The intrinsics' stores
+// are unaligned in every compiler: a column is aligned to one entry only.
+inline void zero_column(Complex* column, Index count) {
+  Index i = 0;
+#if defined(__AVX__)
+  const __m256d zero = _mm256_setzero_pd();
+  for (; i + 2 <= count; i += 2) _mm256_storeu_pd(reinterpret_cast<Real*>(column + i), zero);
+#elif defined(__SSE2__)
+  const __m128d zero = _mm_setzero_pd();
+  for (; i < count; ++i) _mm_storeu_pd(reinterpret_cast<Real*>(column + i), zero);
+#endif
+  for (; i < count; ++i) column[i] = Complex(0.0);
+}
+
 // The complex band LU with partial pivoting, as LAPACK's zgbtf2/zgbtrs compute it
 // (row interchanges within the band, the upper triangle widened to 2b by them), on
 // interleaved (re, im) doubles written out as real arithmetic (std::complex's
@@ -543,17 +565,6 @@ namespace {
 // starts[c+1]) just before step c − 2b, so that each column is written, updated and
 // finished while in cache (at 30 000 DOF, whose factors take 15 MB, filling the
 // whole band first made the time vary from 2 to 3.6 ms between runs).
-// Sets a column of @p count complex entries to zero by vector stores of two entries
-// (std::fill became `rep stos`, whose start-up took 7 % of the factorisation).
-using ComplexPair = Real __attribute__((vector_size(4 * sizeof(Real)), aligned(sizeof(Real))));
-inline void zero_column(Complex* column, Index count) {
-  auto* pairs = reinterpret_cast<ComplexPair*>(column);
-  Index i = 0;
-#pragma GCC unroll 4
-  for (; i + 2 <= count; i += 2) pairs[i / 2] = ComplexPair{};
-  if (i < count) column[i] = Complex(0.0);
-}
-
 template <int B>
 bool complex_factorize(Complex* ab, Index n, Index b_run, int* pivots, Complex* inverse, const Complex* values,
                        const int* starts, const Index* positions) {
