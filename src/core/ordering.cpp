@@ -46,8 +46,9 @@ std::vector<std::vector<Index>> pattern_graph(const Eigen::SparseMatrix<Complex>
 
 namespace {
 
-// The breadth-first levels from @p root over the unvisited (mark != done) nodes of its
-// component: the nodes in level order, and where each level starts (with the end).
+// The breadth-first levels from @p root over the nodes of its component not yet
+// numbered (mark ≥ 0), each reached marked with @p stamp: the nodes in level order,
+// and where each level starts (with the end).
 struct Levels {
   std::vector<Index> nodes;
   std::vector<std::size_t> starts;

@@ -139,7 +139,8 @@ class ComplexBandedLU {
   bool factorize(const ComplexSparse& A);
   /// Solves A·x = b in place with the factors.
   void solve_in_place(ComplexVector& x) const;
-  /// The row interchanged with each row k (k itself where none), as LAPACK's ipiv.
+  /// The row interchanged with each row k (k itself where none), as LAPACK's ipiv;
+  /// positions of the order factorised (reordered(): the reverse Cuthill–McKee one).
   const std::vector<int>& pivots() const { return pivots_; }
 
  private:
