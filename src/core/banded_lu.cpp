@@ -54,33 +54,29 @@ bool BandedLU::partition(Index n, const std::vector<const SparseMatrix*>& patter
     if (c == count.size()) count.push_back(0);
     local_of_[static_cast<std::size_t>(i)] = count[c]++;
   }
-  std::vector<Index> bandwidth(count.size(), 0);
-  for (const SparseMatrix* S : patterns)
-    for (Index k = 0; k < S->outerSize(); ++k)
-      for (SparseMatrix::InnerIterator it(*S, k); it; ++it) {
-        Index& b = bandwidth[static_cast<std::size_t>(block_of_[static_cast<std::size_t>(it.row())])];
-        b = std::max(b, std::abs(local_of_[static_cast<std::size_t>(it.row())] -
-                                 local_of_[static_cast<std::size_t>(it.col())]));
-      }
+  // Each component's half-bandwidth in its numbering local_of_.
+  const auto bandwidths = [&] {
+    std::vector<Index> bandwidth(count.size(), 0);
+    for (const SparseMatrix* S : patterns)
+      for (Index k = 0; k < S->outerSize(); ++k)
+        for (SparseMatrix::InnerIterator it(*S, k); it; ++it) {
+          Index& b = bandwidth[static_cast<std::size_t>(block_of_[static_cast<std::size_t>(it.row())])];
+          b = std::max(b, std::abs(local_of_[static_cast<std::size_t>(it.row())] -
+                                   local_of_[static_cast<std::size_t>(it.col())]));
+        }
+    return bandwidth;
+  };
+  std::vector<Index> bandwidth = bandwidths();
   // A component too wide in the unknowns' order: the reverse Cuthill–McKee order
   // within it (the order numbers each component in one run).
   bool reordered = false;
   if (*std::max_element(bandwidth.begin(), bandwidth.end()) > largest_bandwidth) {
-    const std::vector<std::vector<Index>> graph = pattern_graph(n, patterns);
     std::vector<Index> next(count.size(), 0);
-    for (const Index i : reverse_cuthill_mckee(graph)) {
+    for (const Index i : reverse_cuthill_mckee(pattern_graph(n, patterns))) {
       const auto c = static_cast<std::size_t>(block_of_[static_cast<std::size_t>(i)]);
       if (bandwidth[c] > largest_bandwidth) local_of_[static_cast<std::size_t>(i)] = next[c]++;
     }
-    for (std::size_t c = 0; c < count.size(); ++c)
-      if (bandwidth[c] > largest_bandwidth) bandwidth[c] = -1;  // to be measured again
-    for (std::size_t i = 0; i < graph.size(); ++i) {
-      const auto c = static_cast<std::size_t>(block_of_[i]);
-      if (next[c] == 0) continue;
-      for (const Index j : graph[i])
-        bandwidth[c] = std::max(bandwidth[c], std::abs(local_of_[i] - local_of_[static_cast<std::size_t>(j)]));
-    }
-    for (std::size_t c = 0; c < count.size(); ++c) bandwidth[c] = std::max<Index>(bandwidth[c], 0);
+    bandwidth = bandwidths();
     reordered = true;
   }
   if (*std::max_element(bandwidth.begin(), bandwidth.end()) > largest_bandwidth) {
