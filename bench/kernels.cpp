@@ -29,8 +29,9 @@ const Model& model(Index n_elements) {
   static std::map<Index, ModelFile> files;
   auto it = files.find(n_elements);
   if (it == files.end())
-    it = files.emplace(n_elements, read_model_file(std::string(FERAN_BENCH_MODELS) + "/friswell_5_9_1_" +
-                                                   std::to_string(n_elements) + ".toml"))
+    it = files
+             .emplace(n_elements, read_model_file(std::string(FERAN_BENCH_MODELS) + "/friswell_5_9_1_" +
+                                                  std::to_string(n_elements) + ".toml"))
              .first;
   return it->second.model;
 }
@@ -152,7 +153,8 @@ void BM_TimeStepRamp(benchmark::State& state) {
     ++steps;
   }
   state.counters["dofs"] = static_cast<double>(sys.size());
-  state.counters["iterations_per_step"] = steps > 0 ? static_cast<double>(iterations) / static_cast<double>(steps) : 0.0;
+  state.counters["iterations_per_step"] =
+      steps > 0 ? static_cast<double>(iterations) / static_cast<double>(steps) : 0.0;
 }
 BENCHMARK(BM_TimeStepRamp)->Apply(sizes)->Unit(benchmark::kMicrosecond);
 

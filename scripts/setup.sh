@@ -17,6 +17,7 @@ packages=(
   libopenmpi-dev openmpi-bin  # feran study over the processes of an MPI job (apps/feran/mpi/)
   python3-distributed  # feran.Study on a dask.distributed cluster (python/feran/study.py)
   chromium  # the browser tests of the HTML reports (tests/browser/)
+  clang-format-14 clang-tidy-14 flake8  # the code's checks (scripts/lint.sh)
 )
 # Node.js and npm install the reports' front-end packages; a machine that has them
 # from elsewhere (a newer Node.js) keeps its own.
@@ -29,9 +30,10 @@ for p in "${packages[@]}"; do
   fi
 done
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-# plotly.js (inlined into every report at build time) and playwright-core (which
-# drives Debian's Chromium in the browser tests; it downloads no browser of its own),
-# at the versions of the lock file. Installed again only when the lock file changed.
+# plotly.js (inlined into every report at build time), playwright-core (which
+# drives Debian's Chromium in the browser tests; it downloads no browser of its own)
+# and ESLint (scripts/lint.sh), at the versions of the lock file. Installed again
+# only when the lock file changed.
 install_front_end() {
   local stamp="$root/node_modules/.package-lock.json"  # written by npm ci
   if [ ! -f "$stamp" ] || [ "$root/package-lock.json" -nt "$stamp" ]; then

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the whole test suite through ctest, twice:
 #  1. the Release build, warnings as errors (scripts/build.sh: the configuration demo.sh
-#     builds too);
+#     builds too), then the code checks of scripts/lint.sh (clang-format, clang-tidy,
+#     flake8, ESLint) and the Release tests;
 #  2. a build with clang-14, AddressSanitizer and UndefinedBehaviorSanitizer (without
 #     its null, alignment and pointer-overflow checks: CMakeLists.txt), a Debug
 #     build (no NDEBUG), so that Eigen's and feran's debug assertions and memory
@@ -28,6 +29,8 @@ bash scripts/setup.sh
 stage "set-up"
 bash scripts/build.sh
 stage "the Release build"
+bash scripts/lint.sh build
+stage "the code checks (format, clang-tidy, flake8, ESLint)"
 ctest --test-dir build --output-on-failure -j "$jobs"
 stage "the Release tests"
 # Informative, never failing: the program's start-up and a few quick cases against the

@@ -38,8 +38,9 @@ struct Api684Args {
 Runner add_api684_command(CLI::App& app) {
   auto args = std::make_shared<Api684Args>();
   CLI::App* cmd = app.add_subcommand(
-      "api684", "API 617 / API 684 lateral analyses: unbalance responses with amplification factors and separation "
-                "margins, the undamped critical speed map, level I stability");
+      "api684",
+      "API 617 / API 684 lateral analyses: unbalance responses with amplification factors and separation "
+      "margins, the undamped critical speed map, level I stability");
   cmd->footer(
       "Example:\n  feran api684 examples/05_api684_bearings/model.toml --min-speed 9000rpm --max-speed 11000rpm \\\n"
       "      --anticipated-q 2e6 --json api684.json\n\n"

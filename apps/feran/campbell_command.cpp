@@ -69,11 +69,12 @@ Runner add_campbell_command(CLI::App& app) {
 
     const CampbellResult result = run_campbell(file.model, options, file.assembler);
     std::vector<double> frequencies;
-    for (const TrackedMode& m : result.modes) frequencies.insert(frequencies.end(), m.frequency_hz.begin(), m.frequency_hz.end());
-    const ResultSource source{file.path, file.title,
-                              speed_range_warnings(file.model, options.speeds.front(), options.speeds.back(),
-                                                   frequency_span_hz(frequencies)),
-                              args->out.speed_unit};
+    for (const TrackedMode& m : result.modes)
+      frequencies.insert(frequencies.end(), m.frequency_hz.begin(), m.frequency_hz.end());
+    const ResultSource source{
+        file.path, file.title,
+        speed_range_warnings(file.model, options.speeds.front(), options.speeds.back(), frequency_span_hz(frequencies)),
+        args->out.speed_unit};
     outputs.set_json([&] { return campbell_json(result, options, file.model, source); });
     outputs.set_csv([&] { return campbell_csv(result, file.model); });
     outputs.files.commit();

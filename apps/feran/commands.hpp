@@ -19,8 +19,8 @@ namespace feran::app {
 /// Exit codes shared by the sub-commands.
 enum ExitCode : int {
   ok = 0,
-  input_error = 1,      ///< bad model file or option
-  numerical_failure = 3, ///< a solve failed; results so far were written
+  input_error = 1,        ///< bad model file or option
+  numerical_failure = 3,  ///< a solve failed; results so far were written
   /// Stopped by signal N (SIGINT, SIGTERM, SIGHUP): exit code 128 + N, the shell's
   /// convention; sweeps and run-ups wrote their results so far.
   interrupted_base = 128

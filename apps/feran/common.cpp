@@ -25,9 +25,7 @@
 
 namespace feran::app {
 
-CLI::Option* repeatable(CLI::Option* option) {
-  return option->take_all()->expected(1)->allow_extra_args(false);
-}
+CLI::Option* repeatable(CLI::Option* option) { return option->take_all()->expected(1)->allow_extra_args(false); }
 
 void add_model_argument(CLI::App& cmd, ModelArgs& model) {
   cmd.add_option("model", model.path, "Model file (TOML, see docs/model-format.md)")->required();
@@ -62,8 +60,8 @@ void restart_with_huge_pages() {
   if (argv.empty()) return;
   argv.push_back(nullptr);
   const char* old = std::getenv("GLIBC_TUNABLES");
-  const std::string tunables = (old != nullptr && *old != '\0' ? std::string(old) + ":" : std::string{}) +
-                               huge_page_tunable + "=1";
+  const std::string tunables =
+      (old != nullptr && *old != '\0' ? std::string(old) + ":" : std::string{}) + huge_page_tunable + "=1";
   if (::access("/proc/self/exe", X_OK) != 0 || setenv("GLIBC_TUNABLES", tunables.c_str(), 1) != 0) return;
   std::fflush(nullptr);
   // The output files a command opened before reading its model are made again by the
@@ -109,7 +107,9 @@ void add_output_options(CLI::App& cmd, OutputOptions& out) {
   cmd.add_option("--json", out.json_path, "Write the results as JSON to this file (docs/output-format.md)");
   cmd.add_option("--csv", out.csv_path, "Write the results as CSV to this file (docs/output-format.md)");
   cmd.add_flag("-q,--quiet", out.quiet, "Do not print the table on standard output");
-  cmd.add_option("--speed-unit", out.speed_unit, "Speeds in the terminal tables: Hz or rpm (default Hz; api684: rpm), frequencies then in Hz or cpm; files keep their units")
+  cmd.add_option("--speed-unit", out.speed_unit,
+                 "Speeds in the terminal tables: Hz or rpm (default Hz; api684: rpm), frequencies then in Hz or cpm; "
+                 "files keep their units")
       ->check(CLI::IsMember({"Hz", "rpm"}));
 }
 
@@ -118,8 +118,7 @@ std::optional<double> optional_speed(const std::string& text, const std::string&
   return parse_speed_text(text, option);
 }
 
-CommandOutputs::CommandOutputs(const ModelArgs& model, const OutputOptions& out, bool stream_csv)
-    : files(model.path) {
+CommandOutputs::CommandOutputs(const ModelArgs& model, const OutputOptions& out, bool stream_csv) : files(model.path) {
   json = files.add("--json", out.json_path);
   csv = files.add("--csv", out.csv_path, stream_csv);
 }
@@ -160,7 +159,7 @@ void add_threads_option(CLI::App& cmd, int& threads) {
       ->check(CLI::Validator(
           [](std::string& text) {
             return std::strtod(text.c_str(), nullptr) > 1024 ? fmt::format("at most 1024 threads, got {}", text)
-                                                              : std::string();
+                                                             : std::string();
           },
           ""));
 }

@@ -62,7 +62,9 @@ void keep_freed_memory() {
 }
 }  // namespace
 
-int main(int argc, char** argv) {
+// A function-try-block: what the handlers below cannot catch (the options' set-up
+// running out of memory) still ends in a message and exit code 4, not in terminate.
+int main(int argc, char** argv) try {
   single_threaded_blas();
   keep_freed_memory();
   CLI::App app{
@@ -112,7 +114,9 @@ int main(int argc, char** argv) {
   // An option given an empty value ('--json ""', '--speed ""') is an error, not the
   // option left out.
   const CLI::Validator non_empty(
-      [](std::string& text) { return text.empty() ? std::string("needs a value, got an empty string") : std::string(); },
+      [](std::string& text) {
+        return text.empty() ? std::string("needs a value, got an empty string") : std::string();
+      },
       "");
   for (CLI::App* sub : app.get_subcommands({}))
     for (CLI::Option* option : sub->get_options())
@@ -123,7 +127,8 @@ int main(int argc, char** argv) {
   if (argc > 1 && argv[1][0] != '-' && !named) {
     std::sort(names.begin(), names.end());
     std::string message = fmt::format("unknown command '{}'", feran::printable(argv[1]));
-    if (const auto match = feran::detail::closest_match(argv[1], names, 2)) message += fmt::format("; did you mean '{}'?", *match);
+    if (const auto match = feran::detail::closest_match(argv[1], names, 2))
+      message += fmt::format("; did you mean '{}'?", *match);
     std::fprintf(stderr, "feran: error: %s (the commands are %s)\n", message.c_str(),
                  feran::detail::join_list(names, "and", '\'').c_str());
     return static_cast<int>(CLI::ExitCodes::ExtrasError);
@@ -144,4 +149,7 @@ int main(int argc, char** argv) {
     return 4;
   }
   return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "feran: internal error: %s\n", e.what());
+  return 4;
 }

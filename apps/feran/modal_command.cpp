@@ -59,10 +59,10 @@ Runner add_modal_command(CLI::App& app) {
     const ModalResult result = run_modal(file.model, settings.speed, settings.options, file.assembler);
     std::vector<double> frequencies;
     for (const Mode& m : result.modes) frequencies.push_back(m.frequency_hz);
-    const ResultSource source{file.path, file.title,
-                              speed_range_warnings(file.model, settings.speed, settings.speed,
-                                                   frequency_span_hz(frequencies)),
-                              args->out.speed_unit};
+    const ResultSource source{
+        file.path, file.title,
+        speed_range_warnings(file.model, settings.speed, settings.speed, frequency_span_hz(frequencies)),
+        args->out.speed_unit};
     if (const auto stopped = stopped_single_solve()) return *stopped;
     outputs.set_json([&] { return modal_json(result, file.model, source, args->shapes); });
     outputs.set_csv([&] { return modal_csv(result); });

@@ -64,7 +64,8 @@ class Mpi : public Communicator {
     std::int64_t total = 0;
     for (const auto s : sizes) total += s;
     std::string all(static_cast<std::size_t>(total), '\0');
-    check(f_.allgatherv(mine.data(), static_cast<std::int64_t>(mine.size()), sizes.data(), size_, all.data()), "gather");
+    check(f_.allgatherv(mine.data(), static_cast<std::int64_t>(mine.size()), sizes.data(), size_, all.data()),
+          "gather");
     std::vector<std::string> out;
     std::size_t at = 0;
     for (const auto s : sizes) {
@@ -86,7 +87,8 @@ class Mpi : public Communicator {
 
  private:
   void check(int status, const char* what) const {
-    if (status == 2) throw Error(fmt::format("MPI {}: more than 2 GiB of results in one batch; use a smaller --batch", what));
+    if (status == 2)
+      throw Error(fmt::format("MPI {}: more than 2 GiB of results in one batch; use a smaller --batch", what));
     if (status != 0) throw Error(fmt::format("MPI {} failed", what));
   }
   LoadedModule module_;

@@ -18,8 +18,8 @@ struct ParamsArgs {
 
 Runner add_params_command(CLI::App& app) {
   auto args = std::make_shared<ParamsArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "params", "List every number of a model that --set can change, with its value and unit");
+  CLI::App* cmd =
+      app.add_subcommand("params", "List every number of a model that --set can change, with its value and unit");
   cmd->footer(
       "Example:\n  feran params examples/02_centrifuge/model.toml\n"
       "  feran campbell examples/02_centrifuge/model.toml --set 'springs[bearing k12].ky=2e7 N/m'\n\n"

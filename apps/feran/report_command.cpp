@@ -41,8 +41,9 @@ std::string command_line(int argc, char** argv) {
 Runner add_report_command(CLI::App& app, int argc, char** argv) {
   auto args = std::make_shared<ReportArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "report", "Interactive HTML report: the rotor, Campbell diagram, damping, mode shapes, unbalance response, "
-                "API 684 margins and maps, stability, run-up, a study's results");
+      "report",
+      "Interactive HTML report: the rotor, Campbell diagram, damping, mode shapes, unbalance response, "
+      "API 684 margins and maps, stability, run-up, a study's results");
   cmd->footer(
       "Example:\n  feran report examples/01_internal_damping/model.toml -o report.html\n"
       "  feran report examples/05_api684_bearings/model.toml --config report.toml -o report.html\n\n"

@@ -60,7 +60,8 @@ Runner add_response_command(CLI::App& app) {
   cmd->add_option("--start", args->start, "Speed sweep: first speed with unit (0Hz, 0rpm)");
   cmd->add_option("--stop", args->stop, "Speed sweep: last speed with unit (80Hz, 4800rpm)");
   cmd->add_option("-p,--points", args->points, "Number of evenly spaced points (1 to 1000000)");
-  cmd->add_option("-s,--speed", args->speed, "Rotor speed of a frequency sweep (default 0); alone, the response at that one speed");
+  cmd->add_option("-s,--speed", args->speed,
+                  "Rotor speed of a frequency sweep (default 0); alone, the response at that one speed");
   cmd->add_option("--freq-start", args->freq_start, "Frequency sweep: first excitation frequency (1Hz)");
   cmd->add_option("--freq-stop", args->freq_stop, "Frequency sweep: last excitation frequency (200Hz)");
   cmd->add_option("--freq-points", args->freq_points, "Frequency sweep: number of frequencies (default 201)");

@@ -81,10 +81,12 @@ Runner add_runup_command(CLI::App& app) {
       ->check(positive_number());
   cmd->add_option("--newton-max-iter", args->newton_max_iter, "trapezoidal: Newton iteration limit (default 25)")
       ->check(positive_number());
-  cmd->add_flag("--allow-unstable", args->allow_unstable, "rk3: warn instead of refusing a step above the stability limit");
+  cmd->add_flag("--allow-unstable", args->allow_unstable,
+                "rk3: warn instead of refusing a step above the stability limit");
   cmd->add_option("--jacobian", args->jacobian, "W-methods: exact (with friction tangents) or linear")
       ->check(CLI::IsMember({"exact", "linear"}));
-  cmd->add_option("--jacobian-interval", args->jacobian_interval, "W-methods: refresh the Jacobian every N steps (default 10)")
+  cmd->add_option("--jacobian-interval", args->jacobian_interval,
+                  "W-methods: refresh the Jacobian every N steps (default 10)")
       ->check(positive_number());
   cmd->add_option("--blowup", args->blowup, "Stop when a displacement exceeds this length (default 1m)");
   cmd->add_option("--modes", args->modes,
@@ -155,7 +157,10 @@ Runner add_runup_command(CLI::App& app) {
     bool printed = false;
     const bool show_progress = !args->out.quiet;
     const TransientResult result = run_transient(
-        model, options, [&](const TransientSample& sample) { if (csv) csv->write(sample); },
+        model, options,
+        [&](const TransientSample& sample) {
+          if (csv) csv->write(sample);
+        },
         [&](Real t, Real dt) {
           if (!show_progress) return;
           const auto now = std::chrono::steady_clock::now();
@@ -173,8 +178,7 @@ Runner add_runup_command(CLI::App& app) {
     if (printed) std::fputs("\n", stderr);
     // Refused before the first step (e.g. rk3 above its stability limit): a bad
     // option, not a failed run; nothing is written.
-    if (result.info.status == SolverStatus::numerical_failure && result.steps == 0)
-      throw Error(result.info.message);
+    if (result.info.status == SolverStatus::numerical_failure && result.steps == 0) throw Error(result.info.message);
     const Real wall = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
     outputs.set_json([&] { return runup_json(result, options, model, source); });
     outputs.files.commit();

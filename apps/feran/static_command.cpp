@@ -67,8 +67,8 @@ Runner add_static_command(CLI::App& app) {
       std::fprintf(stderr, "feran: error: %s\n", printable(result.info.message, true).c_str());
       return static_cast<int>(numerical_failure);
     }
-    const ResultSource source{file.path, file.title,
-                              speed_range_warnings(file.model, options.speed, options.speed), args->out.speed_unit};
+    const ResultSource source{file.path, file.title, speed_range_warnings(file.model, options.speed, options.speed),
+                              args->out.speed_unit};
     outputs.set_json([&] { return static_json(result, options, file.model, source); });
     outputs.set_csv([&] { return static_csv(result, file.model); });
     outputs.files.commit();

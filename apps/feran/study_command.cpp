@@ -57,8 +57,9 @@ std::string design_line(const StudySpec& study, const Evaluation& e) {
 Runner add_study_command(CLI::App& app) {
   auto args = std::make_shared<StudyArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "study", "Run a design study: designs from a grid, a Latin hypercube or a Sobol' sequence or an optimiser, "
-               "evaluated on all cores, or on the processes of an MPI job (mpirun -np N feran study ...)");
+      "study",
+      "Run a design study: designs from a grid, a Latin hypercube or a Sobol' sequence or an optimiser, "
+      "evaluated on all cores, or on the processes of an MPI job (mpirun -np N feran study ...)");
   cmd->footer(
       "Example:\n  feran study examples/04_stiffness_schedule/schedule.study.toml -o out/schedule\n\n"
       "The study file (docs/study-format.md) names a base model, design variables (parameter paths\n"
@@ -116,15 +117,18 @@ Runner add_study_command(CLI::App& app) {
     const auto done = unpack_evaluations(group->broadcast(first ? pack_evaluations(log->done()) : std::string(), 0));
     const int threads = threads_per_process(args->threads);
     // The first process's batch: the same on all, so that all leave at the same one.
-    const Index batch = std::stoll(group->broadcast(
-        std::to_string(args->batch > 0 ? args->batch : 4 * threads * group->size()), 0));
+    const Index batch =
+        std::stoll(group->broadcast(std::to_string(args->batch > 0 ? args->batch : 4 * threads * group->size()), 0));
     ThreadEvaluator local(threads, interrupt_token());
     DistributedEvaluator evaluator(*group, local, interrupt_token());
     std::vector<Evaluation> all;
     try {
       all = run_exploration(
-          study, evaluator, done, [&](std::span<const Evaluation> e) { if (log) log->append(e); }, batch,
-          evaluator.stop_token());
+          study, evaluator, done,
+          [&](std::span<const Evaluation> e) {
+            if (log) log->append(e);
+          },
+          batch, evaluator.stop_token());
     } catch (const Error& e) {
       // The others may be waiting for this process: the whole job ends.
       if (group->size() > 1) {
@@ -137,7 +141,8 @@ Runner add_study_command(CLI::App& app) {
     // A stop asked of another process ends this one as if by SIGTERM.
     const int signal = evaluator.stopped() ? (interrupt_signal() != 0 ? interrupt_signal() : SIGTERM) : 0;
     if (!first) return static_cast<int>(signal != 0 ? interrupted_base + signal : ok);
-    const bool optimiser = study.explore.method == ExploreMethod::optimise || study.explore.method == ExploreMethod::pareto;
+    const bool optimiser =
+        study.explore.method == ExploreMethod::optimise || study.explore.method == ExploreMethod::pareto;
     const Index total = planned_evaluations(study);
     const bool complete = !evaluator.stopped() && (optimiser || static_cast<Index>(all.size()) == total);
     const auto models = log->finish(all, complete);
@@ -148,9 +153,10 @@ Runner add_study_command(CLI::App& app) {
         evaluated += e.evaluated;
         feasible += e.feasible;
       }
-      std::string out = fmt::format("feran study: {} ({})\n", study.title.empty() ? args->path : study.title,
-                                    study.model_path);
-      if (group->size() > 1) out += fmt::format("{} processes, {} thread{} each\n", group->size(), threads, threads == 1 ? "" : "s");
+      std::string out =
+          fmt::format("feran study: {} ({})\n", study.title.empty() ? args->path : study.title, study.model_path);
+      if (group->size() > 1)
+        out += fmt::format("{} processes, {} thread{} each\n", group->size(), threads, threads == 1 ? "" : "s");
       out += optimiser ? fmt::format("{} designs evaluated ({} resumed)", all.size(), done.size())
                        : fmt::format("{} of {} designs evaluated ({} resumed)", all.size(), total, done.size());
       out += fmt::format(", {} failed, {} feasible\n", static_cast<Index>(all.size()) - evaluated, feasible);
@@ -161,24 +167,28 @@ Runner add_study_command(CLI::App& app) {
         for (const auto& e : all)
           if (i < e.clipped.size() && !e.clipped[i].empty() && ++count == 1) example = &e;
         if (count > 0)
-          out += fmt::format("note: '{}' is clipped by the analysed range in {} design{} (design {}: {})\n",
-                             study.quantities[i].name, count, count == 1 ? "" : "s", example->index,
-                             example->clipped[i]);
+          out +=
+              fmt::format("note: '{}' is clipped by the analysed range in {} design{} (design {}: {})\n",
+                          study.quantities[i].name, count, count == 1 ? "" : "s", example->index, example->clipped[i]);
       }
       if (study.objectives.size() == 1) {
-        if (const auto best = best_design(study, all)) out += "best:\n" + design_line(study, all[static_cast<std::size_t>(*best)]);
-        else out += "no feasible design\n";
+        if (const auto best = best_design(study, all))
+          out += "best:\n" + design_line(study, all[static_cast<std::size_t>(*best)]);
+        else
+          out += "no feasible design\n";
       } else if (study.objectives.size() > 1) {
         const auto front = pareto_set(study, all);
         const auto shown_ones = spread_along_front(study, all, front, 10);
-        out += fmt::format("Pareto set: {} designs{}\n", front.size(),
-                           shown_ones.size() < front.size() ? fmt::format(", {} of them along the front", shown_ones.size()) : "");
+        out += fmt::format(
+            "Pareto set: {} designs{}\n", front.size(),
+            shown_ones.size() < front.size() ? fmt::format(", {} of them along the front", shown_ones.size()) : "");
         for (const Index i : shown_ones) out += design_line(study, all[static_cast<std::size_t>(i)]);
       }
       if (!optimiser) {
         const auto table = sensitivities(study, all);
         if (!table.empty() && !table.front().src.empty()) {
-          out += "sensitivity: standardised regression coefficients on the variables' unit coordinates (R² of the fit)\n";
+          out +=
+              "sensitivity: standardised regression coefficients on the variables' unit coordinates (R² of the fit)\n";
           for (const auto& x : table) {
             out += fmt::format("  {:<20}", x.quantity);
             for (std::size_t j = 0; j < study.variables.size(); ++j)
@@ -188,7 +198,8 @@ Runner add_study_command(CLI::App& app) {
         }
       }
       out += fmt::format("results in {}/ (evaluations.csv, evaluations.jsonl, summary.json", directory);
-      if (models.size() > 3) out += fmt::format(", {} model files pareto-*.toml", models.size());
+      if (models.size() > 3)
+        out += fmt::format(", {} model files pareto-*.toml", models.size());
       else
         for (const auto& m : models) out += ", " + std::filesystem::path(m).filename().string();
       out += ")\n";

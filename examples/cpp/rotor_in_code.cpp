@@ -50,8 +50,7 @@ ModelSpec jeffcott_rotor() {
   spec.options.shear_deformation = false;
 
   // A massless steel shaft: all the mass sits in the disk.
-  spec.materials.push_back({.name = "massless steel", .E = 210e9, .G = {}, .nu = 0.3,
-                            .rho = 0.0, .loss_factor = 0.0});
+  spec.materials.push_back({.name = "massless steel", .E = 210e9, .G = {}, .nu = 0.3, .rho = 0.0, .loss_factor = 0.0});
 
   // One shaft of two sections of 250 mm each; naming the nodes lets the other
   // tables refer to them by name ("left", "disk", "right").
@@ -60,8 +59,12 @@ ModelSpec jeffcott_rotor() {
   shaft.material = "massless steel";
   shaft.start_node = "left";
   for (const char* end : {"disk", "right"})
-    shaft.sections.push_back({.length = 0.25, .outer_diameter = 0.012, .inner_diameter = 0.0,
-                              .material = {}, .elements = 1, .end_node = end});
+    shaft.sections.push_back({.length = 0.25,
+                              .outer_diameter = 0.012,
+                              .inner_diameter = 0.0,
+                              .material = {},
+                              .elements = 1,
+                              .end_node = end});
   spec.shafts.push_back(shaft);
 
   // The disk: mass, transverse and polar moments of inertia about its node.
@@ -87,8 +90,8 @@ ModelSpec jeffcott_rotor() {
   spec.fixed.push_back({.node = std::string("right"), .dofs = {}});
 
   // 1 g at 50 mm on the disk.
-  spec.unbalances.push_back({.name = "unbalance", .node = std::string("disk"), .mass = 1e-3,
-                             .radius = 0.05, .phase = 0.0, .lever = 0.0});
+  spec.unbalances.push_back(
+      {.name = "unbalance", .node = std::string("disk"), .mass = 1e-3, .radius = 0.05, .phase = 0.0, .lever = 0.0});
   return spec;
 }
 
@@ -118,8 +121,8 @@ int main() {
 
     // build_model() meshes the shaft, numbers the nodes and checks the whole spec.
     Model model = build_model(spec);
-    std::printf("%s: %ld nodes, %zu elements, %zu forces\n", spec.title.c_str(),
-                static_cast<long>(model.n_nodes()), model.elements.size(), model.forces.size());
+    std::printf("%s: %ld nodes, %zu elements, %zu forces\n", spec.title.c_str(), static_cast<long>(model.n_nodes()),
+                model.elements.size(), model.forces.size());
 
     const Real before = first_forward_critical_speed(model);
     std::printf("first forward critical speed: %.4f Hz\n", rad_to_hz(before));
@@ -133,8 +136,8 @@ int main() {
     set_parameter(spec, "shafts[shaft].sections[1].outer_diameter", "14 mm");
     model = build_model(spec);
     const Real after = first_forward_critical_speed(model);
-    std::printf("with 14 mm: first forward critical speed: %.4f Hz (ratio %.6f, (14/12)^2 = %.6f)\n",
-                rad_to_hz(after), after / before, (14.0 * 14.0) / (12.0 * 12.0));
+    std::printf("with 14 mm: first forward critical speed: %.4f Hz (ratio %.6f, (14/12)^2 = %.6f)\n", rad_to_hz(after),
+                after / before, (14.0 * 14.0) / (12.0 * 12.0));
 
     // @sect4{The unbalance response}
     //

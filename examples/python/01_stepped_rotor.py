@@ -86,6 +86,7 @@ feran.plot.campbell(campbell, unit="rpm").savefig(os.path.join(out, "stepped_cam
 feran.plot.mode_shape(modes, first_forward).savefig(os.path.join(out, "stepped_mode_1.png"), dpi=90)
 feran.plot.mode_shape_3d(modes, first_forward).savefig(os.path.join(out, "stepped_mode_1_3d.png"), dpi=90)
 
+
 # --- The check against the exact solution of the stepped beam (at rest) ---
 def at_rest_frequencies(elements):
     """The first three bending frequencies at rest, Euler–Bernoulli, no rotary inertia."""
@@ -100,6 +101,7 @@ def at_rest_frequencies(elements):
     # Each bending frequency comes twice (v and w); keep one of each pair.
     lateral = np.sort(at_rest.frequency_hz[np.asarray(at_rest.type) == "lateral"])
     return lateral[::2][:3]
+
 
 def exact_determinant(omega):
     """The free-end conditions at the right end for the two free starting values (w, w')

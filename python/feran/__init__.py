@@ -13,7 +13,8 @@ from ._toml import keys_toml as _keys_toml
 
 from ._feran import (Api684Result, CampbellResult, Error, Interrupted, ModalResult, Model, ModelError,
                      ParameterError, ResponseResult, RunupResult, StaticResult, StudyResult, api684, campbell,
-                     modal, read_model, report, response, runup, static, __version__)
+                     modal, read_model, report, response, runup, static)
+from ._feran import __version__  # noqa: F401 -- re-exported
 from .study import Study, read_study
 from ._arguments import explained as _explained
 

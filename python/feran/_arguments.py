@@ -106,8 +106,9 @@ def _problems(name, parameters, args, kwargs):
     for key, value in kwargs.items():
         if key not in names:
             close = difflib.get_close_matches(key, names, 1)
-            problems.append(f"has no argument '{key}'" + (f"; did you mean '{close[0]}'?" if close else
-                                                           f"; its arguments are {', '.join(n for n in names if n != 'self')}"))
+            others = ", ".join(n for n in names if n != "self")
+            problems.append(f"has no argument '{key}'"
+                            + (f"; did you mean '{close[0]}'?" if close else f"; its arguments are {others}"))
         elif key in bound:
             problems.append(f"got '{key}' twice")
         else:

@@ -29,7 +29,7 @@ _DEPTH = 16  # a model's values nest at most four levels (a table law in an inli
 def toml_value(value, where, depth=0):
     if depth > _DEPTH:
         raise Error(f"{where}: nested more than {_DEPTH} levels deep (a list or dict that holds itself?); "
-                         f"a model's values nest at most four")
+                    f"a model's values nest at most four")
     if isinstance(value, bool) or type(value).__name__ == "bool_":
         return "true" if value else "false"
     if isinstance(value, (int, _np.integer)):

@@ -35,8 +35,8 @@ double speed_argument(const py::handle& value, const char* name) {
   const double x = number_argument(value, name, "a speed as text with its unit ('30 Hz') or a number in rad/s");
   const Real largest = physical_range(Quantity::speed).largest;
   if (std::abs(x) > largest)
-    throw Error(fmt::format("{}={:g}: beyond the physical range of a speed (at most {:g} rad/s in magnitude)", name,
-                            x, largest));
+    throw Error(fmt::format("{}={:g}: beyond the physical range of a speed (at most {:g} rad/s in magnitude)", name, x,
+                            largest));
   return x;
 }
 
@@ -60,8 +60,8 @@ std::vector<Index> node_arguments(const Model& model, const py::handle& value, c
     if (py::isinstance<py::str>(v)) return find_node_reference(model, v.cast<std::string>(), name);
     if (py::isinstance<py::int_>(v) && !py::isinstance<py::bool_>(v))
       return find_node_reference(model, std::to_string(v.cast<long long>()), name);
-    throw Error(fmt::format("{}: a node is a name (str) or a number (int), got {}", name,
-                            py::repr(v).cast<std::string>()));
+    throw Error(
+        fmt::format("{}: a node is a name (str) or a number (int), got {}", name, py::repr(v).cast<std::string>()));
   };
   if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value) || !py::isinstance<py::iterable>(value)) {
     out.push_back(one(value));

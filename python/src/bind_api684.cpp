@@ -50,7 +50,8 @@ py::dict case_dict(const Api684Case& c, const Model& model) {
   }
   d["unbalances"] = unbalances;
   d["speeds"] = array_1d(c.response.speeds.size(), [&](std::size_t k) { return c.response.speeds[k]; });
-  d["probes"] = string_list(c.response.probes.size(), [&](std::size_t p) { return node_name(model, c.response.probes[p].node); });
+  d["probes"] =
+      string_list(c.response.probes.size(), [&](std::size_t p) { return node_name(model, c.response.probes[p].node); });
   d["amplitude"] = array_2d(c.response.probes.size(), c.response.speeds.size(), [&](std::size_t p, std::size_t k) {
     return k < c.response.probes[p].orbit.size() ? c.response.probes[p].orbit[k].major : std::nan("");
   });
@@ -79,7 +80,8 @@ py::object map_dict(const std::optional<CriticalSpeedMapResult>& map, const Mode
   py::dict d;
   d["stiffness"] = array_1d(map->stiffness.size(), [&](std::size_t i) { return map->stiffness[i]; });
   const std::size_t nc = map->criticals.empty() ? 0 : map->criticals.front().size();
-  d["criticals"] = array_2d(map->stiffness.size(), nc, [&](std::size_t i, std::size_t n) { return map->criticals[i][n]; });
+  d["criticals"] =
+      array_2d(map->stiffness.size(), nc, [&](std::size_t i, std::size_t n) { return map->criticals[i][n]; });
   py::list curves;
   for (const BearingCurve& c : map->curves) {
     py::dict dc;
@@ -133,58 +135,78 @@ std::optional<double> optional_stiffness(const py::object& value, const char* na
 
 void bind_api684(py::module_& m) {
   py::class_<PyApi684Result>(m, "Api684Result", "The API 617 / API 684 lateral analyses (feran api684)")
-      .def_property_readonly("min_speed", [](const PyApi684Result& r) { return r.result.low; }, "[rad/s]")
-      .def_property_readonly("max_speed", [](const PyApi684Result& r) { return r.result.high; }, "[rad/s]")
-      .def_property_readonly("journal_loads", [](const PyApi684Result& r) {
-             py::list out;
-             for (const JournalLoad& j : r.result.journals) {
-               py::dict d;
-               d["bearing"] = element_label(r.model(), j.element);
-               d["node"] = node_name(r.model(), j.node);
-               d["force"] = j.force;
-               d["mass"] = j.mass;
-               out.append(d);
-             }
-             return out;
-           }, "per bearing: its static lateral load 'force' [N] and 'mass' = force/g [kg], the W of 4W/N")
-      .def_property_readonly("undamped_criticals", [](const PyApi684Result& r) {
-             return array_1d(r.result.undamped.size(), [&](std::size_t i) { return r.result.undamped[i].speed; });
-           }, "forward undamped critical speeds with the bearings as given [rad/s]")
-      .def_property_readonly("cases", [](const PyApi684Result& r) {
-             py::list out;
-             for (const Api684Case& c : r.result.cases) out.append(case_dict(c, r.model()));
-             return out;
-           }, "per unbalance case: name, passes, unbalances, speeds [rad/s], probes, amplitude\n"
-              "(probes × speeds, orbit semi-major axis [m]) and peaks (speed, amplification_factor,\n"
-              "actual_margin, required_margin, passes, …)")
-      .def_property_readonly("passes", [](const PyApi684Result& r) {
-             for (const Api684Case& c : r.result.cases)
-               if (!c.passes) return false;
-             return true;
-           }, "every judged resonance peak keeps the separation margin API 617 requires")
-      .def_property_readonly("operating_stability", [](const PyApi684Result& r) {
-             const OperatingStability& v = r.result.stability_verdict;
-             py::dict d;
-             d["passes"] = v.passes;
-             d["reason"] = v.reason;
-             d["speeds"] = array_1d(v.points.size(), [&](std::size_t i) { return v.points[i].speed; });
-             d["unstable"] = array_1d(v.points.size(), [&](std::size_t i) {
-               return v.points[i].known ? (v.points[i].unstable ? 1.0 : 0.0) : NAN;
-             });
-             d["growth_rate"] = array_1d(v.points.size(), [&](std::size_t i) { return v.points[i].growth_rate; });
-             return d;
-           }, "the stability verdict over the operating range: passes, reason, speeds [rad/s], unstable\n"
-              "(1/0, NaN unknown) and growth_rate [1/s] at 11 speeds from the minimum to the maximum\n"
-              "continuous speed")
-      .def_property_readonly("map", [](const PyApi684Result& r) { return map_dict(r.result.map, r.model()); },
-                             "the undamped critical speed map: stiffness [N/m], criticals (stiffness × n)\n"
-                             "[rad/s], curves and intersections; None without it")
-      .def_property_readonly("stability", [](const PyApi684Result& r) { return stability_dict(r.result.stability, r.model()); },
-                             "level I stability: q [N/m], log_decrement, q_zero, anticipated,\n"
-                             "screening_passes; None without it")
+      .def_property_readonly(
+          "min_speed", [](const PyApi684Result& r) { return r.result.low; }, "[rad/s]")
+      .def_property_readonly(
+          "max_speed", [](const PyApi684Result& r) { return r.result.high; }, "[rad/s]")
+      .def_property_readonly(
+          "journal_loads",
+          [](const PyApi684Result& r) {
+            py::list out;
+            for (const JournalLoad& j : r.result.journals) {
+              py::dict d;
+              d["bearing"] = element_label(r.model(), j.element);
+              d["node"] = node_name(r.model(), j.node);
+              d["force"] = j.force;
+              d["mass"] = j.mass;
+              out.append(d);
+            }
+            return out;
+          },
+          "per bearing: its static lateral load 'force' [N] and 'mass' = force/g [kg], the W of 4W/N")
+      .def_property_readonly(
+          "undamped_criticals",
+          [](const PyApi684Result& r) {
+            return array_1d(r.result.undamped.size(), [&](std::size_t i) { return r.result.undamped[i].speed; });
+          },
+          "forward undamped critical speeds with the bearings as given [rad/s]")
+      .def_property_readonly(
+          "cases",
+          [](const PyApi684Result& r) {
+            py::list out;
+            for (const Api684Case& c : r.result.cases) out.append(case_dict(c, r.model()));
+            return out;
+          },
+          "per unbalance case: name, passes, unbalances, speeds [rad/s], probes, amplitude\n"
+          "(probes × speeds, orbit semi-major axis [m]) and peaks (speed, amplification_factor,\n"
+          "actual_margin, required_margin, passes, …)")
+      .def_property_readonly(
+          "passes",
+          [](const PyApi684Result& r) {
+            for (const Api684Case& c : r.result.cases)
+              if (!c.passes) return false;
+            return true;
+          },
+          "every judged resonance peak keeps the separation margin API 617 requires")
+      .def_property_readonly(
+          "operating_stability",
+          [](const PyApi684Result& r) {
+            const OperatingStability& v = r.result.stability_verdict;
+            py::dict d;
+            d["passes"] = v.passes;
+            d["reason"] = v.reason;
+            d["speeds"] = array_1d(v.points.size(), [&](std::size_t i) { return v.points[i].speed; });
+            d["unstable"] = array_1d(v.points.size(), [&](std::size_t i) {
+              return v.points[i].known ? (v.points[i].unstable ? 1.0 : 0.0) : NAN;
+            });
+            d["growth_rate"] = array_1d(v.points.size(), [&](std::size_t i) { return v.points[i].growth_rate; });
+            return d;
+          },
+          "the stability verdict over the operating range: passes, reason, speeds [rad/s], unstable\n"
+          "(1/0, NaN unknown) and growth_rate [1/s] at 11 speeds from the minimum to the maximum\n"
+          "continuous speed")
+      .def_property_readonly(
+          "map", [](const PyApi684Result& r) { return map_dict(r.result.map, r.model()); },
+          "the undamped critical speed map: stiffness [N/m], criticals (stiffness × n)\n"
+          "[rad/s], curves and intersections; None without it")
+      .def_property_readonly(
+          "stability", [](const PyApi684Result& r) { return stability_dict(r.result.stability, r.model()); },
+          "level I stability: q [N/m], log_decrement, q_zero, anticipated,\n"
+          "screening_passes; None without it")
       .def_property_readonly("warnings", [](const PyApi684Result& r) { return r.context.source.warnings; })
-      .def("to_json", [](const PyApi684Result& r) { return api684_json(r.result, r.model(), r.context.source); },
-           "The JSON text that feran api684 --json writes (docs/output-format.md)")
+      .def(
+          "to_json", [](const PyApi684Result& r) { return api684_json(r.result, r.model(), r.context.source); },
+          "The JSON text that feran api684 --json writes (docs/output-format.md)")
       .def("report", [](const PyApi684Result& r) { return api684_report(r.result, r.model(), r.context.source); });
 
   m.def(

@@ -65,59 +65,103 @@ py::dict critical_dict(const PyCampbellResult& r, const CriticalSpeed& c) {
 void bind_campbell(py::module_& m) {
   py::class_<PyCampbellResult>(m, "CampbellResult",
                                "Tracked modes over a speed range, critical speeds and the stability threshold")
-      .def_property_readonly("speeds", [](const PyCampbellResult& r) {
-             return array_1d(r.result.speeds.size(), [&](std::size_t i) { return r.result.speeds[i]; });
-           }, "speeds solved [rad/s] (fewer than asked when a solve failed or it was interrupted)")
-      .def_property_readonly("speeds_hz", [](const PyCampbellResult& r) {
-             return array_1d(r.result.speeds.size(), [&](std::size_t i) { return rad_to_hz(r.result.speeds[i]); });
-           })
-      .def_property_readonly("bearings", [](const PyCampbellResult& r) { return bearing_labels(r.result.operating, r.context.file->model); },
-                             "the bearings (journal and rolling) by their names")
-      .def_property_readonly("bearing_data", [](const PyCampbellResult& r) { return bearing_data(r.result.operating); },
-                             "per bearing (as bearings), its operating state at the equilibrium at each speed: a dict\n"
-              "of numpy arrays over speeds, named with their units as in static's bearing_data\n"
-              "(eccentricity_ratio, attitude_angle_deg, min_film_thickness_m, sommerfeld_number,\n"
-              "friction_torque_nm, power_loss_w, ...; max_element_load_n, ... for rolling bearings)")
-      .def_property_readonly("labels", [](const PyCampbellResult& r) {
-             return string_list(r.result.modes.size(), [&](std::size_t i) { return r.result.modes[i].label; });
-           }, "per mode: 'forward bending 1', 'backward cylindrical 1', 'axial 1', …")
-      .def_property_readonly("shape", [](const PyCampbellResult& r) {
-             return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].shape_kind); });
-           }, "per mode: its prevailing shape ('cylindrical', 'conical', 'bending'; 'none' without lateral motion)")
-      .def_property_readonly("bending",
-                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.bending; }); },
-                             "the rotor's bending fraction per mode and speed (0 rigid, towards 1 bending), shape (modes, speeds)")
-      .def_property_readonly("whirl", [](const PyCampbellResult& r) {
-             return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].whirl); });
-           }, "per mode: its prevailing whirl ('forward', 'backward', 'planar', 'none')")
-      .def_property_readonly("type", [](const PyCampbellResult& r) {
-             return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].type); });
-           }, "per mode: 'lateral', 'axial' or 'torsional'")
-      .def_property_readonly("whirl_at", [](const PyCampbellResult& r) {
-             py::list out;
-             for (const TrackedMode& mode : r.result.modes)
-               out.append(string_list(mode.whirl_at.size(), [&](std::size_t j) { return to_string(mode.whirl_at[j]); }));
-             return out;
-           }, "per mode, per speed: the whirl there")
-      .def_property_readonly("frequency_hz",
-                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.frequency_hz; }); },
-                             "damped natural frequencies [Hz], shape (modes, speeds)")
-      .def_property_readonly("damping_ratio",
-                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.damping_ratio; }); },
-                             "shape (modes, speeds)")
-      .def_property_readonly("log_decrement",
-                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.log_decrement; }); },
-                             "shape (modes, speeds); NaN for a non-oscillatory mode")
-      .def_property_readonly("directivity",
-                             [](const PyCampbellResult& r) { return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.directivity; }); },
-                             "+1 forward circles … -1 backward circles, shape (modes, speeds)")
-      .def_property_readonly("orders", [](const PyCampbellResult& r) { return r.options.orders; },
-                             "harmonic orders k of the excitation lines f = k × speed")
-      .def_property_readonly("criticals", [](const PyCampbellResult& r) {
-             py::list out;
-             for (const CriticalSpeed& c : r.result.critical_speeds) out.append(critical_dict(r, c));
-             return out;
-           }, "every critical speed (crossing of a mode with an excitation line), sorted by speed, as dicts")
+      .def_property_readonly(
+          "speeds",
+          [](const PyCampbellResult& r) {
+            return array_1d(r.result.speeds.size(), [&](std::size_t i) { return r.result.speeds[i]; });
+          },
+          "speeds solved [rad/s] (fewer than asked when a solve failed or it was interrupted)")
+      .def_property_readonly("speeds_hz",
+                             [](const PyCampbellResult& r) {
+                               return array_1d(r.result.speeds.size(),
+                                               [&](std::size_t i) { return rad_to_hz(r.result.speeds[i]); });
+                             })
+      .def_property_readonly(
+          "bearings",
+          [](const PyCampbellResult& r) { return bearing_labels(r.result.operating, r.context.file->model); },
+          "the bearings (journal and rolling) by their names")
+      .def_property_readonly(
+          "bearing_data", [](const PyCampbellResult& r) { return bearing_data(r.result.operating); },
+          "per bearing (as bearings), its operating state at the equilibrium at each speed: a dict\n"
+          "of numpy arrays over speeds, named with their units as in static's bearing_data\n"
+          "(eccentricity_ratio, attitude_angle_deg, min_film_thickness_m, sommerfeld_number,\n"
+          "friction_torque_nm, power_loss_w, ...; max_element_load_n, ... for rolling bearings)")
+      .def_property_readonly(
+          "labels",
+          [](const PyCampbellResult& r) {
+            return string_list(r.result.modes.size(), [&](std::size_t i) { return r.result.modes[i].label; });
+          },
+          "per mode: 'forward bending 1', 'backward cylindrical 1', 'axial 1', …")
+      .def_property_readonly(
+          "shape",
+          [](const PyCampbellResult& r) {
+            return string_list(r.result.modes.size(),
+                               [&](std::size_t i) { return to_string(r.result.modes[i].shape_kind); });
+          },
+          "per mode: its prevailing shape ('cylindrical', 'conical', 'bending'; 'none' without lateral motion)")
+      .def_property_readonly(
+          "bending",
+          [](const PyCampbellResult& r) {
+            return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.bending; });
+          },
+          "the rotor's bending fraction per mode and speed (0 rigid, towards 1 bending), shape (modes, speeds)")
+      .def_property_readonly(
+          "whirl",
+          [](const PyCampbellResult& r) {
+            return string_list(r.result.modes.size(),
+                               [&](std::size_t i) { return to_string(r.result.modes[i].whirl); });
+          },
+          "per mode: its prevailing whirl ('forward', 'backward', 'planar', 'none')")
+      .def_property_readonly(
+          "type",
+          [](const PyCampbellResult& r) {
+            return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].type); });
+          },
+          "per mode: 'lateral', 'axial' or 'torsional'")
+      .def_property_readonly(
+          "whirl_at",
+          [](const PyCampbellResult& r) {
+            py::list out;
+            for (const TrackedMode& mode : r.result.modes)
+              out.append(string_list(mode.whirl_at.size(), [&](std::size_t j) { return to_string(mode.whirl_at[j]); }));
+            return out;
+          },
+          "per mode, per speed: the whirl there")
+      .def_property_readonly(
+          "frequency_hz",
+          [](const PyCampbellResult& r) {
+            return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.frequency_hz; });
+          },
+          "damped natural frequencies [Hz], shape (modes, speeds)")
+      .def_property_readonly(
+          "damping_ratio",
+          [](const PyCampbellResult& r) {
+            return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.damping_ratio; });
+          },
+          "shape (modes, speeds)")
+      .def_property_readonly(
+          "log_decrement",
+          [](const PyCampbellResult& r) {
+            return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.log_decrement; });
+          },
+          "shape (modes, speeds); NaN for a non-oscillatory mode")
+      .def_property_readonly(
+          "directivity",
+          [](const PyCampbellResult& r) {
+            return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.directivity; });
+          },
+          "+1 forward circles … -1 backward circles, shape (modes, speeds)")
+      .def_property_readonly(
+          "orders", [](const PyCampbellResult& r) { return r.options.orders; },
+          "harmonic orders k of the excitation lines f = k × speed")
+      .def_property_readonly(
+          "criticals",
+          [](const PyCampbellResult& r) {
+            py::list out;
+            for (const CriticalSpeed& c : r.result.critical_speeds) out.append(critical_dict(r, c));
+            return out;
+          },
+          "every critical speed (crossing of a mode with an excitation line), sorted by speed, as dicts")
       .def(
           "critical_speeds",
           [](const PyCampbellResult& r, std::optional<std::string> whirl, std::optional<int> order,
@@ -139,32 +183,44 @@ void bind_campbell(py::module_& m) {
           "(whirl='forward'), of one excitation order (order=1) and/or of one tracked mode\n"
           "(label='forward 1'); unit 'rad/s', 'Hz' or 'rpm'. The whirl is the mode's at the\n"
           "critical speed itself, not a label's word.")
-      .def_property_readonly("stability_threshold", [](const PyCampbellResult& r) -> py::object {
-             if (!r.result.stability_threshold) return py::none();
-             const StabilityThreshold& t = *r.result.stability_threshold;
-             py::dict d;
-             d["speed"] = t.speed;
-             d["speed_hz"] = rad_to_hz(t.speed);
-             d["mode"] = t.mode;
-             d["label"] = threshold_label(r.result, t);
-             d["frequency_hz"] = t.frequency_hz;
-             d["unstable_at_start"] = t.unstable_at_start;
-             d["kind"] = t.divergence ? "divergence" : "flutter";
-             return d;
-           }, "the lowest speed at which a mode's damping turns negative (kind 'flutter') or a real\n"
-             "eigenvalue turns positive (kind 'divergence', mode -1), a dict; or None")
-      .def_property_readonly("complete", [](const PyCampbellResult& r) { return r.result.info.converged(); },
-                             "whether every speed was solved")
+      .def_property_readonly(
+          "stability_threshold",
+          [](const PyCampbellResult& r) -> py::object {
+            if (!r.result.stability_threshold) return py::none();
+            const StabilityThreshold& t = *r.result.stability_threshold;
+            py::dict d;
+            d["speed"] = t.speed;
+            d["speed_hz"] = rad_to_hz(t.speed);
+            d["mode"] = t.mode;
+            d["label"] = threshold_label(r.result, t);
+            d["frequency_hz"] = t.frequency_hz;
+            d["unstable_at_start"] = t.unstable_at_start;
+            d["kind"] = t.divergence ? "divergence" : "flutter";
+            return d;
+          },
+          "the lowest speed at which a mode's damping turns negative (kind 'flutter') or a real\n"
+          "eigenvalue turns positive (kind 'divergence', mode -1), a dict; or None")
+      .def_property_readonly(
+          "complete", [](const PyCampbellResult& r) { return r.result.info.converged(); },
+          "whether every speed was solved")
       .def_property_readonly("message", [](const PyCampbellResult& r) { return r.result.info.message; })
       .def_property_readonly("n_solves", [](const PyCampbellResult& r) { return r.result.n_solves; })
       .def_property_readonly("warnings", [](const PyCampbellResult& r) { return r.context.source.warnings; })
-      .def("to_json", [](const PyCampbellResult& r) { return campbell_json(r.result, r.options, r.context.file->model, r.context.source); },
-           "The JSON text that feran campbell --json writes (docs/output-format.md)")
-      .def("to_csv", [](const PyCampbellResult& r) { return campbell_csv(r.result, r.context.file->model); },
-           "The CSV text that feran campbell --csv writes")
-      .def("report", [](const PyCampbellResult& r) {
-             return campbell_report(r.result, r.options, r.context.file->model, r.context.source);
-           }, "The table that feran campbell prints");
+      .def(
+          "to_json",
+          [](const PyCampbellResult& r) {
+            return campbell_json(r.result, r.options, r.context.file->model, r.context.source);
+          },
+          "The JSON text that feran campbell --json writes (docs/output-format.md)")
+      .def(
+          "to_csv", [](const PyCampbellResult& r) { return campbell_csv(r.result, r.context.file->model); },
+          "The CSV text that feran campbell --csv writes")
+      .def(
+          "report",
+          [](const PyCampbellResult& r) {
+            return campbell_report(r.result, r.options, r.context.file->model, r.context.source);
+          },
+          "The table that feran campbell prints");
 
   m.def(
       "campbell",

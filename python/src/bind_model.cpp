@@ -117,9 +117,12 @@ py::dict geometry(const PyModel& self) {
   const Model& model = self.built().model;
   std::vector<const Element*> segments, bodies, springs;
   for (const Element& e : model.elements) {
-    if (e.shaft_segment()) segments.push_back(&e);
-    else if (e.kind() == "rigid_body") bodies.push_back(&e);
-    else if (e.kind() == "spring_damper") springs.push_back(&e);
+    if (e.shaft_segment())
+      segments.push_back(&e);
+    else if (e.kind() == "rigid_body")
+      bodies.push_back(&e);
+    else if (e.kind() == "spring_damper")
+      springs.push_back(&e);
   }
   const auto x = [&](Index node) { return model.nodes[static_cast<std::size_t>(node)].x; };
   py::dict g;
@@ -146,9 +149,8 @@ py::dict geometry(const PyModel& self) {
   g["body_x"] = array_1d(bodies.size(), [&](std::size_t i) { return x(body_node(i)); });
   g["body_mass"] = array_1d(bodies.size(), [&](std::size_t i) { return body_matrices[i].M(0, 0); });
   g["body_Jp"] = array_1d(bodies.size(), [&](std::size_t i) { return body_matrices[i].M(3, 3); });
-  g["body_rotating"] = array_1d<bool>(bodies.size(), [&](std::size_t i) {
-    return model.nodes[static_cast<std::size_t>(body_node(i))].rotating;
-  });
+  g["body_rotating"] = array_1d<bool>(
+      bodies.size(), [&](std::size_t i) { return model.nodes[static_cast<std::size_t>(body_node(i))].rotating; });
   std::vector<Transmission> links;
   for (const Element* e : springs) links.push_back(*e->transmission(0.0));
   g["spring_names"] = string_list(springs.size(), [&](std::size_t i) { return springs[i]->label(); });
@@ -211,13 +213,16 @@ void bind_model(py::module_& m) {
            }),
            py::arg("title") = "")
       .def("_add", &PyModel::add, py::arg("table"), py::arg("keys_toml"), py::arg("call"))
-      .def("__eq__", [](const PyModel& a, const PyModel& b) { return a == b; },
-           "Whether two models say the same (every table and key, values in SI units)")
+      .def(
+          "__eq__", [](const PyModel& a, const PyModel& b) { return a == b; },
+          "Whether two models say the same (every table and key, values in SI units)")
       .def_property_readonly("path", &PyModel::path, "the file it was read from, or '<string>'")
-      .def_property("title", [](const PyModel& self) { return self.spec().title; }, &PyModel::set_title)
-      .def("__getitem__",
-           [](const PyModel& self, const std::string& path) { return get_parameter(self.spec(), path).value; },
-           "The value (SI units) of the parameter at a path, e.g. model['springs[bearing 1].ky']")
+      .def_property(
+          "title", [](const PyModel& self) { return self.spec().title; }, &PyModel::set_title)
+      .def(
+          "__getitem__",
+          [](const PyModel& self, const std::string& path) { return get_parameter(self.spec(), path).value; },
+          "The value (SI units) of the parameter at a path, e.g. model['springs[bearing 1].ky']")
       .def("__setitem__", py::overload_cast<const std::string&, const std::string&>(&PyModel::set),
            "Sets a parameter by its path, the value with its unit: model['springs[bearing 1].ky'] = '2e7 N/m'")
       .def("__setitem__", py::overload_cast<const std::string&, double>(&PyModel::set),
@@ -238,23 +243,29 @@ void bind_model(py::module_& m) {
             return out;
           },
           "Every settable parameter: dicts with path, value (SI), unit (SI), text (as written) and doc")
-      .def("to_toml", [](const PyModel& self) { return write_toml(self.spec()); },
-           "The model as TOML text (reads back to the same model)")
-      .def("copy", [](const PyModel& self) { return PyModel(self); }, "An independent copy")
+      .def(
+          "to_toml", [](const PyModel& self) { return write_toml(self.spec()); },
+          "The model as TOML text (reads back to the same model)")
+      .def(
+          "copy", [](const PyModel& self) { return PyModel(self); }, "An independent copy")
       .def("__copy__", [](const PyModel& self) { return PyModel(self); })
       .def("__deepcopy__", [](const PyModel& self, py::dict) { return PyModel(self); })
-      .def_property_readonly("n_dofs", [](const PyModel& self) { return self.built().model.n_dofs(); },
-                             "degrees of freedom of the built model (6 per node)")
+      .def_property_readonly(
+          "n_dofs", [](const PyModel& self) { return self.built().model.n_dofs(); },
+          "degrees of freedom of the built model (6 per node)")
       .def("geometry", &geometry,
            "What a drawing of the rotor needs, as numpy arrays (all lengths in m): nodes (names),\n"
            "node_x, node_rotating; shaft segments (segment_x0, segment_x1, segment_outer,\n"
-           "segment_inner at x0, segment_outer_end, segment_inner_end at x1, segment_rotating); rigid bodies (body_names, body_x, body_mass, body_Jp,\n"
+           "segment_inner at x0, segment_outer_end, segment_inner_end at x1, segment_rotating); rigid bodies "
+           "(body_names, body_x, body_mass, body_Jp,\n"
            "body_rotating); spring-dampers (spring_names, spring_x, spring_to_x, NaN to ground).")
-      .def("check", [](const PyModel& self) { (void)self.built(); },
-           "Builds and checks the model (raises ModelError as reading does)");
+      .def(
+          "check", [](const PyModel& self) { (void)self.built(); },
+          "Builds and checks the model (raises ModelError as reading does)");
 
-  m.def("_speed", [](const py::object& value) { return speed_argument(value, "speed"); }, py::arg("value"),
-        "A speed as the analyses take it ('30 Hz', '1800 rpm', or a number in rad/s), in rad/s");
+  m.def(
+      "_speed", [](const py::object& value) { return speed_argument(value, "speed"); }, py::arg("value"),
+      "A speed as the analyses take it ('30 Hz', '1800 rpm', or a number in rad/s), in rad/s");
   m.def("read_model", &read, py::arg("path_or_text"),
         "Reads and checks a model from a file path or from TOML text (docs/model-format.md).\n"
         "Raises feran.ModelError with file, line, column and message.");

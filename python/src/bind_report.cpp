@@ -26,7 +26,8 @@ void bind_report(py::module_& m) {
         ReportOptions options;
         options.version = FERAN_VERSION;
         options.command = "feran.report(" + (file.path.empty() ? std::string("model") : "'" + file.path + "'") +
-                          (config ? ", config='" + *config + "'" : "") + (study ? ", study='" + *study + "'" : "") + ")";
+                          (config ? ", config='" + *config + "'" : "") + (study ? ", study='" + *study + "'" : "") +
+                          ")";
         options.n_threads = threads;
         // The path is checked before the analyses run: never an input of the report.
         OutputFiles files(file.path);
@@ -34,7 +35,8 @@ void bind_report(py::module_& m) {
         if (config) files.add_input(*config, "the report configuration");
         if (config) read_report_config_file(*config, file.model, options);
         if (study) options.study_directory = *study;
-        for (const std::string& input : report_study_files(options)) files.add_input(input, "a file of the study shown");
+        for (const std::string& input : report_study_files(options))
+          files.add_input(input, "a file of the study shown");
         if (speed_unit) options.speed_unit = *speed_unit;
         if (title) options.title = *title;
         std::atomic<bool> flag{false};

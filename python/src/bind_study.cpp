@@ -54,19 +54,18 @@ std::string python_error_text(const py::error_already_set& e) {
 // model (a feran.Model), under the GIL, from the study's worker threads.
 std::shared_ptr<const QuantityFunction> python_quantity(py::object function, SpecSource source, std::string path) {
   auto held = std::make_shared<HeldObject>(std::move(function));
-  return std::make_shared<const QuantityFunction>(
-      [held, source = std::move(source), path = std::move(path)](const ModelSpec& spec, const Model&) -> Real {
-        py::gil_scoped_acquire gil;
-        try {
-          const py::object value = held->object(PyModel(spec, source, path));
-          if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value) &&
-              !py::hasattr(value, "__float__"))
-            throw Error(fmt::format("the function returned {}, not a number", std::string(py::repr(value))));
-          return value.cast<double>();
-        } catch (const py::error_already_set& e) {
-          throw Error(fmt::format("the function raised {}", python_error_text(e)));
-        }
-      });
+  return std::make_shared<const QuantityFunction>([held, source = std::move(source), path = std::move(path)](
+                                                      const ModelSpec& spec, const Model&) -> Real {
+    py::gil_scoped_acquire gil;
+    try {
+      const py::object value = held->object(PyModel(spec, source, path));
+      if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value) && !py::hasattr(value, "__float__"))
+        throw Error(fmt::format("the function returned {}, not a number", std::string(py::repr(value))));
+      return value.cast<double>();
+    } catch (const py::error_already_set& e) {
+      throw Error(fmt::format("the function raised {}", python_error_text(e)));
+    }
+  });
 }
 
 struct PyStudy {
@@ -145,10 +144,12 @@ std::shared_ptr<PyStudy> from_code(const std::string& toml_text, const PyModel& 
   s->file = read_study_string(toml_text, "<study>", code);
   for (auto& q : s->file.study.quantities) {
     if (q.kind != QuantityKind::function) continue;
-    if (!functions.contains(q.name)) throw Error(fmt::format("quantity '{}' of kind \"function\" has no function", q.name));
+    if (!functions.contains(q.name))
+      throw Error(fmt::format("quantity '{}' of kind \"function\" has no function", q.name));
     const py::object f = functions[py::str(q.name)];
     if (!PyCallable_Check(f.ptr()))
-      throw Error(fmt::format("quantity '{}': the function must be callable, got {}", q.name, std::string(py::repr(f))));
+      throw Error(
+          fmt::format("quantity '{}': the function must be callable, got {}", q.name, std::string(py::repr(f))));
     q.function = python_quantity(f, code.base.source, model.path());
   }
   return s;
@@ -190,8 +191,10 @@ PyStudyResult run(const std::shared_ptr<PyStudy>& s, const std::optional<std::st
   std::atomic<bool> flag{false};
   const StopToken stop(flag);
   std::unique_ptr<BatchEvaluator> evaluator;
-  if (engine.is_none()) evaluator = std::make_unique<ThreadEvaluator>(threads, stop);
-  else evaluator = std::make_unique<CallbackEvaluator>(engine, flag);
+  if (engine.is_none())
+    evaluator = std::make_unique<ThreadEvaluator>(threads, stop);
+  else
+    evaluator = std::make_unique<CallbackEvaluator>(engine, flag);
   const Index size = batch.value_or(4 * resolve_threads(threads));
   if (size < 1) throw Error("batch must be at least 1");
   PyStudyResult result;
@@ -201,11 +204,17 @@ PyStudyResult run(const std::shared_ptr<PyStudy>& s, const std::optional<std::st
   run_watched(
       [&] {
         result.evaluations = run_exploration(
-            study, *evaluator, done, [&](std::span<const Evaluation> e) { if (log) log->append(e); }, size, stop);
+            study, *evaluator, done,
+            [&](std::span<const Evaluation> e) {
+              if (log) log->append(e);
+            },
+            size, stop);
       },
       flag, interrupted);
-  const bool optimiser = study.explore.method == ExploreMethod::optimise || study.explore.method == ExploreMethod::pareto;
-  result.complete = !interrupted && (optimiser || static_cast<Index>(result.evaluations.size()) == planned_evaluations(study));
+  const bool optimiser =
+      study.explore.method == ExploreMethod::optimise || study.explore.method == ExploreMethod::pareto;
+  result.complete =
+      !interrupted && (optimiser || static_cast<Index>(result.evaluations.size()) == planned_evaluations(study));
   if (log) {
     result.directory = log->directory();
     result.model_files = log->finish(result.evaluations, result.complete);
@@ -225,125 +234,192 @@ void bind_study(py::module_& m) {
       .def_static("from_code", &from_code, py::arg("toml"), py::arg("model"), py::arg("model_name"),
                   py::arg("functions"), "A study of a model given in code; functions: quantity name -> f(model)")
       .def_property_readonly("title", [](const PyStudy& s) { return s.study().title; })
-      .def_property_readonly("variable_names", [](const PyStudy& s) {
-        return string_list(s.study().variables.size(), [&](std::size_t i) { return s.study().variables[i].name; });
-      })
-      .def_property_readonly("variable_units", [](const PyStudy& s) {
-        return string_list(s.study().variables.size(), [&](std::size_t i) { return unit_of(s.study().variables[i].quantity); });
-      })
-      .def_property_readonly("variable_log", [](const PyStudy& s) {
-        py::list out;
-        for (const auto& v : s.study().variables) out.append(!v.discrete() && v.scale == VariableScale::log);
-        return out;
-      })
-      .def_property_readonly("quantity_names", [](const PyStudy& s) {
-        return string_list(s.study().quantities.size(), [&](std::size_t i) { return s.study().quantities[i].name; });
-      })
-      .def_property_readonly("quantity_units", [](const PyStudy& s) {
-        return string_list(s.study().quantities.size(), [&](std::size_t i) { return unit_of(quantity_unit(s.study().quantities[i])); });
-      })
-      .def_property_readonly("objectives", [](const PyStudy& s) {
-        py::list out;
-        for (const auto& o : s.study().objectives)
-          out.append(py::make_tuple(s.study().quantities[static_cast<std::size_t>(o.quantity)].name,
-                                    o.sense == Sense::minimise ? "minimise" : "maximise"));
-        return out;
-      })
-      .def_property_readonly("method", [](const PyStudy& s) { return std::string(to_string(s.study().explore.method)); })
-      .def_property_readonly("planned", [](const PyStudy& s) { return planned_evaluations(s.study()); },
-                             "designs the study plans (for an optimiser an upper bound)")
-      .def("base_model", [](const PyStudy& s) { return PyModel(s.study().base, s.file.base.source, s.file.base.path); },
-           "The base model with the study's settings")
+      .def_property_readonly("variable_names",
+                             [](const PyStudy& s) {
+                               return string_list(s.study().variables.size(),
+                                                  [&](std::size_t i) { return s.study().variables[i].name; });
+                             })
+      .def_property_readonly("variable_units",
+                             [](const PyStudy& s) {
+                               return string_list(s.study().variables.size(), [&](std::size_t i) {
+                                 return unit_of(s.study().variables[i].quantity);
+                               });
+                             })
+      .def_property_readonly("variable_log",
+                             [](const PyStudy& s) {
+                               py::list out;
+                               for (const auto& v : s.study().variables)
+                                 out.append(!v.discrete() && v.scale == VariableScale::log);
+                               return out;
+                             })
+      .def_property_readonly("quantity_names",
+                             [](const PyStudy& s) {
+                               return string_list(s.study().quantities.size(),
+                                                  [&](std::size_t i) { return s.study().quantities[i].name; });
+                             })
+      .def_property_readonly("quantity_units",
+                             [](const PyStudy& s) {
+                               return string_list(s.study().quantities.size(), [&](std::size_t i) {
+                                 return unit_of(quantity_unit(s.study().quantities[i]));
+                               });
+                             })
+      .def_property_readonly(
+          "objectives",
+          [](const PyStudy& s) {
+            py::list out;
+            for (const auto& o : s.study().objectives)
+              out.append(py::make_tuple(s.study().quantities[static_cast<std::size_t>(o.quantity)].name,
+                                        o.sense == Sense::minimise ? "minimise" : "maximise"));
+            return out;
+          })
+      .def_property_readonly("method",
+                             [](const PyStudy& s) { return std::string(to_string(s.study().explore.method)); })
+      .def_property_readonly(
+          "planned", [](const PyStudy& s) { return planned_evaluations(s.study()); },
+          "designs the study plans (for an optimiser an upper bound)")
+      .def(
+          "base_model", [](const PyStudy& s) { return PyModel(s.study().base, s.file.base.source, s.file.base.path); },
+          "The base model with the study's settings")
       .def("_evaluate", &evaluate, py::arg("indices"), py::arg("units"), py::arg("threads") = 1,
            "Evaluates designs (indices, unit coordinates) and returns them packed (bytes)")
       .def("_run", &run, py::arg("output"), py::arg("resume"), py::arg("threads"), py::arg("batch"), py::arg("engine"));
 
   py::class_<PyStudyResult>(m, "StudyResult",
                             "Every evaluated design of a study, in index order (docs/python.md, 'Design studies')")
-      .def_property_readonly("index", [](const PyStudyResult& r) {
-        return array_1d<long long>(r.evaluations.size(), [&](std::size_t i) { return static_cast<long long>(r.evaluations[i].index); });
-      }, "each design's index (its place in the exploration)")
-      .def_property_readonly("unit", [](const PyStudyResult& r) {
-        const auto d = r.study->study().variables.size();
-        return array_2d(r.evaluations.size(), d, [&](std::size_t i, std::size_t j) { return r.evaluations[i].unit[j]; });
-      }, "unit-cube coordinates, one row per design")
-      .def_property_readonly("values", [](const PyStudyResult& r) {
-        const auto d = r.study->study().variables.size();
-        return array_2d(r.evaluations.size(), d, [&](std::size_t i, std::size_t j) { return r.evaluations[i].values[j]; });
-      }, "the variables' values (SI), one row per design")
-      .def_property_readonly("quantities", [](const PyStudyResult& r) {
-        const auto q = r.study->study().quantities.size();
-        return array_2d(r.evaluations.size(), q, [&](std::size_t i, std::size_t j) {
-          const auto& e = r.evaluations[i];
-          return e.quantities.empty() ? std::numeric_limits<double>::quiet_NaN() : e.quantities[j];
-        });
-      }, "the quantities (SI), one row per design; NaN for a design that failed")
-      .def_property_readonly("evaluated", [](const PyStudyResult& r) {
-        return array_1d<bool>(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].evaluated; });
-      }, "every quantity was computed")
-      .def_property_readonly("feasible", [](const PyStudyResult& r) {
-        return array_1d<bool>(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].feasible; });
-      }, "evaluated and every constraint holds")
-      .def_property_readonly("messages", [](const PyStudyResult& r) {
-        return string_list(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].message; });
-      }, "why a design failed or which constraint it violates ('' otherwise)")
-      .def_property_readonly("clipped", [](const PyStudyResult& r) {
-        py::list out;
-        const auto& quantities = r.study->study().quantities;
-        for (const auto& e : r.evaluations) {
-          py::dict d;
-          for (std::size_t i = 0; i < e.clipped.size() && i < quantities.size(); ++i)
-            if (!e.clipped[i].empty()) d[py::str(quantities[i].name)] = e.clipped[i];
-          out.append(d);
-        }
-        return out;
-      }, "per design, {quantity: why its value is only a bound} for the quantities clipped by the range an\n"
-         "analysis covered (a separation margin or stability threshold beyond the Campbell range's end)")
-      .def_property_readonly("seconds", [](const PyStudyResult& r) {
-        return array_1d(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].seconds; });
-      }, "wall time of each evaluation [s]")
-      .def_property_readonly("best", [](const PyStudyResult& r) -> py::object {
-        const auto b = best_design(r.study->study(), r.evaluations);
-        return b ? py::cast(*b) : py::none();
-      }, "row of the best feasible design of a single-objective study (None: none feasible)")
-      .def_property_readonly("pareto", [](const PyStudyResult& r) {
-        const auto front = pareto_set(r.study->study(), r.evaluations);
-        return array_1d<long long>(front.size(), [&](std::size_t i) { return static_cast<long long>(front[i]); });
-      }, "rows of the feasible designs no other dominates in the objectives")
-      .def("sensitivity", [](const PyStudyResult& r) {
-        py::list out;
-        for (const auto& x : sensitivities(r.study->study(), r.evaluations)) {
-          py::dict d;
-          d["quantity"] = x.quantity;
-          d["src"] = array_1d(x.src.size(), [&](std::size_t i) { return x.src[i]; });
-          d["r2"] = x.r2;
-          d["srrc"] = array_1d(x.srrc.size(), [&](std::size_t i) { return x.srrc[i]; });
-          d["r2_ranks"] = x.r2_ranks;
-          d["samples"] = x.samples;
-          out.append(d);
-        }
-        return out;
-      }, "Standardised regression coefficients of each quantity on the variables' unit coordinates\n"
-         "(src, with the fit's r2) and on their ranks (srrc, r2_ranks): one dict per quantity")
-      .def("model", [](const PyStudyResult& r, Index row) {
-        if (row < 0 || row >= static_cast<Index>(r.evaluations.size()))
-          throw py::index_error(fmt::format("row {} of a study result of {} designs", row, r.evaluations.size()));
-        return design_model(*r.study, r.evaluations[static_cast<std::size_t>(row)]);
-      }, py::arg("row"), "The model of the design in that row (a feran.Model)")
-      .def_property_readonly("directory", [](const PyStudyResult& r) { return r.directory; },
-                             "where the evaluations were written ('' when kept in memory only)")
-      .def_property_readonly("model_files", [](const PyStudyResult& r) { return r.model_files; },
-                             "the model files of the best design or the Pareto set")
-      .def_property_readonly("complete", [](const PyStudyResult& r) { return r.complete; },
-                             "every planned design was evaluated (False after an interruption)")
-      .def_property_readonly("resumed", [](const PyStudyResult& r) { return r.resumed; },
-                             "designs read back from the directory instead of evaluated")
-      .def_property_readonly("variable_names", [](const PyStudyResult& r) {
-        return string_list(r.study->study().variables.size(), [&](std::size_t i) { return r.study->study().variables[i].name; });
-      })
-      .def_property_readonly("quantity_names", [](const PyStudyResult& r) {
-        return string_list(r.study->study().quantities.size(), [&](std::size_t i) { return r.study->study().quantities[i].name; });
-      })
+      .def_property_readonly(
+          "index",
+          [](const PyStudyResult& r) {
+            return array_1d<long long>(r.evaluations.size(),
+                                       [&](std::size_t i) { return static_cast<long long>(r.evaluations[i].index); });
+          },
+          "each design's index (its place in the exploration)")
+      .def_property_readonly(
+          "unit",
+          [](const PyStudyResult& r) {
+            const auto d = r.study->study().variables.size();
+            return array_2d(r.evaluations.size(), d,
+                            [&](std::size_t i, std::size_t j) { return r.evaluations[i].unit[j]; });
+          },
+          "unit-cube coordinates, one row per design")
+      .def_property_readonly(
+          "values",
+          [](const PyStudyResult& r) {
+            const auto d = r.study->study().variables.size();
+            return array_2d(r.evaluations.size(), d,
+                            [&](std::size_t i, std::size_t j) { return r.evaluations[i].values[j]; });
+          },
+          "the variables' values (SI), one row per design")
+      .def_property_readonly(
+          "quantities",
+          [](const PyStudyResult& r) {
+            const auto q = r.study->study().quantities.size();
+            return array_2d(r.evaluations.size(), q, [&](std::size_t i, std::size_t j) {
+              const auto& e = r.evaluations[i];
+              return e.quantities.empty() ? std::numeric_limits<double>::quiet_NaN() : e.quantities[j];
+            });
+          },
+          "the quantities (SI), one row per design; NaN for a design that failed")
+      .def_property_readonly(
+          "evaluated",
+          [](const PyStudyResult& r) {
+            return array_1d<bool>(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].evaluated; });
+          },
+          "every quantity was computed")
+      .def_property_readonly(
+          "feasible",
+          [](const PyStudyResult& r) {
+            return array_1d<bool>(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].feasible; });
+          },
+          "evaluated and every constraint holds")
+      .def_property_readonly(
+          "messages",
+          [](const PyStudyResult& r) {
+            return string_list(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].message; });
+          },
+          "why a design failed or which constraint it violates ('' otherwise)")
+      .def_property_readonly(
+          "clipped",
+          [](const PyStudyResult& r) {
+            py::list out;
+            const auto& quantities = r.study->study().quantities;
+            for (const auto& e : r.evaluations) {
+              py::dict d;
+              for (std::size_t i = 0; i < e.clipped.size() && i < quantities.size(); ++i)
+                if (!e.clipped[i].empty()) d[py::str(quantities[i].name)] = e.clipped[i];
+              out.append(d);
+            }
+            return out;
+          },
+          "per design, {quantity: why its value is only a bound} for the quantities clipped by the range an\n"
+          "analysis covered (a separation margin or stability threshold beyond the Campbell range's end)")
+      .def_property_readonly(
+          "seconds",
+          [](const PyStudyResult& r) {
+            return array_1d(r.evaluations.size(), [&](std::size_t i) { return r.evaluations[i].seconds; });
+          },
+          "wall time of each evaluation [s]")
+      .def_property_readonly(
+          "best",
+          [](const PyStudyResult& r) -> py::object {
+            const auto b = best_design(r.study->study(), r.evaluations);
+            return b ? py::cast(*b) : py::none();
+          },
+          "row of the best feasible design of a single-objective study (None: none feasible)")
+      .def_property_readonly(
+          "pareto",
+          [](const PyStudyResult& r) {
+            const auto front = pareto_set(r.study->study(), r.evaluations);
+            return array_1d<long long>(front.size(), [&](std::size_t i) { return static_cast<long long>(front[i]); });
+          },
+          "rows of the feasible designs no other dominates in the objectives")
+      .def(
+          "sensitivity",
+          [](const PyStudyResult& r) {
+            py::list out;
+            for (const auto& x : sensitivities(r.study->study(), r.evaluations)) {
+              py::dict d;
+              d["quantity"] = x.quantity;
+              d["src"] = array_1d(x.src.size(), [&](std::size_t i) { return x.src[i]; });
+              d["r2"] = x.r2;
+              d["srrc"] = array_1d(x.srrc.size(), [&](std::size_t i) { return x.srrc[i]; });
+              d["r2_ranks"] = x.r2_ranks;
+              d["samples"] = x.samples;
+              out.append(d);
+            }
+            return out;
+          },
+          "Standardised regression coefficients of each quantity on the variables' unit coordinates\n"
+          "(src, with the fit's r2) and on their ranks (srrc, r2_ranks): one dict per quantity")
+      .def(
+          "model",
+          [](const PyStudyResult& r, Index row) {
+            if (row < 0 || row >= static_cast<Index>(r.evaluations.size()))
+              throw py::index_error(fmt::format("row {} of a study result of {} designs", row, r.evaluations.size()));
+            return design_model(*r.study, r.evaluations[static_cast<std::size_t>(row)]);
+          },
+          py::arg("row"), "The model of the design in that row (a feran.Model)")
+      .def_property_readonly(
+          "directory", [](const PyStudyResult& r) { return r.directory; },
+          "where the evaluations were written ('' when kept in memory only)")
+      .def_property_readonly(
+          "model_files", [](const PyStudyResult& r) { return r.model_files; },
+          "the model files of the best design or the Pareto set")
+      .def_property_readonly(
+          "complete", [](const PyStudyResult& r) { return r.complete; },
+          "every planned design was evaluated (False after an interruption)")
+      .def_property_readonly(
+          "resumed", [](const PyStudyResult& r) { return r.resumed; },
+          "designs read back from the directory instead of evaluated")
+      .def_property_readonly("variable_names",
+                             [](const PyStudyResult& r) {
+                               return string_list(r.study->study().variables.size(),
+                                                  [&](std::size_t i) { return r.study->study().variables[i].name; });
+                             })
+      .def_property_readonly("quantity_names",
+                             [](const PyStudyResult& r) {
+                               return string_list(r.study->study().quantities.size(),
+                                                  [&](std::size_t i) { return r.study->study().quantities[i].name; });
+                             })
       .def_property_readonly("_study", [](const PyStudyResult& r) { return std::const_pointer_cast<PyStudy>(r.study); })
       .def("__len__", [](const PyStudyResult& r) { return r.evaluations.size(); });
 }

@@ -166,7 +166,8 @@ inline py::list bearing_data(const std::vector<OperatingSeries>& series, bool on
 
 /// The bearings of @p series by their labels.
 inline py::list bearing_labels(const std::vector<OperatingSeries>& series, const Model& model) {
-  return string_list(series.size(), [&](std::size_t i) { return model.forces[static_cast<std::size_t>(series[i].force)].label(); });
+  return string_list(series.size(),
+                     [&](std::size_t i) { return model.forces[static_cast<std::size_t>(series[i].force)].label(); });
 }
 
 }  // namespace feran::python

@@ -135,7 +135,7 @@ def test_response_arrays_match_the_json(tmp_path):
     model = feran.read_model(EXAMPLE)
     r = feran.response(model, stop="60 Hz", points=31, probe=["rotor", 1])
     cli = cli_json(tmp_path, "response", EXAMPLE, ["--stop", "60Hz", "--points", "31", "--probe", "rotor",
-                                                  "--probe", "1"])
+                                                   "--probe", "1"])
     assert r.probes == [p["name"] or str(p["node"]) for p in cli["probes"]]
     for i, probe in enumerate(cli["probes"]):
         np.testing.assert_allclose(r.orbit_major[i], probe["amplitude_m"], rtol=RTOL)
@@ -156,8 +156,8 @@ def test_frequency_sweep_and_extra_force(tmp_path):
     r = feran.response(model, speed="20 Hz", freq_start="1 Hz", freq_stop="50 Hz", freq_points=25,
                        force="rotor:y:1N", unbalance=False, probe="rotor")
     cli = cli_json(tmp_path, "response", EXAMPLE, ["--speed", "20Hz", "--freq-start", "1Hz", "--freq-stop",
-                                                  "50Hz", "--freq-points", "25", "--force", "rotor:y:1N",
-                                                  "--no-unbalance", "--probe", "rotor"])
+                                                   "50Hz", "--freq-points", "25", "--force", "rotor:y:1N",
+                                                   "--no-unbalance", "--probe", "rotor"])
     same(r.to_dict(), cli)
     assert r.frequency_sweep
     np.testing.assert_allclose(r.frequencies / (2 * np.pi), np.linspace(1, 50, 25), rtol=1e-12)
@@ -245,7 +245,8 @@ def test_api684_reads_its_table_and_reports_bad_arguments():
 
 
 def report_data(html):
-    start = html.index('<script id="feran-data" type="application/json">') + len('<script id="feran-data" type="application/json">')
+    tag = '<script id="feran-data" type="application/json">'
+    start = html.index(tag) + len(tag)
     return json.loads(html[start:html.index("</script>", start)])
 
 

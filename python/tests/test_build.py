@@ -1,7 +1,6 @@
 """Models built in code: the same model as the file says, checked by the same rules;
 no memory growth over many analyses; Ctrl-C stops an analysis with its results."""
 import os
-import resource
 import signal
 import subprocess
 import sys

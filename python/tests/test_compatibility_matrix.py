@@ -48,9 +48,11 @@ def journal_variant(text, kind):
         return text.replace('viscosity = "20 mPa*s"',
                             'viscosity = "20 mPa*s"\ntheory = "finite"\ncircumferential_cells = 24\naxial_cells = 4')
     if kind == "journal_finite_table":  # the film force from its table in every analysis, not only run-ups
-        return journal_variant(text, "journal_finite").replace('axial_cells = 4', 'axial_cells = 4\nevaluation = "table"')
+        finite = journal_variant(text, "journal_finite")
+        return finite.replace('axial_cells = 4', 'axial_cells = 4\nevaluation = "table"')
     if kind == "rolling":
-        blocks = re.findall(r"\[\[journal_bearings\]\]\nname = \"([^\"]+)\"\nnode = \"([^\"]+)\"\n(?:[^\[\n][^\n]*\n)*", text)
+        blocks = re.findall(r"\[\[journal_bearings\]\]\nname = \"([^\"]+)\"\nnode = \"([^\"]+)\"\n"
+                            r"(?:[^\[\n][^\n]*\n)*", text)
         out = re.sub(r"\[\[journal_bearings\]\]\n(?:[^\[\n][^\n]*\n)*\n?", "", text)
         for name, node in blocks:
             out += (f'\n[[rolling_bearings]]\nname = "{name}"\nnode = "{node}"\nelements = 9\n'
@@ -64,7 +66,8 @@ def journal_variant(text, kind):
     raise ValueError(kind)
 
 
-SUPPORT_FAMILIES = ["journal_short", "journal_long", "journal_finite", "journal_finite_table", "rolling", "tapered_axial"]
+SUPPORT_FAMILIES = ["journal_short", "journal_long", "journal_finite", "journal_finite_table", "rolling",
+                    "tapered_axial"]
 EXAMPLES = sorted(p for p in glob.glob(os.path.join(SOURCE, "examples", "*", "*.toml"))
                   if not p.endswith(".study.toml"))
 FAMILIES = [("example:" + os.path.relpath(p, os.path.join(SOURCE, "examples")), p) for p in EXAMPLES] + \
@@ -90,6 +93,7 @@ REFUSALS = [
     r"no \[runup\]|give a speed profile|--to|--speed",   # runup without a profile
     r"the model has no \[\[unbalances\]\]|nothing excites",  # response without excitation
 ]
+
 
 def model_path(tmp_path, family):
     name, source = family
@@ -246,10 +250,12 @@ KINDS = quantity_kinds()
 
 
 def quantity_toml(kind, low, high, rho, bearing_value):
-    keys = {"separation_margin": f'operating = ["{low}", "{high}"]', "required_margin": f'operating = ["{low}", "{high}"]',
-            "margin_surplus": f'operating = ["{low}", "{high}"]', "min_margin_surplus": f'operating = ["{low}", "{high}"]',
+    operating = f'operating = ["{low}", "{high}"]'
+    keys = {"separation_margin": operating, "required_margin": operating, "margin_surplus": operating,
+            "min_margin_surplus": operating, "undamped_critical_speed": operating,
             "level1_q_zero": f'speed = "{high}"',
-            "min_bearing_value": f'value = "{bearing_value}"', "max_bearing_value": f'value = "{bearing_value}"', "undamped_critical_speed": f'operating = ["{low}", "{high}"]', "parameter": f'path = "{rho}"'}
+            "min_bearing_value": f'value = "{bearing_value}"', "max_bearing_value": f'value = "{bearing_value}"',
+            "parameter": f'path = "{rho}"'}
     return f'[[quantities]]\nname = "{kind}"\nkind = "{kind}"\n{keys.get(kind, "")}\n'
 
 
@@ -272,7 +278,8 @@ def test_study_quantities(tmp_path, family):
     while kinds:
         study = (f'model = "{path}"\n[settings]\n"campbell.points" = 9\n"response.points" = 9\n'
                  f'[[variables]]\nname = "rho"\npath = "{rho}"\nlower = "7800 kg/m^3"\nupper = "7900 kg/m^3"\n'
-                 + "".join(quantity_toml(k, low, high, rho, bearing_value) for k in kinds) + '[explore]\nmethod = "grid"\nlevels = 1\n')
+                 + "".join(quantity_toml(k, low, high, rho, bearing_value) for k in kinds)
+                 + '[explore]\nmethod = "grid"\nlevels = 1\n')
         if "runup_peak" in kinds or "runup_spring_force" in kinds:
             study = study.replace('"response.points" = 9\n', '"response.points" = 9\n"runup.duration" = "0.02 s"\n')
         file = tmp_path / "s.toml"

@@ -48,6 +48,7 @@ def test_parameters_by_path_and_independent_copies():
     assert model["rigid_bodies[rotor].mass"] == pytest.approx(18.2)
     assert other["rigid_bodies[rotor].mass"] == pytest.approx(9.1)
     # Twice the mass: the rotor's translational frequencies fall by about sqrt(2).
+
     def lowest_lateral(m):
         r = feran.modal(m)
         return min(f for f, t in zip(r.frequency_hz, r.type) if t == "lateral" and f > 0)

@@ -26,7 +26,7 @@ def model():
 
 
 def lines(fig, gid):
-    return [l for ax in fig.axes for l in ax.get_lines() if l.get_gid() == gid]
+    return [line for ax in fig.axes for line in ax.get_lines() if line.get_gid() == gid]
 
 
 def test_rotor_draws_every_section_body_and_spring():
@@ -68,7 +68,7 @@ def test_campbell_draws_modes_orders_criticals_and_threshold(model):
     for k in (1, 2):
         (line,) = lines(fig, f"order {k}")
         np.testing.assert_allclose(line.get_ydata(), k * np.asarray(line.get_xdata()))
-    drawn = sorted(l.get_xdata()[0] for l in lines(fig, "critical"))
+    drawn = sorted(line.get_xdata()[0] for line in lines(fig, "critical"))
     np.testing.assert_allclose(drawn, sorted(x["speed_hz"] for x in c.criticals))
     # The threshold line sits at the speed where a damping ratio crosses zero.
     (threshold,) = lines(fig, "stability threshold")
@@ -77,7 +77,7 @@ def test_campbell_draws_modes_orders_criticals_and_threshold(model):
     assert np.interp(s, c.speeds_hz, c.damping_ratio[i]) == pytest.approx(0, abs=1e-3)
     # rpm: the same diagram, every speed and frequency times 60
     fig_rpm = feran.plot.campbell(c, unit="rpm", colour=None)
-    first = [l for l in fig_rpm.axes[0].get_lines() if l.get_gid() == f"mode {c.labels[0]}"][0]
+    first = [line for line in fig_rpm.axes[0].get_lines() if line.get_gid() == f"mode {c.labels[0]}"][0]
     np.testing.assert_allclose(first.get_ydata(), 60 * c.frequency_hz[0])
 
 

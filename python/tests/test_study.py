@@ -191,7 +191,7 @@ def test_an_interrupted_study_resumes_to_the_uninterrupted_result(bearing, tmp_p
         return model[C] / 1e3
 
     kwargs = dict(variables=[VARIABLE], quantities=[{"name": "zeta", "kind": "damping_ratio"},
-                                                     {"name": "q", "function": interrupting}],
+                                                    {"name": "q", "function": interrupting}],
                   objectives=[{"quantity": "zeta", "sense": "maximise"}], explore={"method": "grid", "levels": 40})
     study = feran.Study(bearing, **kwargs)
     with pytest.raises(feran.Interrupted) as stopped:
@@ -218,7 +218,8 @@ def test_the_dask_engine_gives_the_threads_results():
     study = feran.Study(model, variables=[VARIABLE],
                         quantities=[{"name": "zeta", "kind": "damping_ratio"},
                                     {"name": "cost", "function": lambda m: m[C] / 1e3}],
-                        objectives=[{"quantity": "zeta", "sense": "maximise"}, {"quantity": "cost", "sense": "minimise"}],
+                        objectives=[{"quantity": "zeta", "sense": "maximise"},
+                                    {"quantity": "cost", "sense": "minimise"}],
                         explore={"method": "pareto", "population": 16, "generations": 6, "seed": 3})
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
                                   silence_logs=40) as cluster, distributed.Client(cluster) as client:
@@ -237,15 +238,16 @@ def test_the_dask_engine_gives_the_threads_results():
 
 
 def test_the_study_figures_draw_the_results_data(bearing):
-    study = feran.Study(bearing, variables=[VARIABLE, {"name": "k", "paths": ["springs[bearing].ky",
-                                                                               "springs[bearing].kz"],
-                                                       "lower": "5e5 N/m", "upper": "2e6 N/m"}],
+    stiffness = {"name": "k", "paths": ["springs[bearing].ky", "springs[bearing].kz"],
+                 "lower": "5e5 N/m", "upper": "2e6 N/m"}
+    study = feran.Study(bearing, variables=[VARIABLE, stiffness],
                         quantities=[{"name": "zeta", "kind": "damping_ratio"}, {"name": "cost", "function": cost}],
-                        objectives=[{"quantity": "zeta", "sense": "maximise"}, {"quantity": "cost", "sense": "minimise"}],
+                        objectives=[{"quantity": "zeta", "sense": "maximise"},
+                                    {"quantity": "cost", "sense": "minimise"}],
                         explore={"method": "latin_hypercube", "samples": 40, "seed": 2})
     r = study.run()
     fig = feran.plot.pareto_front(r)
-    (front,) = [l for l in fig.axes[0].get_lines() if l.get_gid() == "pareto"]
+    (front,) = [line for line in fig.axes[0].get_lines() if line.get_gid() == "pareto"]
     order = np.argsort(r.quantities[r.pareto, 0], kind="stable")
     np.testing.assert_array_equal(front.get_xdata(), r.quantities[r.pareto, 0][order])
     np.testing.assert_array_equal(front.get_ydata(), r.quantities[r.pareto, 1][order])
@@ -265,7 +267,7 @@ def test_the_study_figures_draw_the_results_data(bearing):
     np.testing.assert_allclose([p[2, 1] for p in paths], (z - z.min()) / (z.max() - z.min()), atol=1e-12)
 
     fig = feran.plot.response_surface(r, "c", "k", "zeta")
-    (dots,) = [l for l in fig.axes[0].get_lines() if l.get_gid() == "designs"]
+    (dots,) = [line for line in fig.axes[0].get_lines() if line.get_gid() == "designs"]
     np.testing.assert_allclose(dots.get_xdata(), np.log10(r.values[:, 0]))
     np.testing.assert_array_equal(dots.get_ydata(), r.values[:, 1])
     with pytest.raises(ValueError, match="neither a variable"):

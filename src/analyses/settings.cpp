@@ -118,10 +118,8 @@ void check_analysis_tables(const ModelSpec& spec) {
   const std::string& name = *spec.runup.integrator;
   const std::vector<std::string> names = integrator_names();
   if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  std::string message =
-      fmt::format("'integrator' must be {}, got \"{}\"", detail::join_list(names, "or", '"'), name);
-  if (const auto m = detail::closest_match(name, names, 2))
-    message += fmt::format("; did you mean \"{}\"?", *m);
+  std::string message = fmt::format("'integrator' must be {}, got \"{}\"", detail::join_list(names, "or", '"'), name);
+  if (const auto m = detail::closest_match(name, names, 2)) message += fmt::format("; did you mean \"{}\"?", *m);
   throw SpecError("runup.integrator", message);
 }
 
@@ -130,8 +128,9 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
   const std::optional<Real> low = request.min_speed ? request.min_speed : f.min_speed;
   const std::optional<Real> high = request.max_speed ? request.max_speed : f.max_speed;
   if (!low || !high)
-    throw Error("the API 684 analyses need the operating speed range: give [api684] min_speed and max_speed, or "
-                "--min-speed and --max-speed");
+    throw Error(
+        "the API 684 analyses need the operating speed range: give [api684] min_speed and max_speed, or "
+        "--min-speed and --max-speed");
   checked<Api684Spec>(request.min_speed, "min_speed", "--min-speed");
   checked<Api684Spec>(request.max_speed, "max_speed", "--max-speed");
   checked<Api684Spec>(request.stop, "stop", "--stop");
@@ -143,9 +142,10 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
   checked_count<Api684Spec>(request.map_points, "map_points", "--map-points");
   checked_count<Api684Spec>(request.map_criticals, "map_criticals", "--map-criticals");
   if (*high < *low)
-    throw Error(fmt::format("the maximum continuous speed ({:.6g} rpm) is below the minimum operating speed "
-                            "({:.6g} rpm)",
-                            *high * 30 / std::numbers::pi, *low * 30 / std::numbers::pi));
+    throw Error(
+        fmt::format("the maximum continuous speed ({:.6g} rpm) is below the minimum operating speed "
+                    "({:.6g} rpm)",
+                    *high * 30 / std::numbers::pi, *low * 30 / std::numbers::pi));
   Api684Options o;
   o.low = *low;
   o.high = *high;
@@ -159,9 +159,10 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
   constexpr long long max_response_points = 200000;
   const long long cases = o.model_unbalance ? 1 : o.modes;
   if (cases * points > max_response_points)
-    throw Error(fmt::format("[api684] the unbalance responses would take {} × {} = {} points (modes × points, "
-                            "from --modes/modes and --points/points): at most {}; ask for fewer",
-                            cases, points, cases * points, max_response_points));
+    throw Error(
+        fmt::format("[api684] the unbalance responses would take {} × {} = {} points (modes × points, "
+                    "from --modes/modes and --points/points): at most {}; ask for fewer",
+                    cases, points, cases * points, max_response_points));
   o.unbalance_multiple = request.unbalance_multiple.value_or(f.unbalance_multiple.value_or(1.0));
   checked<Api684Spec>(request.unbalance_multiple, "unbalance_multiple", "--unbalance-multiple");
   o.probes = request.probes;
@@ -194,7 +195,8 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
       }
       if (t)
         for (const Dof d : {Dof::v, Dof::w})
-          if (const Real k = (*t).K(static_cast<Index>(d), static_cast<Index>(d)); k > 0) log_sum += std::log(k), ++count;
+          if (const Real k = (*t).K(static_cast<Index>(d), static_cast<Index>(d)); k > 0)
+            log_sum += std::log(k), ++count;
     }
     const Real centre = count > 0 ? std::exp(log_sum / count) : 1e7;
     map.k_low = request.map_low.value_or(f.map_low.value_or(centre / 100));
@@ -203,11 +205,11 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
     map.criticals = request.map_criticals.value_or(f.map_criticals.value_or(4));
     constexpr long long max_map_work = 100000;
     if (static_cast<long long>(map.points) * map.criticals > max_map_work)
-      throw Error(fmt::format("[api684] the critical speed map would take {} × {} = {} critical speeds "
-                              "(map_points × map_criticals, from --map-points/map_points and "
-                              "--map-criticals/map_criticals): at most {}; ask for fewer",
-                              map.points, map.criticals, static_cast<long long>(map.points) * map.criticals,
-                              max_map_work));
+      throw Error(
+          fmt::format("[api684] the critical speed map would take {} × {} = {} critical speeds "
+                      "(map_points × map_criticals, from --map-points/map_points and "
+                      "--map-criticals/map_criticals): at most {}; ask for fewer",
+                      map.points, map.criticals, static_cast<long long>(map.points) * map.criticals, max_map_work));
     map.curve_stop = stop;
     map.n_threads = request.n_threads;
     o.map = map;
@@ -235,11 +237,11 @@ std::vector<std::string> range_warnings(const Model& model, Real low, Real high,
   const auto check = [&](const Element& e, const SpeedRange& r, Real lo, Real hi, std::string_view axis) {
     const bool over = beyond(hi, r.high, true), under = beyond(lo, r.low, false);
     if (!over && !under) return;
-    out.push_back(fmt::format(
-        "'{}': {} is tabulated from {:.6g} to {:.6g} Hz{}; the analysis reaches {:.6g} Hz, where "
-        "its {} value is held",
-        e.label(), r.what, rad_to_hz(r.low), rad_to_hz(r.high), axis, rad_to_hz(over ? hi : lo),
-        over ? "last" : "first"));
+    out.push_back(
+        fmt::format("'{}': {} is tabulated from {:.6g} to {:.6g} Hz{}; the analysis reaches {:.6g} Hz, where "
+                    "its {} value is held",
+                    e.label(), r.what, rad_to_hz(r.low), rad_to_hz(r.high), axis, rad_to_hz(over ? hi : lo),
+                    over ? "last" : "first"));
   };
   const auto [f_low, f_high] = frequencies.value_or(std::pair{std::abs(low), std::abs(high)});
   for (const Element& e : model.elements) {
@@ -264,15 +266,13 @@ std::pair<Real, Real> speed_span(const Model& model, const TransientOptions& opt
 
 Index spring_element(const Model& model, const std::string& name) {
   for (std::size_t e = 0; e < model.elements.size(); ++e)
-    if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name)
-      return static_cast<Index>(e);
+    if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name) return static_cast<Index>(e);
   throw Error(fmt::format("no spring-damper is named '{}'", name));
 }
 
 Index bearing_element(const Model& model, const std::string& name) {
   for (std::size_t e = 0; e < model.elements.size(); ++e)
-    if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name)
-      return static_cast<Index>(e);
+    if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name) return static_cast<Index>(e);
   Index k = static_cast<Index>(model.elements.size());
   std::vector<std::string> names;
   for (const Force& f : model.forces) {
@@ -283,8 +283,9 @@ Index bearing_element(const Model& model, const std::string& name) {
   }
   for (const Element& e : model.elements)
     if (e.kind() == "spring_damper" && !e.label().empty()) names.push_back(fmt::format("'{}'", e.label()));
-  throw Error(fmt::format("no spring-damper, journal or rolling bearing is named '{}'{}", name,
-                          names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
+  throw Error(
+      fmt::format("no spring-damper, journal or rolling bearing is named '{}'{}", name,
+                  names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
 }
 
 ModalSettings modal_settings(const ModalSpec& file, const ModalRequest& request) {
@@ -300,8 +301,9 @@ CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellReques
   const Real start = checked<CampbellSpec>(request.start, "start", "--start").value_or(file.start.value_or(0.0));
   const std::optional<Real> stop = request.stop ? checked<CampbellSpec>(request.stop, "stop", "--stop") : file.stop;
   if (!stop)
-    throw Error("campbell: give the last speed with --stop (e.g. --stop 80Hz) or in the model's "
-                "[campbell] table");
+    throw Error(
+        "campbell: give the last speed with --stop (e.g. --stop 80Hz) or in the model's "
+        "[campbell] table");
   if (!(*stop > start)) throw Error("campbell: the last speed must be above the first");
   const int points = checked_count<CampbellSpec>(request.points, "points", "--points")
                          .value_or(file.points.value_or(defaults::campbell_points));
@@ -310,9 +312,7 @@ CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellReques
   options.n_modes = checked_count<CampbellSpec>(request.modes, "modes", "--modes")
                         .value_or(file.modes.value_or(defaults::campbell_modes));
   for (int k : request.orders) checked_count<CampbellSpec>(k, "orders", "--orders");
-  options.orders = !request.orders.empty() ? request.orders
-                   : !file.orders.empty()  ? file.orders
-                                           : std::vector<int>{1};
+  options.orders = !request.orders.empty() ? request.orders : !file.orders.empty() ? file.orders : std::vector<int>{1};
   options.modal.solver = request.solver;
   options.n_threads = request.n_threads;
   return options;
@@ -324,8 +324,7 @@ StationOutput station_output(std::string_view name) {
   throw Error(fmt::format("stations must be all, summary or none, got '{}'", name));
 }
 
-HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
-                                  const ResponseRequest& request) {
+HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, const ResponseRequest& request) {
   HarmonicOptions options;
   options.unbalance = request.unbalance;
   options.stability = request.stability;
@@ -345,22 +344,21 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
                                       : StationOutput::summary;
   options.extra_forces = request.extra_forces;
   // Forces that excite at the swept frequency (all harmonic ones but unbalances).
-  const bool any_force =
-      std::any_of(model.forces.begin(), model.forces.end(),
-                  [](const Force& f) { return f.has_harmonic() && f.kind() != "unbalance"; }) ||
-      !options.extra_forces.empty();
+  const bool any_force = std::any_of(model.forces.begin(), model.forces.end(),
+                                     [](const Force& f) { return f.has_harmonic() && f.kind() != "unbalance"; }) ||
+                         !options.extra_forces.empty();
 
   if (request.freq_start || request.freq_stop) {
     if (!request.freq_start || !request.freq_stop)
       throw Error("response: a frequency sweep needs both --freq-start and --freq-stop");
-    if (!(*request.freq_stop > *request.freq_start))
-      throw Error("response: --freq-stop must be above --freq-start");
-    options.frequencies = linspace(*request.freq_start, *request.freq_stop,
-                                   request.freq_points.value_or(defaults::frequency_points));
+    if (!(*request.freq_stop > *request.freq_start)) throw Error("response: --freq-stop must be above --freq-start");
+    options.frequencies =
+        linspace(*request.freq_start, *request.freq_stop, request.freq_points.value_or(defaults::frequency_points));
     options.speed = request.speed.value_or(0.0);
     if (!any_force)
-      throw Error("response: a frequency sweep needs a harmonic force: add --force "
-                  "NODE:DIRECTION:AMPLITUDE or [[forces]] in the model");
+      throw Error(
+          "response: a frequency sweep needs a harmonic force: add --force "
+          "NODE:DIRECTION:AMPLITUDE or [[forces]] in the model");
   } else if (request.speed && !request.start && !request.stop) {
     options.speeds = {*request.speed};  // the response at one speed
   } else {
@@ -371,16 +369,17 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
       options.speeds = {start};
     } else {
       if (!stop)
-        throw Error("response: give the last speed with --stop (e.g. --stop 80Hz) or in the "
-                    "model's [response] table (or one point: --points 1 or --speed)");
+        throw Error(
+            "response: give the last speed with --stop (e.g. --stop 80Hz) or in the "
+            "model's [response] table (or one point: --points 1 or --speed)");
       if (!(*stop > start)) throw Error("response: the last speed must be above the first");
       options.speeds = linspace(start, *stop, points);
     }
   }
-  if (options.frequencies.empty() && (model.n_forces("unbalance") == 0 || !options.unbalance) &&
-      !any_force)
-    throw Error("response: nothing excites the rotor: the model has no [[unbalances]] or "
-                "[[forces]] and no --force was given");
+  if (options.frequencies.empty() && (model.n_forces("unbalance") == 0 || !options.unbalance) && !any_force)
+    throw Error(
+        "response: nothing excites the rotor: the model has no [[unbalances]] or "
+        "[[forces]] and no --force was given");
 
   options.probes = !request.probes.empty() ? request.probes
                    : !file.probes.empty()  ? node_indices(model, file.probes)
@@ -393,7 +392,7 @@ StaticOptions static_settings(const StaticSpec& file, const StaticRequest& reque
   const std::string direction = request.gravity.value_or(file.gravity.value_or("-y"));
   // A magnitude asked for applies to the file's direction too; the file's own 'g'
   // only to its own direction.
-  const Real g = request.g ? *request.g
+  const Real g = request.g                            ? *request.g
                  : (!request.gravity && file.gravity) ? file.g.value_or(defaults::gravity)
                                                       : defaults::gravity;
   checked<StaticSpec>(request.g, "g", "--g");
@@ -405,8 +404,7 @@ StaticOptions static_settings(const StaticSpec& file, const StaticRequest& reque
     const bool signed_direction = direction.size() == 2 && (direction[0] == '+' || direction[0] == '-');
     const char axis = direction.back();
     if ((direction.size() != 1 && !signed_direction) || axis < 'x' || axis > 'z')
-      throw Error(fmt::format("static: gravity must be +x, -x, +y, -y, +z, -z or none, got '{}'",
-                              direction));
+      throw Error(fmt::format("static: gravity must be +x, -x, +y, -y, +z, -z or none, got '{}'", direction));
     options.gravity(axis - 'x') = direction.front() == '-' ? -g : g;
   }
   options.speed = request.speed.value_or(file.speed.value_or(0.0));
@@ -415,8 +413,7 @@ StaticOptions static_settings(const StaticSpec& file, const StaticRequest& reque
   return options;
 }
 
-TransientOptions runup_settings(const Model& model, const RunupSpec& file,
-                                const RunupRequest& request) {
+TransientOptions runup_settings(const Model& model, const RunupSpec& file, const RunupRequest& request) {
   TransientOptions options;
   checked<RunupSpec>(request.speed, "speed", "--speed");
   checked<RunupSpec>(request.from, "from", "--from");
@@ -438,20 +435,19 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
       throw Error(fmt::format("--table must start at time 0, where the run-up starts, but its first time is {}",
                               format_quantity(time, Quantity::time)));
     if (i > 0 && !(time > request.table[i - 1].first))
-      throw Error(fmt::format("--table: the times must be strictly increasing, but point {} ({}) does not come "
-                              "after point {} ({})",
-                              i + 1, format_quantity(time, Quantity::time), i,
-                              format_quantity(request.table[i - 1].first, Quantity::time)));
+      throw Error(
+          fmt::format("--table: the times must be strictly increasing, but point {} ({}) does not come "
+                      "after point {} ({})",
+                      i + 1, format_quantity(time, Quantity::time), i,
+                      format_quantity(request.table[i - 1].first, Quantity::time)));
   }
   check_distinct(request.probes, "--probe", "node", [&](Index n) { return model.node_label(n); });
-  check_distinct(request.springs, "--spring", "spring", [&](Index e) {
-    return fmt::format("'{}'", model.elements[static_cast<std::size_t>(e)].label());
-  });
+  check_distinct(request.springs, "--spring", "spring",
+                 [&](Index e) { return fmt::format("'{}'", model.elements[static_cast<std::size_t>(e)].label()); });
   const bool ramp = request.from || request.to || request.ramp_time;
-  const int forms = static_cast<int>(request.speed.has_value()) + static_cast<int>(ramp) +
-                    static_cast<int>(!request.table.empty());
-  if (forms > 1)
-    throw Error("runup: give one speed profile: --speed, --from/--to/--ramp-time, or --table");
+  const int forms =
+      static_cast<int>(request.speed.has_value()) + static_cast<int>(ramp) + static_cast<int>(!request.table.empty());
+  if (forms > 1) throw Error("runup: give one speed profile: --speed, --from/--to/--ramp-time, or --table");
   std::optional<Real> natural_duration;
   if (request.speed) {
     options.profile = SpeedProfile::constant(*request.speed);
@@ -472,8 +468,9 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
     options.profile = SpeedProfile(file.table);
     natural_duration = file.table.back().first;
   } else {
-    throw Error("runup: give a speed profile (--speed, --from/--to/--ramp-time or --table) or a "
-                "[runup] table");
+    throw Error(
+        "runup: give a speed profile (--speed, --from/--to/--ramp-time or --table) or a "
+        "[runup] table");
   }
   if (request.duration)
     options.duration = positive_time(*request.duration, "the duration");
@@ -495,21 +492,23 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
   s.exact_jacobian = request.exact_jacobian;
   if (request.jacobian_interval) s.jacobian_interval = *request.jacobian_interval;
   options.reduced_modes = request.modes.value_or(file.modes.value_or(0));
-  options.output_interval = positive_time(
-      request.output_interval.value_or(file.output_interval.value_or(defaults::output_interval)),
-      "the output interval");
+  options.output_interval =
+      positive_time(request.output_interval.value_or(file.output_interval.value_or(defaults::output_interval)),
+                    "the output interval");
   const Real samples = options.duration / options.output_interval;
   if (samples > defaults::max_runup_samples)
-    throw Error(fmt::format("runup: a duration of {:g} s sampled every {:g} s is {:.3g} samples; at most {:g} are "
-                            "recorded (a longer output interval or a shorter duration)",
-                            options.duration, options.output_interval, samples, defaults::max_runup_samples));
+    throw Error(
+        fmt::format("runup: a duration of {:g} s sampled every {:g} s is {:.3g} samples; at most {:g} are "
+                    "recorded (a longer output interval or a shorter duration)",
+                    options.duration, options.output_interval, samples, defaults::max_runup_samples));
   const Real steps = options.duration / s.dt;
   const auto known = integrator_names();
   if (std::find(known.begin(), known.end(), options.integrator) != known.end() && steps > defaults::max_runup_steps &&
       !make_integrator(options.integrator, s)->adaptive())
-    throw Error(fmt::format("runup: a duration of {:g} s at a step of {:g} s is {:.3g} steps; at most {:g} are "
-                            "taken (a longer step or a shorter duration)",
-                            options.duration, s.dt, steps, defaults::max_runup_steps));
+    throw Error(
+        fmt::format("runup: a duration of {:g} s at a step of {:g} s is {:.3g} steps; at most {:g} are "
+                    "taken (a longer step or a shorter duration)",
+                    options.duration, s.dt, steps, defaults::max_runup_steps));
   if (request.blowup_limit) {
     if (!(*request.blowup_limit > 0)) throw Error("--blowup must be positive");
     options.blowup_limit = *request.blowup_limit;
@@ -517,10 +516,14 @@ TransientOptions runup_settings(const Model& model, const RunupSpec& file,
   options.static_loads = request.static_loads || file.static_loads.value_or(false);
   if (request.gravity || file.gravity.value_or(false)) options.gravity = model.gravity;
   const std::string start = request.start.value_or(file.start.value_or("rest"));
-  if (start == "rest") options.start = RunupStart::rest;
-  else if (start == "equilibrium") options.start = RunupStart::equilibrium;
-  else if (start == "steady") options.start = RunupStart::steady_state;
-  else throw Error(fmt::format("--start must be rest, equilibrium or steady, got '{}'", start));
+  if (start == "rest")
+    options.start = RunupStart::rest;
+  else if (start == "equilibrium")
+    options.start = RunupStart::equilibrium;
+  else if (start == "steady")
+    options.start = RunupStart::steady_state;
+  else
+    throw Error(fmt::format("--start must be rest, equilibrium or steady, got '{}'", start));
   options.driven = request.drive.value_or(file.drive.value_or(false));
   if (options.driven && !model.drive)
     throw Error("runup: a torque-driven run needs a [drive] table in the model (its motor and load torques)");

@@ -55,7 +55,8 @@ SparseMatrix reduce(const Triplets& triplets, const Rows& rows, Index n) {
   reduced.reserve(triplets.size());
   for (const Eigen::Triplet<Real>& t : triplets)
     for (const auto& [a, ta] : rows[static_cast<std::size_t>(t.row())])
-      for (const auto& [b, tb] : rows[static_cast<std::size_t>(t.col())]) reduced.emplace_back(a, b, ta * tb * t.value());
+      for (const auto& [b, tb] : rows[static_cast<std::size_t>(t.col())])
+        reduced.emplace_back(a, b, ta * tb * t.value());
   SparseMatrix out(n, n);
   out.setFromTriplets(reduced.begin(), reduced.end());
   out.prune(0.0);
@@ -89,7 +90,9 @@ void Assembler::build_variable_scatter() {
   // Each local DOF i maps to the reduced DOFs of row i of T; a local entry (i, j)
   // touches every (a, b) with T(i, a)·T(j, b) ≠ 0.
   const Index n = dofs_.n_reduced();
-  auto row = [&](Index dof) -> const std::vector<std::pair<Index, Real>>& { return rows_[static_cast<std::size_t>(dof)]; };
+  auto row = [&](Index dof) -> const std::vector<std::pair<Index, Real>>& {
+    return rows_[static_cast<std::size_t>(dof)];
+  };
 
   std::vector<std::vector<Index>> element_dofs;
   Triplets pattern;

@@ -21,12 +21,16 @@ namespace {
 // Which family a local DOF belongs to: 0 axial, 1 torsion, 2 x–y plane, 3 x–z plane.
 int family_of(Index full_dof) {
   switch (static_cast<Dof>(full_dof % dofs_per_node)) {
-    case Dof::u: return 0;
-    case Dof::rx: return 1;
+    case Dof::u:
+      return 0;
+    case Dof::rx:
+      return 1;
     case Dof::v:
-    case Dof::rz: return 2;
+    case Dof::rz:
+      return 2;
     case Dof::w:
-    case Dof::ry: return 3;
+    case Dof::ry:
+      return 3;
   }
   return 0;
 }
@@ -72,8 +76,7 @@ std::string describe_plane_motion(const Model& model, const Vector& q, int famil
   const Real b = det > 0 ? (n * sxq - sx * sq) / det : 0.0;
   const Real a = (sq - b * sx) / n;
   const Real span = det > 0 ? std::sqrt(det) / n : 1.0;
-  if (std::abs(b) * span < 1e-6 * std::abs(a))
-    return fmt::format("translation along {}", axis);
+  if (std::abs(b) * span < 1e-6 * std::abs(a)) return fmt::format("translation along {}", axis);
   return fmt::format("rotation about the {} axis through x = {:.4g} m", about, -a / b);
 }
 
@@ -136,13 +139,13 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
   // lose their accuracy. Said as such, rather than naming vibrations free motions.
   const Index most_rigid = 6 * connected_parts(K, M);
   if (expected > most_rigid)
-    throw ModelStructureError(fmt::format(
-        "the stiffness spans too many orders of magnitude to be resolved: {} motions have natural "
-        "frequencies below 1e-6 times the highest ({:.3g} Hz), more than the {} rigid-body motions "
-        "the model's parts can have; very short shaft elements (a fine mesh: the highest frequency "
-        "grows with the number of elements) or very stiff springs beside soft parts cause this; use "
-        "fewer, longer elements",
-        expected, std::sqrt(lambda_max) / (2 * pi), most_rigid));
+    throw ModelStructureError(
+        fmt::format("the stiffness spans too many orders of magnitude to be resolved: {} motions have natural "
+                    "frequencies below 1e-6 times the highest ({:.3g} Hz), more than the {} rigid-body motions "
+                    "the model's parts can have; very short shaft elements (a fine mesh: the highest frequency "
+                    "grows with the number of elements) or very stiff springs beside soft parts cause this; use "
+                    "fewer, longer elements",
+                    expected, std::sqrt(lambda_max) / (2 * pi), most_rigid));
 
   Eigen::SimplicialLDLT<SparseMatrix> shifted(K + shift * M);
   if (shifted.info() != Eigen::Success)
@@ -162,8 +165,7 @@ Matrix stiffness_null_space(const SparseMatrix& K_in, const SparseMatrix& M) {
     }
     const Matrix kr = X.transpose() * (K * X);
     const Matrix mr = X.transpose() * (M * X);
-    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(0.5 * (kr + kr.transpose()),
-                                                          0.5 * (mr + mr.transpose()));
+    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(0.5 * (kr + kr.transpose()), 0.5 * (mr + mr.transpose()));
     Index n_null = 0;
     while (n_null < p && ritz.eigenvalues()(n_null) < tol) ++n_null;
     if (n_null < p || p == n) return X * ritz.eigenvectors().leftCols(n_null);
@@ -243,16 +245,16 @@ void check_model(const Model& model, const Assembler& assembler) {
     if (sys.M.coeff(i, i) > 0.0) continue;
     const Index full = dofs.full_dof(i);
     const Index node = full / dofs_per_node;
-    throw ModelStructureError(
-        fmt::format("the mass matrix is singular: node {} has no mass in DOF {}; attach a rigid "
-                    "body or a shaft to it, or fix or link that DOF",
-                    model.node_label(node), dof_name(static_cast<Dof>(full % dofs_per_node))),
-        node);
+    throw ModelStructureError(fmt::format("the mass matrix is singular: node {} has no mass in DOF {}; attach a rigid "
+                                          "body or a shaft to it, or fix or link that DOF",
+                                          model.node_label(node), dof_name(static_cast<Dof>(full % dofs_per_node))),
+                              node);
   }
   Eigen::SimplicialLLT<SparseMatrix> llt(sys.M);
   if (llt.info() != Eigen::Success)
-    throw ModelStructureError("the mass matrix is not positive definite (check the rigid-body "
-                              "inertias and densities)");
+    throw ModelStructureError(
+        "the mass matrix is not positive definite (check the rigid-body "
+        "inertias and densities)");
 
   std::vector<std::string> problems;
   std::vector<std::string> names;
@@ -270,12 +272,11 @@ void check_model(const Model& model, const Assembler& assembler) {
   if (problems.empty()) return;
   std::vector<std::string> quoted;
   for (const auto& n : names) quoted.push_back(fmt::format("\"{}\"", n));
-  throw ModelStructureError(
-      fmt::format("the stiffness matrix is singular after constraints: free rigid-body motion: "
-                  "{}. Hold it with springs or fixed DOFs, or allow it with [options] "
-                  "free_motions = [{}]",
-                  fmt::join(problems, "; "), fmt::join(quoted, ", ")),
-      first_node);
+  throw ModelStructureError(fmt::format("the stiffness matrix is singular after constraints: free rigid-body motion: "
+                                        "{}. Hold it with springs or fixed DOFs, or allow it with [options] "
+                                        "free_motions = [{}]",
+                                        fmt::join(problems, "; "), fmt::join(quoted, ", ")),
+                            first_node);
 }
 
 }  // namespace feran

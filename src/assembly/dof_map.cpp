@@ -21,12 +21,10 @@ DofMap::DofMap(const Model& model) : n_full_(model.n_dofs()) {
   for (const RigidLink& link : model.links)
     for (Index f : link.followers) {
       if (f == link.leader)
-        throw ModelStructureError(
-            fmt::format("node {} cannot follow itself in a rigid link", model.node_label(f)), f);
+        throw ModelStructureError(fmt::format("node {} cannot follow itself in a rigid link", model.node_label(f)), f);
       if (leader[static_cast<std::size_t>(f)] >= 0)
-        throw ModelStructureError(fmt::format("node {} follows two rigid links; join them into one",
-                                              model.node_label(f)),
-                                  f);
+        throw ModelStructureError(
+            fmt::format("node {} follows two rigid links; join them into one", model.node_label(f)), f);
       leader[static_cast<std::size_t>(f)] = link.leader;
     }
   // Resolve chains (a leader that follows another node) to the ultimate leader,
@@ -36,8 +34,7 @@ DofMap::DofMap(const Model& model) : n_full_(model.n_dofs()) {
     while (leader[static_cast<std::size_t>(r)] >= 0) {
       r = leader[static_cast<std::size_t>(r)];
       if (++steps > n_nodes)
-        throw ModelStructureError(
-            fmt::format("rigid links form a loop through node {}", model.node_label(node)), node);
+        throw ModelStructureError(fmt::format("rigid links form a loop through node {}", model.node_label(node)), node);
     }
     return r;
   };
@@ -47,11 +44,10 @@ DofMap::DofMap(const Model& model) : n_full_(model.n_dofs()) {
     for (int d = 0; d < dofs_per_node; ++d) {
       if (!f.dofs[static_cast<std::size_t>(d)]) continue;
       if (leader[static_cast<std::size_t>(f.node)] >= 0)
-        throw ModelStructureError(
-            fmt::format("node {} follows a rigid link, so its DOFs cannot be fixed; fix the "
-                        "link's first node instead",
-                        model.node_label(f.node)),
-            f.node);
+        throw ModelStructureError(fmt::format("node {} follows a rigid link, so its DOFs cannot be fixed; fix the "
+                                              "link's first node instead",
+                                              model.node_label(f.node)),
+                                  f.node);
       fixed[static_cast<std::size_t>(dofs_per_node * f.node + d)] = true;
     }
   }
@@ -74,9 +70,7 @@ DofMap::DofMap(const Model& model) : n_full_(model.n_dofs()) {
     if (leader[static_cast<std::size_t>(node)] < 0) continue;
     const Index l = root(node);
     const Real d = model.nodes[static_cast<std::size_t>(node)].x - model.nodes[static_cast<std::size_t>(l)].x;
-    auto row_of = [&](Index n, Dof dof) -> const Row& {
-      return rows[static_cast<std::size_t>(global_dof(n, dof))];
-    };
+    auto row_of = [&](Index n, Dof dof) -> const Row& { return rows[static_cast<std::size_t>(global_dof(n, dof))]; };
     auto& r = rows;
     auto at = [&](Dof dof) -> Row& { return r[static_cast<std::size_t>(global_dof(node, dof))]; };
     for (Dof dof : {Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz}) at(dof) = row_of(l, dof);
@@ -86,14 +80,11 @@ DofMap::DofMap(const Model& model) : n_full_(model.n_dofs()) {
 
   std::vector<Eigen::Triplet<Real>> triplets;
   for (Index full = 0; full < n_full_; ++full)
-    for (const auto& [col, value] : rows[static_cast<std::size_t>(full)])
-      triplets.emplace_back(full, col, value);
+    for (const auto& [col, value] : rows[static_cast<std::size_t>(full)]) triplets.emplace_back(full, col, value);
   T_.resize(n_full_, n_reduced());
   T_.setFromTriplets(triplets.begin(), triplets.end());
 }
 
-ComplexVector DofMap::expand(const ComplexVector& reduced) const {
-  return T_.cast<Complex>() * reduced;
-}
+ComplexVector DofMap::expand(const ComplexVector& reduced) const { return T_.cast<Complex>() * reduced; }
 
 }  // namespace feran

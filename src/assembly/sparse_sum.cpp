@@ -54,11 +54,11 @@ void SparseSum::evaluate(const std::vector<Real>& c, const std::vector<const Spa
                          SparseMatrix& out) const {
   if (c.size() != where_.size() || terms.size() != where_.size())
     throw Error("SparseSum::evaluate: not the terms it was built for");
-  const bool same_pattern = out.rows() == pattern_.rows() && out.cols() == pattern_.cols() && out.isCompressed() &&
-                            out.nonZeros() == pattern_.nonZeros() &&
-                            std::equal(out.innerIndexPtr(), out.innerIndexPtr() + out.nonZeros(), pattern_.innerIndexPtr()) &&
-                            std::equal(out.outerIndexPtr(), out.outerIndexPtr() + out.outerSize() + 1,
-                                       pattern_.outerIndexPtr());
+  const bool same_pattern =
+      out.rows() == pattern_.rows() && out.cols() == pattern_.cols() && out.isCompressed() &&
+      out.nonZeros() == pattern_.nonZeros() &&
+      std::equal(out.innerIndexPtr(), out.innerIndexPtr() + out.nonZeros(), pattern_.innerIndexPtr()) &&
+      std::equal(out.outerIndexPtr(), out.outerIndexPtr() + out.outerSize() + 1, pattern_.outerIndexPtr());
   if (!same_pattern) out = pattern_;
   Real* v = out.valuePtr();
   std::fill(v, v + out.nonZeros(), 0.0);
@@ -67,7 +67,8 @@ void SparseSum::evaluate(const std::vector<Real>& c, const std::vector<const Spa
     if (terms[k]->nonZeros() != static_cast<Index>(where.size()))
       throw Error("SparseSum::evaluate: a term's pattern changed");
     const Real ck = c[k];
-    for_each_entry(*terms[k], [&](Index e, Index, Index, Real value) { v[where[static_cast<std::size_t>(e)]] += ck * value; });
+    for_each_entry(*terms[k],
+                   [&](Index e, Index, Index, Real value) { v[where[static_cast<std::size_t>(e)]] += ck * value; });
   }
 }
 

@@ -53,7 +53,8 @@ std::vector<Index> optimal_assignment(const Matrix& cost) {
   }
   std::vector<Index> row_to_col(static_cast<std::size_t>(n), -1);
   for (Index j = 1; j <= m; ++j)
-    if (match[static_cast<std::size_t>(j)] > 0) row_to_col[static_cast<std::size_t>(match[static_cast<std::size_t>(j)] - 1)] = j - 1;
+    if (match[static_cast<std::size_t>(j)] > 0)
+      row_to_col[static_cast<std::size_t>(match[static_cast<std::size_t>(j)] - 1)] = j - 1;
   return row_to_col;
 }
 

@@ -138,7 +138,8 @@ void BandedLU::add(Real c, const SparseMatrix& S) {
 }
 
 std::vector<Index> BandedLU::positions(const SparseMatrix& S) const {
-  if (S.rows() != n_ || S.cols() != n_ || !S.isCompressed()) throw Error("BandedLU::positions: a matrix of another size, or not compressed");
+  if (S.rows() != n_ || S.cols() != n_ || !S.isCompressed())
+    throw Error("BandedLU::positions: a matrix of another size, or not compressed");
   std::vector<Index> out;
   out.reserve(static_cast<std::size_t>(S.nonZeros()));
   for (Index k = 0; k < S.outerSize(); ++k)
@@ -232,8 +233,8 @@ void substitute_fixed(const Real* a, const Real* inverse, Index n, Real* y) {
     const Real yk = y[k] - owed[0];
     y[k] = yk;
     const Real* l = a + (k * ld + B + 1) * S;
-    for (int i = 0; i < B - 1; ++i) owed[i] = owed[i + 1] + l[i * S] * yk;
-    owed[B - 1] = l[(B - 1) * S] * yk;
+    for (Index i = 0; i < B - 1; ++i) owed[i] = owed[i + 1] + l[i * S] * yk;
+    owed[B - 1] = l[Index{B - 1} * S] * yk;
   }
   for (int i = 0; i < B && k + i < n; ++i) y[k + i] -= owed[i];
   for (; k < n; ++k) {
@@ -247,7 +248,7 @@ void substitute_fixed(const Real* a, const Real* inverse, Index n, Real* y) {
     const Real* ck = a + k * ld * S;
     const Real xk = (y[k] - owed[0]) * inverse[k * S];
     y[k] = xk;
-    for (int i = 0; i < B - 1; ++i) owed[i] = owed[i + 1] + ck[(B - 1 - i) * S] * xk;
+    for (Index i = 0; i < B - 1; ++i) owed[i] = owed[i + 1] + ck[(B - 1 - i) * S] * xk;
     owed[B - 1] = ck[0] * xk;
   }
   for (int i = 0; i < B && k - i >= 0; ++i) y[k - i] -= owed[i];
@@ -480,8 +481,7 @@ auto aligned_lanes(Storage& storage) {
 
 unsigned BandedLU::factorize_lanes(const std::vector<Real>& A, const std::array<Real, lanes>& c,
                                    const std::vector<Real>& B, const std::vector<LaneAddition>& additions) {
-  if (A.size() != a_.size() || B.size() != a_.size())
-    throw Error("BandedLU::factorize_lanes: values of another band");
+  if (A.size() != a_.size() || B.size() != a_.size()) throw Error("BandedLU::factorize_lanes: values of another band");
   for (std::size_t e = 0; e < additions.size(); ++e)
     if (additions[e].position < 0 || additions[e].position >= static_cast<Index>(a_.size()) ||
         (e > 0 && additions[e].position < additions[e - 1].position))
@@ -490,8 +490,8 @@ unsigned BandedLU::factorize_lanes(const std::vector<Real>& A, const std::array<
   lane_inverse_.resize(static_cast<std::size_t>(n_ + 1) * lanes);
   LaneVector* values = aligned_lanes(lane_values_);
   LaneVector* inverse = aligned_lanes(lane_inverse_);
-  LaneSource source{A.data(), B.data(), LaneVector{c[0], c[1], c[2], c[3]}, additions.data(),
-                    additions.data() + additions.size(), 0};
+  LaneSource source{
+      A.data(), B.data(), LaneVector{c[0], c[1], c[2], c[3]}, additions.data(), additions.data() + additions.size(), 0};
   LaneBits good = ~LaneBits{};
   for (const Block& blk : blocks_) {
     source.A = A.data() + blk.offset;
@@ -612,7 +612,8 @@ bool complex_factorize(Complex* ab, Index n, Index b_run, int* pivots, Complex* 
 }
 
 template <int B>
-void complex_substitute(const Complex* ab, Index n, Index b_run, const int* pivots, const Complex* inverse, Complex* x) {
+void complex_substitute(const Complex* ab, Index n, Index b_run, const int* pivots, const Complex* inverse,
+                        Complex* x) {
   const Index b = B > 0 ? B : b_run, ld = 3 * b + 1, kv = 2 * b;
   Real* y = reinterpret_cast<Real*>(x);
   for (Index j = 0; j < n; ++j) {  // L·y = P·b, unit diagonal
@@ -644,8 +645,7 @@ void complex_substitute(const Complex* ab, Index n, Index b_run, const int* pivo
 template <std::size_t... I>
 constexpr auto complex_factor_kernels(std::index_sequence<I...>) {
   return std::array<bool (*)(Complex*, Index, Index, int*, Complex*, const Complex*, const int*, const Index*),
-                    sizeof...(I)>{
-      &complex_factorize<static_cast<int>(I)>...};
+                    sizeof...(I)>{&complex_factorize<static_cast<int>(I)>...};
 }
 template <std::size_t... I>
 constexpr auto complex_substitute_kernels(std::index_sequence<I...>) {
@@ -719,8 +719,8 @@ bool ComplexBandedLU::factorize(const ComplexSparse& A) {
   const std::size_t kernel = b_ <= fixed_bands ? static_cast<std::size_t>(b_) : 0;
   if (n_ == 0) return true;
   if (order_.empty())
-    return complex_factor[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), A.valuePtr(),
-                                  A.outerIndexPtr(), positions_.data());
+    return complex_factor[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), A.valuePtr(), A.outerIndexPtr(),
+                                  positions_.data());
   for (std::size_t k = 0; k < gather_.size(); ++k) values_[k] = A.valuePtr()[gather_[k]];
   return complex_factor[kernel](ab_.data(), n_, b_, pivots_.data(), inverse_.data(), values_.data(), starts_.data(),
                                 positions_.data());

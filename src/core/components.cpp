@@ -6,8 +6,7 @@
 
 namespace feran {
 
-std::vector<Index> connected_components(Index n, const std::vector<const SparseMatrix*>& patterns,
-                                        bool nonzero_only) {
+std::vector<Index> connected_components(Index n, const std::vector<const SparseMatrix*>& patterns, bool nonzero_only) {
   std::vector<Index> parent(static_cast<std::size_t>(n));
   for (Index i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
   const auto root = [&](Index i) {

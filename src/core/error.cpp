@@ -16,7 +16,6 @@ ModelError::ModelError(SourceLocation where, const std::string& message)
     : Error(format_location(where, message)), where_(std::move(where)), message_(message) {}
 
 SpecError::SpecError(std::string path, const std::string& message)
-    : Error(path.empty() ? message : fmt::format("{}: {}", path, message)), path_(std::move(path)),
-      message_(message) {}
+    : Error(path.empty() ? message : fmt::format("{}: {}", path, message)), path_(std::move(path)), message_(message) {}
 
 }  // namespace feran

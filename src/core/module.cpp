@@ -37,9 +37,11 @@ std::vector<std::string> module_directories() {
   std::string relative;
   if (!here.empty()) {
     std::error_code error;
-    relative = std::filesystem::weakly_canonical(std::filesystem::path(here) / FERAN_MODULE_RELATIVE_DIR, error).string();
+    relative =
+        std::filesystem::weakly_canonical(std::filesystem::path(here) / FERAN_MODULE_RELATIVE_DIR, error).string();
   }
-  for (const std::string& dir : {here, relative, std::string(FERAN_MODULE_INSTALL_DIR), std::string(FERAN_MODULE_BUILD_DIR)})
+  for (const std::string& dir :
+       {here, relative, std::string(FERAN_MODULE_INSTALL_DIR), std::string(FERAN_MODULE_BUILD_DIR)})
     if (!dir.empty() && std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) dirs.push_back(dir);
   return dirs;
 }

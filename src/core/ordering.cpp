@@ -112,9 +112,8 @@ std::vector<Index> reverse_cuthill_mckee(const std::vector<std::vector<Index>>& 
       adjacent.clear();
       for (const Index j : graph[static_cast<std::size_t>(order[k])])
         if (mark[static_cast<std::size_t>(j)] >= 0) adjacent.push_back(j);
-      std::sort(adjacent.begin(), adjacent.end(), [&](Index a, Index b) {
-        return degree(a) != degree(b) ? degree(a) < degree(b) : a < b;
-      });
+      std::sort(adjacent.begin(), adjacent.end(),
+                [&](Index a, Index b) { return degree(a) != degree(b) ? degree(a) < degree(b) : a < b; });
       for (const Index j : adjacent) {
         mark[static_cast<std::size_t>(j)] = -1;
         order.push_back(j);
@@ -128,8 +127,7 @@ std::vector<Index> reverse_cuthill_mckee(const std::vector<std::vector<Index>>& 
 Index ordered_bandwidth(const std::vector<std::vector<Index>>& graph, const std::vector<Index>& position_of) {
   Index b = 0;
   for (std::size_t i = 0; i < graph.size(); ++i)
-    for (const Index j : graph[i])
-      b = std::max(b, std::abs(position_of[i] - position_of[static_cast<std::size_t>(j)]));
+    for (const Index j : graph[i]) b = std::max(b, std::abs(position_of[i] - position_of[static_cast<std::size_t>(j)]));
   return b;
 }
 

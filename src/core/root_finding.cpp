@@ -7,8 +7,8 @@
 namespace feran {
 
 // Brent (1973), "Algorithms for Minimization without Derivatives", ch. 4 (zero).
-RootResult brent_root(const std::function<Real(Real)>& f, Real a, Real b, Real fa, Real fb,
-                      Real x_tol, int max_evaluations) {
+RootResult brent_root(const std::function<Real(Real)>& f, Real a, Real b, Real fa, Real fb, Real x_tol,
+                      int max_evaluations) {
   RootResult r;
   if (fa == 0.0) return {a, fa, 0, true};
   if (fb == 0.0) return {b, fb, 0, true};
@@ -47,8 +47,10 @@ RootResult brent_root(const std::function<Real(Real)>& f, Real a, Real b, Real f
         p = s * (2.0 * m * qa * (qa - rr) - (b - a) * (rr - 1.0));
         q = (qa - 1.0) * (rr - 1.0) * (s - 1.0);
       }
-      if (p > 0) q = -q;
-      else p = -p;
+      if (p > 0)
+        q = -q;
+      else
+        p = -p;
       if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
         e = d;
         d = p / q;

@@ -59,11 +59,9 @@ std::size_t edit_distance_at_most(std::string_view a, std::string_view b, std::s
   return std::min(row[b.size()], over);
 }
 
-std::optional<std::string> closest_match(std::string_view word,
-                                         const std::vector<std::string>& candidates,
+std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates,
                                          std::size_t max_distance) {
-  if (std::find(candidates.begin(), candidates.end(), word) != candidates.end())
-    return std::nullopt;
+  if (std::find(candidates.begin(), candidates.end(), word) != candidates.end()) return std::nullopt;
   const std::string word_lower = lower(word);
   for (const std::string& c : candidates)
     if (lower(c) == word_lower) return c;
@@ -80,8 +78,7 @@ std::optional<std::string> closest_match(std::string_view word,
   return best;
 }
 
-std::string join_list(const std::vector<std::string>& items, std::string_view conjunction,
-                      char quote) {
+std::string join_list(const std::vector<std::string>& items, std::string_view conjunction, char quote) {
   std::string out;
   for (std::size_t i = 0; i < items.size(); ++i) {
     if (i > 0) {
@@ -114,8 +111,7 @@ std::string number_ranges(std::vector<int> numbers) {
 }
 
 bool all_digits(std::string_view s) {
-  return !s.empty() &&
-         std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 }  // namespace feran::detail

@@ -13,11 +13,20 @@ std::string printable(std::string_view text, bool keep_newlines) {
       out += '\n';
     } else if (c < 0x20 || c == 0x7f) {
       switch (c) {
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        case 0x1b: out += "\\e"; break;
-        default: out += fmt::format("\\x{:02x}", c);
+        case '\n':
+          out += "\\n";
+          break;
+        case '\r':
+          out += "\\r";
+          break;
+        case '\t':
+          out += "\\t";
+          break;
+        case 0x1b:
+          out += "\\e";
+          break;
+        default:
+          out += fmt::format("\\x{:02x}", c);
       }
     } else if (c == 0xc2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
                static_cast<unsigned char>(text[i + 1]) <= 0x9f) {

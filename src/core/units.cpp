@@ -24,45 +24,98 @@ struct KindDef {
   std::string_view noun;          ///< "length"
   std::string_view si_example;
   std::string_view unit_example;
-  std::vector<UnitDef> units;     ///< SI unit first
-  PhysicalRange range;            ///< in SI
+  std::vector<UnitDef> units;  ///< SI unit first
+  PhysicalRange range;         ///< in SI
 };
 
 const std::vector<KindDef>& kinds() {
   static const std::vector<KindDef> table = {
-      {Quantity::length, "a length", "length", "0.068", "68 mm",
-       {{"m"}, {"mm", 1.0, 1e3}, {"cm", 1.0, 1e2}, {"um", 1.0, 1e6}}, {1e4, 1e-9}},
+      {Quantity::length,
+       "a length",
+       "length",
+       "0.068",
+       "68 mm",
+       {{"m"}, {"mm", 1.0, 1e3}, {"cm", 1.0, 1e2}, {"um", 1.0, 1e6}},
+       {1e4, 1e-9}},
       {Quantity::mass, "a mass", "mass", "1.93", "1.93 kg", {{"kg"}, {"g", 1.0, 1e3}}, {1e9, 1e-12}},
-      {Quantity::inertia, "a moment of inertia", "moment of inertia", "0.0063",
-       "6300 kg*mm^2", {{"kg*m^2"}, {"kg*mm^2", 1.0, 1e6}}, {1e12, 1e-18}},
-      {Quantity::pressure, "a pressure", "pressure", "2.1e11", "210 GPa",
-       {{"Pa"}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}, {"N/mm^2", 1e6}}, {1e13, 1e-3}},
-      {Quantity::density, "a density", "density", "7850", "7.85 g/cm^3",
-       {{"kg/m^3"}, {"g/cm^3", 1e3}}, {1e6, 1e-3}},
-      {Quantity::stiffness, "a stiffness", "stiffness", "6e7", "6e7 N/m",
-       {{"N/m"}, {"kN/m", 1e3}, {"MN/m", 1e6}, {"N/mm", 1e3}, {"kN/mm", 1e6}}, {1e15, 1e-12}},
-      {Quantity::rotational_stiffness, "a rotational stiffness", "rotational stiffness", "180",
-       "180 N*m/rad", {{"N*m/rad"}, {"Nm/rad"}, {"N*m"}}, {1e15, 1e-12}},
-      {Quantity::damping, "a damping coefficient", "damping", "75", "75 N*s/m",
-       {{"N*s/m"}, {"Ns/m"}, {"kN*s/m", 1e3}}, {1e12, 1e-12}},
-      {Quantity::rotational_damping, "a rotational damping coefficient", "rotational damping",
-       "0.06", "0.06 N*m*s/rad", {{"N*m*s/rad"}, {"Nms/rad"}, {"N*m*s"}, {"Nms"}}, {1e12, 1e-12}},
-      {Quantity::speed, "a speed", "speed", "188.5", "30 Hz",
-       {{"rad/s"}, {"Hz", 2.0 * pi}, {"rpm", 2.0 * pi, 60.0}}, {1e6, 1e-9}},
+      {Quantity::inertia,
+       "a moment of inertia",
+       "moment of inertia",
+       "0.0063",
+       "6300 kg*mm^2",
+       {{"kg*m^2"}, {"kg*mm^2", 1.0, 1e6}},
+       {1e12, 1e-18}},
+      {Quantity::pressure,
+       "a pressure",
+       "pressure",
+       "2.1e11",
+       "210 GPa",
+       {{"Pa"}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}, {"N/mm^2", 1e6}},
+       {1e13, 1e-3}},
+      {Quantity::density, "a density", "density", "7850", "7.85 g/cm^3", {{"kg/m^3"}, {"g/cm^3", 1e3}}, {1e6, 1e-3}},
+      {Quantity::stiffness,
+       "a stiffness",
+       "stiffness",
+       "6e7",
+       "6e7 N/m",
+       {{"N/m"}, {"kN/m", 1e3}, {"MN/m", 1e6}, {"N/mm", 1e3}, {"kN/mm", 1e6}},
+       {1e15, 1e-12}},
+      {Quantity::rotational_stiffness,
+       "a rotational stiffness",
+       "rotational stiffness",
+       "180",
+       "180 N*m/rad",
+       {{"N*m/rad"}, {"Nm/rad"}, {"N*m"}},
+       {1e15, 1e-12}},
+      {Quantity::damping,
+       "a damping coefficient",
+       "damping",
+       "75",
+       "75 N*s/m",
+       {{"N*s/m"}, {"Ns/m"}, {"kN*s/m", 1e3}},
+       {1e12, 1e-12}},
+      {Quantity::rotational_damping,
+       "a rotational damping coefficient",
+       "rotational damping",
+       "0.06",
+       "0.06 N*m*s/rad",
+       {{"N*m*s/rad"}, {"Nms/rad"}, {"N*m*s"}, {"Nms"}},
+       {1e12, 1e-12}},
+      {Quantity::speed,
+       "a speed",
+       "speed",
+       "188.5",
+       "30 Hz",
+       {{"rad/s"}, {"Hz", 2.0 * pi}, {"rpm", 2.0 * pi, 60.0}},
+       {1e6, 1e-9}},
       {Quantity::frequency, "a frequency", "frequency", "3.98", "3.98 Hz", {{"Hz"}}, {1e6, 1e-9}},
       {Quantity::angle, "an angle", "angle", "0.5236", "30 deg", {{"rad"}, {"deg", pi, 180.0}}, {1e4, 0.0}},
       {Quantity::force, "a force", "force", "5.2", "5.2 N", {{"N"}, {"kN", 1e3}}, {1e12, 1e-12}},
       {Quantity::moment, "a moment", "moment", "0.1", "0.1 N*m", {{"N*m"}, {"Nm"}}, {1e12, 1e-12}},
       {Quantity::time, "a time", "time", "0.001", "1 ms", {{"s"}, {"ms", 1.0, 1e3}}, {1e8, 1e-12}},
-      {Quantity::velocity, "a velocity", "velocity", "1e-4", "0.1 mm/s",
-       {{"m/s"}, {"mm/s", 1.0, 1e3}}, {1e4, 1e-15}},
-      {Quantity::angular_velocity, "an angular velocity", "angular velocity", "0.001",
-       "0.001 rad/s", {{"rad/s"}}, {1e6, 1e-15}},
+      {Quantity::velocity, "a velocity", "velocity", "1e-4", "0.1 mm/s", {{"m/s"}, {"mm/s", 1.0, 1e3}}, {1e4, 1e-15}},
+      {Quantity::angular_velocity,
+       "an angular velocity",
+       "angular velocity",
+       "0.001",
+       "0.001 rad/s",
+       {{"rad/s"}},
+       {1e6, 1e-15}},
       {Quantity::inverse_time, "a rate", "rate", "0.5", "0.5 1/s", {{"1/s"}}, {1e9, 1e-15}},
-      {Quantity::acceleration, "an acceleration", "acceleration", "9.81", "9.81 m/s^2",
-       {{"m/s^2"}, {"mm/s^2", 1.0, 1e3}}, {1e7, 1e-9}},
-      {Quantity::viscosity, "a viscosity", "viscosity", "0.1", "0.1 Pa*s",
-       {{"Pa*s"}, {"mPa*s", 1.0, 1e3}, {"cP", 1.0, 1e3}}, {1e6, 1e-9}},
+      {Quantity::acceleration,
+       "an acceleration",
+       "acceleration",
+       "9.81",
+       "9.81 m/s^2",
+       {{"m/s^2"}, {"mm/s^2", 1.0, 1e3}},
+       {1e7, 1e-9}},
+      {Quantity::viscosity,
+       "a viscosity",
+       "viscosity",
+       "0.1",
+       "0.1 Pa*s",
+       {{"Pa*s"}, {"mPa*s", 1.0, 1e3}, {"cP", 1.0, 1e3}},
+       {1e6, 1e-9}},
   };
   return table;
 }
@@ -84,21 +137,18 @@ std::string_view trim(std::string_view s) {
 bool iequal(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::tolower(static_cast<unsigned char>(a[i])) !=
-        std::tolower(static_cast<unsigned char>(b[i])))
-      return false;
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
   return true;
 }
-
 
 // The SI prefixes (the BIPM's SI Brochure, 9th ed., table 7), each a power of ten.
 struct Prefix {
   std::string_view symbol;
   int power;
 };
-constexpr Prefix si_prefixes[] = {{"da", 1}, {"Y", 24}, {"Z", 21}, {"E", 18}, {"P", 15}, {"T", 12}, {"G", 9},
-                                  {"M", 6},  {"k", 3},  {"h", 2},   {"d", -1}, {"c", -2}, {"m", -3}, {"u", -6},
-                                  {"n", -9}, {"p", -12}, {"f", -15}, {"a", -18}};
+constexpr Prefix si_prefixes[] = {{"da", 1}, {"Y", 24}, {"Z", 21}, {"E", 18},  {"P", 15},  {"T", 12},
+                                  {"G", 9},  {"M", 6},  {"k", 3},  {"h", 2},   {"d", -1},  {"c", -2},
+                                  {"m", -3}, {"u", -6}, {"n", -9}, {"p", -12}, {"f", -15}, {"a", -18}};
 
 // The units an SI prefix may stand before: those whose first factor is a coherent SI
 // unit or the gram (not kg, rpm, deg, cP, nor an already prefixed one), without an
@@ -214,14 +264,12 @@ std::string normalize_unit(std::string_view unit) {
   return out;
 }
 
-
 std::optional<Real> to_si(Quantity kind, Real value, std::string_view unit) {
   const auto found = find_unit(kind, normalize_unit(unit));
   if (!found) return std::nullopt;
   const auto& [u, power] = *found;
   // Sub-multiples divide, so that "68 mm" and "68 nm" give the nearest doubles.
-  return power >= 0 ? value * (u.multiply * ten_to(power)) / u.divide
-                    : value * u.multiply / (u.divide * ten_to(power));
+  return power >= 0 ? value * (u.multiply * ten_to(power)) / u.divide : value * u.multiply / (u.divide * ten_to(power));
 }
 
 std::optional<Real> from_si(Quantity kind, Real si, std::string_view unit) {
@@ -234,8 +282,7 @@ std::optional<Real> from_si(Quantity kind, Real si, std::string_view unit) {
 std::string format_quantity(Real si, Quantity kind, std::string_view unit) {
   if (!unit.empty())
     if (const auto value = from_si(kind, si, unit))
-      if (std::isfinite(*value) && to_si(kind, *value, unit) == si)
-        return fmt::format("{} {}", *value, unit);
+      if (std::isfinite(*value) && to_si(kind, *value, unit) == si) return fmt::format("{} {}", *value, unit);
   return fmt::format("{} {}", si, si_unit(kind));
 }
 
@@ -247,13 +294,12 @@ std::string approximate_quantity(Real si, Quantity kind, std::string_view unit) 
 }
 
 std::string must_be_quantity(std::string_view name, Quantity kind) {
-  return fmt::format("'{}' must be {} (a number in {}, or a string such as \"{}\")", name,
-                     quantity_name(kind), si_unit(kind), unit_example(kind));
+  return fmt::format("'{}' must be {} (a number in {}, or a string such as \"{}\")", name, quantity_name(kind),
+                     si_unit(kind), unit_example(kind));
 }
 
 std::string expected_quantity(Quantity kind) {
-  return fmt::format("{}, e.g. {} or \"{}\"", quantity_name(kind), si_example(kind),
-                     unit_example(kind));
+  return fmt::format("{}, e.g. {} or \"{}\"", quantity_name(kind), si_example(kind), unit_example(kind));
 }
 
 std::optional<QuantityText> split_quantity(std::string_view text) {
@@ -275,8 +321,7 @@ std::optional<QuantityText> split_quantity(std::string_view text) {
   if (ec == std::errc::result_out_of_range) {
     // Too large is not finite (rejected by the callers); too small is zero.
     const std::string_view number(first, static_cast<std::size_t>(ptr - first));
-    const bool underflow = number.find("e-") != std::string_view::npos ||
-                           number.find("E-") != std::string_view::npos;
+    const bool underflow = number.find("e-") != std::string_view::npos || number.find("E-") != std::string_view::npos;
     value = underflow ? 0.0 : HUGE_VAL;
   }
   QuantityText out;
@@ -288,8 +333,7 @@ std::optional<QuantityText> split_quantity(std::string_view text) {
 std::string unit_hint(Quantity kind, std::string_view unit) {
   const std::string normalized = normalize_unit(unit);
   for (const UnitDef& u : kind_def(kind).units)
-    if (iequal(u.name, normalized))
-      return fmt::format("units are case-sensitive: did you mean '{}'?", u.name);
+    if (iequal(u.name, normalized)) return fmt::format("units are case-sensitive: did you mean '{}'?", u.name);
   std::string nouns;
   for (const KindDef& k : kinds()) {
     if (k.kind == kind) continue;
@@ -307,19 +351,16 @@ Real parse_quantity(std::string_view text, Quantity kind) {
     throw QuantityError(QuantityError::Reason::not_a_number, kind, written, {},
                         fmt::format("\"{}\" is not {} (expected a number in {}, or a number "
                                     "with a unit such as \"{}\")",
-                                    written, quantity_name(kind), si_unit(kind),
-                                    unit_example(kind)));
+                                    written, quantity_name(kind), si_unit(kind), unit_example(kind)));
   if (!std::isfinite(parts->value))
     throw QuantityError(QuantityError::Reason::not_finite, kind, written, {},
                         fmt::format("\"{}\" is not a finite number", written));
   if (parts->unit.empty()) return parts->value;
   const auto si = to_si(kind, parts->value, parts->unit);
   if (!si) {
-    std::string message = fmt::format("\"{}\" has unit '{}', expected {} in {}", written,
-                                      parts->unit, quantity_name(kind),
-                                      accepted_units_text(kind));
-    if (const std::string hint = unit_hint(kind, parts->unit); !hint.empty())
-      message += fmt::format(" ({})", hint);
+    std::string message = fmt::format("\"{}\" has unit '{}', expected {} in {}", written, parts->unit,
+                                      quantity_name(kind), accepted_units_text(kind));
+    if (const std::string hint = unit_hint(kind, parts->unit); !hint.empty()) message += fmt::format(" ({})", hint);
     throw QuantityError(QuantityError::Reason::wrong_unit, kind, written, parts->unit, message);
   }
   return *si;

@@ -5,8 +5,7 @@ namespace feran {
 RigidBody::RigidBody(Index node, RigidBodyProperties props, bool rotating)
     : node_(node), props_(props), rotating_(rotating) {}
 
-RigidBodyProperties RigidBody::disk(Real density, Real outer_diameter, Real inner_diameter,
-                                    Real width) {
+RigidBodyProperties RigidBody::disk(Real density, Real outer_diameter, Real inner_diameter, Real width) {
   const Real ro2 = outer_diameter * outer_diameter / 4.0;
   const Real ri2 = inner_diameter * inner_diameter / 4.0;
   RigidBodyProperties p;
@@ -17,14 +16,12 @@ RigidBodyProperties RigidBody::disk(Real density, Real outer_diameter, Real inne
 }
 
 LocalMatrices RigidBody::local_matrices(const OperatingPoint& /*op*/) const {
-  constexpr auto u = static_cast<Index>(Dof::u), v = static_cast<Index>(Dof::v),
-                 w = static_cast<Index>(Dof::w), rx = static_cast<Index>(Dof::rx),
-                 ry = static_cast<Index>(Dof::ry), rz = static_cast<Index>(Dof::rz);
+  constexpr auto u = static_cast<Index>(Dof::u), v = static_cast<Index>(Dof::v), w = static_cast<Index>(Dof::w),
+                 rx = static_cast<Index>(Dof::rx), ry = static_cast<Index>(Dof::ry), rz = static_cast<Index>(Dof::rz);
   const Real m = props_.mass, e = props_.offset;
   LocalMatrices out;
   out.dofs.resize(dofs_per_node);
-  for (int d = 0; d < dofs_per_node; ++d)
-    out.dofs[static_cast<std::size_t>(d)] = dofs_per_node * node_ + d;
+  for (int d = 0; d < dofs_per_node; ++d) out.dofs[static_cast<std::size_t>(d)] = dofs_per_node * node_ + d;
 
   // Centre of mass moves by v + e·rz and w − e·ry; J_A is about the node.
   out.M = Matrix::Zero(dofs_per_node, dofs_per_node);

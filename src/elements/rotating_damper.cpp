@@ -4,8 +4,7 @@
 
 namespace feran {
 
-RotatingDamper::RotatingDamper(Index node_a, std::optional<Index> node_b,
-                               RotatingDamperCoefficients c)
+RotatingDamper::RotatingDamper(Index node_a, std::optional<Index> node_b, RotatingDamperCoefficients c)
     : node_a_(node_a), node_b_(node_b), c_(c) {}
 
 LocalMatrices RotatingDamper::local_matrices(const OperatingPoint& /*op*/) const {
@@ -33,10 +32,10 @@ LocalMatrices RotatingDamper::local_matrices(const OperatingPoint& /*op*/) const
   for (Index a = 0; a < n_nodes; ++a)
     for (Index b = 0; b < n_nodes; ++b) {
       const Real s = a == b ? 1.0 : -1.0;
-      out.Ci(dofs_per_node * a + static_cast<Index>(Dof::u),
-             dofs_per_node * b + static_cast<Index>(Dof::u)) += s * c_.axial;
-      out.Ci(dofs_per_node * a + static_cast<Index>(Dof::rx),
-             dofs_per_node * b + static_cast<Index>(Dof::rx)) += s * c_.torsional;
+      out.Ci(dofs_per_node * a + static_cast<Index>(Dof::u), dofs_per_node * b + static_cast<Index>(Dof::u)) +=
+          s * c_.axial;
+      out.Ci(dofs_per_node * a + static_cast<Index>(Dof::rx), dofs_per_node * b + static_cast<Index>(Dof::rx)) +=
+          s * c_.torsional;
     }
   return out;
 }

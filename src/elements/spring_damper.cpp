@@ -9,8 +9,8 @@
 namespace feran {
 
 namespace {
-Matrix six_by_six(const std::array<SpeedCoefficient, dofs_per_node>& direct,
-                  const SpeedCoefficient& yz, const SpeedCoefficient& zy, Real speed, Real frequency) {
+Matrix six_by_six(const std::array<SpeedCoefficient, dofs_per_node>& direct, const SpeedCoefficient& yz,
+                  const SpeedCoefficient& zy, Real speed, Real frequency) {
   Matrix m = Matrix::Zero(dofs_per_node, dofs_per_node);
   for (int d = 0; d < dofs_per_node; ++d) m(d, d) = direct[static_cast<std::size_t>(d)].at(speed, frequency);
   m(static_cast<Index>(Dof::v), static_cast<Index>(Dof::w)) = yz.at(speed, frequency);
@@ -27,22 +27,21 @@ Matrix relative(const Matrix& a, bool two_nodes) {
 }
 }  // namespace
 
-SpringDamper::SpringDamper(Index node_a, std::optional<Index> node_b,
-                           SpringDamperCoefficients coeffs)
+SpringDamper::SpringDamper(Index node_a, std::optional<Index> node_b, SpringDamperCoefficients coeffs)
     : node_a_(node_a), node_b_(node_b), coeffs_(std::move(coeffs)) {}
 
 bool SpringDamper::speed_dependent() const {
   auto varies = [](const SpeedCoefficient& c) { return !c.is_constant(); };
   return std::any_of(coeffs_.k.begin(), coeffs_.k.end(), varies) ||
-         std::any_of(coeffs_.c.begin(), coeffs_.c.end(), varies) || varies(coeffs_.kyz) ||
-         varies(coeffs_.kzy) || varies(coeffs_.cyz) || varies(coeffs_.czy);
+         std::any_of(coeffs_.c.begin(), coeffs_.c.end(), varies) || varies(coeffs_.kyz) || varies(coeffs_.kzy) ||
+         varies(coeffs_.cyz) || varies(coeffs_.czy);
 }
 
 bool SpringDamper::frequency_dependent() const {
   auto varies = [](const SpeedCoefficient& c) { return c.frequency_dependent(); };
   return std::any_of(coeffs_.k.begin(), coeffs_.k.end(), varies) ||
-         std::any_of(coeffs_.c.begin(), coeffs_.c.end(), varies) || varies(coeffs_.kyz) ||
-         varies(coeffs_.kzy) || varies(coeffs_.cyz) || varies(coeffs_.czy);
+         std::any_of(coeffs_.c.begin(), coeffs_.c.end(), varies) || varies(coeffs_.kyz) || varies(coeffs_.kzy) ||
+         varies(coeffs_.cyz) || varies(coeffs_.czy);
 }
 
 namespace {

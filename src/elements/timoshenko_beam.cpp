@@ -19,8 +19,8 @@ struct PlaneShapes {
 PlaneShapes plane_shapes(Real xi, Real L, Real p) {
   const Real s = 1.0 / (1.0 + p), x2 = xi * xi, x3 = x2 * xi;
   PlaneShapes n;
-  n.t << 1 - 3 * x2 + 2 * x3 + p * (1 - xi), L * (xi - 2 * x2 + x3 + p / 2 * (xi - x2)),
-      3 * x2 - 2 * x3 + p * xi, L * (-x2 + x3 - p / 2 * (xi - x2));
+  n.t << 1 - 3 * x2 + 2 * x3 + p * (1 - xi), L * (xi - 2 * x2 + x3 + p / 2 * (xi - x2)), 3 * x2 - 2 * x3 + p * xi,
+      L * (-x2 + x3 - p / 2 * (xi - x2));
   n.r << 6 / L * (x2 - xi), 1 - 4 * xi + 3 * x2 + p * (1 - xi), 6 / L * (xi - x2), -2 * xi + 3 * x2 + p * xi;
   n.dt << (-6 * xi + 6 * x2 - p) / L, 1 - 4 * xi + 3 * x2 + p / 2 * (1 - 2 * xi), (6 * xi - 6 * x2 + p) / L,
       -2 * xi + 3 * x2 - p / 2 * (1 - 2 * xi);
@@ -41,8 +41,8 @@ const GaussLegendre& element_rule() {
 
 }  // namespace
 
-TimoshenkoBeam::TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section,
-                               Material material, BeamOptions options)
+TimoshenkoBeam::TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section, Material material,
+                               BeamOptions options)
     : TimoshenkoBeam(node_a, node_b, length, section, section, std::move(material), options) {}
 
 TimoshenkoBeam::TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section_a,
@@ -70,8 +70,7 @@ Real TimoshenkoBeam::shear_coefficient(const CircularSection& section) const {
 Real TimoshenkoBeam::shear_parameter() const {
   if (!options_.shear_deformation) return 0.0;
   const CircularSection s = tapered() ? section_at(0.5) : section_;
-  return 12.0 * material_.E * s.second_moment() /
-         (shear_coefficient(s) * material_.G * s.area() * length_ * length_);
+  return 12.0 * material_.E * s.second_moment() / (shear_coefficient(s) * material_.G * s.area() * length_ * length_);
 }
 
 template <class F>
@@ -106,9 +105,9 @@ Matrix TimoshenkoBeam::bending_stiffness() const {
   const Real L = length_, phi = shear_parameter();
   const Real f = material_.E * section_.second_moment() / ((1.0 + phi) * L * L * L);
   Matrix k(4, 4);
-  k << 12, 6 * L, -12, 6 * L,                                   //
-      6 * L, (4 + phi) * L * L, -6 * L, (2 - phi) * L * L,      //
-      -12, -6 * L, 12, -6 * L,                                  //
+  k << 12, 6 * L, -12, 6 * L,                               //
+      6 * L, (4 + phi) * L * L, -6 * L, (2 - phi) * L * L,  //
+      -12, -6 * L, 12, -6 * L,                              //
       6 * L, (2 - phi) * L * L, -6 * L, (4 + phi) * L * L;
   return f * k;
 }
@@ -126,8 +125,8 @@ Matrix TimoshenkoBeam::bending_translational_mass() const {
   const Real m5 = (8 + 14 * p + 7 * p * p) * L * L;
   const Real m6 = -(6 + 14 * p + 7 * p * p) * L * L;
   Matrix m(4, 4);
-  m << m1, m2, m3, m4,  //
-      m2, m5, -m4, m6,  //
+  m << m1, m2, m3, m4,   //
+      m2, m5, -m4, m6,   //
       m3, -m4, m1, -m2,  //
       m4, m6, -m2, m5;
   return material_.rho * section_.area() * L / (840.0 * (1 + p) * (1 + p)) * m;
@@ -184,7 +183,7 @@ LocalMatrices TimoshenkoBeam::local_matrices(const OperatingPoint& /*op*/) const
   out.dofs.resize(n);
   for (int d = 0; d < dofs_per_node; ++d) {
     out.dofs[static_cast<std::size_t>(d)] = dofs_per_node * node_a_ + d;
-    out.dofs[static_cast<std::size_t>(d + dofs_per_node)] = dofs_per_node * node_b_ + d;
+    out.dofs[static_cast<std::size_t>(d) + dofs_per_node] = dofs_per_node * node_b_ + d;
   }
   out.K = Matrix::Zero(n, n);
   out.M = Matrix::Zero(n, n);

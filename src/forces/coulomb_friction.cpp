@@ -16,8 +16,8 @@ using Vec2 = Eigen::Vector2d;
 // s = Ṗ + Ω·J·P with J = [[0, 1], [−1, 0]] (from s = ṗ − jΩp in complex form).
 // Adds the force Bᵀ·F(s), F = −F0·s/√(|s|² + ε²), and its Jacobian into the local
 // arrays at offset @p o (node a) and, with @p two_nodes, o + 4 (node b, opposite).
-void add_pair(const Mat2& B, Real F0, Real eps, Real speed, const Vector& x, const Vector& v, Index o,
-              bool two_nodes, NonlinearForceValue& out) {
+void add_pair(const Mat2& B, Real F0, Real eps, Real speed, const Vector& x, const Vector& v, Index o, bool two_nodes,
+              NonlinearForceValue& out) {
   if (F0 == 0.0) return;
   Vec2 dx = B * x.segment<2>(o), dv = B * v.segment<2>(o);
   if (two_nodes) {

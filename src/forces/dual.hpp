@@ -53,31 +53,79 @@ struct Dual {
   }
 };
 
-template <int N> Dual<N> operator+(Dual<N> a, const Dual<N>& b) { return a += b; }
-template <int N> Dual<N> operator-(Dual<N> a, const Dual<N>& b) { return a -= b; }
-template <int N> Dual<N> operator*(Dual<N> a, const Dual<N>& b) { return a *= b; }
-template <int N> Dual<N> operator/(Dual<N> a, const Dual<N>& b) { return a /= b; }
-template <int N> Dual<N> operator+(Dual<N> a, Real b) { return a += Dual<N>(b); }
-template <int N> Dual<N> operator+(Real a, Dual<N> b) { return b += Dual<N>(a); }
-template <int N> Dual<N> operator-(Dual<N> a, Real b) { return a -= Dual<N>(b); }
-template <int N> Dual<N> operator-(Real a, const Dual<N>& b) { return Dual<N>(a) -= b; }
-template <int N> Dual<N> operator*(Dual<N> a, Real b) { return a *= Dual<N>(b); }
-template <int N> Dual<N> operator*(Real a, Dual<N> b) { return b *= Dual<N>(a); }
-template <int N> Dual<N> operator/(Dual<N> a, Real b) { return a /= Dual<N>(b); }
-template <int N> Dual<N> operator/(Real a, const Dual<N>& b) { return Dual<N>(a) /= b; }
-template <int N> Dual<N> operator-(const Dual<N>& a) { return Dual<N>(0.0) -= a; }
+template <int N>
+Dual<N> operator+(Dual<N> a, const Dual<N>& b) {
+  return a += b;
+}
+template <int N>
+Dual<N> operator-(Dual<N> a, const Dual<N>& b) {
+  return a -= b;
+}
+template <int N>
+Dual<N> operator*(Dual<N> a, const Dual<N>& b) {
+  return a *= b;
+}
+template <int N>
+Dual<N> operator/(Dual<N> a, const Dual<N>& b) {
+  return a /= b;
+}
+template <int N>
+Dual<N> operator+(Dual<N> a, Real b) {
+  return a += Dual<N>(b);
+}
+template <int N>
+Dual<N> operator+(Real a, Dual<N> b) {
+  return b += Dual<N>(a);
+}
+template <int N>
+Dual<N> operator-(Dual<N> a, Real b) {
+  return a -= Dual<N>(b);
+}
+template <int N>
+Dual<N> operator-(Real a, const Dual<N>& b) {
+  return Dual<N>(a) -= b;
+}
+template <int N>
+Dual<N> operator*(Dual<N> a, Real b) {
+  return a *= Dual<N>(b);
+}
+template <int N>
+Dual<N> operator*(Real a, Dual<N> b) {
+  return b *= Dual<N>(a);
+}
+template <int N>
+Dual<N> operator/(Dual<N> a, Real b) {
+  return a /= Dual<N>(b);
+}
+template <int N>
+Dual<N> operator/(Real a, const Dual<N>& b) {
+  return Dual<N>(a) /= b;
+}
+template <int N>
+Dual<N> operator-(const Dual<N>& a) {
+  return Dual<N>(0.0) -= a;
+}
 
-template <int N> Dual<N> sin(const Dual<N>& x) { return x.chain(std::sin(x.v), std::cos(x.v)); }
-template <int N> Dual<N> cos(const Dual<N>& x) { return x.chain(std::cos(x.v), -std::sin(x.v)); }
-template <int N> Dual<N> sqrt(const Dual<N>& x) {
+template <int N>
+Dual<N> sin(const Dual<N>& x) {
+  return x.chain(std::sin(x.v), std::cos(x.v));
+}
+template <int N>
+Dual<N> cos(const Dual<N>& x) {
+  return x.chain(std::cos(x.v), -std::sin(x.v));
+}
+template <int N>
+Dual<N> sqrt(const Dual<N>& x) {
   const Real s = std::sqrt(x.v);
   return x.chain(s, 0.5 / s);
 }
-template <int N> Dual<N> pow(const Dual<N>& x, Real p) {
+template <int N>
+Dual<N> pow(const Dual<N>& x, Real p) {
   return x.chain(std::pow(x.v, p), p * std::pow(x.v, p - 1.0));
 }
 /// atan2(y, x) with ∂/∂y = x/(x² + y²), ∂/∂x = −y/(x² + y²).
-template <int N> Dual<N> atan2(const Dual<N>& y, const Dual<N>& x) {
+template <int N>
+Dual<N> atan2(const Dual<N>& y, const Dual<N>& x) {
   const Real r2 = x.v * x.v + y.v * y.v;
   Dual<N> out(std::atan2(y.v, x.v));
   for (std::size_t i = 0; i < N; ++i) out.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / r2;

@@ -29,8 +29,13 @@ namespace {
 class Film {
  public:
   Film(const JournalBearingGeometry& g, const FiniteBearingGrid& grid, const Eigen::Vector2d& x)
-      : n_(grid.circumferential), m_(grid.axial), dt_(2 * pi / n_), dz_(1.0 / m_),
-        beta_(std::pow(g.diameter / g.length, 2)), a_(x(0) / g.clearance), b_(x(1) / g.clearance),
+      : n_(grid.circumferential),
+        m_(grid.axial),
+        dt_(2 * pi / n_),
+        dz_(1.0 / m_),
+        beta_(std::pow(g.diameter / g.length, 2)),
+        a_(x(0) / g.clearance),
+        b_(x(1) / g.clearance),
         rings_first_(2 * m_ <= n_) {}
 
   Index size() const { return static_cast<Index>(n_) * m_; }
@@ -76,8 +81,8 @@ class Film {
       const Real bz = beta_ * dH3(theta(i))(d) / (dz_ * dz_);
       for (int j = 0; j < m_; ++j) {
         const Real p = P(k(i, j)), up = j + 1 < m_ ? P(k(i, j + 1)) : 0.0, down = j > 0 ? P(k(i, j - 1)) : up;
-        out(k(i, j)) = (ap * (P(k(i + 1, j)) - p) - am * (p - P(k(i - 1, j)))) / (dt_ * dt_) +
-                       bz * (up - 2.0 * p + down);
+        out(k(i, j)) =
+            (ap * (P(k(i + 1, j)) - p) - am * (p - P(k(i - 1, j)))) / (dt_ * dt_) + bz * (up - 2.0 * p + down);
       }
     }
     return out;
@@ -141,7 +146,8 @@ class FilmSolver {
         analysed_ = true;
       }
       sparse_.factorize(matrix_);
-      if (sparse_.info() != Eigen::Success) throw Error("finite-length bearing: the discrete Reynolds equation is singular");
+      if (sparse_.info() != Eigen::Success)
+        throw Error("finite-length bearing: the discrete Reynolds equation is singular");
     }
   }
   Vector solve(const Vector& rhs) const {

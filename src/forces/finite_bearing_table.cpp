@@ -42,7 +42,7 @@ void solve(Real ld, const FiniteBearingGrid& grid, const Eigen::Vector2d& e, Eig
   const JournalBearingGeometry g{.diameter = 1.0, .length = ld, .clearance = 1.0, .viscosity = 1.0};
   // u = Ω·e + 2·J·v = (1, 0) with Ω = 0 and v = (0, −1/2).
   const FilmForce f = finite_bearing_force(g, grid, 0.0, e, Eigen::Vector2d(0.0, -0.5));
-  const Real scale = 6.0 * 0.125 * ld;  // 6μR³L/c²
+  const Real scale = 6.0 * 0.125 * ld;        // 6μR³L/c²
   psi << f.f / scale, f.peak_pressure / 1.5;  // p = (6μR²/c²)·P
   gradient = f.dfdx / scale;
 }
@@ -70,13 +70,14 @@ void parallel_for(int n, const Body& body) {
 
 FiniteBearingTable::FiniteBearingTable(Real ld, const FiniteBearingGrid& grid, Layout layout) : layout_(layout) {
   if (layout.eccentricities < 2 || layout.angles < 4 || !(layout.max_eccentricity > 0 && layout.max_eccentricity < 1))
-    throw Error("a finite-bearing table needs at least 2 eccentricities, 4 angles and a largest eccentricity in (0, 1)");
+    throw Error(
+        "a finite-bearing table needs at least 2 eccentricities, 4 angles and a largest eccentricity in (0, 1)");
   const int ne = layout.eccentricities, na = layout.angles;
   ht_ = -std::log1p(-layout.max_eccentricity) / (ne - 1);
   ha_ = 2 * pi / na;
   const Real k = weight_exponent;
   // The nodes: Ψ and ∇Ψ from the solver, turned into the weighted polar data.
-  nodes_.resize(static_cast<std::size_t>(ne * na));
+  nodes_.resize(static_cast<std::size_t>(ne) * static_cast<std::size_t>(na));
   std::vector<Eigen::Matrix2d> gradients(nodes_.size());
   parallel_for(ne * na, [&](int n) {
     const int i = n / na, j = n % na;
@@ -96,7 +97,7 @@ FiniteBearingTable::FiniteBearingTable(Real ld, const FiniteBearingGrid& grid, L
   // Π's slopes: central differences of the weighted values (one-sided at the ends in t).
   for (int i = 0; i < ne; ++i)
     for (int j = 0; j < na; ++j) {
-      Node& here = nodes_[static_cast<std::size_t>(i * na + j)];
+      Node& here = nodes_[static_cast<std::size_t>(i) * static_cast<std::size_t>(na) + static_cast<std::size_t>(j)];
       const int lo = std::max(i - 1, 0), hi = std::min(i + 1, ne - 1);
       here.gt(2) = (node(hi, j).g(2) - node(lo, j).g(2)) / ((hi - lo) * ht_);
       here.ga(2) = (node(i, j + 1).g(2) - node(i, j - 1).g(2)) / (2 * ha_);
@@ -105,7 +106,7 @@ FiniteBearingTable::FiniteBearingTable(Real ld, const FiniteBearingGrid& grid, L
   // elsewhere by central differences of ∂G/∂t around the circle.
   for (int i = 0; i < ne; ++i)
     for (int j = 0; j < na; ++j) {
-      Node& here = nodes_[static_cast<std::size_t>(i * na + j)];
+      Node& here = nodes_[static_cast<std::size_t>(i) * static_cast<std::size_t>(na) + static_cast<std::size_t>(j)];
       here.gta = (node(i, j + 1).gt - node(i, j - 1).gt) / (2 * ha_);
       if (i == 0) {
         const Real a = j * ha_;
@@ -189,7 +190,8 @@ bool FiniteBearingTable::force(const JournalBearingGeometry& g, Real speed, cons
   const Real un = u.norm();
   // The frame of u: Q = [û, J·û]; where u vanishes (no film drive) the force does
   // too, and its Jacobian is the limit along e (or the first axis).
-  Eigen::Vector2d uh = un > 0 ? Eigen::Vector2d(u / un) : (e.norm() > 0 ? Eigen::Vector2d(e.normalized()) : Eigen::Vector2d(1.0, 0.0));
+  Eigen::Vector2d uh =
+      un > 0 ? Eigen::Vector2d(u / un) : (e.norm() > 0 ? Eigen::Vector2d(e.normalized()) : Eigen::Vector2d(1.0, 0.0));
   Eigen::Matrix2d Q;
   Q.col(0) = uh;
   Q.col(1) = J * uh;
@@ -201,8 +203,8 @@ bool FiniteBearingTable::force(const JournalBearingGeometry& g, Real speed, cons
   // f = S·M(u)·Ψ(Qᵀe), M(u) = |u|·Q; ∂f/∂e = S|u|·Q∇ΨQᵀ,
   // ∂f/∂u = S·(Ψ₁I + Ψ₂J − Q∇Ψ·J·e′·(J·û)ᵀ).
   const Eigen::Matrix2d dfde = scale * un * Q * grad * Q.transpose();
-  const Eigen::Matrix2d dfdu = scale * (psi(0) * Eigen::Matrix2d::Identity() + psi(1) * J -
-                                        Q * grad * (J * ep) * (J * uh).transpose());
+  const Eigen::Matrix2d dfdu =
+      scale * (psi(0) * Eigen::Matrix2d::Identity() + psi(1) * J - Q * grad * (J * ep) * (J * uh).transpose());
   out.f = scale * un * (Q * psi.head<2>());
   out.dfdx = (dfde + speed * dfdu) / c;
   out.dfdv = dfdu * 2.0 * J / c;
@@ -223,7 +225,7 @@ std::shared_ptr<const FiniteBearingTable> FiniteBearingTable::shared(Real ld, co
     const Layout fine{.eccentricities = 2 * Layout{}.eccentricities - 1, .angles = 2 * Layout{}.angles};
     table = std::make_shared<const FiniteBearingTable>(ld, grid, fine);
   }
-  const auto kept = table;
+  auto kept = table;
   built.push_back(key);
   if (built.size() > 32) {
     tables.erase(built.front());  // a table still in use lives on with its users

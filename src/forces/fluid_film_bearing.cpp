@@ -94,7 +94,6 @@ FilmForce short_bearing_force(const JournalBearingGeometry& g, Real speed, Vec2 
   return out;
 }
 
-
 // The infinitely long bearing (Sommerfeld) with Gümbel's condition. Without axial
 // flow, d/dθ(h³ dp/dθ) = 12μR²·G. In the axes of the displacement (α = θ − ψ,
 // h = c(1 − ε cos α)) and with the velocity's radial and tangential parts u_r, u_t:
@@ -177,16 +176,16 @@ FilmForce long_bearing_force(const JournalBearingGeometry& g, Real speed, Vec2 x
   constexpr int panels = 4;
   for (const auto& [g1, g2] : positive) {
     for (int panel = 0; panel < panels; ++panel) {
-    const Real width = (g2 - g1) / panels, half = 0.5 * width, mid = g1 + (panel + 0.5) * width;
-    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-      const Real gamma = mid + half * rule.nodes[j];
-      // α(γ) = 2·atan2(sin(γ/2), k·cos(γ/2)) on (−π, π).
-      const D alpha = 2.0 * detail::atan2(D(std::sin(0.5 * gamma)), k * std::cos(0.5 * gamma));
-      const D w = (rule.weights[j] * half) * detail::sqrt(dual.s) / (1.0 + dual.eps * std::cos(gamma));
-      const D pw = long_bearing_pressure(dual, c, speed, gamma) * w;
-      fy += pw * detail::cos(alpha + dual.psi);
-      fz += pw * detail::sin(alpha + dual.psi);
-    }
+      const Real width = (g2 - g1) / panels, half = 0.5 * width, mid = g1 + (panel + 0.5) * width;
+      for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+        const Real gamma = mid + half * rule.nodes[j];
+        // α(γ) = 2·atan2(sin(γ/2), k·cos(γ/2)) on (−π, π).
+        const D alpha = 2.0 * detail::atan2(D(std::sin(0.5 * gamma)), k * std::cos(0.5 * gamma));
+        const D w = (rule.weights[j] * half) * detail::sqrt(dual.s) / (1.0 + dual.eps * std::cos(gamma));
+        const D pw = long_bearing_pressure(dual, c, speed, gamma) * w;
+        fy += pw * detail::cos(alpha + dual.psi);
+        fz += pw * detail::sin(alpha + dual.psi);
+      }
     }
   }
   FilmForce out;
@@ -194,8 +193,8 @@ FilmForce long_bearing_force(const JournalBearingGeometry& g, Real speed, Vec2 x
   for (int i = 0; i < 2; ++i) {
     out.dfdx(0, i) = scale * fy.d[static_cast<std::size_t>(i)];
     out.dfdx(1, i) = scale * fz.d[static_cast<std::size_t>(i)];
-    out.dfdv(0, i) = scale * fy.d[static_cast<std::size_t>(i + 2)];
-    out.dfdv(1, i) = scale * fz.d[static_cast<std::size_t>(i + 2)];
+    out.dfdv(0, i) = scale * fy.d[static_cast<std::size_t>(i) + 2];
+    out.dfdv(1, i) = scale * fz.d[static_cast<std::size_t>(i) + 2];
   }
   return out;
 }
@@ -216,18 +215,23 @@ SteadyForce steady_force(FilmTheory theory, Real e) {
       return {2.0 * e2 / D, pi * e / (q * std::sqrt(s)), (8.0 * e + 4.0 * e2 * e2 * e) / (D * D),
               pi * (2.0 - e2 + 2.0 * e2 * e2) / (q * q * std::pow(s, 1.5))};
     }
-    case FilmTheory::finite_length: break;
+    case FilmTheory::finite_length:
+      break;
   }
-  throw Error("the finite-length bearing has no closed form: its load and coefficients come from the numerical "
-              "film force (film_force) at an equilibrium");
+  throw Error(
+      "the finite-length bearing has no closed form: its load and coefficients come from the numerical "
+      "film force (film_force) at an equilibrium");
 }
 
 Real load_scale(const JournalBearingGeometry& g, FilmTheory theory, Real speed) {
   const Real c2 = g.clearance * g.clearance;
   switch (theory) {
-    case FilmTheory::short_bearing: return g.viscosity * speed * g.diameter * std::pow(g.length, 3) / (8.0 * c2);
-    case FilmTheory::long_bearing: return 6.0 * g.viscosity * speed * std::pow(0.5 * g.diameter, 3) * g.length / c2;
-    case FilmTheory::finite_length: break;
+    case FilmTheory::short_bearing:
+      return g.viscosity * speed * g.diameter * std::pow(g.length, 3) / (8.0 * c2);
+    case FilmTheory::long_bearing:
+      return 6.0 * g.viscosity * speed * std::pow(0.5 * g.diameter, 3) * g.length / c2;
+    case FilmTheory::finite_length:
+      break;
   }
   throw Error("the finite-length bearing has no closed form");
 }
@@ -238,11 +242,13 @@ FilmForce film_force(const JournalBearingGeometry& g, FilmTheory theory, Real sp
                      const FiniteBearingGrid& grid, bool trajectory) {
   const Real eps = x.norm() / g.clearance;
   if (!(eps < 1.0))
-    throw Error(fmt::format("the journal has reached the bearing: eccentricity ratio {:.4g} (it must stay below 1)",
-                            eps));
+    throw Error(
+        fmt::format("the journal has reached the bearing: eccentricity ratio {:.4g} (it must stay below 1)", eps));
   switch (theory) {
-    case FilmTheory::short_bearing: return short_bearing_force(g, speed, x, v);
-    case FilmTheory::long_bearing: return long_bearing_force(g, speed, x, v);
+    case FilmTheory::short_bearing:
+      return short_bearing_force(g, speed, x, v);
+    case FilmTheory::long_bearing:
+      return long_bearing_force(g, speed, x, v);
     case FilmTheory::finite_length:
       if (grid.evaluation == FilmEvaluation::table || (grid.evaluation == FilmEvaluation::automatic && trajectory)) {
         const auto table = FiniteBearingTable::shared(g.length / g.diameter, grid);
@@ -307,7 +313,8 @@ BearingCoefficients film_coefficients(const JournalBearingGeometry& g, FilmTheor
       C(1, 0) = -24.0 * q / ((1.0 + e) * (1.0 + e) * (1.0 - e));
       break;
     }
-    case FilmTheory::finite_length: break;  // steady_force() has thrown
+    case FilmTheory::finite_length:
+      break;  // steady_force() has thrown
   }
   // The displacement lies at the attitude angle φ from the load: polar → load frame.
   const Real phi = std::atan2(f.ft, f.fr);
@@ -335,13 +342,14 @@ Real film_drag_torque(const JournalBearingGeometry& g, Real speed, const Eigen::
 Real FluidFilmBearing::drag_torque(const MotionState& s, const Vector& x, const Vector& v) const {
   const bool housing = node_b.has_value();
   const Eigen::Vector2d e = detail::relative(x, housing);
-  return film_drag_torque(geometry, s.speed, e, film_force(geometry, theory, s.speed, e, detail::relative(v, housing), grid, s.trajectory));
+  return film_drag_torque(geometry, s.speed, e,
+                          film_force(geometry, theory, s.speed, e, detail::relative(v, housing), grid, s.trajectory));
 }
 
 NonlinearForceValue FluidFilmBearing::force(const MotionState& s, const Vector& x, const Vector& v) const {
   const bool housing = node_b.has_value();
-  const FilmForce F =
-      film_force(geometry, theory, s.speed, detail::relative(x, housing), detail::relative(v, housing), grid, s.trajectory);
+  const FilmForce F = film_force(geometry, theory, s.speed, detail::relative(x, housing), detail::relative(v, housing),
+                                 grid, s.trajectory);
   return detail::pair_force(F.f, F.dfdx, F.dfdv, housing);
 }
 
@@ -362,8 +370,10 @@ Real peak_over_angle(P&& p) {
   Real lo = best * h - h, hi = best * h + h;
   Real x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo), f1 = p(x1), f2 = p(x2);
   for (int k = 0; k < 50; ++k) {
-    if (f1 < f2) lo = x1, x1 = x2, f1 = f2, x2 = lo + ratio * (hi - lo), f2 = p(x2);
-    else hi = x2, x2 = x1, f2 = f1, x1 = hi - ratio * (hi - lo), f1 = p(x1);
+    if (f1 < f2)
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + ratio * (hi - lo), f2 = p(x2);
+    else
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - ratio * (hi - lo), f1 = p(x1);
   }
   return std::max({top, f1, f2});
 }
@@ -400,27 +410,28 @@ std::vector<OperatingValue> FluidFilmBearing::operating_data(const MotionState& 
     // Sommerfeld's pressure with θ from the thickest film, Gümbel's positive half.
     const Real mu = geometry.viscosity;
     peak = std::max(0.0, peak_over_angle([&](Real t) {
-      const Real ct = std::cos(t);
-      return 6 * mu * s.speed * (R / c) * (R / c) * eps * std::sin(t) * (2 + eps * ct) /
-             ((2 + eps * eps) * (1 + eps * ct) * (1 + eps * ct));
-    }));
+                      const Real ct = std::cos(t);
+                      return 6 * mu * s.speed * (R / c) * (R / c) * eps * std::sin(t) * (2 + eps * ct) /
+                             ((2 + eps * eps) * (1 + eps * ct) * (1 + eps * ct));
+                    }));
   }
-  return {{"eccentricity_ratio", eps},
-          {"attitude_angle_deg", W > 0 && eps > 0 ? attitude * 180 / pi : std::numeric_limits<Real>::quiet_NaN()},
-          {"min_film_thickness_m", c * (1 - eps)},
-          {"min_film_angle_deg", eps > 0 ? std::atan2(e(1), e(0)) * 180 / pi : std::numeric_limits<Real>::quiet_NaN()},
-          {"load_n", W},
-          {"sommerfeld_number", W > 0 ? geometry.viscosity * N * geometry.length * geometry.diameter / W * (R / c) * (R / c)
-                                      : std::numeric_limits<Real>::infinity()},
-          {"friction_torque_nm", torque},
-          {"power_loss_w", torque * s.speed},
-          {"peak_pressure_pa", peak},
-          // The design limits of Trumpler ("Design of Film Bearings", 1966): a unit
-          // load W/(L·D) of at most 2.07 MPa (300 psi) and a minimum film thickness of
-          // at least 0.0002 in + 0.00004·D (5.08 µm + 4e-5·D).
-          {"specific_load_pa", W / (geometry.length * geometry.diameter)},
-          {"specific_load_limit_pa", trumpler_specific_load_limit},
-          {"min_film_limit_m", trumpler_min_film(geometry.diameter)}};
+  return {
+      {"eccentricity_ratio", eps},
+      {"attitude_angle_deg", W > 0 && eps > 0 ? attitude * 180 / pi : std::numeric_limits<Real>::quiet_NaN()},
+      {"min_film_thickness_m", c * (1 - eps)},
+      {"min_film_angle_deg", eps > 0 ? std::atan2(e(1), e(0)) * 180 / pi : std::numeric_limits<Real>::quiet_NaN()},
+      {"load_n", W},
+      {"sommerfeld_number", W > 0 ? geometry.viscosity * N * geometry.length * geometry.diameter / W * (R / c) * (R / c)
+                                  : std::numeric_limits<Real>::infinity()},
+      {"friction_torque_nm", torque},
+      {"power_loss_w", torque * s.speed},
+      {"peak_pressure_pa", peak},
+      // The design limits of Trumpler ("Design of Film Bearings", 1966): a unit
+      // load W/(L·D) of at most 2.07 MPa (300 psi) and a minimum film thickness of
+      // at least 0.0002 in + 0.00004·D (5.08 µm + 4e-5·D).
+      {"specific_load_pa", W / (geometry.length * geometry.diameter)},
+      {"specific_load_limit_pa", trumpler_specific_load_limit},
+      {"min_film_limit_m", trumpler_min_film(geometry.diameter)}};
 }
 
 }  // namespace feran

@@ -38,8 +38,8 @@ inline Eigen::Vector2d relative(const Vector& values, bool housing) {
 /// The force @p f on the journal with Jacobians @p dfdx, @p dfdv with respect to the
 /// relative motion, as a force on lateral_dofs(): the housing's motion enters with
 /// the opposite sign and it carries the opposite force.
-inline NonlinearForceValue pair_force(const Eigen::Vector2d& f, const Eigen::Matrix2d& dfdx, const Eigen::Matrix2d& dfdv,
-                                      bool housing) {
+inline NonlinearForceValue pair_force(const Eigen::Vector2d& f, const Eigen::Matrix2d& dfdx,
+                                      const Eigen::Matrix2d& dfdv, bool housing) {
   const Index n = housing ? 4 : 2;
   NonlinearForceValue out{Vector::Zero(n), Matrix::Zero(n, n), Matrix::Zero(n, n)};
   out.f.head<2>() = f;

@@ -19,8 +19,7 @@ void Unbalance::add_harmonic(const HarmonicExcitation& e, ComplexVector& f) cons
 
 void Unbalance::add_transient(const MotionState& s, Vector& f) const {
   // F_y + j·F_z = m r (Ω² − jΩ') e^{j(φ + phase)}
-  const Complex F = mass * radius * Complex(s.speed * s.speed, -s.acceleration) *
-                    std::polar(1.0, s.angle + phase);
+  const Complex F = mass * radius * Complex(s.speed * s.speed, -s.acceleration) * std::polar(1.0, s.angle + phase);
   f(global_dof(node, Dof::v)) += F.real();
   f(global_dof(node, Dof::w)) += F.imag();
   f(global_dof(node, Dof::ry)) += -lever * F.imag();

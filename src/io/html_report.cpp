@@ -35,7 +35,6 @@ namespace {
 
 using nlohmann::json;
 
-
 // rᵀ·M·s over the model's elements, r and s given per (node, DOF) of the full model.
 Real mass_form(const Model& model, const std::function<Real(Index, Dof)>& r, const std::function<Real(Index, Dof)>& s) {
   const OperatingPoint rest{};
@@ -188,7 +187,8 @@ json study_results(const std::string& directory) {
   json out;
   try {
     out["study"] = json::parse(read_text(dir / study_files::study));
-    out["summary"] = fs::exists(dir / study_files::summary) ? json::parse(read_text(dir / study_files::summary)) : json(nullptr);
+    out["summary"] =
+        fs::exists(dir / study_files::summary) ? json::parse(read_text(dir / study_files::summary)) : json(nullptr);
     json evaluations = json::array();
     std::istringstream lines(read_text(dir / study_files::evaluations));
     std::string line;
@@ -226,7 +226,8 @@ std::string timestamp() {
 
 // JSON text placed in a <script> element: "</" would end the element.
 std::string script_safe(std::string text) {
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.replace(at, 2, "<\\/");
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
+    text.replace(at, 2, "<\\/");
   return text;
 }
 
@@ -234,11 +235,20 @@ std::string html_escape(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -258,8 +268,9 @@ std::vector<std::string> report_study_files(const ReportOptions& options) {
 
 std::string html_report(const ModelFile& file, const ReportOptions& options, std::string* summary) {
   if (!report_available())
-    throw Error("this feran was built without plotly.js, which the report inlines: run scripts/setup.sh (it "
-                "installs the front-end packages with npm) and build again");
+    throw Error(
+        "this feran was built without plotly.js, which the report inlines: run scripts/setup.sh (it "
+        "installs the front-end packages with npm) and build again");
   if (options.speed_unit != "rpm" && options.speed_unit != "Hz")
     throw Error(fmt::format("the report's speed unit must be \"rpm\" or \"Hz\", got \"{}\"", options.speed_unit));
   const Model& model = file.model;
@@ -267,8 +278,10 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
   const ResultSource source{file.path, file.title};
 
   // The operating range, when the model or the request gives one.
-  const std::optional<Real> low = options.api684_request.min_speed ? options.api684_request.min_speed : spec.api684.min_speed;
-  const std::optional<Real> high = options.api684_request.max_speed ? options.api684_request.max_speed : spec.api684.max_speed;
+  const std::optional<Real> low =
+      options.api684_request.min_speed ? options.api684_request.min_speed : spec.api684.min_speed;
+  const std::optional<Real> high =
+      options.api684_request.max_speed ? options.api684_request.max_speed : spec.api684.max_speed;
 
   json data;
   data["inputs"] = {{"model_path", file.path},
@@ -276,11 +289,12 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
                     {"version", options.version},
                     {"created", timestamp()},
                     {"model_text", write_toml(spec)}};
-  data["title"] = options.title.empty() ? (file.title.empty() ? std::filesystem::path(file.path).filename().string() : file.title)
-                                        : options.title;
+  data["title"] = options.title.empty()
+                      ? (file.title.empty() ? std::filesystem::path(file.path).filename().string() : file.title)
+                      : options.title;
   data["speed_unit"] = options.speed_unit;
-  data["operating"] = low && high ? json{{"min_rpm", rad_to_hz(*low) * 60}, {"max_rpm", rad_to_hz(*high) * 60}}
-                                  : json(nullptr);
+  data["operating"] =
+      low && high ? json{{"min_rpm", rad_to_hz(*low) * 60}, {"max_rpm", rad_to_hz(*high) * 60}} : json(nullptr);
   data["model"] = model_summary(file, high.value_or(0.0));
 
   // Campbell diagram and damping.
@@ -323,83 +337,97 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
   data["modes"] = modes;
 
   // Unbalance response and the deflected shape.
-  if (model.n_forces("unbalance") > 0 || model.n_forces("harmonic_force") > 0 || !options.response.extra_forces.empty()) {
-    section(data, "response", [&] {
-      ResponseRequest request = options.response;
-      request.n_threads = options.n_threads;
-      if (!request.stations) request.stations = StationOutput::summary;
-      if (!request.stop && !spec.response.stop) request.stop = co.speeds.back();
-      HarmonicOptions ho = response_settings(model, spec.response, request);
-      ho.stop = options.stop;
-      const HarmonicResult hr = run_harmonic_response(model, ho);
-      json j = json::parse(response_json(hr, ho, model, source));
-      // With an operating range, each peak's amplification factor and margins (API 684).
-      if (low && high) {
-        json peaks = json::array();
-        for (std::size_t p = 0; p < hr.probes.size(); ++p) {
-          for (const SeparationCheck& c : separation_checks(hr, p, *low, *high))
-            peaks.push_back({{"probe", p},
-                             {"speed_rpm", rad_to_hz(c.peak.speed) * 60},
-                             {"amplitude_m", c.peak.amplitude},
-                             {"amplification_factor", c.peak.resolved() ? json(c.peak.amplification_factor) : json(nullptr)},
-                             {"actual_margin", c.actual_margin},
-                             {"required_margin", c.required_margin ? json(*c.required_margin) : json(nullptr)},
-                             {"passes", c.passes ? json(*c.passes) : json(nullptr)},
-                             {"unstable", c.unstable}});
-        }
-        j["peaks"] = peaks;
-      }
-      // The deflected shape at one speed: every node's orbit, from a response there.
-      Real at = options.deflection_speed.value_or(0.0);
-      if (!options.deflection_speed) {
-        Real best = -1;
-        for (const auto& p : hr.probes)
-          for (std::size_t k = 0; k < p.orbit.size(); ++k)
-            if (p.orbit[k].major > best) best = p.orbit[k].major, at = hr.speeds[k];
-      }
-      ResponseRequest shape = options.response;
-      shape.speed = at;
-      shape.start.reset();
-      shape.stop.reset();
-      shape.points = 1;
-      shape.probes.clear();
-      for (Index n = 0; n < model.n_nodes(); ++n) shape.probes.push_back(n);
-      shape.stations = StationOutput::none;
-      HarmonicOptions so = response_settings(model, spec.response, shape);
-      j["deflected_shape"] = json::parse(response_json(run_harmonic_response(model, so), so, model, source));
-      return j;
-    }, options.stop);
+  if (model.n_forces("unbalance") > 0 || model.n_forces("harmonic_force") > 0 ||
+      !options.response.extra_forces.empty()) {
+    section(
+        data, "response",
+        [&] {
+          ResponseRequest request = options.response;
+          request.n_threads = options.n_threads;
+          if (!request.stations) request.stations = StationOutput::summary;
+          if (!request.stop && !spec.response.stop) request.stop = co.speeds.back();
+          HarmonicOptions ho = response_settings(model, spec.response, request);
+          ho.stop = options.stop;
+          const HarmonicResult hr = run_harmonic_response(model, ho);
+          json j = json::parse(response_json(hr, ho, model, source));
+          // With an operating range, each peak's amplification factor and margins (API 684).
+          if (low && high) {
+            json peaks = json::array();
+            for (std::size_t p = 0; p < hr.probes.size(); ++p) {
+              for (const SeparationCheck& c : separation_checks(hr, p, *low, *high))
+                peaks.push_back(
+                    {{"probe", p},
+                     {"speed_rpm", rad_to_hz(c.peak.speed) * 60},
+                     {"amplitude_m", c.peak.amplitude},
+                     {"amplification_factor", c.peak.resolved() ? json(c.peak.amplification_factor) : json(nullptr)},
+                     {"actual_margin", c.actual_margin},
+                     {"required_margin", c.required_margin ? json(*c.required_margin) : json(nullptr)},
+                     {"passes", c.passes ? json(*c.passes) : json(nullptr)},
+                     {"unstable", c.unstable}});
+            }
+            j["peaks"] = peaks;
+          }
+          // The deflected shape at one speed: every node's orbit, from a response there.
+          Real at = options.deflection_speed.value_or(0.0);
+          if (!options.deflection_speed) {
+            Real best = -1;
+            for (const auto& p : hr.probes)
+              for (std::size_t k = 0; k < p.orbit.size(); ++k)
+                if (p.orbit[k].major > best) best = p.orbit[k].major, at = hr.speeds[k];
+          }
+          ResponseRequest shape = options.response;
+          shape.speed = at;
+          shape.start.reset();
+          shape.stop.reset();
+          shape.points = 1;
+          shape.probes.clear();
+          for (Index n = 0; n < model.n_nodes(); ++n) shape.probes.push_back(n);
+          shape.stations = StationOutput::none;
+          HarmonicOptions so = response_settings(model, spec.response, shape);
+          j["deflected_shape"] = json::parse(response_json(run_harmonic_response(model, so), so, model, source));
+          return j;
+        },
+        options.stop);
   }
 
   if (options.static_analysis)
-    section(data, "static", [&] {
-      // A rotor on oil films rests on them only while it turns: without a speed of
-      // its own, the static analysis runs at the maximum operating speed (else the
-      // first speed above 0 the mode shapes use).
-      StaticRequest request;
-      if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
-      const StaticOptions so = static_settings(spec.static_, request);
-      return json::parse(static_json(run_static(model, so), so, model, source));
-    }, options.stop);
+    section(
+        data, "static",
+        [&] {
+          // A rotor on oil films rests on them only while it turns: without a speed of
+          // its own, the static analysis runs at the maximum operating speed (else the
+          // first speed above 0 the mode shapes use).
+          StaticRequest request;
+          if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
+          const StaticOptions so = static_settings(spec.static_, request);
+          return json::parse(static_json(run_static(model, so), so, model, source));
+        },
+        options.stop);
 
   if (options.api684 && low && high)
-    section(data, "api684", [&] {
-      Api684Request request = options.api684_request;
-      request.n_threads = options.n_threads;
-      Api684Options ao = api684_settings(model, spec, request);
-      ao.stop = options.stop;
-      return json::parse(api684_json(run_api684(model, ao), model, source));
-    }, options.stop);
+    section(
+        data, "api684",
+        [&] {
+          Api684Request request = options.api684_request;
+          request.n_threads = options.n_threads;
+          Api684Options ao = api684_settings(model, spec, request);
+          ao.stop = options.stop;
+          return json::parse(api684_json(run_api684(model, ao), model, source));
+        },
+        options.stop);
 
   const RunupSpec& r = spec.runup;
   if (options.runup && (r.speed || r.to || !r.table.empty()))
-    section(data, "runup", [&] {
-      TransientOptions to = runup_settings(model, r, {});
-      to.stop = options.stop;
-      to.assembled = file.assembler;
-      const TransientResult tr = run_transient(model, to);
-      return json::parse(runup_json(tr, to, model, source));
-    }, options.stop);
+    section(
+        data, "runup",
+        [&] {
+          TransientOptions to = runup_settings(model, r, {});
+          to.stop = options.stop;
+          to.assembled = file.assembler;
+          const TransientResult tr = run_transient(model, to);
+          return json::parse(runup_json(tr, to, model, source));
+        },
+        options.stop);
 
   if (!options.study_directory.empty()) data["study"] = study_results(options.study_directory);
 
@@ -421,7 +449,9 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
   html += detail::report_css();
   html += "\n</style>\n<script>\n";
   html += detail::plotly_js();
-  html += "\n</script>\n</head>\n<body>\n<div id=\"report\"><noscript>This report draws its figures with JavaScript.</noscript></div>\n";
+  html +=
+      "\n</script>\n</head>\n<body>\n<div id=\"report\"><noscript>This report draws its figures with "
+      "JavaScript.</noscript></div>\n";
   html += "<script id=\"feran-data\" type=\"application/json\">\n";
   html += script_safe(data.dump(-1, ' ', false, json::error_handler_t::replace));
   html += "\n</script>\n<script>\n";

@@ -40,19 +40,26 @@ std::string kind_of(const Field<S>& f) {
       if constexpr (std::is_same_v<S, ForceSpec>)
         if (f.key == "amplitude") return "force or moment";
       return noun(f.quantity);
-    case FieldKind::number: return "number";
-    case FieldKind::integer: return "integer";
-    case FieldKind::flag: return "boolean";
+    case FieldKind::number:
+      return "number";
+    case FieldKind::integer:
+      return "integer";
+    case FieldKind::flag:
+      return "boolean";
     case FieldKind::text:
-    case FieldKind::choice: return "string";
+    case FieldKind::choice:
+      return "string";
     case FieldKind::choice_list:
-    case FieldKind::text_list: return "array of strings";
+    case FieldKind::text_list:
+      return "array of strings";
     case FieldKind::node:
-      return f.special.empty() ? "node reference"
-                               : fmt::format("`\"{}\"` or node reference", f.special);
-    case FieldKind::node_list: return "array of node references";
-    case FieldKind::integer_list: return "array of integers";
-    case FieldKind::coefficient: return noun(f.quantity) + " or law";
+      return f.special.empty() ? "node reference" : fmt::format("`\"{}\"` or node reference", f.special);
+    case FieldKind::node_list:
+      return "array of node references";
+    case FieldKind::integer_list:
+      return "array of integers";
+    case FieldKind::coefficient:
+      return noun(f.quantity) + " or law";
     case FieldKind::time_table:
       if constexpr (std::is_same_v<S, ForceSpec>) return "array of `[time, force or moment]` pairs";
       return fmt::format("array of `[time, {}]` pairs", noun(f.quantity));
@@ -71,9 +78,8 @@ std::string default_of(const Field<S>& f) {
         const T& v = defaults.*member;
         if constexpr (std::is_same_v<T, Real>) {
           if (v == 0.0) return "`0`";
-          return f.kind == FieldKind::quantity
-                     ? fmt::format("`{}`", format_quantity(v, f.quantity, f.unit))
-                     : fmt::format("`{}`", v);
+          return f.kind == FieldKind::quantity ? fmt::format("`{}`", format_quantity(v, f.quantity, f.unit))
+                                               : fmt::format("`{}`", v);
         } else if constexpr (std::is_same_v<T, int>) {
           return fmt::format("`{}`", v);
         } else if constexpr (std::is_same_v<T, bool>) {
@@ -99,15 +105,19 @@ std::string constraints_of(const Field<S>& f, std::string_view table) {
   std::vector<std::string> parts;
   const bool list = f.kind == FieldKind::integer_list;
   switch (f.bound.kind) {
-    case spec::Bound::Kind::positive: parts.emplace_back("> 0"); break;
-    case spec::Bound::Kind::non_negative: parts.emplace_back("≥ 0"); break;
+    case spec::Bound::Kind::positive:
+      parts.emplace_back("> 0");
+      break;
+    case spec::Bound::Kind::non_negative:
+      parts.emplace_back("≥ 0");
+      break;
     case spec::Bound::Kind::at_least:
       parts.push_back(f.bound.maximum < 1'000'000'000
-                          ? fmt::format("{}{} to {}", list ? "each " : "", f.bound.minimum,
-                                        f.bound.maximum)
+                          ? fmt::format("{}{} to {}", list ? "each " : "", f.bound.minimum, f.bound.maximum)
                           : fmt::format("{}≥ {}", list ? "each " : "", f.bound.minimum));
       break;
-    case spec::Bound::Kind::none: break;
+    case spec::Bound::Kind::none:
+      break;
   }
   if (!f.choices.empty()) parts.push_back(quoted_choices(f.choices));
   const std::vector<std::string> names = analysis_choices(table, f.key);
@@ -118,15 +128,11 @@ std::string constraints_of(const Field<S>& f, std::string_view table) {
 }
 
 template <class S>
-std::string table_of(std::string_view table, std::string_view child_key = {},
-                     std::string_view child_doc = {}) {
-  std::string out =
-      "| key | kind | default | constraints / meaning |\n| --- | --- | --- | --- |\n";
+std::string table_of(std::string_view table, std::string_view child_key = {}, std::string_view child_doc = {}) {
+  std::string out = "| key | kind | default | constraints / meaning |\n| --- | --- | --- | --- |\n";
   for (const Field<S>& f : spec::fields_of<S>())
-    out += fmt::format("| `{}` | {} | {} | {} |\n", f.key, kind_of(f), default_of(f),
-                       constraints_of(f, table));
-  if (!child_key.empty())
-    out += fmt::format("| `{}` | array of tables | required | {} |\n", child_key, child_doc);
+    out += fmt::format("| `{}` | {} | {} | {} |\n", f.key, kind_of(f), default_of(f), constraints_of(f, table));
+  if (!child_key.empty()) out += fmt::format("| `{}` | array of tables | required | {} |\n", child_key, child_doc);
   return out;
 }
 

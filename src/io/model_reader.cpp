@@ -61,26 +61,21 @@ class SpecReader {
   template <class S>
   void read_fields(const TableReader& t, S& out, const std::string& path);
   template <class S>
-  void read_field(const TableReader& t, const spec::Field<S>& f, const toml::node& n, S& out,
-                  const std::string& at);
+  void read_field(const TableReader& t, const spec::Field<S>& f, const toml::node& n, S& out, const std::string& at);
   template <class S>
   void read_children(const TableReader& t, S& out, const std::string& path);
 
-  NodeRef read_node(const TableReader& t, const toml::node& n, std::string_view name,
-                    std::string_view special) const;
-  SpeedCoefficient read_coefficient(const TableReader& parent, const toml::node& n,
-                                    const std::string& key, Quantity kind,
-                                    const std::string& at);
+  NodeRef read_node(const TableReader& t, const toml::node& n, std::string_view name, std::string_view special) const;
+  SpeedCoefficient read_coefficient(const TableReader& parent, const toml::node& n, const std::string& key,
+                                    Quantity kind, const std::string& at);
   /// A speed (or, with @p unit_key "frequency_unit", a frequency of the motion) of a
   /// coefficient law, in rad/s.
-  Real read_speed(const TableReader& t, const toml::node& n, const std::string& name,
-                  const std::string& speed_unit, const std::string& at,
-                  std::string_view unit_key = "speed_unit");
+  Real read_speed(const TableReader& t, const toml::node& n, const std::string& name, const std::string& speed_unit,
+                  const std::string& at, std::string_view unit_key = "speed_unit");
   std::vector<std::pair<Real, Real>> read_time_table(const TableReader& t, const toml::node& n, std::string_view key,
                                                      Quantity kind, const std::string& at);
-  std::vector<std::string> read_words(const TableReader& t, const spec::FieldKind kind,
-                                      const toml::node& n, std::string_view key,
-                                      std::span<const std::string_view> choices,
+  std::vector<std::string> read_words(const TableReader& t, const spec::FieldKind kind, const toml::node& n,
+                                      std::string_view key, std::span<const std::string_view> choices,
                                       const std::string& at);
 
   const std::string& path_;
@@ -110,14 +105,12 @@ ModelSpec SpecReader::read() {
     if constexpr (requires { typename M::value_type; }) {
       const toml::array* array = n->as_array();
       if (array == nullptr || form != spec::TableForm::array_of_tables)
-        top_.fail(*n, fmt::format("'{}' must be an array of tables, written [[{}]], got {}", key,
-                                  key, type_name(*n)));
+        top_.fail(*n, fmt::format("'{}' must be an array of tables, written [[{}]], got {}", key, key, type_name(*n)));
       const std::string context = fmt::format("[[{}]]", key);
       for (const toml::node& entry : *array) {
         const toml::table* table = entry.as_table();
         if (table == nullptr)
-          top_.fail(entry, fmt::format("each entry of '{}' must be a table, got {}", key,
-                                       type_name(entry)));
+          top_.fail(entry, fmt::format("each entry of '{}' must be a table, got {}", key, type_name(entry)));
         const std::string at = element(path, member.size());
         member.emplace_back();
         read_fields(TableReader(*table, context, path_), member.back(), at);
@@ -125,8 +118,7 @@ ModelSpec SpecReader::read() {
     } else {
       const toml::table* table = n->as_table();
       if (table == nullptr)
-        top_.fail(*n, fmt::format("'{}' must be a table, written [{}], got {}", key, key,
-                                  type_name(*n)));
+        top_.fail(*n, fmt::format("'{}' must be a table, written [{}], got {}", key, key, type_name(*n)));
       read_fields(TableReader(*table, fmt::format("[{}]", key), path_), member, path);
     }
   });
@@ -144,12 +136,11 @@ void SpecReader::read_fields(const TableReader& t, S& out, const std::string& pa
     const toml::node* n = t.find(f.key);
     if (n == nullptr) {
       if (f.required) {
-        const std::string expected =
-            f.kind == FieldKind::quantity ? expected_quantity(f.quantity)
-            : f.kind == FieldKind::node   ? std::string("a node number or a node name")
-            : f.kind == FieldKind::node_list
-                ? std::string("an array of at least two node numbers or names")
-                : fmt::format("{}, a string such as \"steel\"", f.doc);
+        const std::string expected = f.kind == FieldKind::quantity ? expected_quantity(f.quantity)
+                                     : f.kind == FieldKind::node   ? std::string("a node number or a node name")
+                                     : f.kind == FieldKind::node_list
+                                         ? std::string("an array of at least two node numbers or names")
+                                         : fmt::format("{}, a string such as \"steel\"", f.doc);
         t.require(f.key, expected);
       }
       continue;
@@ -162,8 +153,8 @@ void SpecReader::read_fields(const TableReader& t, S& out, const std::string& pa
 }
 
 template <class S>
-void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const toml::node& n,
-                            S& out, const std::string& at) {
+void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const toml::node& n, S& out,
+                            const std::string& at) {
   std::visit(
       [&](auto member) {
         using T = std::remove_cvref_t<decltype(out.*member)>;
@@ -177,16 +168,14 @@ void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const
             value = *t.number(f.key);
           }
         } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::optional<int>>) {
-          value = t.integer_at(n, f.key, std::numeric_limits<int>::min(),
-                               std::numeric_limits<int>::max());
+          value = t.integer_at(n, f.key, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
         } else if constexpr (std::is_same_v<T, std::optional<std::int64_t>>) {
           const auto i = n.value_exact<std::int64_t>();
           if (!i) t.fail(n, fmt::format("'{}' must be an integer, got {}", f.key, type_name(n)));
           value = *i;
         } else if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, std::optional<bool>>) {
           value = *t.boolean(f.key);
-        } else if constexpr (std::is_same_v<T, std::string> ||
-                             std::is_same_v<T, std::optional<std::string>>) {
+        } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>) {
           value = *t.string(f.key);
         } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
           value = read_words(t, f.kind, n, f.key, f.choices, at);
@@ -197,8 +186,7 @@ void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const
         } else if constexpr (std::is_same_v<T, std::optional<NodeRef>>) {
           if (const auto text = n.value_exact<std::string>(); text && *text == f.special) return;
           value = read_node(t, n, f.key, f.special);
-        } else if constexpr (std::is_same_v<T, std::vector<NodeRef>> ||
-                             std::is_same_v<T, std::vector<int>>) {
+        } else if constexpr (std::is_same_v<T, std::vector<NodeRef>> || std::is_same_v<T, std::vector<int>>) {
           const toml::array& entries = *t.array(f.key);
           if (entries.empty() && !f.if_empty.empty())
             t.fail(entries, fmt::format("'{}' must not be empty ({})", f.key, f.if_empty));
@@ -207,8 +195,8 @@ void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const
             const std::string name = fmt::format("{}[{}]", f.key, i);
             record(element(at, i), entry);
             if constexpr (std::is_same_v<T, std::vector<int>>)
-              value.push_back(t.integer_at(entry, name, std::numeric_limits<int>::min(),
-                                           std::numeric_limits<int>::max()));
+              value.push_back(
+                  t.integer_at(entry, name, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
             else
               value.push_back(read_node(t, entry, name, {}));
           }
@@ -228,17 +216,14 @@ void SpecReader::read_children(const TableReader& t, S& out, const std::string& 
     record(child(path, key), n);
     const toml::array* array = n.as_array();
     if (array == nullptr)
-      t.fail(n, fmt::format("'{}' must be an array of tables, written [[shafts.{}]], got {}", key,
-                            key, type_name(n)));
+      t.fail(n, fmt::format("'{}' must be an array of tables, written [[shafts.{}]], got {}", key, key, type_name(n)));
     for (const toml::node& entry : *array) {
       const toml::table* table = entry.as_table();
       if (table == nullptr)
-        t.fail(entry, fmt::format("each entry of '{}' must be a table, got {}", key,
-                                  type_name(entry)));
+        t.fail(entry, fmt::format("each entry of '{}' must be a table, got {}", key, type_name(entry)));
       const std::string at = element(child(path, key), children.size());
       children.emplace_back();
-      read_fields(TableReader(*table, fmt::format("[[shafts.{}]]", key), path_), children.back(),
-                  at);
+      read_fields(TableReader(*table, fmt::format("[[shafts.{}]]", key), path_), children.back(), at);
     }
   });
 }
@@ -251,13 +236,12 @@ NodeRef SpecReader::read_node(const TableReader& t, const toml::node& n, std::st
     t.fail(n, fmt::format("'{}' must be \"{}\", a node number (an integer) or a node name (a "
                           "string), got {}",
                           name, special, type_name(n)));
-  t.fail(n, fmt::format("'{}' must be a node number (an integer) or a node name (a string), got {}",
-                        name, type_name(n)));
+  t.fail(n,
+         fmt::format("'{}' must be a node number (an integer) or a node name (a string), got {}", name, type_name(n)));
 }
 
-std::vector<std::string> SpecReader::read_words(const TableReader& t, FieldKind kind,
-                                                const toml::node& n, std::string_view key,
-                                                std::span<const std::string_view> choices,
+std::vector<std::string> SpecReader::read_words(const TableReader& t, FieldKind kind, const toml::node& n,
+                                                std::string_view key, std::span<const std::string_view> choices,
                                                 const std::string& at) {
   const toml::array& entries = *t.array(key);
   std::vector<std::string> words;
@@ -267,8 +251,8 @@ std::vector<std::string> SpecReader::read_words(const TableReader& t, FieldKind 
     const auto s = entry.value_exact<std::string>();
     if (!s) {
       if (kind == FieldKind::choice_list)
-        t.fail(entry, fmt::format("entries of '{}' must be {}, got {}", key,
-                                  choices_phrase(choices), type_name(entry)));
+        t.fail(entry,
+               fmt::format("entries of '{}' must be {}, got {}", key, choices_phrase(choices), type_name(entry)));
       t.fail(entry, fmt::format("'{}[{}]' must be the name of a spring (a string, the 'name' of a "
                                 "[[springs]] entry), got {}",
                                 key, i, type_name(entry)));
@@ -286,11 +270,11 @@ Real SpecReader::read_speed(const TableReader& t, const toml::node& n, const std
   // A bare number would be rad/s, which a table of speeds rarely means: ask for the
   // unit (0 is 0 in every unit).
   if (bare && speed_unit.empty() && q.si != 0.0)
-    t.fail(n, fmt::format("'{}' is a bare number ({}): a {} of a coefficient law needs its unit, "
-                          "e.g. \"50 Hz\", \"3000 rpm\" or \"314 rad/s\", or the law's {} "
-                          "({} = \"Hz\")",
-                          name, *n.value<double>(), unit_key == "speed_unit" ? "speed" : "frequency",
-                          unit_key, unit_key));
+    t.fail(n,
+           fmt::format("'{}' is a bare number ({}): a {} of a coefficient law needs its unit, "
+                       "e.g. \"50 Hz\", \"3000 rpm\" or \"314 rad/s\", or the law's {} "
+                       "({} = \"Hz\")",
+                       name, *n.value<double>(), unit_key == "speed_unit" ? "speed" : "frequency", unit_key, unit_key));
   if (!speed_unit.empty() && bare) {
     q.si = *to_si(Quantity::speed, q.si, speed_unit);
     q.written = fmt::format("{} {}", *n.value<double>(), speed_unit);
@@ -299,14 +283,13 @@ Real SpecReader::read_speed(const TableReader& t, const toml::node& n, const std
   return q.si;
 }
 
-SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const toml::node& n,
-                                              const std::string& key, Quantity kind,
-                                              const std::string& at) {
+SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const toml::node& n, const std::string& key,
+                                              Quantity kind, const std::string& at) {
   const toml::table* table = n.as_table();
   if (table == nullptr) {
     if (n.is_array() || n.is_boolean() || n.is_date() || n.is_time() || n.is_date_time())
-      parent.fail(n, fmt::format("{}, or an inline table with a 'law', got {}",
-                                 must_be_quantity(key, kind), type_name(n)));
+      parent.fail(
+          n, fmt::format("{}, or an inline table with a 'law', got {}", must_be_quantity(key, kind), type_name(n)));
     const QuantityValue q = parent.quantity_at(n, key, kind);
     record_quantity(at, q);
     return SpeedCoefficient(q.si);
@@ -317,16 +300,13 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
   std::vector<std::string> law_names;
   for (const auto& l : laws) law_names.emplace_back(l.law);
   const std::string law = t.required_string("law", "\"table\", \"step\", \"arctan\" or \"frequency_table\"");
-  const auto it = std::find_if(laws.begin(), laws.end(),
-                               [&](const spec::CoefficientLaw& l) { return l.law == law; });
+  const auto it = std::find_if(laws.begin(), laws.end(), [&](const spec::CoefficientLaw& l) { return l.law == law; });
   if (it == laws.end()) {
     std::string message = fmt::format(
         "unknown law '{}' for coefficient '{}'; expected \"table\", \"step\", \"arctan\" or "
         "\"frequency_table\"",
-        law,
-        key);
-    if (const auto m = detail::closest_match(law, law_names, 2))
-      message += fmt::format(" (did you mean \"{}\"?)", *m);
+        law, key);
+    if (const auto m = detail::closest_match(law, law_names, 2)) message += fmt::format(" (did you mean \"{}\"?)", *m);
     t.fail(*t.find("law"), message);
   }
   t.check_keys(it->keys);
@@ -335,8 +315,7 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
     const auto unit = t.string(unit_key);
     if (!unit) return {};
     if (!to_si(Quantity::speed, 1.0, *unit))
-      t.fail(*t.find(unit_key),
-             fmt::format("'{}' must be \"rad/s\", \"Hz\" or \"rpm\", got \"{}\"", unit_key, *unit));
+      t.fail(*t.find(unit_key), fmt::format("'{}' must be \"rad/s\", \"Hz\" or \"rpm\", got \"{}\"", unit_key, *unit));
     return *unit;
   };
   const auto required = [&](std::string_view name, Quantity q) {
@@ -352,19 +331,17 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
 
   if (law == "table") {
     const std::string unit = speed_unit();
-    const toml::array& speeds =
-        t.required_array("speeds", "an array of speeds, e.g. [0, \"50 Hz\", \"100 Hz\"]");
-    const toml::array& values = t.required_array(
-        "values", fmt::format("an array of values, each {}", quantity_name(kind)));
+    const toml::array& speeds = t.required_array("speeds", "an array of speeds, e.g. [0, \"50 Hz\", \"100 Hz\"]");
+    const toml::array& values =
+        t.required_array("values", fmt::format("an array of values, each {}", quantity_name(kind)));
     record(child(at, "speeds"), speeds);
     record(child(at, "values"), values);
     SpeedCoefficient::Table law_table;
     for (std::size_t i = 0; i < speeds.size(); ++i)
-      law_table.speeds.push_back(read_speed(t, *speeds.get(i), fmt::format("{}.speeds[{}]", key, i),
-                                            unit, element(child(at, "speeds"), i)));
+      law_table.speeds.push_back(
+          read_speed(t, *speeds.get(i), fmt::format("{}.speeds[{}]", key, i), unit, element(child(at, "speeds"), i)));
     for (std::size_t i = 0; i < values.size(); ++i) {
-      const QuantityValue v =
-          t.quantity_at(*values.get(i), fmt::format("{}.values[{}]", key, i), kind);
+      const QuantityValue v = t.quantity_at(*values.get(i), fmt::format("{}.values[{}]", key, i), kind);
       record_quantity(element(child(at, "values"), i), v);
       law_table.values.push_back(v.si);
     }
@@ -373,8 +350,8 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
   if (law == "frequency_table") {
     // Frequencies along each row; one row without speeds, else one row per speed.
     const std::string s_unit = speed_unit(), f_unit = speed_unit("frequency_unit");
-    const toml::array& frequencies = t.required_array(
-        "frequencies", "an array of frequencies of the motion, e.g. [0, \"50 Hz\", \"100 Hz\"]");
+    const toml::array& frequencies =
+        t.required_array("frequencies", "an array of frequencies of the motion, e.g. [0, \"50 Hz\", \"100 Hz\"]");
     record(child(at, "frequencies"), frequencies);
     SpeedCoefficient::FrequencyTable law_table;
     for (std::size_t i = 0; i < frequencies.size(); ++i)
@@ -427,8 +404,7 @@ SpeedCoefficient SpecReader::read_coefficient(const TableReader& parent, const t
     SpeedCoefficient::Step step;
     step.below = required("below", kind);
     step.above = required("above", kind);
-    step.at = read_speed(t, t.require("at", expected_quantity(Quantity::speed)), "at", unit,
-                         child(at, "at"));
+    step.at = read_speed(t, t.require("at", expected_quantity(Quantity::speed)), "at", unit, child(at, "at"));
     return SpeedCoefficient(SpeedCoefficient::Law{step});
   }
   SpeedCoefficient::Arctan a;
@@ -456,9 +432,9 @@ std::vector<std::pair<Real, Real>> SpecReader::read_time_table(const TableReader
     const toml::node& entry = *table->get(i);
     const toml::array* pair = entry.as_array();
     if (pair == nullptr || pair->size() != 2)
-      t.fail(entry, fmt::format("each entry of '{}' must be a [time, {}] pair such as {}, got {}", key, noun, example,
-                                pair != nullptr ? fmt::format("an array of {} values", pair->size())
-                                                : type_name(entry)));
+      t.fail(entry,
+             fmt::format("each entry of '{}' must be a [time, {}] pair such as {}, got {}", key, noun, example,
+                         pair != nullptr ? fmt::format("an array of {} values", pair->size()) : type_name(entry)));
     record(element(at, i), entry);
     const QuantityValue time = t.quantity_at(*pair->get(0), fmt::format("{}[{}][0]", key, i), Quantity::time);
     const QuantityValue value = t.quantity_at(*pair->get(1), fmt::format("{}[{}][1]", key, i), kind);
@@ -519,11 +495,12 @@ void check_before_parsing(std::string_view text, const std::string& path) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
   };
   int parts = 1;
-  std::vector<char> open;  // arrays ('[') and inline tables ('{') open in a value (they span lines)
-  bool in_value = false;   // after the '=' of this line's key–value pair
-  bool line_begins = true; // nothing but spaces and tabs yet on this line
-  bool key_position = true; // where a key, not a value, comes (a '.' there separates a dotted key's parts)
-  std::size_t awaiting = std::string_view::npos;  // where the innermost open array's '[' or last comma was, while it awaits a value
+  std::vector<char> open;    // arrays ('[') and inline tables ('{') open in a value (they span lines)
+  bool in_value = false;     // after the '=' of this line's key–value pair
+  bool line_begins = true;   // nothing but spaces and tabs yet on this line
+  bool key_position = true;  // where a key, not a value, comes (a '.' there separates a dotted key's parts)
+  std::size_t awaiting =
+      std::string_view::npos;  // where the innermost open array's '[' or last comma was, while it awaits a value
   int awaiting_line = 0;
   const std::size_t n = text.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -547,18 +524,18 @@ void check_before_parsing(std::string_view text, const std::string& path) {
           fail(k, fmt::format("a table header must name its table: after '[' comes a key (letters, digits, '_' "
                               "or '-', or a quoted string), not {}",
                               static_cast<unsigned char>(text[k]) < 0x80 ? fmt::format("'{}'", text[k])
-                                                                        : shown_character(text, k)));
+                                                                         : shown_character(text, k)));
       }
     }
     if (c != ' ' && c != '\t' && c != '\r' && c != '#' && awaiting != std::string_view::npos) {
       if (c == '}')
-        fail(i, fmt::format("'}}' where the array opened or continued at line {} expects a value or ']'",
-                            awaiting_line));
+        fail(i,
+             fmt::format("'}}' where the array opened or continued at line {} expects a value or ']'", awaiting_line));
       awaiting = std::string_view::npos;
     }
     const char before = i > line_start ? text[i - 1] : '\n';
-    const bool string_may_begin = before == '\n' || before == ' ' || before == '\t' || before == '=' ||
-                                  before == '[' || before == '{' || before == ',' || (before == '.' && key_position);
+    const bool string_may_begin = before == '\n' || before == ' ' || before == '\t' || before == '=' || before == '[' ||
+                                  before == '{' || before == ',' || (before == '.' && key_position);
     if ((c == '"' || c == '\'') && string_may_begin) {
       // A string: skip to its end (a multi-line one may span lines).
       const bool multi = text.substr(i, 3) == std::string_view(c == '"' ? "\"\"\"" : "\'\'\'");
@@ -603,8 +580,10 @@ void check_before_parsing(std::string_view text, const std::string& path) {
     } else if (c == '=' || c == ',' || c == '{' || c == '}' || c == '[' || c == ']') {
       parts = 1;
       if (c == '=' && open.empty()) in_value = true;
-      if ((c == '[' || c == '{') && (in_value || !open.empty())) open.push_back(c);
-      else if ((c == ']' || c == '}') && !open.empty()) open.pop_back();
+      if ((c == '[' || c == '{') && (in_value || !open.empty()))
+        open.push_back(c);
+      else if ((c == ']' || c == '}') && !open.empty())
+        open.pop_back();
       key_position = (c == '{' || c == ',') && !open.empty() && open.back() == '{';
       if (open.empty() && !in_value) key_position = true;  // a table header's name
       if ((c == '[' || c == ',') && !open.empty() && open.back() == '[') {
@@ -617,8 +596,7 @@ void check_before_parsing(std::string_view text, const std::string& path) {
 
 }  // namespace
 
-ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages,
-                          SpecSource* source) {
+ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages, SpecSource* source) {
   check_before_parsing(detail::utf8_text(toml_text, path_for_messages), path_for_messages);
   const toml::table root = detail::parse_toml(toml_text, path_for_messages);
   SpecReader reader(root, path_for_messages);
@@ -643,8 +621,7 @@ void build(ModelFile& file, const std::vector<std::pair<std::string, std::string
     BuildInfo info;
     file.model = build_model(file.spec, &file.source, &info);
     file.assembler = std::move(info.assembler);
-    for (const std::string& path : info.node_paths)
-      file.node_locations.push_back(file.source.locate(path));
+    for (const std::string& path : info.node_paths) file.node_locations.push_back(file.source.locate(path));
   } catch (const SpecError& e) {
     // The latest assignment to the path is the value the spec holds.
     for (auto it = set.rbegin(); it != set.rend(); ++it)
@@ -681,8 +658,8 @@ std::string read_text_file(const std::string& path) {
                                                             : "a special file"));
   const std::uintmax_t size = fs::file_size(path, ec);
   if (!ec && size > max_model_file_bytes)
-    throw Error(fmt::format("model file '{}' is {} bytes; model files are limited to {} bytes ({} MiB)", path,
-                            size, max_model_file_bytes, max_model_file_bytes >> 20));
+    throw Error(fmt::format("model file '{}' is {} bytes; model files are limited to {} bytes ({} MiB)", path, size,
+                            max_model_file_bytes, max_model_file_bytes >> 20));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(fmt::format("cannot open model file '{}'", path));
   std::ostringstream text;
@@ -691,9 +668,7 @@ std::string read_text_file(const std::string& path) {
   return text.str();
 }
 
-ModelFile read_model_file(const std::string& path) {
-  return read_model_string(read_text_file(path), path);
-}
+ModelFile read_model_file(const std::string& path) { return read_model_string(read_text_file(path), path); }
 
 ModelFile read_model_file(const std::string& path, const std::vector<std::string>& assignments) {
   SpecSource source;

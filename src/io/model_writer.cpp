@@ -21,13 +21,27 @@ std::string toml_string(std::string_view text) {
   std::string out = "\"";
   for (const char c : text) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\b': out += "\\b"; break;
-      case '\t': out += "\\t"; break;
-      case '\n': out += "\\n"; break;
-      case '\f': out += "\\f"; break;
-      case '\r': out += "\\r"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\b':
+        out += "\\b";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\f':
+        out += "\\f";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
           out += fmt::format("\\u{:04X}", static_cast<unsigned>(static_cast<unsigned char>(c)));
@@ -73,11 +87,11 @@ std::string coefficient(const SpeedCoefficient& c, Quantity kind) {
         if constexpr (std::is_same_v<L, SpeedCoefficient::Constant>) {
           return value(law.value);
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::Table>) {
-          return fmt::format("{{ law = \"table\", speeds = {}, values = {} }}",
-                             array(law.speeds, speed), array(law.values, value));
+          return fmt::format("{{ law = \"table\", speeds = {}, values = {} }}", array(law.speeds, speed),
+                             array(law.values, value));
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
-          return fmt::format("{{ law = \"step\", below = {}, above = {}, at = {} }}",
-                             value(law.below), value(law.above), speed(law.at));
+          return fmt::format("{{ law = \"step\", below = {}, above = {}, at = {} }}", value(law.below),
+                             value(law.above), speed(law.at));
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::FrequencyTable>) {
           const std::size_t nf = law.frequencies.size();
           const auto row = [&](std::size_t i) {
@@ -93,10 +107,9 @@ std::string coefficient(const SpeedCoefficient& c, Quantity kind) {
           return fmt::format("{{ law = \"frequency_table\", speeds = {}, frequencies = {}, values = {} }}",
                              array(law.speeds, speed), array(law.frequencies, speed), array(rows, row));
         } else {
-          return fmt::format(
-              "{{ law = \"arctan\", value = {}, f_as = {}, c0 = {}, c1 = {}, c2 = {} }}",
-              value(law.value), quantity(law.f_as, Quantity::frequency, {}), number(law.c0),
-              number(law.c1), number(law.c2));
+          return fmt::format("{{ law = \"arctan\", value = {}, f_as = {}, c0 = {}, c1 = {}, c2 = {} }}",
+                             value(law.value), quantity(law.f_as, Quantity::frequency, {}), number(law.c0),
+                             number(law.c1), number(law.c2));
         }
       },
       c.law());
@@ -119,15 +132,16 @@ std::string value_of(const S& entry, const Field<S>& f) {
         if (!f.required && v == default_value<S>().*member) return {};
         if constexpr (std::is_same_v<T, Real> || std::is_same_v<T, std::optional<Real>>) {
           const Real x = [&] {
-            if constexpr (std::is_same_v<T, Real>) return v;
-            else return *v;
+            if constexpr (std::is_same_v<T, Real>)
+              return v;
+            else
+              return *v;
           }();
           if (f.kind != FieldKind::quantity) return number(x);
           return quantity(x, spec::value_quantity(entry, f), f.unit);
         } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, bool>) {
           return fmt::format("{}", v);
-        } else if constexpr (std::is_same_v<T, std::optional<int>> ||
-                             std::is_same_v<T, std::optional<std::int64_t>> ||
+        } else if constexpr (std::is_same_v<T, std::optional<int>> || std::is_same_v<T, std::optional<std::int64_t>> ||
                              std::is_same_v<T, std::optional<bool>>) {
           return fmt::format("{}", *v);
         } else if constexpr (std::is_same_v<T, std::string>) {
@@ -181,8 +195,7 @@ void write_entry(std::string& out, std::string_view key, const S& entry) {
 std::string write_toml(const ModelSpec& spec) {
   std::string out;
   if (!spec.title.empty()) out += fmt::format("title = {}\n", toml_string(spec.title));
-  spec::visit_tables(spec, [&](std::string_view key, spec::TableForm, std::string_view,
-                               const auto& member) {
+  spec::visit_tables(spec, [&](std::string_view key, spec::TableForm, std::string_view, const auto& member) {
     using M = std::remove_cvref_t<decltype(member)>;
     if constexpr (requires { typename M::value_type; }) {
       for (const auto& entry : member) write_entry(out, key, entry);

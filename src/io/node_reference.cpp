@@ -18,8 +18,7 @@ using detail::join_list;
 /// At most this many node names are listed in a message.
 constexpr std::size_t max_listed_names = 8;
 
-constexpr std::array<Dof, dofs_per_node> node_dof_order = {Dof::u, Dof::v, Dof::w,
-                                                     Dof::rx, Dof::ry, Dof::rz};
+constexpr std::array<Dof, dofs_per_node> node_dof_order = {Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz};
 
 std::vector<std::string> node_dof_names() {
   std::vector<std::string> names;
@@ -34,8 +33,7 @@ std::string node_choices(const Model& model) {
   std::vector<std::string> names = detail::node_names(model);
   if (names.empty()) return fmt::format("no node has a name; the node numbers are {}", numbers);
   if (names.size() <= max_listed_names)
-    return fmt::format("the node names are {}, the node numbers {}",
-                       join_list(names, "and", '\''), numbers);
+    return fmt::format("the node names are {}, the node numbers {}", join_list(names, "and", '\''), numbers);
   const std::size_t n_names = names.size();
   names.resize(max_listed_names);
   return fmt::format("the node names include {} ({} names in all), the node numbers are {}",
@@ -60,8 +58,7 @@ std::string dof_hint(const std::string& text) {
 }  // namespace
 
 Index find_node_reference(const Model& model, const std::string& text, const std::string& what) {
-  if (text.empty())
-    throw Error(fmt::format("{}: empty node reference; give a node number or a node name", what));
+  if (text.empty()) throw Error(fmt::format("{}: empty node reference; give a node number or a node name", what));
   if (detail::all_digits(text)) {
     int number = 0;
     const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
@@ -88,8 +85,7 @@ std::pair<Index, std::optional<Dof>> parse_probe(const Model& model, const std::
   for (const Dof d : node_dof_order)
     if (dof == dof_name(d)) return {node, d};
   if (dof.empty())
-    throw Error(fmt::format("probe '{}': no DOF after ':'; the DOFs are {}", text,
-                            join_list(node_dof_names(), "and")));
+    throw Error(fmt::format("probe '{}': no DOF after ':'; the DOFs are {}", text, join_list(node_dof_names(), "and")));
   throw Error(fmt::format("probe '{}': unknown DOF '{}'; the DOFs are {}{}", text, dof,
                           join_list(node_dof_names(), "and"), dof_hint(dof)));
 }

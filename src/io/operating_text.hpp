@@ -32,7 +32,8 @@ inline nlohmann::json operating_json(const std::vector<OperatingSeries>& series,
     nlohmann::json js = {{"label", force_label(model, s.force)},
                          {"kind", force.kind()},
                          {"node", model.nodes[static_cast<std::size_t>(at.front())].number}};
-    js["to"] = at.size() > 1 ? nlohmann::json(model.nodes[static_cast<std::size_t>(at[1])].number) : nlohmann::json("ground");
+    js["to"] =
+        at.size() > 1 ? nlohmann::json(model.nodes[static_cast<std::size_t>(at[1])].number) : nlohmann::json("ground");
     nlohmann::json values = nlohmann::json::object();
     for (std::size_t q = 0; q < s.quantities.size(); ++q) {
       if (one_point) {

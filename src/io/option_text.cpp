@@ -60,9 +60,10 @@ HarmonicForce parse_force_text(const Model& model, const std::string& text, cons
       start = i + 1;
     }
   if (parts.size() < 3 || parts.size() > 4)
-    throw Error(fmt::format("{} '{}': expected NODE:DIRECTION:AMPLITUDE[:PHASE], e.g. rotor:y:10N or "
-                            "rotor:rotating:2N:90deg",
-                            what, text));
+    throw Error(
+        fmt::format("{} '{}': expected NODE:DIRECTION:AMPLITUDE[:PHASE], e.g. rotor:y:10N or "
+                    "rotor:rotating:2N:90deg",
+                    what, text));
   HarmonicForce f;
   f.node = find_node_reference(model, parts[0], what);
   const std::string& dir = parts[1];
@@ -77,9 +78,10 @@ HarmonicForce parse_force_text(const Model& model, const std::string& text, cons
   } else {
     const auto* it = std::find_if(std::begin(dirs), std::end(dirs), [&](const auto& p) { return dir == p.first; });
     if (it == std::end(dirs))
-      throw Error(fmt::format("{} '{}': direction '{}' is not one of x, y, z, rx, ry, rz, rotating, "
-                              "rotating_moment",
-                              what, text, dir));
+      throw Error(
+          fmt::format("{} '{}': direction '{}' is not one of x, y, z, rx, ry, rz, rotating, "
+                      "rotating_moment",
+                      what, text, dir));
     f.direction = it->second;
     moment = f.direction == Dof::rx || f.direction == Dof::ry || f.direction == Dof::rz;
   }

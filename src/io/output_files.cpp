@@ -112,13 +112,13 @@ struct OutputFiles::Output {
   std::string identity;      // canonical name of the target (for a new file)
   std::optional<FileId> id;  // of an existing target
   bool null_device = false;
-  std::string temporary;     // replace: the temporary file
-  int fd = -1;               // replace: the temporary; descriptor: the alias; in_place: once opened
+  std::string temporary;  // replace: the temporary file
+  int fd = -1;            // replace: the temporary; descriptor: the alias; in_place: once opened
   bool own_fd = false;
   int slot = -1;
   mode_t mode = 0;
   std::string buffer;
-  int error = 0;             // the first write error
+  int error = 0;  // the first write error
   bool done = false;
 
   Error failure(const std::string& why) const {
@@ -155,8 +155,7 @@ void OutputFiles::add_input(std::string path, std::string what) {
   struct stat st {};
   if (!path.empty() && ::stat(path.c_str(), &st) == 0)
     for (const auto& o : outputs_)
-      if (o->id && *o->id == *file_id(st))
-        throw o->failure(fmt::format("it is {} '{}'", what, path));
+      if (o->id && *o->id == *file_id(st)) throw o->failure(fmt::format("it is {} '{}'", what, path));
   inputs_.push_back({std::move(path), std::move(what)});
 }
 
@@ -234,8 +233,8 @@ int OutputFiles::add(std::string option, std::string path, bool streamed) {
   }
   for (const auto& other : outputs_) {
     if (other->kind == Output::Kind::none || (o->null_device && other->null_device)) continue;
-    const bool same = (o->id && other->id && *o->id == *other->id) ||
-                      (!o->identity.empty() && o->identity == other->identity);
+    const bool same =
+        (o->id && other->id && *o->id == *other->id) || (!o->identity.empty() && o->identity == other->identity);
     if (same) throw o->failure(fmt::format("{} already writes '{}'", other->option, other->path));
   }
 
@@ -252,9 +251,7 @@ int OutputFiles::add(std::string option, std::string path, bool streamed) {
   return number;
 }
 
-bool OutputFiles::wanted(int id) const {
-  return outputs_.at(static_cast<std::size_t>(id))->kind != Output::Kind::none;
-}
+bool OutputFiles::wanted(int id) const { return outputs_.at(static_cast<std::size_t>(id))->kind != Output::Kind::none; }
 
 void OutputFiles::write(int id, std::string content) {
   Output& o = *outputs_.at(static_cast<std::size_t>(id));

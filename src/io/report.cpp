@@ -29,7 +29,8 @@ Real speed_value(Real speed, const std::string& unit) { return rad_to_hz(speed) 
 
 // A speed alone, in the chosen unit ("105.3 Hz", "6318 rpm").
 std::string speed_short(Real speed, const std::string& unit) {
-  return unit == "rpm" ? fmt::format("{:.0f} rpm", speed_value(speed, unit)) : fmt::format("{:.4g} Hz", rad_to_hz(speed));
+  return unit == "rpm" ? fmt::format("{:.0f} rpm", speed_value(speed, unit))
+                       : fmt::format("{:.4g} Hz", rad_to_hz(speed));
 }
 
 // The same without the unit (under a speed_header()).
@@ -75,11 +76,13 @@ std::string stability_text(const HarmonicResult& result, const std::string& unit
   for (const StabilityPoint& p : result.stability) unknown += p.known ? 0 : 1;
   if (first >= 0) {
     const StabilityPoint& p = result.stability[static_cast<std::size_t>(first)];
-    out += fmt::format("WARNING: the rotor is UNSTABLE at {} of {} points, from {}: {}.\n"
-                       "         There the response is no steady state the rotor reaches: any disturbance grows.\n\n",
-                       unstable_points(result), result.stability.size(), speed_text(p.speed, unit),
-                       p.divergence ? fmt::format("divergence, a real eigenvalue {:.4g} 1/s", p.growth_rate)
-                                    : fmt::format("a mode at {} grows at {:.4g} 1/s", frequency_text(p.frequency_hz, unit), p.growth_rate));
+    out += fmt::format(
+        "WARNING: the rotor is UNSTABLE at {} of {} points, from {}: {}.\n"
+        "         There the response is no steady state the rotor reaches: any disturbance grows.\n\n",
+        unstable_points(result), result.stability.size(), speed_text(p.speed, unit),
+        p.divergence
+            ? fmt::format("divergence, a real eigenvalue {:.4g} 1/s", p.growth_rate)
+            : fmt::format("a mode at {} grows at {:.4g} 1/s", frequency_text(p.frequency_hz, unit), p.growth_rate));
   }
   if (unknown > 0)
     out += fmt::format("note: the stability is unknown at {} of {} points\n\n", unknown, result.stability.size());
@@ -106,14 +109,18 @@ std::string operating_block(const std::string& title, const std::string& first, 
     Real scale;
     const char* format;
   };
-  static const Column columns[] = {
-      {"eccentricity_ratio", "eps [-]", 1, ".4f"},        {"attitude_angle_deg", "attitude [deg]", 1, ".2f"},
-      {"min_film_thickness_m", "h_min [um]", 1e6, ".3f"}, {"min_film_angle_deg", "at [deg]", 1, ".1f"},
-      {"specific_load_pa", "W/(LD) [MPa]", 1e-6, ".4g"},  {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},
-      {"friction_torque_nm", "torque [N m]", 1, ".4g"},
-      {"power_loss_w", "loss [W]", 1, ".4g"},             {"peak_pressure_pa", "p_max [MPa]", 1e-6, ".4g"},
-      {"max_element_load_n", "Q_max [N]", 1, ".4g"},      {"loaded_elements", "loaded", 1, ".0f"},
-      {"max_contact_stress_pa", "p_Hertz [MPa]", 1e-6, ".4g"}};
+  static const Column columns[] = {{"eccentricity_ratio", "eps [-]", 1, ".4f"},
+                                   {"attitude_angle_deg", "attitude [deg]", 1, ".2f"},
+                                   {"min_film_thickness_m", "h_min [um]", 1e6, ".3f"},
+                                   {"min_film_angle_deg", "at [deg]", 1, ".1f"},
+                                   {"specific_load_pa", "W/(LD) [MPa]", 1e-6, ".4g"},
+                                   {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},
+                                   {"friction_torque_nm", "torque [N m]", 1, ".4g"},
+                                   {"power_loss_w", "loss [W]", 1, ".4g"},
+                                   {"peak_pressure_pa", "p_max [MPa]", 1e-6, ".4g"},
+                                   {"max_element_load_n", "Q_max [N]", 1, ".4g"},
+                                   {"loaded_elements", "loaded", 1, ".0f"},
+                                   {"max_contact_stress_pa", "p_Hertz [MPa]", 1e-6, ".4g"}};
   std::vector<const Column*> used;
   for (const Column& c : columns)
     for (const OperatingRow& r : rows)
@@ -196,34 +203,36 @@ std::string point_text(const HarmonicResult& r, Index k, const std::string& unit
 
 std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source) {
   std::string out = source_line("modal", source);
-  out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed, source.speed_unit), result.modes.size(),
-                     to_string(result.info.method));
+  out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed, source.speed_unit),
+                     result.modes.size(), to_string(result.info.method));
   const std::string& unit = source.speed_unit;
   out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {:<12} {}\n", "mode",
-                     fmt::format("frequency [{}]", frequency_unit(unit)),
-                     "damping [%]", "log. decr.", "whirl", "directivity", "type", "shape", "note");
+                     fmt::format("frequency [{}]", frequency_unit(unit)), "damping [%]", "log. decr.", "whirl",
+                     "directivity", "type", "shape", "note");
   int index = 0;
   for (const Mode& m : result.modes) {
     const char* note = m.rigid_body ? "rigid body" : (!m.oscillatory ? "non-oscillatory" : "");
-    out += fmt::format("{:>4}  {}  {}  {}  {:<9} {}  {:<10} {:<12} {}\n", ++index,
-                       cell(frequency_value(m.frequency_hz, unit), unit == "rpm" ? ".2f" : ".4f", 14, unit == "rpm" ? 2 : 4),
-                       cell(100.0 * m.damping_ratio, ".3f", 12, 3), cell(m.log_decrement, ".4f", 10, 4),
-                       to_string(m.whirl), cell(m.directivity, ".3f", 11, 3), to_string(m.type),
-                       m.shape_kind == ModeShape::none ? "-" : to_string(m.shape_kind), note);
+    out += fmt::format(
+        "{:>4}  {}  {}  {}  {:<9} {}  {:<10} {:<12} {}\n", ++index,
+        cell(frequency_value(m.frequency_hz, unit), unit == "rpm" ? ".2f" : ".4f", 14, unit == "rpm" ? 2 : 4),
+        cell(100.0 * m.damping_ratio, ".3f", 12, 3), cell(m.log_decrement, ".4f", 10, 4), to_string(m.whirl),
+        cell(m.directivity, ".3f", 11, 3), to_string(m.type),
+        m.shape_kind == ModeShape::none ? "-" : to_string(m.shape_kind), note);
   }
   out += operating_at_one_speed(result.operating, model);
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
   return out;
 }
 
-std::string campbell_report(const CampbellResult& result, const CampbellOptions& options,
-                            const Model& model, const ResultSource& source) {
+std::string campbell_report(const CampbellResult& result, const CampbellOptions& options, const Model& model,
+                            const ResultSource& source) {
   std::string out = source_line("campbell", source);
   const std::size_t n = result.speeds.size();
   if (n == 0) return out + "no speed could be solved\n";
   out += fmt::format("{} speeds from {} to {}, {} modes tracked, solver {}, {} eigen solves\n\n", n,
                      speed_text(result.speeds.front(), source.speed_unit),
-                     speed_text(result.speeds.back(), source.speed_unit), result.modes.size(), to_string(result.info.method), result.n_solves);
+                     speed_text(result.speeds.back(), source.speed_unit), result.modes.size(),
+                     to_string(result.info.method), result.n_solves);
 
   // Frequencies at (at most) 11 evenly spread speeds of the grid.
   const std::size_t rows = std::min<std::size_t>(n, 11);
@@ -231,7 +240,9 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
   auto table = [&](const char* title, auto value, const char* spec) {
     out += fmt::format("{}\n{:>11}", title, speed_header(source.speed_unit));
     // Each column as wide as its label ("backward cylindrical 1"), at least 12.
-    const auto width = [](const TrackedMode& m) { return std::max<int>(12, static_cast<int>(printable(m.label).size())); };
+    const auto width = [](const TrackedMode& m) {
+      return std::max<int>(12, static_cast<int>(printable(m.label).size()));
+    };
     for (const TrackedMode& m : result.modes) out += fmt::format(" {:>{}}", printable(m.label), width(m));
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
@@ -247,31 +258,35 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
     out += '\n';
   };
   const std::string& unit = source.speed_unit;
-  table(fmt::format("Natural frequencies [{}]", frequency_unit(unit)).c_str(),
-        [&](const TrackedMode& m, std::size_t i) { return frequency_value(m.frequency_hz[i], unit); },
-        unit == "rpm" ? ".1f" : ".3f");
-  table("Damping ratios [%]", [](const TrackedMode& m, std::size_t i) { return 100.0 * m.damping_ratio[i]; },
-        ".3f");
+  table(
+      fmt::format("Natural frequencies [{}]", frequency_unit(unit)).c_str(),
+      [&](const TrackedMode& m, std::size_t i) { return frequency_value(m.frequency_hz[i], unit); },
+      unit == "rpm" ? ".1f" : ".3f");
+  table(
+      "Damping ratios [%]", [](const TrackedMode& m, std::size_t i) { return 100.0 * m.damping_ratio[i]; }, ".3f");
 
   std::vector<std::string> orders;
   for (int k : options.orders) orders.push_back(std::to_string(k));
   out += fmt::format("Critical speeds (frequency = k x speed, k = {}):\n", fmt::join(orders, ", "));
   if (result.critical_speeds.empty()) out += "  none in the speed range\n";
   for (const CriticalSpeed& c : result.critical_speeds)
-    out += fmt::format("  {:<24} k = {}  at {}\n", result.modes[static_cast<std::size_t>(c.mode)].label,
-                       c.order, speed_text(c.speed, source.speed_unit));
+    out += fmt::format("  {:<24} k = {}  at {}\n", result.modes[static_cast<std::size_t>(c.mode)].label, c.order,
+                       speed_text(c.speed, source.speed_unit));
   out += "\nStability threshold: ";
   if (!result.stability_threshold) {
-    out += fmt::format("none up to {} (every damping ratio stays >= 0)\n", speed_text(result.speeds.back(), source.speed_unit));
+    out += fmt::format("none up to {} (every damping ratio stays >= 0)\n",
+                       speed_text(result.speeds.back(), source.speed_unit));
   } else {
     const StabilityThreshold& t = *result.stability_threshold;
     const std::string label = threshold_label(result, t);
     if (t.unstable_at_start)
-      out += fmt::format("{} is already unstable at the first speed, {}\n", label, speed_text(t.speed, source.speed_unit));
+      out +=
+          fmt::format("{} is already unstable at the first speed, {}\n", label, speed_text(t.speed, source.speed_unit));
     else if (t.divergence)
-      out += fmt::format("{}: a real eigenvalue turns positive (divergence: the stiffness loses its positivity, "
-                         "a negative support stiffness or an axial load beyond buckling)\n",
-                         speed_text(t.speed, source.speed_unit));
+      out += fmt::format(
+          "{}: a real eigenvalue turns positive (divergence: the stiffness loses its positivity, "
+          "a negative support stiffness or an axial load beyond buckling)\n",
+          speed_text(t.speed, source.speed_unit));
     else
       out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {} natural frequency\n",
                          speed_text(t.speed, source.speed_unit), label, frequency_text(t.frequency_hz, unit));
@@ -296,8 +311,8 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
     out += fmt::format("at speed {}, synchronous excitation", speed_text(result.speeds.front(), source.speed_unit));
   else
     out += fmt::format("speed sweep {} to {} ({} points), synchronous excitation",
-                       speed_text(result.speeds.front(), source.speed_unit), speed_text(result.speeds.back(), source.speed_unit),
-                       n);
+                       speed_text(result.speeds.front(), source.speed_unit),
+                       speed_text(result.speeds.back(), source.speed_unit), n);
   out += fmt::format(", {} unbalance(s), {} force(s), loss factor {}\n\n",
                      (!result.frequency_sweep && options.unbalance) ? model.n_forces("unbalance") : std::size_t{0},
                      model.n_forces("harmonic_force") + options.extra_forces.size(), options.loss_factor);
@@ -312,8 +327,8 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
     out += '\n';
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t k = rows == 1 ? 0 : r * (n - 1) / (rows - 1);
-      out += result.frequency_sweep
-                 ? cell(frequency_value(rad_to_hz(result.frequencies[k]), source.speed_unit), source.speed_unit == "rpm" ? ".1f" : ".2f", 12, 2)
+      out += result.frequency_sweep       ? cell(frequency_value(rad_to_hz(result.frequencies[k]), source.speed_unit),
+                                           source.speed_unit == "rpm" ? ".1f" : ".2f", 12, 2)
              : source.speed_unit == "rpm" ? cell(speed_value(result.speeds[k], "rpm"), ".1f", 12, 1)
                                           : cell(rad_to_hz(result.speeds[k]), ".2f", 12, 2);
       for (const ProbeResponse& p : result.probes) {
@@ -333,8 +348,9 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
   out += "Peaks:\n";
   for (std::size_t p = 0; p < sum.probe_peaks.size(); ++p)
     if (sum.probe_peaks[p].point >= 0)
-      out += fmt::format("  orbit at node {:<18} {:.5g} mm at {}\n", node_name(model, result.probes[p].node),
-                         1e3 * sum.probe_peaks[p].value, point_text(result, sum.probe_peaks[p].point, source.speed_unit));
+      out +=
+          fmt::format("  orbit at node {:<18} {:.5g} mm at {}\n", node_name(model, result.probes[p].node),
+                      1e3 * sum.probe_peaks[p].value, point_text(result, sum.probe_peaks[p].point, source.speed_unit));
   if (sum.spring_force.point >= 0)
     out += fmt::format("  largest spring-damper force: {} {:.5g} N at {}\n",
                        element_name(model, result.springs[static_cast<std::size_t>(sum.spring_force.item)].element),
@@ -349,15 +365,15 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
                        sum.reaction_force.value, point_text(result, sum.reaction_force.point, source.speed_unit));
   if (sum.stress.point >= 0) {
     const ShaftStation& st = result.shaft_stations[static_cast<std::size_t>(sum.stress.item)];
-    out += fmt::format("  largest equivalent stress: {:.5g} MPa at x = {:.4g} mm ({} {}), at {}\n", 1e-6 * sum.stress.value,
-                       1e3 * st.x, element_name(model, st.element), st.end == 0 ? "start" : "end",
-                       point_text(result, sum.stress.point, source.speed_unit));
+    out += fmt::format("  largest equivalent stress: {:.5g} MPa at x = {:.4g} mm ({} {}), at {}\n",
+                       1e-6 * sum.stress.value, 1e3 * st.x, element_name(model, st.element),
+                       st.end == 0 ? "start" : "end", point_text(result, sum.stress.point, source.speed_unit));
   }
   for (const SupportForceResponse& sr : result.supports) {
     std::size_t at = sr.orbit_clearance_ratio.size();
     for (std::size_t k = 0; k < sr.orbit_clearance_ratio.size(); ++k)
-      if (std::isfinite(sr.orbit_clearance_ratio[k]) && (at == sr.orbit_clearance_ratio.size() ||
-                                                          sr.orbit_clearance_ratio[k] > sr.orbit_clearance_ratio[at]))
+      if (std::isfinite(sr.orbit_clearance_ratio[k]) &&
+          (at == sr.orbit_clearance_ratio.size() || sr.orbit_clearance_ratio[k] > sr.orbit_clearance_ratio[at]))
         at = k;
     if (at < sr.orbit_clearance_ratio.size())
       out += fmt::format("  largest journal orbit in {}: {:.4g} x its clearance ({:.4g} um) at {}\n",
@@ -381,8 +397,8 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
                      options.gravity(0), options.gravity(1), options.gravity(2),
                      options.loads ? model.n_forces("static_load") : 0, speed_text(options.speed, source.speed_unit));
   if (result.stability.known && result.stability.unstable)
-    out += fmt::format("warning: the rotor does not stay at this equilibrium: {}\n\n",
-                       stability_phrase(result.stability));
+    out +=
+        fmt::format("warning: the rotor does not stay at this equilibrium: {}\n\n", stability_phrase(result.stability));
   else
     out += fmt::format("stability of the equilibrium: {}\n\n", stability_phrase(result.stability));
   out += "Displacements [mm, mrad]\n";
@@ -411,7 +427,8 @@ std::string static_report(const StaticResult& result, const StaticOptions& optio
   }
   if (!result.reactions.empty()) {
     out += fmt::format("\nForces on the supports (fixed DOFs)\n{:>30}{}\n", "", head);
-    for (const auto& [node, f] : result.reactions) out += fmt::format("{:>30}{}\n", "node " + node_name(model, node), forces(f));
+    for (const auto& [node, f] : result.reactions)
+      out += fmt::format("{:>30}{}\n", "node " + node_name(model, node), forces(f));
   }
   out += fmt::format("{:>30}{}\n", "total applied load", forces(result.total_load));
   if (!result.stations.empty()) {
@@ -437,13 +454,15 @@ std::string runup_report(const TransientResult& result, const TransientOptions& 
                          const ResultSource& source, double wall_seconds) {
   std::string out = source_line("runup", source);
   const auto number = [&](Real speed) {  // in the chosen unit, without it
-    return source.speed_unit == "rpm" ? fmt::format("{:.0f}", speed_value(speed, "rpm")) : fmt::format("{:.4g}", rad_to_hz(speed));
+    return source.speed_unit == "rpm" ? fmt::format("{:.0f}", speed_value(speed, "rpm"))
+                                      : fmt::format("{:.4g}", rad_to_hz(speed));
   };
-  out += fmt::format("{} from {:.4g} to {:.4g} s, speed {} -> {} {}{}; {} steps ({} rejected), {} "
-                     "factorizations, {} Newton iterations",
-                     options.integrator, 0.0, result.t_end, number(options.profile.speed(0.0)), number(result.speed_end),
-                     source.speed_unit == "rpm" ? "rpm" : "Hz", options.driven ? " (torque-driven)" : "", result.steps, result.rejected,
-                     result.factorizations, result.newton_iterations);
+  out += fmt::format(
+      "{} from {:.4g} to {:.4g} s, speed {} -> {} {}{}; {} steps ({} rejected), {} "
+      "factorizations, {} Newton iterations",
+      options.integrator, 0.0, result.t_end, number(options.profile.speed(0.0)), number(result.speed_end),
+      source.speed_unit == "rpm" ? "rpm" : "Hz", options.driven ? " (torque-driven)" : "", result.steps,
+      result.rejected, result.factorizations, result.newton_iterations);
   out += wall_seconds >= 0 ? fmt::format("; {:.3g} s wall\n", wall_seconds) : std::string("\n");
   if (result.basis_size > 0)
     out += fmt::format("modal reduction: {} modes at {} speeds, a basis of {} vectors\n", options.reduced_modes,
@@ -470,8 +489,7 @@ std::string parameters_report(const std::vector<Parameter>& parameters, const Re
     path_width = std::max(path_width, printable(p.path).size());
     value_width = std::max(value_width, printable(p.text()).size());
   }
-  std::string out = fmt::format("{} settable parameters of {}\n", parameters.size(),
-                                printable(source.model_path));
+  std::string out = fmt::format("{} settable parameters of {}\n", parameters.size(), printable(source.model_path));
   out += "(set one with --set 'PATH=VALUE' on any analysis, the value with its unit)\n\n";
   out += fmt::format("{:<{}}  {:<{}}  {}\n", "path", path_width, "value", value_width, "meaning");
   for (const Parameter& p : parameters)
@@ -488,27 +506,26 @@ std::string api684_cases(const Api684Result& result, const Model& model, const s
   for (const Api684Case& c : result.cases) {
     out += fmt::format("\n{}", c.name);
     if (c.mode)
-      out += fmt::format(" ({} at the maximum continuous speed, log. decr. {:.3f})", frequency_text(c.mode->frequency_hz, unit),
-                         c.mode->log_decrement);
+      out += fmt::format(" ({} at the maximum continuous speed, log. decr. {:.3f})",
+                         frequency_text(c.mode->frequency_hz, unit), c.mode->log_decrement);
     out += fmt::format(": {}\n", c.passes ? "passes" : "FAILS");
     for (const PlacedUnbalance& u : c.unbalances)
       out += fmt::format("  unbalance {:.4g} g mm at node {}, {:.0f} deg (W = {:.4g} kg, {})\n", u.amount * 1e6,
                          model.node_label(u.node), u.phase * 180.0 / pi, u.mass, printable(u.basis));
     out += fmt::format("  {:<16} {:>11} {:>13} {:>8} {:>10} {:>10}  {}\n", "probe", fmt::format("peak [{}]", unit),
-                       "amplitude [um]",
-                       "AF", "SM req.", "SM actual", "verdict");
+                       "amplitude [um]", "AF", "SM req.", "SM actual", "verdict");
     for (std::size_t p = 0; p < c.response.probes.size(); ++p)
       for (const SeparationCheck& k : c.checks[p])
-        out += fmt::format("  {:<16} {} {:>13.4g} {} {} {:>9.1f}%  {}\n",
-                           printable(model.node_label(c.response.probes[p].node)),
-                           cell(speed_value(k.peak.speed, unit), unit == "rpm" ? ".0f" : ".2f", 11, unit == "rpm" ? 0 : 2),
-                           k.peak.amplitude * 1e6, cell(k.peak.amplification_factor, ".2f", 8, 2),
-                           k.required_margin ? fmt::format("{:>9.1f}%", 100 * *k.required_margin) : fmt::format("{:>10}", "-"),
-                           100 * k.actual_margin,
-                           k.unstable   ? "FAIL (rotor unstable here: no steady state)"
-                           : !k.passes  ? "not judged (no half-power points)"
-                           : *k.passes  ? "pass"
-                                        : "FAIL");
+        out += fmt::format(
+            "  {:<16} {} {:>13.4g} {} {} {:>9.1f}%  {}\n", printable(model.node_label(c.response.probes[p].node)),
+            cell(speed_value(k.peak.speed, unit), unit == "rpm" ? ".0f" : ".2f", 11, unit == "rpm" ? 0 : 2),
+            k.peak.amplitude * 1e6, cell(k.peak.amplification_factor, ".2f", 8, 2),
+            k.required_margin ? fmt::format("{:>9.1f}%", 100 * *k.required_margin) : fmt::format("{:>10}", "-"),
+            100 * k.actual_margin,
+            k.unstable  ? "FAIL (rotor unstable here: no steady state)"
+            : !k.passes ? "not judged (no half-power points)"
+            : *k.passes ? "pass"
+                        : "FAIL");
   }
   return out;
 }
@@ -517,7 +534,8 @@ std::string api684_cases(const Api684Result& result, const Model& model, const s
 
 std::string api684_report(const Api684Result& result, const Model& model, const ResultSource& source) {
   std::string out = source_line("api684", source);
-  out += fmt::format("operating range {} to {}\n", speed_short(result.low, source.speed_unit), speed_short(result.high, source.speed_unit));
+  out += fmt::format("operating range {} to {}\n", speed_short(result.low, source.speed_unit),
+                     speed_short(result.high, source.speed_unit));
   out += fmt::format("stability in the operating range: {} ({})\n",
                      result.stability_verdict.passes ? "passes" : "FAILS", result.stability_verdict.reason);
   if (!result.journals.empty()) {
@@ -542,9 +560,10 @@ std::string api684_report(const Api684Result& result, const Model& model, const 
   }
   if (result.stability) {
     const StabilitySweepResult& s = *result.stability;
-    out += fmt::format("\nlevel I stability at {}, cross-coupling at node {}:\n", speed_short(s.speed, source.speed_unit),
-                       model.node_label(s.node));
-    if (!s.log_decrement.empty()) out += fmt::format("  log. decr. without cross-coupling {:.4f}\n", s.log_decrement.front());
+    out += fmt::format("\nlevel I stability at {}, cross-coupling at node {}:\n",
+                       speed_short(s.speed, source.speed_unit), model.node_label(s.node));
+    if (!s.log_decrement.empty())
+      out += fmt::format("  log. decr. without cross-coupling {:.4f}\n", s.log_decrement.front());
     out += s.q_zero ? fmt::format("  Q0 (log. decr. 0) = {:.4g} N/m\n", *s.q_zero)
                     : std::string("  Q0: none found (unstable without cross-coupling, or stable up to 1e13 N/m)\n");
     if (s.anticipated)

@@ -6,17 +6,23 @@
 
 #ifdef FERAN_PLOTLY_JS
 
-#define FERAN_EMBED(name, path)                 \
-  asm(".section .rodata\n"                     \
-      ".globl " #name "_begin\n"               \
-      ".hidden " #name "_begin\n"              \
-      ".globl " #name "_end\n"                 \
-      ".hidden " #name "_end\n"                \
-      ".balign 16\n" #name "_begin:\n"         \
-      ".incbin \"" path "\"\n" #name "_end:\n" \
-      ".byte 0\n"                              \
-      ".previous\n");                          \
-  extern "C" const char name##_begin[];        \
+#define FERAN_EMBED(name, path)         \
+  asm(".section .rodata\n"              \
+      ".globl " #name                   \
+      "_begin\n"                        \
+      ".hidden " #name                  \
+      "_begin\n"                        \
+      ".globl " #name                   \
+      "_end\n"                          \
+      ".hidden " #name                  \
+      "_end\n"                          \
+      ".balign 16\n" #name              \
+      "_begin:\n"                       \
+      ".incbin \"" path "\"\n" #name    \
+      "_end:\n"                         \
+      ".byte 0\n"                       \
+      ".previous\n");                   \
+  extern "C" const char name##_begin[]; \
   extern "C" const char name##_end[];
 
 FERAN_EMBED(feran_plotly_js, FERAN_PLOTLY_JS)
@@ -26,9 +32,15 @@ FERAN_EMBED(feran_report_css, FERAN_REPORT_CSS)
 namespace feran::detail {
 
 bool report_assets_built() { return true; }
-std::string_view plotly_js() { return {feran_plotly_js_begin, static_cast<std::size_t>(feran_plotly_js_end - feran_plotly_js_begin)}; }
-std::string_view report_js() { return {feran_report_js_begin, static_cast<std::size_t>(feran_report_js_end - feran_report_js_begin)}; }
-std::string_view report_css() { return {feran_report_css_begin, static_cast<std::size_t>(feran_report_css_end - feran_report_css_begin)}; }
+std::string_view plotly_js() {
+  return {feran_plotly_js_begin, static_cast<std::size_t>(feran_plotly_js_end - feran_plotly_js_begin)};
+}
+std::string_view report_js() {
+  return {feran_report_js_begin, static_cast<std::size_t>(feran_report_js_end - feran_report_js_begin)};
+}
+std::string_view report_css() {
+  return {feran_report_css_begin, static_cast<std::size_t>(feran_report_css_end - feran_report_css_begin)};
+}
 
 }  // namespace feran::detail
 

@@ -19,7 +19,8 @@ using detail::TableReader;
 const toml::table* sub_table(const TableReader& root, std::string_view key) {
   const toml::node* n = root.find(key);
   if (n == nullptr) return nullptr;
-  if (!n->is_table()) root.fail(*n, fmt::format("'{}' must be a table ([{}]), got {}", key, key, detail::type_name(*n)));
+  if (!n->is_table())
+    root.fail(*n, fmt::format("'{}' must be a table ([{}]), got {}", key, key, detail::type_name(*n)));
   return n->as_table();
 }
 
@@ -37,9 +38,12 @@ std::vector<Index> nodes(const TableReader& t, std::string_view key, const Model
   for (std::size_t i = 0; i < a->size(); ++i) {
     const toml::node& n = *a->get(i);
     Index found = -1;
-    if (const auto s = n.value<std::string>()) found = model.find_node(*s);
-    else if (const auto k = n.value<std::int64_t>()) found = model.find_node(static_cast<int>(*k));
-    else t.fail(n, fmt::format("'{}[{}]' must be a node name or number, got {}", key, i, detail::type_name(n)));
+    if (const auto s = n.value<std::string>())
+      found = model.find_node(*s);
+    else if (const auto k = n.value<std::int64_t>())
+      found = model.find_node(static_cast<int>(*k));
+    else
+      t.fail(n, fmt::format("'{}[{}]' must be a node name or number, got {}", key, i, detail::type_name(n)));
     if (found < 0) t.fail(n, fmt::format("'{}[{}]': the model has no such node", key, i));
     out.push_back(found);
   }
@@ -55,7 +59,8 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
   root.check_keys({"title", "speed_unit", "campbell", "modes", "response", "static", "api684", "runup", "study"});
   if (const auto t = root.string("title")) options.title = *t;
   if (const auto u = root.string("speed_unit")) {
-    if (*u != "rpm" && *u != "Hz") root.fail(*root.find("speed_unit"), fmt::format("'speed_unit' must be \"rpm\" or \"Hz\", got \"{}\"", *u));
+    if (*u != "rpm" && *u != "Hz")
+      root.fail(*root.find("speed_unit"), fmt::format("'speed_unit' must be \"rpm\" or \"Hz\", got \"{}\"", *u));
     options.speed_unit = *u;
   }
   if (const toml::table* c = sub_table(root, "campbell")) {
@@ -95,7 +100,8 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
     if (const toml::table* s = sub_table(root, name)) {
       const TableReader t(*s, fmt::format("[{}]", name), path);
       t.check_keys({"enabled"});
-      (std::string_view(name) == "static" ? options.static_analysis : options.runup) = t.boolean("enabled").value_or(true);
+      (std::string_view(name) == "static" ? options.static_analysis : options.runup) =
+          t.boolean("enabled").value_or(true);
     }
   if (const toml::table* a = sub_table(root, "api684")) {
     const TableReader t(*a, "[api684]", path);
@@ -114,7 +120,8 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
     namespace fs = std::filesystem;
     fs::path dir(t.required_string("directory", "the output directory of feran study -o DIR"));
     if (dir.is_relative()) dir = fs::path(path).parent_path() / dir;
-    if (!fs::is_directory(dir)) t.fail(*t.find("directory"), fmt::format("study directory '{}' does not exist", dir.string()));
+    if (!fs::is_directory(dir))
+      t.fail(*t.find("directory"), fmt::format("study directory '{}' does not exist", dir.string()));
     options.study_directory = dir.lexically_normal().string();
   }
 }

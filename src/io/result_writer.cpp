@@ -31,12 +31,8 @@ json numbers(const std::vector<Real>& xs) {
 }
 
 json solver_json(const SolverInfo& info) {
-  return {{"method", to_string(info.method)},
-          {"converged", info.converged()},
-          {"status", to_string(info.status)},
-          {"n_converged", info.n_converged},
-          {"iterations", info.iterations},
-          {"message", info.message}};
+  return {{"method", to_string(info.method)}, {"converged", info.converged()}, {"status", to_string(info.status)},
+          {"n_converged", info.n_converged},  {"iterations", info.iterations}, {"message", info.message}};
 }
 
 json header(const std::string& analysis, const ResultSource& source) {
@@ -49,7 +45,6 @@ json header(const std::string& analysis, const ResultSource& source) {
 
 // CSV field: numbers in full precision, empty for NaN.
 using detail::csv_number;
-
 
 json node_json(const Model& model, Index node) {
   const Node& n = model.nodes[static_cast<std::size_t>(node)];
@@ -111,9 +106,13 @@ json point_stability_json(const std::vector<StabilityPoint>& points) {
       if (first < 0) first = static_cast<Index>(k);
     }
   }
-  json j = {{"unstable", unstable}, {"growth_rate_per_s", growth}, {"unstable_mode_frequency_hz", frequency},
-            {"kind", kind}, {"unstable_points", count}};
-  j["first_unstable_speed_hz"] = first < 0 ? json(nullptr) : json(rad_to_hz(points[static_cast<std::size_t>(first)].speed));
+  json j = {{"unstable", unstable},
+            {"growth_rate_per_s", growth},
+            {"unstable_mode_frequency_hz", frequency},
+            {"kind", kind},
+            {"unstable_points", count}};
+  j["first_unstable_speed_hz"] =
+      first < 0 ? json(nullptr) : json(rad_to_hz(points[static_cast<std::size_t>(first)].speed));
   j["note"] = count == 0 ? "stable at every point"
                          : "where unstable the response is no steady state the rotor reaches: any disturbance grows";
   return j;
@@ -143,9 +142,9 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
   j["speeds_hz"] = numbers(speeds);
   j["frequencies_hz"] = numbers(freqs);
   j["loss_factor"] = options.loss_factor;
-  j["unbalance"] = options.unbalance && !result.frequency_sweep &&
-                   std::any_of(model.forces.begin(), model.forces.end(),
-                               [](const Force& f) { return f.kind() == "unbalance"; });
+  j["unbalance"] =
+      options.unbalance && !result.frequency_sweep &&
+      std::any_of(model.forces.begin(), model.forces.end(), [](const Force& f) { return f.kind() == "unbalance"; });
   j["solver"] = solver_json(result.info);
   j["stability"] = point_stability_json(result.stability);
 
@@ -312,8 +311,8 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
   auto node_tag = [&](Index node) { return detail::csv_node_tag(model, node); };
   out << "speed_hz,frequency_hz";
   for (const ProbeResponse& p : result.probes)
-    for (const char* suffix : {"_amplitude_m", "_minor_m", "_v_amplitude_m", "_v_phase_deg", "_w_amplitude_m",
-                               "_w_phase_deg"})
+    for (const char* suffix :
+         {"_amplitude_m", "_minor_m", "_v_amplitude_m", "_v_phase_deg", "_w_amplitude_m", "_w_phase_deg"})
       out << ',' << detail::csv_column(node_tag(p.node), suffix);
   for (const SpringForceResponse& s : result.springs)
     out << ',' << detail::csv_column(element_label(model, s.element), "_peak_lateral_force_n");
@@ -329,8 +328,9 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
     out << csv_number(rad_to_hz(result.speeds[k])) << ',' << csv_number(rad_to_hz(result.frequencies[k]));
     for (const ProbeResponse& p : result.probes) {
       const Complex v = p.q[k][static_cast<std::size_t>(Dof::v)], w = p.q[k][static_cast<std::size_t>(Dof::w)];
-      out << ',' << csv_number(p.orbit[k].major) << ',' << csv_number(p.orbit[k].minor) << ',' << csv_number(std::abs(v))
-          << ',' << csv_number(degrees(v)) << ',' << csv_number(std::abs(w)) << ',' << csv_number(degrees(w));
+      out << ',' << csv_number(p.orbit[k].major) << ',' << csv_number(p.orbit[k].minor) << ','
+          << csv_number(std::abs(v)) << ',' << csv_number(degrees(v)) << ',' << csv_number(std::abs(w)) << ','
+          << csv_number(degrees(w));
     }
     for (const SpringForceResponse& s : result.springs) out << ',' << csv_number(s.peak_lateral[k]);
     for (const SupportForceResponse& s : result.supports) out << ',' << csv_number(s.peak_lateral[k]);
@@ -400,7 +400,8 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
     std::array<bool, dofs_per_node> mask{};
     for (const FixedDofs& fd : model.fixed)
       if (fd.node == node)
-        for (int d = 0; d < dofs_per_node; ++d) mask[static_cast<std::size_t>(d)] |= fd.dofs[static_cast<std::size_t>(d)];
+        for (int d = 0; d < dofs_per_node; ++d)
+          mask[static_cast<std::size_t>(d)] |= fd.dofs[static_cast<std::size_t>(d)];
     json jr = node_json(model, node);
     jr["force"] = components(f, mask);
     reactions.push_back(jr);
@@ -413,8 +414,11 @@ std::string static_json(const StaticResult& result, const StaticOptions& options
     json js = station_json(model, result.stations[i]);
     js["forces"] = {{"N", f.N.real()}, {"Vy", f.Vy.real()}, {"Vz", f.Vz.real()},
                     {"T", f.T.real()}, {"My", f.My.real()}, {"Mz", f.Mz.real()}};
-    js["stress_pa"] = {{"axial", s.axial}, {"bending", s.bending}, {"torsion", s.torsion},
-                       {"shear", s.shear}, {"von_mises", s.von_mises}};
+    js["stress_pa"] = {{"axial", s.axial},
+                       {"bending", s.bending},
+                       {"torsion", s.torsion},
+                       {"shear", s.shear},
+                       {"von_mises", s.von_mises}};
     stations.push_back(js);
   }
   j["stations"] = stations;
@@ -440,8 +444,7 @@ std::string static_csv(const StaticResult& result, const Model& model) {
   return out.str();
 }
 
-std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source,
-                       bool shapes) {
+std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source, bool shapes) {
   json j = header("modal", source);
   j["speed_hz"] = rad_to_hz(result.speed);
   j["speed_rpm"] = rad_to_hz(result.speed) * 60.0;
@@ -497,10 +500,9 @@ std::string modal_csv(const ModalResult& result) {
   for (const Mode& m : result.modes)
     out << ++index << ',' << csv_number(m.frequency_hz) << ',' << csv_number(m.damping_ratio) << ','
         << csv_number(m.log_decrement) << ',' << csv_number(m.eigenvalue.real()) << ','
-        << csv_number(m.eigenvalue.imag()) << ',' << to_string(m.whirl) << ','
-        << csv_number(m.directivity) << ',' << to_string(m.type) << ','
-        << (m.rigid_body ? "true" : "false") << ',' << to_string(m.shape_kind) << ',' << csv_number(m.bending)
-        << '\n';
+        << csv_number(m.eigenvalue.imag()) << ',' << to_string(m.whirl) << ',' << csv_number(m.directivity) << ','
+        << to_string(m.type) << ',' << (m.rigid_body ? "true" : "false") << ',' << to_string(m.shape_kind) << ','
+        << csv_number(m.bending) << '\n';
   return out.str();
 }
 
@@ -543,12 +545,10 @@ std::string campbell_json(const CampbellResult& result, const CampbellOptions& o
   if (result.stability_threshold) {
     const StabilityThreshold& t = *result.stability_threshold;
     j["stability_threshold_hz"] = rad_to_hz(t.speed);
-    j["stability_threshold"] = {{"speed_hz", rad_to_hz(t.speed)},
-                                {"speed_rpm", rad_to_hz(t.speed) * 60.0},
-                                {"mode", threshold_label(result, t)},
-                                {"frequency_hz", t.frequency_hz},
-                                {"unstable_at_start", t.unstable_at_start},
-                                {"kind", t.divergence ? "divergence" : "flutter"}};
+    j["stability_threshold"] = {
+        {"speed_hz", rad_to_hz(t.speed)},           {"speed_rpm", rad_to_hz(t.speed) * 60.0},
+        {"mode", threshold_label(result, t)},       {"frequency_hz", t.frequency_hz},
+        {"unstable_at_start", t.unstable_at_start}, {"kind", t.divergence ? "divergence" : "flutter"}};
   } else {
     j["stability_threshold_hz"] = nullptr;
     j["stability_threshold"] = nullptr;
@@ -628,8 +628,10 @@ json case_json(const Api684Case& c, const Model& model) {
     for (const SeparationCheck& k : c.checks[p])
       peaks.push_back({{"speed_rpm", json_number(rpm_of(k.peak.speed))},
                        {"amplitude_m", json_number(k.peak.amplitude)},
-                       {"lower_half_power_rpm", k.peak.lower_half_power ? json_number(rpm_of(*k.peak.lower_half_power)) : json(nullptr)},
-                       {"upper_half_power_rpm", k.peak.upper_half_power ? json_number(rpm_of(*k.peak.upper_half_power)) : json(nullptr)},
+                       {"lower_half_power_rpm",
+                        k.peak.lower_half_power ? json_number(rpm_of(*k.peak.lower_half_power)) : json(nullptr)},
+                       {"upper_half_power_rpm",
+                        k.peak.upper_half_power ? json_number(rpm_of(*k.peak.upper_half_power)) : json(nullptr)},
                        {"amplification_factor", json_number(k.peak.amplification_factor)},
                        {"actual_margin", json_number(k.actual_margin)},
                        {"required_margin", optional_number(k.required_margin)},
@@ -644,7 +646,8 @@ json case_json(const Api684Case& c, const Model& model) {
 }
 
 json map_json(const CriticalSpeedMapResult& map, const Model& model) {
-  json jm = {{"bearings", json::array()}, {"stiffness_n_per_m", numbers(map.stiffness)}, {"solver", solver_json(map.info)}};
+  json jm = {
+      {"bearings", json::array()}, {"stiffness_n_per_m", numbers(map.stiffness)}, {"solver", solver_json(map.info)}};
   for (const Index e : map.springs) jm["bearings"].push_back(element_label(model, e));
   const std::size_t nc = map.criticals.empty() ? 0 : map.criticals.front().size();
   json lines = json::array();
@@ -700,8 +703,11 @@ std::string api684_json(const Api684Result& result, const Model& model, const Re
       unstable.push_back(p.known ? json(p.unstable) : json(nullptr));
       growth.push_back(json_number(p.growth_rate));
     }
-    j["operating_stability"] = {{"passes", v.passes}, {"reason", v.reason}, {"speeds_rpm", speeds},
-                                {"unstable", unstable}, {"growth_rate_per_s", growth}};
+    j["operating_stability"] = {{"passes", v.passes},
+                                {"reason", v.reason},
+                                {"speeds_rpm", speeds},
+                                {"unstable", unstable},
+                                {"growth_rate_per_s", growth}};
   }
   json journals = json::array();
   for (const JournalLoad& l : result.journals) {

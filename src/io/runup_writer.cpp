@@ -15,10 +15,10 @@ namespace feran {
 
 namespace {
 
-using nlohmann::json;
 using detail::csv_number;
 using detail::direction_names;
 using detail::dof_names;
+using nlohmann::json;
 
 }  // namespace
 
@@ -31,7 +31,8 @@ RunupCsvWriter::RunupCsvWriter(OutputFiles& files, int output, const Model& mode
     for (const char* d : dof_names) header += ',' + detail::csv_column(t, std::string("_") + d);
   }
   for (Index e : options.springs)
-    for (const char* d : direction_names) header += ',' + detail::csv_column(detail::csv_element_tag(model, e), std::string("_f") + d);
+    for (const char* d : direction_names)
+      header += ',' + detail::csv_column(detail::csv_element_tag(model, e), std::string("_f") + d);
   header += detail::operating_csv_header(operating_series(model), model);
   header += '\n';
   files_.append(output_, header);
@@ -99,7 +100,8 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
     for (const char* d : dof_names) dofs[d] = json::array();
     for (const TransientSample& s : result.samples) {
       mag.push_back(detail::json_number(s.magnitude[p]));
-      for (int d = 0; d < dofs_per_node; ++d) dofs[dof_names[d]].push_back(detail::json_number(s.probes[p][static_cast<std::size_t>(d)]));
+      for (int d = 0; d < dofs_per_node; ++d)
+        dofs[dof_names[d]].push_back(detail::json_number(s.probes[p][static_cast<std::size_t>(d)]));
     }
     jp["magnitude_m"] = mag;
     jp["dofs"] = dofs;
@@ -120,7 +122,8 @@ std::string runup_json(const TransientResult& result, const TransientOptions& op
     json force = json::object();
     for (int d = 0; d < dofs_per_node; ++d) {
       json series = json::array();
-      for (const TransientSample& s : result.samples) series.push_back(detail::json_number(s.springs[k][static_cast<std::size_t>(d)]));
+      for (const TransientSample& s : result.samples)
+        series.push_back(detail::json_number(s.springs[k][static_cast<std::size_t>(d)]));
       force[direction_names[d]] = series;
     }
     js["force_n"] = force;

@@ -57,7 +57,8 @@ std::string csv_row(const StudySpec& study, const Evaluation& e) {
     line += e.quantities.empty() ? std::string(",") : fmt::format(",{:.17g}", e.quantities[i]);
   std::string clipped;  // "NAME: why; NAME: why" for the quantities that are only bounds
   for (std::size_t i = 0; i < e.clipped.size() && i < study.quantities.size(); ++i)
-    if (!e.clipped[i].empty()) clipped += (clipped.empty() ? "" : "; ") + study.quantities[i].name + ": " + e.clipped[i];
+    if (!e.clipped[i].empty())
+      clipped += (clipped.empty() ? "" : "; ") + study.quantities[i].name + ": " + e.clipped[i];
   line += fmt::format(",{},{},{:.6f},{},{}\n", e.evaluated, e.feasible, e.seconds, detail::csv_field(e.message),
                       detail::csv_field(clipped));
   return line;
@@ -79,8 +80,10 @@ std::string study_json(const StudySpec& study) {
       j["factors"] = v.factors;
       j["offsets"] = v.offsets;
     }
-    if (v.discrete()) j["values"] = v.values;
-    else j.update({{"lower", v.lower}, {"upper", v.upper}, {"scale", scale_name(v.scale)}});
+    if (v.discrete())
+      j["values"] = v.values;
+    else
+      j.update({{"lower", v.lower}, {"upper", v.upper}, {"scale", scale_name(v.scale)}});
     variables.push_back(j);
   }
   for (const auto& q : study.quantities)
@@ -97,16 +100,18 @@ std::string study_json(const StudySpec& study) {
   }
   const auto& x = study.explore;
   json explore = {{"method", to_string(x.method)}, {"seed", x.seed}};
-  if (x.method == ExploreMethod::grid) explore["levels"] = x.levels;
-  else if (x.method == ExploreMethod::latin_hypercube || x.method == ExploreMethod::sobol) explore["samples"] = x.samples;
+  if (x.method == ExploreMethod::grid)
+    explore["levels"] = x.levels;
+  else if (x.method == ExploreMethod::latin_hypercube || x.method == ExploreMethod::sobol)
+    explore["samples"] = x.samples;
   else {
     explore.update({{"population", x.population}, {"generations", x.generations}});
     if (x.method == ExploreMethod::optimise)
       explore.update({{"algorithm", x.algorithm == GlobalAlgorithm::pso ? "pso" : "gaco"}, {"polish", x.polish}});
   }
-  const json j = {{"program", "feran"},       {"format_version", 1},       {"analysis", "study"},
-                  {"title", study.title},     {"model", study.model_path}, {"base_model", write_toml(study.base)},
-                  {"variables", variables},   {"quantities", quantities},  {"objectives", objectives},
+  const json j = {{"program", "feran"},         {"format_version", 1},       {"analysis", "study"},
+                  {"title", study.title},       {"model", study.model_path}, {"base_model", write_toml(study.base)},
+                  {"variables", variables},     {"quantities", quantities},  {"objectives", objectives},
                   {"constraints", constraints}, {"explore", explore}};
   return j.dump(1) + "\n";
 }
@@ -116,14 +121,15 @@ std::string evaluation_json(const StudySpec& study, const Evaluation& e) {
   for (std::size_t i = 0; i < study.variables.size(); ++i) values[study.variables[i].name] = e.values[i];
   if (!e.quantities.empty()) {
     quantities = json::object();
-    for (std::size_t i = 0; i < study.quantities.size(); ++i) quantities[study.quantities[i].name] = json_number(e.quantities[i]);
+    for (std::size_t i = 0; i < study.quantities.size(); ++i)
+      quantities[study.quantities[i].name] = json_number(e.quantities[i]);
   }
   json clipped = json::object();
   for (std::size_t i = 0; i < e.clipped.size() && i < study.quantities.size(); ++i)
     if (!e.clipped[i].empty()) clipped[study.quantities[i].name] = e.clipped[i];
-  const json j = {{"index", e.index},       {"unit", e.unit},          {"variables", values},
-                  {"quantities", quantities}, {"clipped", clipped},     {"evaluated", e.evaluated},
-                  {"feasible", e.feasible},  {"message", e.message},   {"seconds", e.seconds}};
+  const json j = {{"index", e.index},         {"unit", e.unit},       {"variables", values},
+                  {"quantities", quantities}, {"clipped", clipped},   {"evaluated", e.evaluated},
+                  {"feasible", e.feasible},   {"message", e.message}, {"seconds", e.seconds}};
   return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
@@ -177,22 +183,24 @@ void refuse_inputs(const std::string& directory, const std::vector<std::string>&
     if (input.empty() || !fs::exists(input, ec)) continue;
     const fs::path real = fs::canonical(input, ec);
     if (!ec && written_by_study(real.filename().string()) && fs::equivalent(real.parent_path(), directory, ec))
-      throw Error(fmt::format("cannot write the study's results in '{}': they would replace its input '{}' (the study "
-                              "writes {} there); give another directory with -o",
-                              directory, input, real.filename().string()));
+      throw Error(
+          fmt::format("cannot write the study's results in '{}': they would replace its input '{}' (the study "
+                      "writes {} there); give another directory with -o",
+                      directory, input, real.filename().string()));
     for (const auto& entry : fs::directory_iterator(directory, ec)) {
       const std::string name = entry.path().filename().string();
       if (written_by_study(name) && fs::equivalent(entry.path(), input, ec))
-        throw Error(fmt::format("cannot write the study's results in '{}': its '{}' is the input '{}'; give another "
-                                "directory with -o",
-                                directory, name, input));
+        throw Error(
+            fmt::format("cannot write the study's results in '{}': its '{}' is the input '{}'; give another "
+                        "directory with -o",
+                        directory, name, input));
     }
   }
 }
 
 }  // namespace
 
-StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume, std::vector<std::string> inputs)
+StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume, const std::vector<std::string>& inputs)
     : directory_(std::move(directory)), study_(study) {
   std::error_code ec;
   fs::create_directories(directory_, ec);
@@ -205,17 +213,19 @@ StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume, s
   const std::string description = study_json(study);
   const bool has_results = fs::exists(jsonl_path) && fs::file_size(jsonl_path, ec) > 0;
   if (has_results && !resume)
-    throw Error(fmt::format("'{}' already holds the evaluations of a study; --resume continues it, or give "
-                            "another directory with -o",
-                            directory_));
+    throw Error(
+        fmt::format("'{}' already holds the evaluations of a study; --resume continues it, or give "
+                    "another directory with -o",
+                    directory_));
   if (has_results) {
     std::ifstream old_description(study_path);
     const std::string old((std::istreambuf_iterator<char>(old_description)), std::istreambuf_iterator<char>());
     if (old != description)
-      throw Error(fmt::format("'{}' holds the evaluations of a different study (its study.json differs: the "
-                              "model, variables, quantities, objectives, constraints or exploration changed); "
-                              "resume only the same study, or give another directory with -o",
-                              directory_));
+      throw Error(
+          fmt::format("'{}' holds the evaluations of a different study (its study.json differs: the "
+                      "model, variables, quantities, objectives, constraints or exploration changed); "
+                      "resume only the same study, or give another directory with -o",
+                      directory_));
     // Read back every complete line; a line cut short (a crash while writing) ends
     // the valid part, and the files are cut back to it.
     std::ifstream in(jsonl_path, std::ios::binary);
@@ -237,7 +247,7 @@ StudyLog::StudyLog(std::string directory, const StudySpec& study, bool resume, s
     std::sort(done_.begin(), done_.end(), [](const Evaluation& a, const Evaluation& b) { return a.index < b.index; });
   } else {
     std::ofstream(study_path, std::ios::binary | std::ios::trunc) << description;
-    std::ofstream(jsonl_path, std::ios::binary | std::ios::trunc);
+    const std::ofstream emptied(jsonl_path, std::ios::binary | std::ios::trunc);
     std::ofstream(csv_path, std::ios::binary | std::ios::trunc) << csv_header(study);
   }
   jsonl_ = open_append(jsonl_path);
@@ -276,9 +286,8 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
     evaluated += e.evaluated;
     feasible += e.feasible;
   }
-  json summary = {{"program", "feran"},     {"format_version", 1},   {"analysis", "study"},
-                  {"complete", complete},   {"evaluations", all.size()}, {"evaluated", evaluated},
-                  {"feasible", feasible}};
+  json summary = {{"program", "feran"},        {"format_version", 1},    {"analysis", "study"}, {"complete", complete},
+                  {"evaluations", all.size()}, {"evaluated", evaluated}, {"feasible", feasible}};
   // Per quantity clipped in any design: in how many, and the first design's reason.
   json clipped = json::object();
   for (const auto& e : all)
@@ -299,7 +308,8 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
   } else if (study_.objectives.size() > 1) {
     json pareto = json::array(), models = json::array();
     const auto front = pareto_set(study_, all);
-    for (const Index i : front) pareto.push_back(json::parse(evaluation_json(study_, all[static_cast<std::size_t>(i)])));
+    for (const Index i : front)
+      pareto.push_back(json::parse(evaluation_json(study_, all[static_cast<std::size_t>(i)])));
     // Model files for at most a population's worth, spread along the front.
     const Index count = study_.explore.method == ExploreMethod::pareto ? study_.explore.population : 32;
     for (const Index i : spread_along_front(study_, all, front, count)) {
@@ -310,7 +320,8 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
     summary["pareto"] = pareto;
     summary["pareto_models"] = models;
   }
-  const bool sampled = study_.explore.method != ExploreMethod::optimise && study_.explore.method != ExploreMethod::pareto;
+  const bool sampled =
+      study_.explore.method != ExploreMethod::optimise && study_.explore.method != ExploreMethod::pareto;
   if (sampled) {
     json table = json::array();
     for (const auto& x : sensitivities(study_, all)) {
@@ -320,8 +331,12 @@ std::vector<std::string> StudyLog::finish(std::span<const Evaluation> all, bool 
         src[study_.variables[j].name] = json_number(x.src[j]);
         srrc[study_.variables[j].name] = json_number(x.srrc[j]);
       }
-      table.push_back({{"quantity", x.quantity}, {"src", src}, {"r2", json_number(x.r2)}, {"srrc", srrc},
-                       {"r2_ranks", json_number(x.r2_ranks)}, {"samples", x.samples}});
+      table.push_back({{"quantity", x.quantity},
+                       {"src", src},
+                       {"r2", json_number(x.r2)},
+                       {"srrc", srrc},
+                       {"r2_ranks", json_number(x.r2_ranks)},
+                       {"samples", x.samples}});
     }
     summary["sensitivity"] = table;
   }

@@ -18,9 +18,9 @@ namespace feran {
 
 namespace {
 
-using detail::TableReader;
 using detail::closest_match;
 using detail::join_list;
+using detail::TableReader;
 
 class StudyReader {
  public:
@@ -41,7 +41,9 @@ class StudyReader {
     } else {
       const auto& model_node = root_.require("model", "the path of the base model file, a string");
       const auto model = model_node.value<std::string>();
-      if (!model) root_.fail(model_node, fmt::format("'model' must be a string (a file path), got {}", detail::type_name(model_node)));
+      if (!model)
+        root_.fail(model_node,
+                   fmt::format("'model' must be a string (a file path), got {}", detail::type_name(model_node)));
       study.model_path = *model;
       namespace fs = std::filesystem;
       fs::path model_path(*model);
@@ -89,10 +91,13 @@ class StudyReader {
     std::vector<std::pair<std::string, std::string>> changed;
     for (auto&& [key, value] : *table) {
       std::string text;
-      if (const auto s = value.value<std::string>(); s && value.is_string()) text = *s;
-      else if (value.is_integer() || value.is_floating_point()) text = fmt::format("{}", *value.value<double>());
-      else root_.fail(value, fmt::format("setting '{}' must be a number or a text with its unit, got {}", key.str(),
-                                          detail::type_name(value)));
+      if (const auto s = value.value<std::string>(); s && value.is_string())
+        text = *s;
+      else if (value.is_integer() || value.is_floating_point())
+        text = fmt::format("{}", *value.value<double>());
+      else
+        root_.fail(value, fmt::format("setting '{}' must be a number or a text with its unit, got {}", key.str(),
+                                      detail::type_name(value)));
       try {
         const auto canonical = set_parameter(study.base, key.str(), text);
         const auto at = detail::location_of(path_, value);
@@ -112,7 +117,8 @@ class StudyReader {
       t.check_keys({"name", "path", "paths", "lower", "upper", "scale", "values", "unit"});
       DesignVariable v;
       v.name = t.required_string("name", "the variable's name, a string");
-      if (t.has("path") == t.has("paths")) t.fail_here("give either 'path' (one parameter path) or 'paths' (tied ones)");
+      if (t.has("path") == t.has("paths"))
+        t.fail_here("give either 'path' (one parameter path) or 'paths' (tied ones)");
       std::vector<const toml::node*> path_nodes;
       std::vector<const toml::table*> maps;  // per path: its { factor, offset } table, or none
       if (t.has("path")) {
@@ -134,8 +140,10 @@ class StudyReader {
             path_nodes.push_back(m.find("path"));
             maps.push_back(map);
           } else {
-            t.fail(p, fmt::format("'paths' must hold parameter paths (strings) or tables {{ path = \"...\", factor = F, "
-                                  "offset = O }}, got {}", detail::type_name(p)));
+            t.fail(p,
+                   fmt::format("'paths' must hold parameter paths (strings) or tables {{ path = \"...\", factor = F, "
+                               "offset = O }}, got {}",
+                               detail::type_name(p)));
           }
           ++k;
         }
@@ -174,9 +182,12 @@ class StudyReader {
             if (!std::isfinite(factor) || factor == 0.0)
               m.fail(*m.find("factor"), "'factor' must be a finite number other than 0");
             if (const auto* o = m.find("offset")) {
-              if (v.quantity) offset = m.quantity_at(*o, "offset", *v.quantity).si;
-              else if (const auto x = o->value<double>(); x && (o->is_integer() || o->is_floating_point())) offset = *x;
-              else m.fail(*o, fmt::format("'offset' must be a number, got {}", detail::type_name(*o)));
+              if (v.quantity)
+                offset = m.quantity_at(*o, "offset", *v.quantity).si;
+              else if (const auto x = o->value<double>(); x && (o->is_integer() || o->is_floating_point()))
+                offset = *x;
+              else
+                m.fail(*o, fmt::format("'offset' must be a number, got {}", detail::type_name(*o)));
             }
           }
           v.factors.push_back(factor);
@@ -199,8 +210,10 @@ class StudyReader {
         v.lower = value_of(t.require("lower", "the lower bound"), "lower");
         v.upper = value_of(t.require("upper", "the upper bound"), "upper");
         if (const auto scale = t.string("scale")) {
-          if (*scale == "log") v.scale = VariableScale::log;
-          else if (*scale != "linear") t.fail(*t.find("scale"), fmt::format("'scale' must be \"linear\" or \"log\", got \"{}\"", *scale));
+          if (*scale == "log")
+            v.scale = VariableScale::log;
+          else if (*scale != "linear")
+            t.fail(*t.find("scale"), fmt::format("'scale' must be \"linear\" or \"log\", got \"{}\"", *scale));
         }
       }
       study.variables.push_back(std::move(v));
@@ -232,23 +245,31 @@ class StudyReader {
         std::vector<std::string> longer;  // kinds the name is the start of ("min_damping")
         for (const auto& n : names)
           if (n.starts_with(kind_name)) longer.push_back(n);
-        if (const auto m = closest_match(kind_name, names, 4)) message += fmt::format("; did you mean '{}'?", *m);
-        else if (!longer.empty()) message += fmt::format("; did you mean {}?", join_list(longer, "or", '\''));
-        else message += fmt::format("; the kinds are {}", join_list(names, "and", '\''));
+        if (const auto m = closest_match(kind_name, names, 4))
+          message += fmt::format("; did you mean '{}'?", *m);
+        else if (!longer.empty())
+          message += fmt::format("; did you mean {}?", join_list(longer, "or", '\''));
+        else
+          message += fmt::format("; the kinds are {}", join_list(names, "and", '\''));
         t.fail(kind_node, message);
       }
       q.kind = *kind;
       if (q.kind == QuantityKind::function && code_ == nullptr)
-        t.fail(kind_node, "a quantity of kind \"function\" is computed by code: it belongs to studies built in code "
-                          "(the Python package's feran.Study), not to study files");
+        t.fail(kind_node,
+               "a quantity of kind \"function\" is computed by code: it belongs to studies built in code "
+               "(the Python package's feran.Study), not to study files");
       const bool damping = q.kind == QuantityKind::min_damping_ratio || q.kind == QuantityKind::min_log_decrement ||
                            q.kind == QuantityKind::damping_ratio || q.kind == QuantityKind::log_decrement;
       q.whirl = damping ? WhirlSelection::any : WhirlSelection::forward;
       if (const auto w = t.string("whirl")) {
-        if (*w == "forward") q.whirl = WhirlSelection::forward;
-        else if (*w == "backward") q.whirl = WhirlSelection::backward;
-        else if (*w == "any") q.whirl = WhirlSelection::any;
-        else t.fail(*t.find("whirl"), fmt::format("'whirl' must be \"forward\", \"backward\" or \"any\", got \"{}\"", *w));
+        if (*w == "forward")
+          q.whirl = WhirlSelection::forward;
+        else if (*w == "backward")
+          q.whirl = WhirlSelection::backward;
+        else if (*w == "any")
+          q.whirl = WhirlSelection::any;
+        else
+          t.fail(*t.find("whirl"), fmt::format("'whirl' must be \"forward\", \"backward\" or \"any\", got \"{}\"", *w));
       }
       q.order = t.integer("order", 1, 100).value_or(1);
       q.n = t.integer("n", 1, 1000).value_or(1);
@@ -272,9 +293,12 @@ class StudyReader {
       if (q.kind == QuantityKind::level1_q_zero && !(q.speed && *q.speed > 0))
         t.fail_here("a level1_q_zero needs 'speed' > 0, the maximum continuous speed");
       if (const auto* p = t.find("probe")) {
-        if (p->is_string()) q.probe = NodeRef(*p->value<std::string>());
-        else if (p->is_integer()) q.probe = NodeRef(*p->value<std::int64_t>());
-        else t.fail(*p, fmt::format("'probe' must be a node name or number, got {}", detail::type_name(*p)));
+        if (p->is_string())
+          q.probe = NodeRef(*p->value<std::string>());
+        else if (p->is_integer())
+          q.probe = NodeRef(*p->value<std::int64_t>());
+        else
+          t.fail(*p, fmt::format("'probe' must be a node name or number, got {}", detail::type_name(*p)));
       }
       if (const auto s = t.string("spring")) q.spring = *s;
       read_bearing_value(t, study, q);
@@ -309,7 +333,8 @@ class StudyReader {
     for (const char* key : {"value", "bearing"})
       if (!bearing_kind && t.has(key))
         t.fail(*t.find(key), fmt::format("'{}' belongs to quantities of kind \"min_bearing_value\" or "
-                                         "\"max_bearing_value\"", key));
+                                         "\"max_bearing_value\"",
+                                         key));
     if (!bearing_kind) return;
     q.value = t.required_string("value", "the bearing's operating quantity, e.g. \"min_film_thickness_m\"");
     if (const auto b = t.string("bearing")) q.bearing = *b;
@@ -331,14 +356,18 @@ class StudyReader {
     }
     if (q.bearing && std::find(labels.begin(), labels.end(), *q.bearing) == labels.end()) {
       std::string message = fmt::format("no bearing named '{}'", *q.bearing);
-      if (const auto m = closest_match(*q.bearing, labels, 3)) message += fmt::format("; did you mean '{}'?", *m);
-      else message += fmt::format("; the bearings are {}", join_list(labels, "and", '\''));
+      if (const auto m = closest_match(*q.bearing, labels, 3))
+        message += fmt::format("; did you mean '{}'?", *m);
+      else
+        message += fmt::format("; the bearings are {}", join_list(labels, "and", '\''));
       t.fail(*t.find("bearing"), message);
     }
     if (std::find(names.begin(), names.end(), q.value) == names.end()) {
       std::string message = fmt::format("unknown bearing quantity '{}'", q.value);
-      if (const auto m = closest_match(q.value, names, 4)) message += fmt::format("; did you mean '{}'?", *m);
-      else message += fmt::format("; the quantities are {}", join_list(names, "and", '\''));
+      if (const auto m = closest_match(q.value, names, 4))
+        message += fmt::format("; did you mean '{}'?", *m);
+      else
+        message += fmt::format("; the quantities are {}", join_list(names, "and", '\''));
       t.fail(*t.find("value"), message);
     }
   }
@@ -351,8 +380,10 @@ class StudyReader {
     std::vector<std::string> names;
     for (const auto& q : *quantities_) names.push_back(q.name);
     std::string message = fmt::format("no quantity named '{}'", name);
-    if (const auto m = closest_match(name, names, 3)) message += fmt::format("; did you mean '{}'?", *m);
-    else message += fmt::format("; the quantities are {}", join_list(names, "and", '\''));
+    if (const auto m = closest_match(name, names, 3))
+      message += fmt::format("; did you mean '{}'?", *m);
+    else
+      message += fmt::format("; the quantities are {}", join_list(names, "and", '\''));
     t.fail(node, message);
   }
 
@@ -363,9 +394,12 @@ class StudyReader {
       Objective o;
       o.quantity = quantity_named(t);
       const auto sense = t.required_string("sense", "\"minimise\" or \"maximise\"");
-      if (sense == "minimise" || sense == "minimize") o.sense = Sense::minimise;
-      else if (sense == "maximise" || sense == "maximize") o.sense = Sense::maximise;
-      else t.fail(*t.find("sense"), fmt::format("'sense' must be \"minimise\" or \"maximise\", got \"{}\"", sense));
+      if (sense == "minimise" || sense == "minimize")
+        o.sense = Sense::minimise;
+      else if (sense == "maximise" || sense == "maximize")
+        o.sense = Sense::maximise;
+      else
+        t.fail(*t.find("sense"), fmt::format("'sense' must be \"minimise\" or \"maximise\", got \"{}\"", sense));
       study.objectives.push_back(o);
     });
   }
@@ -400,23 +434,34 @@ class StudyReader {
     t.check_keys({"method", "levels", "samples", "seed", "algorithm", "population", "generations", "polish"});
     auto& x = study.explore;
     if (const auto m = t.string("method")) {
-      if (*m == "grid") x.method = ExploreMethod::grid;
-      else if (*m == "latin_hypercube" || *m == "lhs") x.method = ExploreMethod::latin_hypercube;
-      else if (*m == "sobol") x.method = ExploreMethod::sobol;
-      else if (*m == "optimise" || *m == "optimize") x.method = ExploreMethod::optimise;
-      else if (*m == "pareto") x.method = ExploreMethod::pareto;
-      else t.fail(*t.find("method"), fmt::format("'method' must be \"grid\", \"latin_hypercube\", \"sobol\", "
-                                                 "\"optimise\" or \"pareto\", got \"{}\"", *m));
+      if (*m == "grid")
+        x.method = ExploreMethod::grid;
+      else if (*m == "latin_hypercube" || *m == "lhs")
+        x.method = ExploreMethod::latin_hypercube;
+      else if (*m == "sobol")
+        x.method = ExploreMethod::sobol;
+      else if (*m == "optimise" || *m == "optimize")
+        x.method = ExploreMethod::optimise;
+      else if (*m == "pareto")
+        x.method = ExploreMethod::pareto;
+      else
+        t.fail(*t.find("method"), fmt::format("'method' must be \"grid\", \"latin_hypercube\", \"sobol\", "
+                                              "\"optimise\" or \"pareto\", got \"{}\"",
+                                              *m));
     }
     const bool optimiser = x.method == ExploreMethod::optimise || x.method == ExploreMethod::pareto;
     for (const char* key : {"algorithm", "population", "generations", "polish"})
       if (!optimiser && t.has(key))
         t.fail(*t.find(key), fmt::format("'{}' belongs to the methods \"optimise\" and \"pareto\"", key));
     if (const auto a = t.string("algorithm")) {
-      if (x.method == ExploreMethod::pareto) t.fail(*t.find("algorithm"), "method \"pareto\" is NSGA-II; it takes no 'algorithm'");
-      if (*a == "pso") x.algorithm = GlobalAlgorithm::pso;
-      else if (*a == "gaco") x.algorithm = GlobalAlgorithm::gaco;
-      else t.fail(*t.find("algorithm"), fmt::format("'algorithm' must be \"pso\" or \"gaco\", got \"{}\"", *a));
+      if (x.method == ExploreMethod::pareto)
+        t.fail(*t.find("algorithm"), "method \"pareto\" is NSGA-II; it takes no 'algorithm'");
+      if (*a == "pso")
+        x.algorithm = GlobalAlgorithm::pso;
+      else if (*a == "gaco")
+        x.algorithm = GlobalAlgorithm::gaco;
+      else
+        t.fail(*t.find("algorithm"), fmt::format("'algorithm' must be \"pso\" or \"gaco\", got \"{}\"", *a));
     }
     x.population = t.integer("population", 2, 100000).value_or(x.method == ExploreMethod::pareto ? 32 : 16);
     x.generations = t.integer("generations", 0, 100000).value_or(20);
@@ -425,8 +470,8 @@ class StudyReader {
       t.fail(t.has("population") ? *t.find("population") : *node,
              fmt::format("NSGA-II needs a population that is a multiple of 4 and at least 8, got {}", x.population));
     if (x.method == ExploreMethod::pareto && study.objectives.size() < 2)
-      t.fail(*t.find("method"), fmt::format("method \"pareto\" needs two objectives or more, the study has {}",
-                                            study.objectives.size()));
+      t.fail(*t.find("method"),
+             fmt::format("method \"pareto\" needs two objectives or more, the study has {}", study.objectives.size()));
     if (x.method == ExploreMethod::optimise && study.objectives.size() != 1)
       t.fail(*t.find("method"), fmt::format("method \"optimise\" takes one objective, the study has {}; "
                                             "\"pareto\" takes several",

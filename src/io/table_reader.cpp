@@ -64,8 +64,10 @@ SourceLocation location_of(const std::string& path, const toml::node& node) {
 
 std::string type_name(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::string: return fmt::format("a string (\"{}\")", *node.value<std::string>());
-    case toml::node_type::integer: return fmt::format("an integer ({})", *node.value<std::int64_t>());
+    case toml::node_type::string:
+      return fmt::format("a string (\"{}\")", *node.value<std::string>());
+    case toml::node_type::integer:
+      return fmt::format("an integer ({})", *node.value<std::int64_t>());
     case toml::node_type::floating_point: {
       // Show 1.0 as "1.0", not "1", so that the reader sees why it is not an integer.
       const double v = *node.value<double>();
@@ -73,13 +75,20 @@ std::string type_name(const toml::node& node) {
       return integral ? fmt::format("a floating-point number ({:.1f})", v)
                       : fmt::format("a floating-point number ({})", v);
     }
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::table: return "a table";
-    case toml::node_type::none: break;
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::none:
+      break;
   }
   return "nothing";
 }
@@ -92,8 +101,7 @@ void TableReader::check_keys(const std::vector<std::string_view>& allowed) const
   for (auto&& [key, value] : table_) {
     bool known = false;
     for (const std::string_view a : allowed) known = known || key.str() == a;
-    if (!known && (first_unknown == nullptr ||
-                   before(key.source().begin, first_unknown->source().begin)))
+    if (!known && (first_unknown == nullptr || before(key.source().begin, first_unknown->source().begin)))
       first_unknown = &key;
   }
   if (first_unknown == nullptr) return;
@@ -138,8 +146,7 @@ void TableReader::fail_here(const std::string& message) const {
   throw ModelError(at, message);
 }
 
-QuantityValue TableReader::quantity_at(const toml::node& node, std::string_view name,
-                                       Quantity kind) const {
+QuantityValue TableReader::quantity_at(const toml::node& node, std::string_view name, Quantity kind) const {
   QuantityValue q;
   q.node = &node;
   if (const auto i = node.value_exact<std::int64_t>()) {
@@ -148,8 +155,7 @@ QuantityValue TableReader::quantity_at(const toml::node& node, std::string_view 
     return q;
   }
   if (const auto* f = node.as_floating_point()) {
-    if (!std::isfinite(f->get()))
-      fail(node, fmt::format("'{}' must be a finite number, got {}", name, f->get()));
+    if (!std::isfinite(f->get())) fail(node, fmt::format("'{}' must be a finite number, got {}", name, f->get()));
     q.si = f->get();
     q.written = fmt::format("{} {}", q.si, si_unit(kind));
     return q;
@@ -158,8 +164,7 @@ QuantityValue TableReader::quantity_at(const toml::node& node, std::string_view 
     const std::string& text = s->get();
     const auto parts = split_quantity(text);
     if (!parts) fail(node, fmt::format("{}, got \"{}\"", must_be_quantity(name, kind), text));
-    if (!std::isfinite(parts->value))
-      fail(node, fmt::format("'{}' must be a finite number, got \"{}\"", name, text));
+    if (!std::isfinite(parts->value)) fail(node, fmt::format("'{}' must be a finite number, got \"{}\"", name, text));
     if (parts->unit.empty()) {
       q.si = parts->value;
       q.written = fmt::format("{} {}", q.si, si_unit(kind));
@@ -167,11 +172,9 @@ QuantityValue TableReader::quantity_at(const toml::node& node, std::string_view 
     }
     const auto si = to_si(kind, parts->value, parts->unit);
     if (!si) {
-      std::string message = fmt::format("'{}' has unit '{}', expected {} in {}", name,
-                                        parts->unit, quantity_name(kind),
+      std::string message = fmt::format("'{}' has unit '{}', expected {} in {}", name, parts->unit, quantity_name(kind),
                                         accepted_units_text(kind));
-      if (const std::string hint = unit_hint(kind, parts->unit); !hint.empty())
-        message += fmt::format(" ({})", hint);
+      if (const std::string hint = unit_hint(kind, parts->unit); !hint.empty()) message += fmt::format(" ({})", hint);
       fail(node, message);
     }
     q.si = *si;
@@ -196,8 +199,7 @@ std::optional<Real> TableReader::number(std::string_view key) const {
   if (n == nullptr) return std::nullopt;
   if (const auto i = n->value_exact<std::int64_t>()) return static_cast<Real>(*i);
   if (const auto* f = n->as_floating_point()) {
-    if (!std::isfinite(f->get()))
-      fail(*n, fmt::format("'{}' must be a finite number, got {}", key, f->get()));
+    if (!std::isfinite(f->get())) fail(*n, fmt::format("'{}' must be a finite number, got {}", key, f->get()));
     return f->get();
   }
   fail(*n, fmt::format("'{}' must be a number without unit, got {}", key, type_name(*n)));
@@ -205,15 +207,13 @@ std::optional<Real> TableReader::number(std::string_view key) const {
 
 std::optional<Real> TableReader::non_negative_number(std::string_view key) const {
   const auto value = number(key);
-  if (value && !(*value >= 0.0))
-    fail(*find(key), fmt::format("'{}' must not be negative, got {}", key, *value));
+  if (value && !(*value >= 0.0)) fail(*find(key), fmt::format("'{}' must not be negative, got {}", key, *value));
   return value;
 }
 
 std::optional<Real> TableReader::positive_number(std::string_view key) const {
   const auto value = number(key);
-  if (value && !(*value > 0.0))
-    fail(*find(key), fmt::format("'{}' must be positive, got {}", key, *value));
+  if (value && !(*value > 0.0)) fail(*find(key), fmt::format("'{}' must be positive, got {}", key, *value));
   return value;
 }
 
@@ -236,8 +236,7 @@ std::string TableReader::required_string(std::string_view key, std::string_view 
   return *string(key);
 }
 
-int TableReader::integer_at(const toml::node& node, std::string_view name, int minimum,
-                            int maximum) const {
+int TableReader::integer_at(const toml::node& node, std::string_view name, int minimum, int maximum) const {
   const auto i = node.value_exact<std::int64_t>();
   if (!i) fail(node, fmt::format("'{}' must be an integer, got {}", name, type_name(node)));
   if (*i < minimum) fail(node, fmt::format("'{}' must be at least {}, got {}", name, minimum, *i));
@@ -258,8 +257,7 @@ const toml::array* TableReader::array(std::string_view key) const {
   fail(*n, fmt::format("'{}' must be an array, got {}", key, type_name(*n)));
 }
 
-const toml::array& TableReader::required_array(std::string_view key,
-                                               std::string_view expected) const {
+const toml::array& TableReader::required_array(std::string_view key, std::string_view expected) const {
   require(key, expected);
   return *array(key);
 }
@@ -269,8 +267,7 @@ void TableReader::require_positive(const QuantityValue& q, std::string_view name
 }
 
 void TableReader::require_non_negative(const QuantityValue& q, std::string_view name) const {
-  if (!(q.si >= 0.0))
-    fail(*q.node, fmt::format("'{}' must not be negative, got {}", name, q.written));
+  if (!(q.si >= 0.0)) fail(*q.node, fmt::format("'{}' must not be negative, got {}", name, q.written));
 }
 
 }  // namespace feran::detail

@@ -89,11 +89,9 @@ class TableReader {
   std::optional<std::string> string(std::string_view key) const;
   std::string required_string(std::string_view key, std::string_view expected) const;
   /// An integer ≥ @p minimum (and ≤ @p maximum); nullopt when absent.
-  std::optional<int> integer(std::string_view key, int minimum,
-                             int maximum = 1'000'000'000) const;
+  std::optional<int> integer(std::string_view key, int minimum, int maximum = 1'000'000'000) const;
   /// An integer at @p node, named @p name.
-  int integer_at(const toml::node& node, std::string_view name, int minimum,
-                 int maximum = 1'000'000'000) const;
+  int integer_at(const toml::node& node, std::string_view name, int minimum, int maximum = 1'000'000'000) const;
   /// An array; nullopt when absent.
   const toml::array* array(std::string_view key) const;
   /// An array that must be present.

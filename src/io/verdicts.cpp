@@ -47,18 +47,17 @@ Verdict not_checked(std::string check, std::string reason) {
 Verdict stability(const json& data, const Speeds& speed) {
   const std::string check = "stability in the operating range";
   const json* campbell = section(data, "campbell");
-  const json* threshold = campbell && campbell->contains("stability_threshold") &&
-                                  campbell->at("stability_threshold").is_object()
-                              ? &campbell->at("stability_threshold")
-                              : nullptr;
+  const json* threshold =
+      campbell && campbell->contains("stability_threshold") && campbell->at("stability_threshold").is_object()
+          ? &campbell->at("stability_threshold")
+          : nullptr;
   if (const json* api = section(data, "api684"); api && api->contains("operating_stability")) {
     const json& v = api->at("operating_stability");
     double worst = -std::numeric_limits<double>::infinity();
     for (const json& g : v.at("growth_rate_per_s"))
       if (number(g)) worst = std::max(worst, g.get<double>());
-    return {check, v.at("passes").get<bool>() ? "pass" : "FAIL",
-            std::isfinite(worst) ? json(worst) : json(nullptr), "1/s (largest growth rate)",
-            v.at("reason").get<std::string>()};
+    return {check, v.at("passes").get<bool>() ? "pass" : "FAIL", std::isfinite(worst) ? json(worst) : json(nullptr),
+            "1/s (largest growth rate)", v.at("reason").get<std::string>()};
   }
   if (!data.contains("operating") || !data.at("operating").is_object()) {
     std::string reason = "no operating range: give [api684] min_speed and max_speed";
@@ -82,10 +81,10 @@ Verdict stability(const json& data, const Speeds& speed) {
                                           "the rest of the range was not analysed",
                                           speed(last), speed(high)));
   return {check, "pass", threshold ? threshold->at("speed_rpm") : json(nullptr), threshold ? "rpm" : "",
-          threshold ? fmt::format("the stability threshold, {}, lies above the maximum continuous speed {}",
-                                  speed(threshold->at("speed_rpm").get<double>()), speed(high))
-                    : fmt::format("no mode loses its damping up to {} (the Campbell diagram's last speed)",
-                                  speed(last))};
+          threshold
+              ? fmt::format("the stability threshold, {}, lies above the maximum continuous speed {}",
+                            speed(threshold->at("speed_rpm").get<double>()), speed(high))
+              : fmt::format("no mode loses its damping up to {} (the Campbell diagram's last speed)", speed(last))};
 }
 
 // The peaks judged against the operating range: API 684's unbalance cases when they
@@ -116,10 +115,10 @@ std::vector<Peak> peaks(const json& data, std::string& source) {
     for (const json& c : api->at("cases"))
       for (const json& probe : c.at("probes"))
         for (const json& p : probe.at("peaks"))
-          read(p, fmt::format("{}, {}", c.at("name").get<std::string>(),
-                              probe.value("name", std::string()).empty()
-                                  ? fmt::format("node {}", probe.at("node").dump())
-                                  : probe.at("name").get<std::string>()));
+          read(p,
+               fmt::format("{}, {}", c.at("name").get<std::string>(),
+                           probe.value("name", std::string()).empty() ? fmt::format("node {}", probe.at("node").dump())
+                                                                      : probe.at("name").get<std::string>()));
     return out;
   }
   if (const json* response = section(data, "response"); response && response->contains("peaks")) {
@@ -188,7 +187,8 @@ std::vector<Verdict> margins(const json& data, const Speeds& speed) {
     if (p.af >= 2.5 && p.speed_rpm >= low && p.speed_rpm <= high && (!inside || p.af > inside->af)) inside = &p;
   }
   if (!largest)
-    out.push_back({amplification, "pass", nullptr, "", fmt::format("no resonance peak with an amplification factor in {}", source)});
+    out.push_back({amplification, "pass", nullptr, "",
+                   fmt::format("no resonance peak with an amplification factor in {}", source)});
   else if (inside)
     out.push_back({amplification, "FAIL", inside->af, "",
                    fmt::format("a resonance with amplification factor {:.3g} (≥ 2.5) at {} ({}) lies inside the "
@@ -206,16 +206,16 @@ std::vector<Verdict> bearings(const json& data, const Speeds& speed) {
   const std::string loads = "bearing loads", film = "minimum film thickness";
   const json* statics = section(data, "static");
   if (!statics) {
-    const std::string why = section_error(data, "static").empty() ? "no static analysis in this report"
-                                                                  : "the static analysis failed: " +
-                                                                        section_error(data, "static");
+    const std::string why = section_error(data, "static").empty()
+                                ? "no static analysis in this report"
+                                : "the static analysis failed: " + section_error(data, "static");
     return {not_checked(loads, why), not_checked(film, why)};
   }
-  const std::string at = fmt::format("at the static equilibrium at {}{}", speed(statics->at("speed_hz").get<double>() * 60),
-                                     statics->contains("stability") && statics->at("stability").value("unstable", false) ==
-                                                 true
-                                         ? ", which is unstable"
-                                         : "");
+  const std::string at =
+      fmt::format("at the static equilibrium at {}{}", speed(statics->at("speed_hz").get<double>() * 60),
+                  statics->contains("stability") && statics->at("stability").value("unstable", false) == true
+                      ? ", which is unstable"
+                      : "");
   // Each bearing's use of its limit: specific load (journals) or contact stress
   // (balls); the most used decides.
   double worst_use = -1, worst_value = 0, worst_limit = 0;
@@ -248,11 +248,13 @@ std::vector<Verdict> bearings(const json& data, const Speeds& speed) {
   }
   std::vector<Verdict> out;
   if (journals + rolling == 0)
-    out.push_back(not_checked(loads, "the rotor rests on springs, not on journal or rolling bearings: no bearing "
-                                     "model gives loads to judge"));
+    out.push_back(not_checked(loads,
+                              "the rotor rests on springs, not on journal or rolling bearings: no bearing "
+                              "model gives loads to judge"));
   else if (worst_use < 0)
-    out.push_back(not_checked(loads, "no bearing gives a limit to judge its load by (roller bearings: the contact "
-                                     "stress is not modelled)"));
+    out.push_back(not_checked(loads,
+                              "no bearing gives a limit to judge its load by (roller bearings: the contact "
+                              "stress is not modelled)"));
   else
     out.push_back({loads, worst_use <= 1 ? "pass" : "FAIL", worst_value, worst_unit,
                    fmt::format("{}: {} {:.4g} {} against the limit {:.4g} {} ({}) {}", worst_name, worst_what,
@@ -288,7 +290,8 @@ std::vector<Verdict> report_verdicts(const json& data, const std::string& speed_
 json verdicts_json(const std::vector<Verdict>& verdicts) {
   json out = json::array();
   for (const Verdict& v : verdicts)
-    out.push_back({{"check", v.check}, {"status", v.status}, {"value", v.value}, {"unit", v.unit}, {"reason", v.reason}});
+    out.push_back(
+        {{"check", v.check}, {"status", v.status}, {"value", v.value}, {"unit", v.unit}, {"reason", v.reason}});
   return out;
 }
 

@@ -13,11 +13,11 @@
 namespace feran::detail {
 
 struct Verdict {
-  std::string check;   ///< what is checked
-  std::string status;  ///< "pass", "FAIL" or "not checked"
+  std::string check;     ///< what is checked
+  std::string status;    ///< "pass", "FAIL" or "not checked"
   nlohmann::json value;  ///< the deciding number, or null
-  std::string unit;    ///< of value
-  std::string reason;  ///< one sentence: the number's meaning and the criterion
+  std::string unit;      ///< of value
+  std::string reason;    ///< one sentence: the number's meaning and the criterion
 };
 
 /// The verdicts of the report data @p data (html_report()'s "campbell", "response",

@@ -11,7 +11,8 @@ constexpr Real sign_smoothing = 1e-3;  // Ω_ε [rad/s]
 
 Real MotorLaw::torque(Real speed) const {
   switch (kind) {
-    case Kind::dc: return stall_torque * (1.0 - speed / no_load_speed);
+    case Kind::dc:
+      return stall_torque * (1.0 - speed / no_load_speed);
     case Kind::induction: {
       const Real s = (synchronous_speed - speed) / synchronous_speed;
       // T = 2T_b·s·s_b/(s² + s_b²): 0 at synchronous speed, odd in s (braking above it).
@@ -32,7 +33,8 @@ Real MotorLaw::torque(Real speed) const {
 
 Real MotorLaw::slope(Real speed) const {
   switch (kind) {
-    case Kind::dc: return -stall_torque / no_load_speed;
+    case Kind::dc:
+      return -stall_torque / no_load_speed;
     case Kind::induction: {
       const Real s = (synchronous_speed - speed) / synchronous_speed, b = breakdown_slip;
       const Real d = s * s + b * b;
@@ -51,8 +53,10 @@ Real MotorLaw::slope(Real speed) const {
 
 Real MotorLaw::free_speed() const {
   switch (kind) {
-    case Kind::dc: return no_load_speed;
-    case Kind::induction: return synchronous_speed;
+    case Kind::dc:
+      return no_load_speed;
+    case Kind::induction:
+      return synchronous_speed;
     case Kind::table:
       for (std::size_t i = 1; i < table.size(); ++i) {
         const auto& [w0, t0] = table[i - 1];

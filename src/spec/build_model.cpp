@@ -50,12 +50,12 @@ ModelError SpecSource::locate(const SpecError& error) const {
 
 namespace {
 
-using spec::child;
+using detail::all_digits;
 using detail::closest_match;
 using detail::join_list;
 using detail::number_ranges;
-using detail::all_digits;
 using spec::Bound;
+using spec::child;
 using spec::element;
 
 constexpr std::string_view ground_word = "ground";
@@ -74,22 +74,16 @@ class Builder {
   Model build(BuildInfo* info);
 
  private:
-  [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-    throw SpecError(path, message);
-  }
+  [[noreturn]] void fail(const std::string& path, const std::string& message) const { throw SpecError(path, message); }
   /// How messages name the place of @p path: "line 4, column 8", or the path itself.
   std::string place(const std::string& path) const;
   /// A quantity as written at @p path, else formatted in @p unit.
-  std::string shown(const std::string& path, Real si, Quantity kind,
-                    std::string_view unit = {}) const;
+  std::string shown(const std::string& path, Real si, Quantity kind, std::string_view unit = {}) const;
   /// True when the reader saw @p path (always false for specs built in code).
-  bool given(const std::string& path) const {
-    return source_ != nullptr && source_->places.count(path) != 0;
-  }
+  bool given(const std::string& path) const { return source_ != nullptr && source_->places.count(path) != 0; }
   /// True when @p a was written before @p b (always false without a source).
   bool earlier(const std::string& a, const std::string& b) const;
-  std::string missing_key(std::string_view key, std::string_view table,
-                          std::string_view expected) const {
+  std::string missing_key(std::string_view key, std::string_view table, std::string_view expected) const {
     return fmt::format("missing key '{}' in {} (expected {})", key, table, expected);
   }
 
@@ -99,8 +93,8 @@ class Builder {
   // positive value where it must be positive).
   void check_range(Real v, const std::string& at, std::string_view key, Quantity quantity, std::string_view unit,
                    bool positive) const;
-  void check_coefficient(const SpeedCoefficient& c, const std::string& path,
-                         std::string_view key, Quantity kind, bool direct) const;
+  void check_coefficient(const SpeedCoefficient& c, const std::string& path, std::string_view key, Quantity kind,
+                         bool direct) const;
   void check_choice(const std::string& value, const std::string& path, std::string_view key,
                     std::span<const std::string_view> choices) const;
 
@@ -111,10 +105,9 @@ class Builder {
   Index add_node(Node node, const std::string& defined_at, const std::string& name_at);
   void build_shafts();
   void build_nodes();
-  Index node(const NodeRef& ref, const std::string& path, std::string_view key,
-             std::string_view special = {}) const;
-  std::optional<Index> other_node(const std::optional<NodeRef>& to, const std::string& path,
-                                  std::string_view special, Index from) const;
+  Index node(const NodeRef& ref, const std::string& path, std::string_view key, std::string_view special = {}) const;
+  std::optional<Index> other_node(const std::optional<NodeRef>& to, const std::string& path, std::string_view special,
+                                  Index from) const;
   void require_rotating(Index index, const std::string& path, std::string_view reason) const;
   void build_rigid_bodies();
   void build_springs();
@@ -130,8 +123,7 @@ class Builder {
   void build_forces();
   void build_static_loads();
   void build_drive();
-  void check_sweep(std::optional<Real> start, std::optional<Real> stop,
-                   const std::string& table) const;
+  void check_sweep(std::optional<Real> start, std::optional<Real> stop, const std::string& table) const;
   /// The nodes of a list of references at @p path (key @p key), none twice.
   std::vector<Index> distinct_nodes(const std::vector<NodeRef>& refs, const std::string& path,
                                     std::string_view key) const;
@@ -147,7 +139,7 @@ class Builder {
   const ModelSpec& spec_;
   const SpecSource* source_;
   Model model_;
-  BeamOptions beam_;                          ///< [options] as shaft elements take them
+  BeamOptions beam_;  ///< [options] as shaft elements take them
   std::vector<Material> materials_;
   std::vector<std::string> node_paths_;       ///< per node: the table that defines it
   std::vector<std::string> node_name_paths_;  ///< per node: where its name (or it) is
@@ -165,11 +157,9 @@ std::string Builder::place(const std::string& path) const {
   return fmt::format("line {}, column {}", at.line, at.column);
 }
 
-std::string Builder::shown(const std::string& path, Real si, Quantity kind,
-                           std::string_view unit) const {
+std::string Builder::shown(const std::string& path, Real si, Quantity kind, std::string_view unit) const {
   if (source_ != nullptr)
-    if (const auto it = source_->written.find(path); it != source_->written.end())
-      return it->second;
+    if (const auto it = source_->written.find(path); it != source_->written.end()) return it->second;
   return format_quantity(si, kind, unit);
 }
 
@@ -184,8 +174,8 @@ bool Builder::earlier(const std::string& a, const std::string& b) const {
 // ---------------------------------------------------------------------------------
 // Bounds declared in the field tables
 
-void Builder::check_range(Real v, const std::string& at, std::string_view key, Quantity quantity,
-                          std::string_view unit, bool positive) const {
+void Builder::check_range(Real v, const std::string& at, std::string_view key, Quantity quantity, std::string_view unit,
+                          bool positive) const {
   const PhysicalRange range = physical_range(quantity);
   // The limit in the unit the value was written in.
   const std::string written = shown(at, v, quantity, unit);
@@ -196,8 +186,8 @@ void Builder::check_range(Real v, const std::string& at, std::string_view key, Q
     fail(at, fmt::format("'{}' is {}, beyond the physical range of {} (at most {} in magnitude)", key,
                          shown(at, v, quantity, unit), quantity_name(quantity), limit(range.largest)));
   if (positive && v < range.smallest_positive)
-    fail(at, fmt::format("'{}' is {}, below the physical range of {} (at least {})", key,
-                         shown(at, v, quantity, unit), quantity_name(quantity), limit(range.smallest_positive)));
+    fail(at, fmt::format("'{}' is {}, below the physical range of {} (at least {})", key, shown(at, v, quantity, unit),
+                         quantity_name(quantity), limit(range.smallest_positive)));
 }
 
 template <class S>
@@ -207,8 +197,7 @@ void Builder::check_bounds(const S& entry, const std::string& path) const {
     const std::string at = child(path, f.key);
     const auto check_real = [&](Real v) {
       const auto text = [&] {
-        return f.kind == spec::FieldKind::quantity ? shown(at, v, f.quantity, f.unit)
-                                                   : fmt::format("{}", v);
+        return f.kind == spec::FieldKind::quantity ? shown(at, v, f.quantity, f.unit) : fmt::format("{}", v);
       };
       if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", f.key, v));
       if (f.bound.kind == Kind::positive && !(v > 0.0))
@@ -220,10 +209,8 @@ void Builder::check_bounds(const S& entry, const std::string& path) const {
     };
     const auto check_integer = [&](std::int64_t v, const std::string& where, std::string_view name) {
       if (f.bound.kind != Kind::at_least) return;
-      if (v < f.bound.minimum)
-        fail(where, fmt::format("'{}' must be at least {}, got {}", name, f.bound.minimum, v));
-      if (v > f.bound.maximum)
-        fail(where, fmt::format("'{}' must be at most {}, got {}", name, f.bound.maximum, v));
+      if (v < f.bound.minimum) fail(where, fmt::format("'{}' must be at least {}, got {}", name, f.bound.minimum, v));
+      if (v > f.bound.maximum) fail(where, fmt::format("'{}' must be at most {}, got {}", name, f.bound.maximum, v));
     };
     std::visit(
         [&](auto member) {
@@ -261,18 +248,17 @@ void Builder::check_bounds(const S& entry, const std::string& path) const {
   }
 }
 
-void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& path,
-                                std::string_view key, Quantity kind, bool direct) const {
-  const std::string note =
-      fmt::format(" ('{}' is a direct coefficient; only the cross terms kyz, kzy, cyz, czy may "
-                  "be negative)",
-                  key);
+void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& path, std::string_view key, Quantity kind,
+                                bool direct) const {
+  const std::string note = fmt::format(
+      " ('{}' is a direct coefficient; only the cross terms kyz, kzy, cyz, czy may "
+      "be negative)",
+      key);
   const auto value = [&](Real v, const std::string& at, std::string_view name, bool in_law,
                          bool may_be_negative = false) {
     if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", name, v));
     if (direct && v < 0.0 && !may_be_negative)
-      fail(at, fmt::format("'{}' must not be negative, got {}{}", name, shown(at, v, kind),
-                           in_law ? note : ""));
+      fail(at, fmt::format("'{}' must not be negative, got {}{}", name, shown(at, v, kind), in_law ? note : ""));
     check_range(v, at, name, kind, {}, false);
   };
   const auto speed = [&](Real v, const std::string& at, std::string_view name) {
@@ -287,10 +273,9 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::Table>) {
           if (law.speeds.empty()) fail(child(path, "speeds"), fmt::format("'{}.speeds' must not be empty", key));
           if (law.values.size() != law.speeds.size())
-            fail(child(path, "values"),
-                 fmt::format("'{0}.speeds' and '{0}.values' must have the same length, got {1} "
-                             "speeds and {2} values",
-                             key, law.speeds.size(), law.values.size()));
+            fail(child(path, "values"), fmt::format("'{0}.speeds' and '{0}.values' must have the same length, got {1} "
+                                                    "speeds and {2} values",
+                                                    key, law.speeds.size(), law.values.size()));
           for (std::size_t i = 0; i < law.speeds.size(); ++i) {
             const std::string at = element(child(path, "speeds"), i);
             speed(law.speeds[i], at, fmt::format("{}.speeds[{}]", key, i));
@@ -324,8 +309,8 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
           const std::size_t rows = law.speeds.empty() ? 1 : law.speeds.size(), nf = law.frequencies.size();
           if (law.values.size() != rows * nf)
             fail(child(path, "values"),
-                 fmt::format("'{}.values' must hold one value per speed and frequency: {} × {}, got {}", key, rows,
-                             nf, law.values.size()));
+                 fmt::format("'{}.values' must hold one value per speed and frequency: {} × {}, got {}", key, rows, nf,
+                             law.values.size()));
           // A dynamic stiffness turns negative above a support's own resonance (mass-like):
           // a direct stiffness in a frequency table may be negative; a direct damping may not.
           const bool stiffness = kind == Quantity::stiffness || kind == Quantity::rotational_stiffness;
@@ -348,14 +333,14 @@ void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& pa
           speed(law.at, child(path, "at"), "at");
         } else {
           value(law.value, child(path, "value"), "value", true);
-          for (const auto& [name, v] : {std::pair{"f_as", law.f_as}, std::pair{"c0", law.c0},
-                                        std::pair{"c1", law.c1}, std::pair{"c2", law.c2}})
-            if (!std::isfinite(v)) fail(child(path, name), fmt::format("'{}' must be a finite number, got {}", name, v));
+          for (const auto& [name, v] :
+               {std::pair{"f_as", law.f_as}, std::pair{"c0", law.c0}, std::pair{"c1", law.c1}, std::pair{"c2", law.c2}})
+            if (!std::isfinite(v))
+              fail(child(path, name), fmt::format("'{}' must be a finite number, got {}", name, v));
           check_range(law.f_as, child(path, "f_as"), "f_as", Quantity::frequency, {}, false);  // in Hz
           // s(f) runs between c0 − |c1|/2 and c0 + |c1|/2; a direct coefficient stays ≥ 0.
           if (direct && law.c0 < 0.5 * std::abs(law.c1))
-            fail(given(child(path, "c0")) || source_ == nullptr ? child(path, "c0")
-                                                                 : child(path, "c1"),
+            fail(given(child(path, "c0")) || source_ == nullptr ? child(path, "c0") : child(path, "c1"),
                  fmt::format("the arctan factor of direct coefficient '{}' would turn negative "
                              "at high or low speed: need c0 ≥ |c1|/2, got c0 = {}, c1 = {}",
                              key, law.c0, law.c1));
@@ -368,10 +353,8 @@ void Builder::check_choice(const std::string& value, const std::string& path, st
                            std::span<const std::string_view> choices) const {
   std::vector<std::string> names(choices.begin(), choices.end());
   if (std::find(names.begin(), names.end(), value) != names.end()) return;
-  std::string message =
-      fmt::format("'{}' must be {}, got \"{}\"", key, join_list(names, "or", '"'), value);
-  if (const auto m = closest_match(value, names, 2))
-    message += fmt::format("; did you mean \"{}\"?", *m);
+  std::string message = fmt::format("'{}' must be {}, got \"{}\"", key, join_list(names, "or", '"'), value);
+  if (const auto m = closest_match(value, names, 2)) message += fmt::format("; did you mean \"{}\"?", *m);
   fail(path, message);
 }
 
@@ -381,15 +364,14 @@ void Builder::check_choice(const std::string& value, const std::string& path, st
 void Builder::build_options() {
   const OptionsSpec& o = spec_.options;
   check_bounds(o, "options");
-  check_choice(o.gyroscopic, "options.gyroscopic", "gyroscopic",
-               spec::choices_of<OptionsSpec>("gyroscopic"));
+  check_choice(o.gyroscopic, "options.gyroscopic", "gyroscopic", spec::choices_of<OptionsSpec>("gyroscopic"));
   beam_.shear_deformation = o.shear_deformation;
   beam_.gyroscopic = o.gyroscopic == "lumped" ? GyroscopicForm::lumped : GyroscopicForm::consistent;
   beam_.damping_beta = o.shaft_damping;
   check_choice(o.shear_coefficient, "options.shear_coefficient", "shear_coefficient",
                spec::choices_of<OptionsSpec>("shear_coefficient"));
   beam_.rotary_inertia = o.rotary_inertia;
-  beam_.shear = o.kappa                            ? ShearCoefficient::given
+  beam_.shear = o.kappa                               ? ShearCoefficient::given
                 : o.shear_coefficient == "hutchinson" ? ShearCoefficient::hutchinson
                                                       : ShearCoefficient::cowper;
   beam_.kappa = o.kappa.value_or(0.0);
@@ -400,16 +382,14 @@ void Builder::build_options() {
     const std::string& s = o.free_motions[i];
     const auto it = std::find(names.begin(), names.end(), s);
     if (it == names.end()) {
-      std::string message = fmt::format(
-          "entries of 'free_motions' must be \"axial\", \"torsion\" or \"lateral\", got \"{}\"", s);
-      if (const auto m = closest_match(s, names, 2))
-        message += fmt::format("; did you mean \"{}\"?", *m);
+      std::string message =
+          fmt::format("entries of 'free_motions' must be \"axial\", \"torsion\" or \"lateral\", got \"{}\"", s);
+      if (const auto m = closest_match(s, names, 2)) message += fmt::format("; did you mean \"{}\"?", *m);
       fail(element("options.free_motions", i), message);
     }
     const auto motion = static_cast<FreeMotion>(it - names.begin());
     auto& motions = model_.free_motions;
-    if (std::find(motions.begin(), motions.end(), motion) == motions.end())
-      motions.push_back(motion);
+    if (std::find(motions.begin(), motions.end(), motion) == motions.end()) motions.push_back(motion);
   }
 }
 
@@ -421,21 +401,19 @@ void Builder::build_materials() {
     if (s.name.empty()) fail(name_at, "material 'name' must not be empty");
     for (std::size_t j = 0; j < i; ++j)
       if (spec_.materials[j].name == s.name)
-        fail(name_at, fmt::format("material '{}' is defined twice; the first definition is at {}",
-                                  s.name, place(child(element("materials", j), "name"))));
+        fail(name_at, fmt::format("material '{}' is defined twice; the first definition is at {}", s.name,
+                                  place(child(element("materials", j), "name"))));
     check_bounds(s, path);
     Material m;
     m.name = s.name;
     m.E = s.E;
-    if (s.G && s.nu)
-      fail(child(path, "nu"), "give either the shear modulus 'G' or Poisson's ratio 'nu', not both");
+    if (s.G && s.nu) fail(child(path, "nu"), "give either the shear modulus 'G' or Poisson's ratio 'nu', not both");
     if (s.G) {
       m.G = *s.G;
     } else if (s.nu) {
       if (!(*s.nu > -1.0 && *s.nu < 0.5))
         fail(child(path, "nu"),
-             fmt::format("'nu' (Poisson's ratio) must lie between -1 and 0.5 (both excluded), got {}",
-                         *s.nu));
+             fmt::format("'nu' (Poisson's ratio) must lie between -1 and 0.5 (both excluded), got {}", *s.nu));
       m.G = m.E / (2.0 * (1.0 + *s.nu));
     } else {
       fail(path, fmt::format("missing key 'G' or 'nu' in [[materials]] (expected the shear "
@@ -505,8 +483,7 @@ void Builder::build_shafts() {
     first.rotating = shaft.rotating;
     first.name = shaft.start_node;
     if (!first.name.empty()) check_node_name(first.name, child(path, "start_node"));
-    Index node_a =
-        add_node(first, path, first.name.empty() ? path : child(path, "start_node"));
+    Index node_a = add_node(first, path, first.name.empty() ? path : child(path, "start_node"));
 
     BeamOptions beam_options = beam_;
     beam_options.rotating = shaft.rotating;
@@ -521,12 +498,9 @@ void Builder::build_shafts() {
       if (!(s.inner_diameter < s.outer_diameter))
         fail(child(section_path, "inner_diameter"),
              fmt::format("inner_diameter ({}) must be smaller than outer_diameter ({})",
-                         shown(child(section_path, "inner_diameter"), s.inner_diameter,
-                               Quantity::length, "mm"),
-                         shown(child(section_path, "outer_diameter"), s.outer_diameter,
-                               Quantity::length, "mm")));
-      const Material* m = s.material.empty() ? shaft_material
-                                             : &material(s.material, child(section_path, "material"));
+                         shown(child(section_path, "inner_diameter"), s.inner_diameter, Quantity::length, "mm"),
+                         shown(child(section_path, "outer_diameter"), s.outer_diameter, Quantity::length, "mm")));
+      const Material* m = s.material.empty() ? shaft_material : &material(s.material, child(section_path, "material"));
       if (m == nullptr)
         fail(section_path,
              "missing key 'material' in [[shafts.sections]] (expected the name of a material; "
@@ -556,14 +530,13 @@ void Builder::build_shafts() {
         node.rotating = shaft.rotating;
         const bool last = e == s.elements;
         if (last) node.name = s.end_node;
-        const Index node_b = add_node(
-            node, section_path,
-            last && !s.end_node.empty() ? child(section_path, "end_node") : section_path);
-        const CircularSection section_a = tapered ? section_at(e - 1) : CircularSection{s.outer_diameter, s.inner_diameter};
+        const Index node_b =
+            add_node(node, section_path, last && !s.end_node.empty() ? child(section_path, "end_node") : section_path);
+        const CircularSection section_a =
+            tapered ? section_at(e - 1) : CircularSection{s.outer_diameter, s.inner_diameter};
         const CircularSection section_b = tapered ? section_at(e) : section_a;
         model_.elements.emplace_back(
-            TimoshenkoBeam(node_a, node_b, s.length / static_cast<Real>(s.elements), section_a, section_b, *m,
-                           options),
+            TimoshenkoBeam(node_a, node_b, s.length / static_cast<Real>(s.elements), section_a, section_b, *m, options),
             fmt::format("shaft {} section {} element {}", shaft_label, j + 1, e));
         node_a = node_b;
       }
@@ -599,28 +572,24 @@ void Builder::build_nodes() {
                                next, std::numeric_limits<int>::max()));
       node.number = static_cast<int>(next);
     }
-    add_node(node, s.number ? child(path, "number") : path,
-             s.name.empty() ? path : child(path, "name"));
+    add_node(node, s.number ? child(path, "number") : path, s.name.empty() ? path : child(path, "name"));
     // Messages about the node (e.g. from check_model) point at its table.
     node_paths_.back() = path;
   }
 }
 
-Index Builder::node(const NodeRef& ref, const std::string& path, std::string_view key,
-                    std::string_view special) const {
+Index Builder::node(const NodeRef& ref, const std::string& path, std::string_view key, std::string_view special) const {
   if (const auto* number = std::get_if<std::int64_t>(&ref)) {
     if (*number >= std::numeric_limits<int>::min() && *number <= std::numeric_limits<int>::max())
       if (const auto it = node_by_number_.find(static_cast<int>(*number)); it != node_by_number_.end())
         return static_cast<Index>(it->second);
     std::vector<int> numbers;
     for (const Node& n : model_.nodes) numbers.push_back(n.number);
-    fail(path, fmt::format("node {} does not exist; the node numbers are {}", *number,
-                           number_ranges(numbers)));
+    fail(path, fmt::format("node {} does not exist; the node numbers are {}", *number, number_ranges(numbers)));
   }
   const std::string& text = std::get<std::string>(ref);
   if (text == ground_word || text == axis_word)
-    fail(path, fmt::format("'{}' cannot be \"{}\" here; expected {}a node number or a node name",
-                           key, text,
+    fail(path, fmt::format("'{}' cannot be \"{}\" here; expected {}a node number or a node name", key, text,
                            special.empty() ? std::string{} : fmt::format("\"{}\", ", special)));
   if (const auto it = node_by_name_.find(text); it != node_by_name_.end()) return static_cast<Index>(it->second);
   std::vector<std::string> names;
@@ -632,9 +601,10 @@ Index Builder::node(const NodeRef& ref, const std::string& path, std::string_vie
   if (const auto match = closest_match(text, candidates, detail::node_name_distance))
     message += fmt::format("; did you mean '{}'?", *match);
   else if (all_digits(text))
-    message += fmt::format("; a quoted reference is a node name: to refer to node number {0}, "
-                           "write {1} = {0} without quotes",
-                           text, key);
+    message += fmt::format(
+        "; a quoted reference is a node name: to refer to node number {0}, "
+        "write {1} = {0} without quotes",
+        text, key);
   else if (names.empty())
     message += fmt::format("; no node has a name, so refer to nodes by number (e.g. {} = 1)", key);
   else if (names.size() <= 10)
@@ -646,12 +616,10 @@ std::optional<Index> Builder::other_node(const std::optional<NodeRef>& to, const
                                          std::string_view special, Index from) const {
   if (!to) return std::nullopt;
   const std::string at = child(path, "to");
-  if (const auto* text = std::get_if<std::string>(&*to); text && *text == special)
-    return std::nullopt;
+  if (const auto* text = std::get_if<std::string>(&*to); text && *text == special) return std::nullopt;
   const Index index = node(*to, at, "to", special);
   if (index == from)
-    fail(at, fmt::format("'to' must be a node other than 'node' (both are node {})",
-                         model_.node_label(index)));
+    fail(at, fmt::format("'to' must be a node other than 'node' (both are node {})", model_.node_label(index)));
   return index;
 }
 
@@ -693,8 +661,9 @@ void Builder::build_rigid_bodies() {
                        "two forms ('{}' and '{}')",
                        mass_key, disk_key));
     if (mass_key.empty() && disk_key.empty())
-      fail(path, "a rigid body needs either mass, Ja and Jp, or the disk form outer_diameter, "
-                 "width and material (inner_diameter optional)");
+      fail(path,
+           "a rigid body needs either mass, Ja and Jp, or the disk form outer_diameter, "
+           "width and material (inner_diameter optional)");
     check_bounds(s, path);
 
     RigidBodyProperties props;
@@ -702,26 +671,22 @@ void Builder::build_rigid_bodies() {
       for (const auto& [key, value, kind] :
            {std::tuple{"mass", s.mass, Quantity::mass}, std::tuple{"Ja", s.Ja, Quantity::inertia},
             std::tuple{"Jp", s.Jp, Quantity::inertia}})
-        if (!value)
-          fail(path, missing_key(key, "[[rigid_bodies]]", expected_quantity(kind)));
+        if (!value) fail(path, missing_key(key, "[[rigid_bodies]]", expected_quantity(kind)));
       props.mass = *s.mass;
       props.transverse_inertia = *s.Ja;
       props.polar_inertia = *s.Jp;
     } else {
       if (!s.outer_diameter)
-        fail(path, missing_key("outer_diameter", "[[rigid_bodies]]",
-                               expected_quantity(Quantity::length)));
-      if (!s.width)
-        fail(path, missing_key("width", "[[rigid_bodies]]", expected_quantity(Quantity::length)));
+        fail(path, missing_key("outer_diameter", "[[rigid_bodies]]", expected_quantity(Quantity::length)));
+      if (!s.width) fail(path, missing_key("width", "[[rigid_bodies]]", expected_quantity(Quantity::length)));
       const Real inner = s.inner_diameter.value_or(0.0);
       if (!(inner < *s.outer_diameter))
-        fail(at("inner_diameter"),
-             fmt::format("inner_diameter ({}) must be smaller than outer_diameter ({})",
-                         shown(at("inner_diameter"), inner, Quantity::length, "mm"),
-                         shown(at("outer_diameter"), *s.outer_diameter, Quantity::length, "mm")));
+        fail(at("inner_diameter"), fmt::format("inner_diameter ({}) must be smaller than outer_diameter ({})",
+                                               shown(at("inner_diameter"), inner, Quantity::length, "mm"),
+                                               shown(at("outer_diameter"), *s.outer_diameter, Quantity::length, "mm")));
       if (s.material.empty())
-        fail(path, missing_key("material", "[[rigid_bodies]]",
-                               "the name of a material, whose density the disk form uses"));
+        fail(path,
+             missing_key("material", "[[rigid_bodies]]", "the name of a material, whose density the disk form uses"));
       const Material& m = material(s.material, at("material"));
       props = RigidBody::disk(m.rho, *s.outer_diameter, inner, *s.width);
     }
@@ -733,14 +698,12 @@ void Builder::build_rigid_bodies() {
         // The disk's inertia is about its centre; Ja is about the node.
         props.transverse_inertia += parallel_axis;
       } else if (props.transverse_inertia < parallel_axis) {
-        fail(at("Ja"),
-             fmt::format("'Ja' ({} kg*m^2) is about a transverse axis through the node, so it "
-                         "must be at least mass·offset² = {} kg*m^2",
-                         props.transverse_inertia, parallel_axis));
+        fail(at("Ja"), fmt::format("'Ja' ({} kg*m^2) is about a transverse axis through the node, so it "
+                                   "must be at least mass·offset² = {} kg*m^2",
+                                   props.transverse_inertia, parallel_axis));
       }
     }
-    const bool rotating =
-        s.rotating.value_or(model_.nodes[static_cast<std::size_t>(node_index)].rotating);
+    const bool rotating = s.rotating.value_or(model_.nodes[static_cast<std::size_t>(node_index)].rotating);
     model_.elements.emplace_back(RigidBody(node_index, props, rotating), label);
   }
 }
@@ -762,10 +725,10 @@ void Builder::build_springs() {
         any = true;
       }
     };
-    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> k = {
-        &s.kx, &s.ky, &s.kz, &s.krx, &s.kry, &s.krz};
-    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> d = {
-        &s.cx, &s.cy, &s.cz, &s.crx, &s.cry, &s.crz};
+    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> k = {&s.kx,  &s.ky,  &s.kz,
+                                                                                 &s.krx, &s.kry, &s.krz};
+    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> d = {&s.cx,  &s.cy,  &s.cz,
+                                                                                 &s.crx, &s.cry, &s.crz};
     for (std::size_t j = 0; j < dofs_per_node; ++j) {
       take(*k[j], c.k[j]);
       take(*d[j], c.c[j]);
@@ -816,8 +779,7 @@ void Builder::build_friction() {
     f.node_b = other_node(s.to, path, axis_word, f.node_a);
     if (f.node_b) require_rotating(*f.node_b, child(path, "to"), reason);
     check_bounds(s, path);
-    if (s.force == 0.0 && s.moment == 0.0)
-      fail(path, "Coulomb friction needs a positive 'force' or 'moment'");
+    if (s.force == 0.0 && s.moment == 0.0) fail(path, "Coulomb friction needs a positive 'force' or 'moment'");
     f.force_amplitude = s.force;
     f.moment_amplitude = s.moment;
     f.epsilon_t = s.epsilon_t;
@@ -856,8 +818,12 @@ void Builder::build_rolling_bearings() {
     if (!(s.contact_angle < 0.5 * pi))
       fail(child(path, "contact_angle"),
            fmt::format("the contact angle must be below 90°, got {:.6g}°", s.contact_angle * 180.0 / pi));
-    b.geometry = {.elements = s.elements, .element_diameter = s.element_diameter, .pitch_diameter = s.pitch_diameter,
-                  .contact_angle = s.contact_angle, .clearance = s.clearance, .hertz_constant = s.hertz_constant,
+    b.geometry = {.elements = s.elements,
+                  .element_diameter = s.element_diameter,
+                  .pitch_diameter = s.pitch_diameter,
+                  .contact_angle = s.contact_angle,
+                  .clearance = s.clearance,
+                  .hertz_constant = s.hertz_constant,
                   .roller = s.type == "roller"};
     model_.forces.emplace_back(b, label);
   }
@@ -881,10 +847,10 @@ void Builder::build_journal_bearings() {
                : s.theory == "finite" ? FilmTheory::finite_length
                                       : FilmTheory::short_bearing;
     if (b.theory != FilmTheory::finite_length) {
-      for (const auto& [key, given] : {std::pair{"cavitation", s.cavitation.has_value()},
-                                       std::pair{"circumferential_cells", s.circumferential_cells.has_value()},
-                                       std::pair{"axial_cells", s.axial_cells.has_value()},
-                                       std::pair{"evaluation", s.evaluation.has_value()}})
+      for (const auto& [key, given] :
+           {std::pair{"cavitation", s.cavitation.has_value()},
+            std::pair{"circumferential_cells", s.circumferential_cells.has_value()},
+            std::pair{"axial_cells", s.axial_cells.has_value()}, std::pair{"evaluation", s.evaluation.has_value()}})
         if (given)
           fail(child(path, key), fmt::format("'{}' applies only to theory = \"finite\" (the {} bearing's closed "
                                              "form has its own cavitation condition and no grid)",
@@ -926,8 +892,7 @@ void Builder::build_rigid_links() {
     const RigidLinkSpec& s = spec_.rigid_links[i];
     const std::string path = child(element("rigid_links", i), "nodes");
     if (s.nodes.size() < 2)
-      fail(path, fmt::format("'nodes' of a rigid link needs at least two nodes, got {}",
-                             s.nodes.size()));
+      fail(path, fmt::format("'nodes' of a rigid link needs at least two nodes, got {}", s.nodes.size()));
     const std::vector<Index> nodes = distinct_nodes(s.nodes, path, "nodes");
     RigidLink link;
     link.leader = nodes.front();
@@ -951,21 +916,30 @@ void Builder::build_fixed() {
     if (s.dofs.empty()) dofs.fill(true);
     for (std::size_t j = 0; j < s.dofs.size(); ++j) {
       const std::string& d = s.dofs[j];
-      if (d == "u") set({Dof::u});
-      else if (d == "v") set({Dof::v});
-      else if (d == "w") set({Dof::w});
-      else if (d == "rx") set({Dof::rx});
-      else if (d == "ry") set({Dof::ry});
-      else if (d == "rz") set({Dof::rz});
-      else if (d == "all") set({Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz});
-      else if (d == "lateral") set({Dof::v, Dof::w, Dof::ry, Dof::rz});
-      else if (d == "translations") set({Dof::u, Dof::v, Dof::w});
-      else if (d == "rotations") set({Dof::rx, Dof::ry, Dof::rz});
+      if (d == "u")
+        set({Dof::u});
+      else if (d == "v")
+        set({Dof::v});
+      else if (d == "w")
+        set({Dof::w});
+      else if (d == "rx")
+        set({Dof::rx});
+      else if (d == "ry")
+        set({Dof::ry});
+      else if (d == "rz")
+        set({Dof::rz});
+      else if (d == "all")
+        set({Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz});
+      else if (d == "lateral")
+        set({Dof::v, Dof::w, Dof::ry, Dof::rz});
+      else if (d == "translations")
+        set({Dof::u, Dof::v, Dof::w});
+      else if (d == "rotations")
+        set({Dof::rx, Dof::ry, Dof::rz});
       else {
-        std::string message = fmt::format("entries of 'dofs' must be one of {}, got \"{}\"",
-                                          join_list(names, "or", '"'), d);
-        if (const auto m = closest_match(d, names, 2))
-          message += fmt::format("; did you mean \"{}\"?", *m);
+        std::string message =
+            fmt::format("entries of 'dofs' must be one of {}, got \"{}\"", join_list(names, "or", '"'), d);
+        if (const auto m = closest_match(d, names, 2)) message += fmt::format("; did you mean \"{}\"?", *m);
         fail(element(child(path, "dofs"), j), message);
       }
     }
@@ -1010,8 +984,7 @@ void Builder::build_forces() {
 
     const auto kind = std::find(kinds.begin(), kinds.end(), s.kind);
     if (kind == kinds.end()) {
-      std::string message =
-          fmt::format("'kind' must be {}, got \"{}\"", join_list(kinds, "or", '"'), s.kind);
+      std::string message = fmt::format("'kind' must be {}, got \"{}\"", join_list(kinds, "or", '"'), s.kind);
       std::vector<std::string> extending;
       for (const std::string& n : kinds)
         if (!s.kind.empty() && n.starts_with(s.kind)) extending.push_back(n);
@@ -1026,23 +999,22 @@ void Builder::build_forces() {
     if (f.type == Kind::fixed) {
       if (s.direction.empty())
         fail(path, missing_key("direction", "[[forces]]",
-                               fmt::format("{} for a force of kind \"fixed\"",
-                                           join_list(directions, "or", '"'))));
+                               fmt::format("{} for a force of kind \"fixed\"", join_list(directions, "or", '"'))));
       const auto it = std::find(directions.begin(), directions.end(), s.direction);
       if (it == directions.end()) {
         const std::string& d = s.direction;
-        std::string message = fmt::format("'direction' must be {}, got \"{}\"",
-                                          join_list(directions, "or", '"'), d);
+        std::string message = fmt::format("'direction' must be {}, got \"{}\"", join_list(directions, "or", '"'), d);
         const std::string unsigned_direction =
             !d.empty() && (d.front() == '+' || d.front() == '-') ? d.substr(1) : std::string{};
         if (d == "u" || d == "v" || d == "w")
-          message += fmt::format("; did you mean \"{}\"? (directions name axes, not DOFs)",
-                                 d == "u" ? "x" : d == "v" ? "y" : "z");
-        else if (std::find(directions.begin(), directions.end(), unsigned_direction) !=
-                 directions.end())
-          message += fmt::format("; did you mean \"{}\"? (a direction has no sign: the force "
-                                 "acts along +{}; phase = \"180 deg\" reverses it)",
-                                 unsigned_direction, unsigned_direction);
+          message += fmt::format("; did you mean \"{}\"? (directions name axes, not DOFs)", d == "u"   ? "x"
+                                                                                            : d == "v" ? "y"
+                                                                                                       : "z");
+        else if (std::find(directions.begin(), directions.end(), unsigned_direction) != directions.end())
+          message += fmt::format(
+              "; did you mean \"{}\"? (a direction has no sign: the force "
+              "acts along +{}; phase = \"180 deg\" reverses it)",
+              unsigned_direction, unsigned_direction);
         else if (const auto m = closest_match(d, directions, 0))
           message += fmt::format("; did you mean \"{}\"?", *m);
         fail(at("direction"), message);
@@ -1050,12 +1022,10 @@ void Builder::build_forces() {
       f.direction = static_cast<Dof>(it - directions.begin());
     } else {
       if (!s.direction.empty())
-        fail(at("direction"),
-             fmt::format("'direction' is only for a force of kind \"fixed\"; a {} turns with "
-                         "the shaft in the y-z plane, so leave 'direction' out",
-                         f.type == Kind::rotating_force ? "rotating force" : "rotating moment"));
-      require_rotating(f.node, at("node"),
-                       fmt::format("a force of kind \"{}\" turns with the shaft", s.kind));
+        fail(at("direction"), fmt::format("'direction' is only for a force of kind \"fixed\"; a {} turns with "
+                                          "the shaft in the y-z plane, so leave 'direction' out",
+                                          f.type == Kind::rotating_force ? "rotating force" : "rotating moment"));
+      require_rotating(f.node, at("node"), fmt::format("a force of kind \"{}\" turns with the shaft", s.kind));
     }
     check_bounds(s, path);
     if (s.frequency && f.type != Kind::fixed)
@@ -1081,8 +1051,8 @@ void Builder::build_forces() {
         if (k > 0 && !(time > s.time_table[k - 1].first))
           fail(element(point, 0), fmt::format("the times of 'time_table' must strictly increase: {} follows {}",
                                               shown(element(point, 0), time, Quantity::time, ""),
-                                              shown(element(element(at("time_table"), k - 1), 0), s.time_table[k - 1].first,
-                                                    Quantity::time, "")));
+                                              shown(element(element(at("time_table"), k - 1), 0),
+                                                    s.time_table[k - 1].first, Quantity::time, "")));
       }
       f.time_table = s.time_table;
     } else {
@@ -1108,8 +1078,9 @@ void Builder::build_static_loads() {
     check_bounds(s, path);
     load.load = {s.fx, s.fy, s.fz, s.mx, s.my, s.mz};
     if (std::all_of(load.load.begin(), load.load.end(), [](Real v) { return v == 0.0; }))
-      fail(path, "a static load needs at least one non-zero component: the forces fx, fy, fz "
-                 "or the moments mx, my, mz");
+      fail(path,
+           "a static load needs at least one non-zero component: the forces fx, fy, fz "
+           "or the moments mx, my, mz");
     model_.forces.emplace_back(load, label);
   }
 }
@@ -1117,17 +1088,15 @@ void Builder::build_static_loads() {
 // ---------------------------------------------------------------------------------
 // Analysis tables
 
-void Builder::check_sweep(std::optional<Real> start, std::optional<Real> stop,
-                          const std::string& table) const {
+void Builder::check_sweep(std::optional<Real> start, std::optional<Real> stop, const std::string& table) const {
   if (start && stop && !(*stop > *start))
-    fail(child(table, "stop"),
-         fmt::format("'stop' ({}) must be greater than 'start' ({})",
-                     shown(child(table, "stop"), *stop, Quantity::speed, "Hz"),
-                     shown(child(table, "start"), *start, Quantity::speed, "Hz")));
+    fail(child(table, "stop"), fmt::format("'stop' ({}) must be greater than 'start' ({})",
+                                           shown(child(table, "stop"), *stop, Quantity::speed, "Hz"),
+                                           shown(child(table, "start"), *start, Quantity::speed, "Hz")));
 }
 
-std::vector<Index> Builder::distinct_nodes(const std::vector<NodeRef>& refs,
-                                           const std::string& path, std::string_view key) const {
+std::vector<Index> Builder::distinct_nodes(const std::vector<NodeRef>& refs, const std::string& path,
+                                           std::string_view key) const {
   std::vector<Index> nodes;
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const std::string at = element(path, i);
@@ -1158,12 +1127,12 @@ void Builder::check_static() const {
     const std::string& gravity = *s.gravity;
     if (gravity == "none") {
       if (s.g)
-        fail("static.g", "'g' cannot be given with gravity = \"none\"; give a direction such as "
-                         "gravity = \"-z\", or leave 'g' out");
+        fail("static.g",
+             "'g' cannot be given with gravity = \"none\"; give a direction such as "
+             "gravity = \"-z\", or leave 'g' out");
     } else if (std::find(choices.begin(), choices.end(), gravity) == choices.end()) {
-      std::string message = fmt::format(
-          "'gravity' must be {} (the direction in which gravity pulls), got \"{}\"",
-          join_list(choices, "or", '"'), gravity);
+      std::string message = fmt::format("'gravity' must be {} (the direction in which gravity pulls), got \"{}\"",
+                                        join_list(choices, "or", '"'), gravity);
       if (gravity == "x" || gravity == "y" || gravity == "z")
         message += fmt::format("; give its sign: \"-{0}\" or \"+{0}\"", gravity);
       else if (const auto m = closest_match(gravity, choices, 0))
@@ -1191,25 +1160,23 @@ void Builder::check_runup() const {
   if (r.start) check_choice(*r.start, "runup.start", "start", spec::choices_of<RunupSpec>("start"));
   // The speed profile's three forms, each named by its first key given.
   std::vector<std::string> forms;
-  for (const auto& keys : {std::vector<std::pair<std::string, bool>>{{"speed", r.speed.has_value()}},
-                           std::vector<std::pair<std::string, bool>>{{"from", r.from.has_value()},
-                                                                     {"to", r.to.has_value()},
-                                                                     {"ramp_time", r.ramp_time.has_value()}},
-                           std::vector<std::pair<std::string, bool>>{{"table", !r.table.empty()}}}) {
+  for (const auto& keys :
+       {std::vector<std::pair<std::string, bool>>{{"speed", r.speed.has_value()}},
+        std::vector<std::pair<std::string, bool>>{
+            {"from", r.from.has_value()}, {"to", r.to.has_value()}, {"ramp_time", r.ramp_time.has_value()}},
+        std::vector<std::pair<std::string, bool>>{{"table", !r.table.empty()}}}) {
     std::string first;
     for (const auto& [key, present] : keys)
       if (present && (first.empty() || earlier("runup." + key, "runup." + first))) first = key;
     if (!first.empty()) forms.push_back(first);
   }
-  std::sort(forms.begin(), forms.end(), [&](const std::string& a, const std::string& b) {
-    return a != b && earlier("runup." + a, "runup." + b);
-  });
+  std::sort(forms.begin(), forms.end(),
+            [&](const std::string& a, const std::string& b) { return a != b && earlier("runup." + a, "runup." + b); });
   if (forms.size() > 1)
-    fail("runup." + forms[1],
-         fmt::format("the speed profile is given either by 'speed' (a constant speed), by "
-                     "'from', 'to' and 'ramp_time' (a linear ramp) or by 'table' (time and speed "
-                     "points); this [runup] mixes '{}' and '{}'",
-                     forms[0], forms[1]));
+    fail("runup." + forms[1], fmt::format("the speed profile is given either by 'speed' (a constant speed), by "
+                                          "'from', 'to' and 'ramp_time' (a linear ramp) or by 'table' (time and speed "
+                                          "points); this [runup] mixes '{}' and '{}'",
+                                          forms[0], forms[1]));
   check_bounds(r, "runup");
   for (std::size_t i = 0; i < r.table.size(); ++i) {
     const std::string time_at = element(element("runup.table", i), 0);
@@ -1234,13 +1201,11 @@ void Builder::check_runup() const {
   }
   if (!forms.empty() && (forms[0] == "from" || forms[0] == "to" || forms[0] == "ramp_time")) {
     if (!r.to)
-      fail("runup", missing_key("to", "[runup]",
-                                fmt::format("the ramp's final speed, {}",
-                                            expected_quantity(Quantity::speed))));
+      fail("runup",
+           missing_key("to", "[runup]", fmt::format("the ramp's final speed, {}", expected_quantity(Quantity::speed))));
     if (!r.ramp_time)
       fail("runup", missing_key("ramp_time", "[runup]",
-                                fmt::format("the ramp's duration, {}",
-                                            expected_quantity(Quantity::time))));
+                                fmt::format("the ramp's duration, {}", expected_quantity(Quantity::time))));
   }
   distinct_nodes(r.probes, "runup.probes", "probes");
 
@@ -1250,24 +1215,23 @@ void Builder::check_runup() const {
 void Builder::check_spring_names(const std::vector<std::string>& names, const std::string& key) const {
   std::vector<std::string> named;
   for (const SpringSpec& s : spec_.springs)
-    if (!s.name.empty() && std::find(named.begin(), named.end(), s.name) == named.end())
-      named.push_back(s.name);
+    if (!s.name.empty() && std::find(named.begin(), named.end(), s.name) == named.end()) named.push_back(s.name);
   for (std::size_t i = 0; i < names.size(); ++i) {
     const std::string& name = names[i];
     const std::string at = element(key, i);
-    const auto count = std::count_if(spec_.springs.begin(), spec_.springs.end(),
-                                     [&](const SpringSpec& s) { return s.name == name; });
+    const auto count =
+        std::count_if(spec_.springs.begin(), spec_.springs.end(), [&](const SpringSpec& s) { return s.name == name; });
     if (count > 1)
       fail(at, fmt::format("spring name '{}' is ambiguous: {} [[springs]] entries have it; give "
                            "them different names",
                            name, count));
     if (count == 0) {
       std::string message = fmt::format("spring '{}' does not exist", name);
-      if (std::find(unnamed_spring_labels_.begin(), unnamed_spring_labels_.end(), name) !=
-          unnamed_spring_labels_.end())
-        message += fmt::format("; '{}' is the label of a [[springs]] entry without a 'name', and "
-                               "only named springs can be referenced: give that entry a 'name'",
-                               name);
+      if (std::find(unnamed_spring_labels_.begin(), unnamed_spring_labels_.end(), name) != unnamed_spring_labels_.end())
+        message += fmt::format(
+            "; '{}' is the label of a [[springs]] entry without a 'name', and "
+            "only named springs can be referenced: give that entry a 'name'",
+            name);
       else if (const auto match = closest_match(name, named, 2))
         message += fmt::format("; did you mean '{}'?", *match);
       else if (named.empty())
@@ -1310,9 +1274,7 @@ void Builder::check_structure(BuildInfo* info) {
     if (info != nullptr) info->assembler = std::move(built);
   } catch (const ModelStructureError& e) {
     const long n = e.node();
-    fail(n >= 0 && n < static_cast<long>(node_paths_.size())
-             ? node_paths_[static_cast<std::size_t>(n)]
-             : std::string{},
+    fail(n >= 0 && n < static_cast<long>(node_paths_.size()) ? node_paths_[static_cast<std::size_t>(n)] : std::string{},
          e.what());
   }
 }
@@ -1320,8 +1282,7 @@ void Builder::check_structure(BuildInfo* info) {
 void Builder::build_drive() {
   const DriveSpec& s = spec_.drive;
   if (s.motor.empty()) {
-    if (!(s == DriveSpec{}))
-      fail("drive", missing_key("motor", "[drive]", "\"dc\", \"induction\" or \"table\""));
+    if (!(s == DriveSpec{})) fail("drive", missing_key("motor", "[drive]", "\"dc\", \"induction\" or \"table\""));
     return;
   }
   check_bounds(s, "drive");
@@ -1340,12 +1301,12 @@ void Builder::build_drive() {
       {"breakdown_slip", s.breakdown_slip.has_value()},       {"torque", s.torque.has_value()}};
   const auto own = [&](std::string_view key) {
     if (s.motor == "dc") return key == "stall_torque" || key == "no_load_speed";
-    if (s.motor == "induction") return key == "synchronous_speed" || key == "breakdown_torque" || key == "breakdown_slip";
+    if (s.motor == "induction")
+      return key == "synchronous_speed" || key == "breakdown_torque" || key == "breakdown_slip";
     return key == "torque";
   };
   for (const auto& [key, given] : keys) {
-    if (given && !own(key))
-      fail(at(key), fmt::format("'{}' is not a key of motor = \"{}\"", key, s.motor));
+    if (given && !own(key)) fail(at(key), fmt::format("'{}' is not a key of motor = \"{}\"", key, s.motor));
     if (!given && own(key))
       fail("drive", missing_key(key, "[drive]", fmt::format("a value of motor = \"{}\"", s.motor)));
   }
@@ -1356,8 +1317,8 @@ void Builder::build_drive() {
   } else if (s.motor == "induction") {
     d.motor.kind = MotorLaw::Kind::induction;
     if (!(*s.breakdown_slip < 1.0))
-      fail(at("breakdown_slip"), fmt::format("'breakdown_slip' must be below 1 (a slip of 1 is standstill), got {}",
-                                             *s.breakdown_slip));
+      fail(at("breakdown_slip"),
+           fmt::format("'breakdown_slip' must be below 1 (a slip of 1 is standstill), got {}", *s.breakdown_slip));
     d.motor.synchronous_speed = *s.synchronous_speed;
     d.motor.breakdown_torque = *s.breakdown_torque;
     d.motor.breakdown_slip = *s.breakdown_slip;
@@ -1365,10 +1326,12 @@ void Builder::build_drive() {
     d.motor.kind = MotorLaw::Kind::table;
     const auto* table = std::get_if<SpeedCoefficient::Table>(&s.torque->law());
     if (table == nullptr || table->speeds.size() < 2)
-      fail(at("torque"), "'torque' of motor = \"table\" must be a table law of at least two points, e.g. "
-                         "{ law = \"table\", speeds = [0, \"50 Hz\"], values = [\"20 N*m\", 0] }");
+      fail(at("torque"),
+           "'torque' of motor = \"table\" must be a table law of at least two points, e.g. "
+           "{ law = \"table\", speeds = [0, \"50 Hz\"], values = [\"20 N*m\", 0] }");
     check_coefficient(*s.torque, "drive", "torque", Quantity::moment, false);
-    for (std::size_t i = 0; i < table->speeds.size(); ++i) d.motor.table.emplace_back(table->speeds[i], table->values[i]);
+    for (std::size_t i = 0; i < table->speeds.size(); ++i)
+      d.motor.table.emplace_back(table->speeds[i], table->values[i]);
   }
   model_.drive = d;
 }
@@ -1379,8 +1342,7 @@ Model Builder::build(BuildInfo* info) {
   build_materials();
   build_shafts();
   build_nodes();
-  if (model_.nodes.empty())
-    fail("", "the model has no nodes; define a shaft with [[shafts]] or a node with [[nodes]]");
+  if (model_.nodes.empty()) fail("", "the model has no nodes; define a shaft with [[shafts]] or a node with [[nodes]]");
   build_rigid_bodies();
   build_springs();
   build_rotating_dampers();

@@ -46,20 +46,17 @@ std::vector<Segment> parse_path(std::string_view path) {
       i = close;
       in_key = false;
     } else if (c == '.') {
-      if (current.key.empty())
-        throw ParameterError(fmt::format("parameter path '{}': empty key before '.'", path));
+      if (current.key.empty()) throw ParameterError(fmt::format("parameter path '{}': empty key before '.'", path));
       segments.push_back(std::move(current));
       current = {};
       in_key = true;
     } else if (!in_key) {
-      throw ParameterError(
-          fmt::format("parameter path '{}': expected '.' or '[' after ']', got '{}'", path, c));
+      throw ParameterError(fmt::format("parameter path '{}': expected '.' or '[' after ']', got '{}'", path, c));
     } else {
       current.key += c;
     }
   }
-  if (current.key.empty())
-    throw ParameterError(fmt::format("parameter path '{}': it ends without a key", path));
+  if (current.key.empty()) throw ParameterError(fmt::format("parameter path '{}': it ends without a key", path));
   segments.push_back(std::move(current));
   return segments;
 }
@@ -87,8 +84,7 @@ class Resolver {
     throw ParameterError(fmt::format("parameter path '{}': {}", text_, what));
   }
   void no_selectors(const Segment& s) const {
-    if (!s.selectors.empty())
-      fail(fmt::format("'{}' is not a list; leave out '[{}]'", s.key, s.selectors.front()));
+    if (!s.selectors.empty()) fail(fmt::format("'{}' is not a list; leave out '[{}]'", s.key, s.selectors.front()));
   }
   void last(std::size_t i, const Segment& s) const {
     if (i + 1 != segments_.size())
@@ -100,8 +96,8 @@ class Resolver {
   Slot entry(S& e, std::size_t i, const std::string& path);
   template <class S>
   Slot field(S& e, const spec::Field<S>& f, std::size_t i, const std::string& path);
-  Slot coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, std::size_t i,
-                   const std::string& path, std::string_view doc);
+  Slot coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, std::size_t i, const std::string& path,
+                   std::string_view doc);
 
   ModelSpec& spec_;
   std::string text_;
@@ -119,9 +115,10 @@ Slot Resolver::resolve() {
     using M = std::remove_cvref_t<decltype(member)>;
     if constexpr (requires { typename M::value_type; }) {
       if (top.selectors.size() != 1)
-        fail(fmt::format("'{}' is a list of [[{}]] entries: name one by index or name, e.g. "
-                         "{}[0]",
-                         key, key, key));
+        fail(
+            fmt::format("'{}' is a list of [[{}]] entries: name one by index or name, e.g. "
+                        "{}[0]",
+                        key, key, key));
       const std::size_t index = find_entry(member, top);
       slot = entry(member[index], 1, spec::element(key, index));
     } else {
@@ -131,8 +128,10 @@ Slot Resolver::resolve() {
   });
   if (slot) return *slot;
   std::string message = fmt::format("there is no table '{}'", top.key);
-  if (const auto m = closest_match(top.key, keys, 3)) message += fmt::format("; did you mean '{}'?", *m);
-  else message += fmt::format("; the tables are {}", join_list(keys, "and", '\''));
+  if (const auto m = closest_match(top.key, keys, 3))
+    message += fmt::format("; did you mean '{}'?", *m);
+  else
+    message += fmt::format("; the tables are {}", join_list(keys, "and", '\''));
   fail(message);
 }
 
@@ -143,8 +142,8 @@ std::size_t Resolver::find_entry(const std::vector<S>& entries, const Segment& s
     const std::size_t index = std::stoul(selector);
     if (index >= entries.size())
       fail(entries.empty() ? fmt::format("'{}' has no entries", s.key)
-                           : fmt::format("'{}' has {} entries, indices 0 to {}; got {}", s.key,
-                                         entries.size(), entries.size() - 1, index));
+                           : fmt::format("'{}' has {} entries, indices 0 to {}; got {}", s.key, entries.size(),
+                                         entries.size() - 1, index));
     return index;
   }
   std::vector<std::size_t> found;
@@ -167,8 +166,7 @@ std::size_t Resolver::find_entry(const std::vector<S>& entries, const Segment& s
   }
   if (found.size() == 1) return found.front();
   if (found.size() > 1)
-    fail(fmt::format("'{}[{}]' is ambiguous: {} entries have that name; use an index", s.key,
-                     selector, found.size()));
+    fail(fmt::format("'{}[{}]' is ambiguous: {} entries have that name; use an index", s.key, selector, found.size()));
   std::string message = fmt::format("'{}' has no entry named '{}'", s.key, selector);
   if (const auto m = closest_match(selector, names, 2))
     message += fmt::format("; did you mean '{}'?", *m);
@@ -182,8 +180,8 @@ std::size_t Resolver::find_entry(const std::vector<S>& entries, const Segment& s
 template <class S>
 Slot Resolver::entry(S& e, std::size_t i, const std::string& path) {
   if (i >= segments_.size())
-    fail(fmt::format("'{}' is a table; name one of its keys, e.g. {}.{}", path, path,
-                     spec::fields_of<S>().front().key));
+    fail(
+        fmt::format("'{}' is a table; name one of its keys, e.g. {}.{}", path, path, spec::fields_of<S>().front().key));
   const Segment& s = segments_[i];
   std::optional<Slot> slot;
   spec::visit_children(e, [&](std::string_view key, std::string_view, auto& children) {
@@ -198,23 +196,23 @@ Slot Resolver::entry(S& e, std::size_t i, const std::string& path) {
   for (const spec::Field<S>& f : spec::fields_of<S>()) {
     const bool is_number = f.kind == FieldKind::quantity || f.kind == FieldKind::number ||
                            f.kind == FieldKind::coefficient || f.kind == FieldKind::time_table ||
-                           f.kind == FieldKind::integer_list ||
-                           (f.kind == FieldKind::integer && f.key != "number");
+                           f.kind == FieldKind::integer_list || (f.kind == FieldKind::integer && f.key != "number");
     if (is_number) numeric.emplace_back(f.key);
     if (f.key != s.key) continue;
     if (!is_number)
       fail(fmt::format("'{}' is not a number (it is {}); only numbers can be set by a path", s.key,
-                       f.kind == FieldKind::integer ? "a node number"
-                       : f.kind == FieldKind::flag  ? "true or false"
-                       : f.kind == FieldKind::node || f.kind == FieldKind::node_list
-                           ? "a node reference"
-                           : "a name or a choice"));
+                       f.kind == FieldKind::integer                                  ? "a node number"
+                       : f.kind == FieldKind::flag                                   ? "true or false"
+                       : f.kind == FieldKind::node || f.kind == FieldKind::node_list ? "a node reference"
+                                                                                     : "a name or a choice"));
     return field(e, f, i, spec::child(path, f.key));
   }
   spec::visit_children(e, [&](std::string_view key, std::string_view, auto&) { numeric.emplace_back(key); });
   std::string message = fmt::format("'{}' has no key '{}'", path, s.key);
-  if (const auto m = closest_match(s.key, numeric, 3)) message += fmt::format("; did you mean '{}'?", *m);
-  else message += fmt::format("; its numbers are {}", join_list(numeric, "and", '\''));
+  if (const auto m = closest_match(s.key, numeric, 3))
+    message += fmt::format("; did you mean '{}'?", *m);
+  else
+    message += fmt::format("; its numbers are {}", join_list(numeric, "and", '\''));
   fail(message);
 }
 
@@ -245,8 +243,10 @@ Slot Resolver::field(S& e, const spec::Field<S>& f, std::size_t i, const std::st
           last(i, s);
           slot.integer = true;
           slot.get = [&v]() -> std::optional<Real> {
-            if constexpr (std::is_same_v<T, int>) return static_cast<Real>(v);
-            else return v ? std::optional<Real>(static_cast<Real>(*v)) : std::nullopt;
+            if constexpr (std::is_same_v<T, int>)
+              return static_cast<Real>(v);
+            else
+              return v ? std::optional<Real>(static_cast<Real>(*v)) : std::nullopt;
           };
           slot.set = [&v](Real x) { v = static_cast<int>(x); };
         } else if constexpr (std::is_same_v<T, std::vector<int>>) {
@@ -260,19 +260,17 @@ Slot Resolver::field(S& e, const spec::Field<S>& f, std::size_t i, const std::st
           slot.set = [&v, index](Real x) { v[index] = static_cast<int>(x); };
         } else if constexpr (std::is_same_v<T, std::vector<std::pair<Real, Real>>>) {
           last(i, s);
-          if (s.selectors.size() != 2 || !detail::all_digits(s.selectors[1]) ||
-              std::stoul(s.selectors[1]) > 1)
-            fail(fmt::format("'{0}' is a list of [time, {1}] points: name one number, e.g. "
-                             "{0}[1][0] for the second point's time or {0}[1][1] for its {1}",
-                             s.key, quantity_noun(spec::value_quantity(e, f))));
+          if (s.selectors.size() != 2 || !detail::all_digits(s.selectors[1]) || std::stoul(s.selectors[1]) > 1)
+            fail(
+                fmt::format("'{0}' is a list of [time, {1}] points: name one number, e.g. "
+                            "{0}[1][0] for the second point's time or {0}[1][1] for its {1}",
+                            s.key, quantity_noun(spec::value_quantity(e, f))));
           const std::size_t index = find_entry(v, s);
           const bool speed = s.selectors[1] == "1";  // the value column
           slot.path = spec::element(spec::element(path, index), speed ? 1 : 0);
           slot.quantity = speed ? spec::value_quantity(e, f) : Quantity::time;
           slot.unit = speed ? std::string(f.unit) : "";
-          slot.get = [&v, index, speed] {
-            return std::optional<Real>(speed ? v[index].second : v[index].first);
-          };
+          slot.get = [&v, index, speed] { return std::optional<Real>(speed ? v[index].second : v[index].first); };
           slot.set = [&v, index, speed](Real x) { (speed ? v[index].second : v[index].first) = x; };
         } else if constexpr (std::is_same_v<T, std::optional<SpeedCoefficient>>) {
           no_selectors(s);
@@ -285,8 +283,8 @@ Slot Resolver::field(S& e, const spec::Field<S>& f, std::size_t i, const std::st
   return slot;
 }
 
-Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, std::size_t i,
-                           const std::string& path, std::string_view doc) {
+Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, std::size_t i, const std::string& path,
+                           std::string_view doc) {
   Slot slot;
   slot.path = path;
   slot.doc = std::string(doc);
@@ -294,15 +292,15 @@ Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, st
   if (i + 1 == segments_.size()) {
     // The coefficient itself: a constant, or the value an arctan law scales.
     if (c && std::holds_alternative<SpeedCoefficient::Table>(c->law()))
-      fail(fmt::format("'{}' follows a table law: name an entry, e.g. {}.values[0]",
-                       segments_[i].key, path));
+      fail(fmt::format("'{}' follows a table law: name an entry, e.g. {}.values[0]", segments_[i].key, path));
     if (c && std::holds_alternative<SpeedCoefficient::FrequencyTable>(c->law()))
-      fail(fmt::format("'{}' follows a frequency table law: name an entry, e.g. {}.values[0] (or "
-                       "{}.values[0][0] with speeds)",
-                       segments_[i].key, path, path));
+      fail(
+          fmt::format("'{}' follows a frequency table law: name an entry, e.g. {}.values[0] (or "
+                      "{}.values[0][0] with speeds)",
+                      segments_[i].key, path, path));
     if (c && std::holds_alternative<SpeedCoefficient::Step>(c->law()))
-      fail(fmt::format("'{}' follows a step law: name a part, {}.below, {}.above or {}.at",
-                       segments_[i].key, path, path, path));
+      fail(fmt::format("'{}' follows a step law: name a part, {}.below, {}.above or {}.at", segments_[i].key, path,
+                       path, path));
     slot.get = [&c]() -> std::optional<Real> {
       if (!c) return std::nullopt;
       if (const auto* a = std::get_if<SpeedCoefficient::Arctan>(&c->law())) return a->value;
@@ -349,20 +347,38 @@ Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, st
           parts = {"value", "f_as", "c0", "c1", "c2"};
           if (!part.selectors.empty()) return;
           found = true;
-          if (part.key == "value") bind(L{}, [](L& l) -> Real& { return l.value; }, kind, "");
-          else if (part.key == "f_as") bind(L{}, [](L& l) -> Real& { return l.f_as; }, Quantity::frequency, "");
-          else if (part.key == "c0") bind(L{}, [](L& l) -> Real& { return l.c0; }, std::nullopt, "");
-          else if (part.key == "c1") bind(L{}, [](L& l) -> Real& { return l.c1; }, std::nullopt, "");
-          else if (part.key == "c2") bind(L{}, [](L& l) -> Real& { return l.c2; }, std::nullopt, "");
-          else found = false;
+          if (part.key == "value")
+            bind(
+                L{}, [](L& l) -> Real& { return l.value; }, kind, "");
+          else if (part.key == "f_as")
+            bind(
+                L{}, [](L& l) -> Real& { return l.f_as; }, Quantity::frequency, "");
+          else if (part.key == "c0")
+            bind(
+                L{}, [](L& l) -> Real& { return l.c0; }, std::nullopt, "");
+          else if (part.key == "c1")
+            bind(
+                L{}, [](L& l) -> Real& { return l.c1; }, std::nullopt, "");
+          else if (part.key == "c2")
+            bind(
+                L{}, [](L& l) -> Real& { return l.c2; }, std::nullopt, "");
+          else
+            found = false;
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
           parts = {"below", "above", "at"};
           if (!part.selectors.empty()) return;
           found = true;
-          if (part.key == "below") bind(L{}, [](L& l) -> Real& { return l.below; }, kind, "");
-          else if (part.key == "above") bind(L{}, [](L& l) -> Real& { return l.above; }, kind, "");
-          else if (part.key == "at") bind(L{}, [](L& l) -> Real& { return l.at; }, Quantity::speed, "Hz");
-          else found = false;
+          if (part.key == "below")
+            bind(
+                L{}, [](L& l) -> Real& { return l.below; }, kind, "");
+          else if (part.key == "above")
+            bind(
+                L{}, [](L& l) -> Real& { return l.above; }, kind, "");
+          else if (part.key == "at")
+            bind(
+                L{}, [](L& l) -> Real& { return l.at; }, Quantity::speed, "Hz");
+          else
+            found = false;
         } else if constexpr (std::is_same_v<L, SpeedCoefficient::FrequencyTable>) {
           parts = {"frequencies", "speeds", "values"};
           if (part.key != "frequencies" && part.key != "speeds" && part.key != "values") return;
@@ -380,17 +396,20 @@ Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, st
           if (part.key == "frequencies") {
             const std::size_t index = find_entry(law.frequencies, part);
             slot.path = spec::element(slot.path, index);
-            bind(L{}, [index](L& l) -> Real& { return l.frequencies[index]; }, Quantity::speed, "Hz");
+            bind(
+                L{}, [index](L& l) -> Real& { return l.frequencies[index]; }, Quantity::speed, "Hz");
           } else if (part.key == "speeds") {
             const std::size_t index = find_entry(law.speeds, part);
             slot.path = spec::element(slot.path, index);
-            bind(L{}, [index](L& l) -> Real& { return l.speeds[index]; }, Quantity::speed, "Hz");
+            bind(
+                L{}, [index](L& l) -> Real& { return l.speeds[index]; }, Quantity::speed, "Hz");
           } else {
             const std::size_t row = grid ? index_in(law.speeds.size(), 0) : 0;
             const std::size_t column = index_in(nf, grid ? 1 : 0);
             slot.path = grid ? spec::element(spec::element(slot.path, row), column) : spec::element(slot.path, column);
             const std::size_t index = row * nf + column;
-            bind(L{}, [index](L& l) -> Real& { return l.values[index]; }, kind, "");
+            bind(
+                L{}, [index](L& l) -> Real& { return l.values[index]; }, kind, "");
           }
         } else {
           parts = {"speeds", "values"};
@@ -402,19 +421,22 @@ Slot Resolver::coefficient(std::optional<SpeedCoefficient>& c, Quantity kind, st
           slot.path = spec::element(slot.path, index);
           found = true;
           if (part.key == "speeds")
-            bind(L{}, [index](L& l) -> Real& { return l.speeds[index]; }, Quantity::speed, "Hz");
+            bind(
+                L{}, [index](L& l) -> Real& { return l.speeds[index]; }, Quantity::speed, "Hz");
           else
-            bind(L{}, [index](L& l) -> Real& { return l.values[index]; }, kind, "");
+            bind(
+                L{}, [index](L& l) -> Real& { return l.values[index]; }, kind, "");
         }
       },
       c->law());
   if (found) return slot;
   if (parts.empty())
-    fail(fmt::format("'{}' is a constant; set it as {} (it has no part '{}')", segments_[i].key,
-                     path, part.key));
+    fail(fmt::format("'{}' is a constant; set it as {} (it has no part '{}')", segments_[i].key, path, part.key));
   std::string message = fmt::format("'{}' has no part '{}'", segments_[i].key, part.key);
-  if (const auto m = closest_match(part.key, parts, 2)) message += fmt::format("; did you mean '{}'?", *m);
-  else message += fmt::format("; its parts are {}", join_list(parts, "and", '\''));
+  if (const auto m = closest_match(part.key, parts, 2))
+    message += fmt::format("; did you mean '{}'?", *m);
+  else
+    message += fmt::format("; its parts are {}", join_list(parts, "and", '\''));
   fail(message);
 }
 
@@ -426,10 +448,8 @@ Real parse_value(const Slot& slot, std::string_view text, std::string_view path)
   }
   const auto q = split_quantity(text);
   if (!q || !q->unit.empty())
-    throw ParameterError(fmt::format("parameter '{}': expected a number without unit, got '{}'",
-                                     path, text));
-  if (slot.integer && (q->value != std::floor(q->value) ||
-                       std::abs(q->value) > std::numeric_limits<int>::max()))
+    throw ParameterError(fmt::format("parameter '{}': expected a number without unit, got '{}'", path, text));
+  if (slot.integer && (q->value != std::floor(q->value) || std::abs(q->value) > std::numeric_limits<int>::max()))
     throw ParameterError(fmt::format("parameter '{}': expected an integer, got '{}'", path, text));
   return q->value;
 }
@@ -440,39 +460,32 @@ Parameter to_parameter(const Slot& slot, Real value) {
 
 /// The paths of every number of an entry; the entry's own path is @p path.
 template <class S>
-void list_entry(const ModelSpec& spec, const S& e, const std::string& path,
-                std::vector<std::string>& out);
+void list_entry(const ModelSpec& spec, const S& e, const std::string& path, std::vector<std::string>& out);
 
 /// How a listing names entry @p i of @p entries: its name when unique, else its index.
 template <class S>
 std::string entry_name(const std::vector<S>& entries, std::size_t i) {
   if constexpr (requires(const S& e) { e.name; }) {
     const std::string& name = entries[i].name;
-    const bool usable = !name.empty() && !detail::all_digits(name) &&
-                        name.find(']') == std::string::npos &&
-                        std::count_if(entries.begin(), entries.end(),
-                                      [&](const S& e) { return e.name == name; }) == 1;
+    const bool usable = !name.empty() && !detail::all_digits(name) && name.find(']') == std::string::npos &&
+                        std::count_if(entries.begin(), entries.end(), [&](const S& e) { return e.name == name; }) == 1;
     if (usable) return name;
   }
   return std::to_string(i);
 }
 
 template <class S>
-void list_entry(const ModelSpec& spec, const S& e, const std::string& path,
-                std::vector<std::string>& out) {
+void list_entry(const ModelSpec& spec, const S& e, const std::string& path, std::vector<std::string>& out) {
   for (const spec::Field<S>& f : spec::fields_of<S>()) {
     const std::string at = spec::child(path, f.key);
     std::visit(
         [&](auto member) {
           using T = std::remove_cvref_t<decltype(e.*member)>;
           const T& v = e.*member;
-          if constexpr (std::is_same_v<T, Real>) {
+          if constexpr (std::is_same_v<T, Real> || std::is_same_v<T, int>) {
             out.push_back(at);
-          } else if constexpr (std::is_same_v<T, std::optional<Real>> ||
-                               std::is_same_v<T, std::optional<int>>) {
+          } else if constexpr (std::is_same_v<T, std::optional<Real>> || std::is_same_v<T, std::optional<int>>) {
             if (v) out.push_back(at);
-          } else if constexpr (std::is_same_v<T, int>) {
-            out.push_back(at);
           } else if constexpr (std::is_same_v<T, std::vector<int>>) {
             for (std::size_t i = 0; i < v.size(); ++i) out.push_back(spec::element(at, i));
           } else if constexpr (std::is_same_v<T, std::vector<std::pair<Real, Real>>>) {
@@ -488,8 +501,7 @@ void list_entry(const ModelSpec& spec, const S& e, const std::string& path,
                   if constexpr (std::is_same_v<L, SpeedCoefficient::Constant>) {
                     out.push_back(at);
                   } else if constexpr (std::is_same_v<L, SpeedCoefficient::Arctan>) {
-                    for (const char* p : {"value", "f_as", "c0", "c1", "c2"})
-                      out.push_back(spec::child(at, p));
+                    for (const char* p : {"value", "f_as", "c0", "c1", "c2"}) out.push_back(spec::child(at, p));
                   } else if constexpr (std::is_same_v<L, SpeedCoefficient::Step>) {
                     for (const char* p : {"below", "above", "at"}) out.push_back(spec::child(at, p));
                   } else if constexpr (std::is_same_v<L, SpeedCoefficient::FrequencyTable>) {
@@ -550,8 +562,7 @@ Parameter get_parameter(const ModelSpec& spec, std::string_view path) {
   ModelSpec copy = spec;  // resolving binds to a spec it could change; this one stays as it is
   const Slot slot = resolve(copy, path);
   const std::optional<Real> value = slot.get();
-  if (!value)
-    throw ParameterError(fmt::format("parameter '{}' is not given in this model (it can be set)", path));
+  if (!value) throw ParameterError(fmt::format("parameter '{}' is not given in this model (it can be set)", path));
   Parameter p = to_parameter(slot, *value);
   p.path = std::string(path);
   return p;
@@ -574,9 +585,10 @@ std::string set_parameter(ModelSpec& spec, std::string_view path, Real si) {
 std::string apply_assignment(ModelSpec& spec, std::string_view assignment) {
   const std::size_t eq = assignment.find('=');
   if (eq == std::string_view::npos)
-    throw ParameterError(fmt::format("--set '{}': expected PATH=VALUE, e.g. "
-                                     "'springs[bearing 1].ky=2e7 N/m'",
-                                     assignment));
+    throw ParameterError(
+        fmt::format("--set '{}': expected PATH=VALUE, e.g. "
+                    "'springs[bearing 1].ky=2e7 N/m'",
+                    assignment));
   std::string_view path = assignment.substr(0, eq);
   std::string_view value = assignment.substr(eq + 1);
   while (!path.empty() && path.back() == ' ') path.remove_suffix(1);

@@ -9,9 +9,7 @@ std::string child(std::string_view path, std::string_view key) {
   return fmt::format("{}.{}", path, key);
 }
 
-std::string element(std::string_view path, std::size_t index) {
-  return fmt::format("{}[{}]", path, index);
-}
+std::string element(std::string_view path, std::size_t index) { return fmt::format("{}[{}]", path, index); }
 
 std::string parent_path(std::string_view path) {
   const std::size_t cut = path.find_last_of(".[");

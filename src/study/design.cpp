@@ -30,8 +30,7 @@ std::vector<Real> design_values(std::span<const DesignVariable> variables, std::
   return out;
 }
 
-ModelSpec apply_design(const ModelSpec& base, std::span<const DesignVariable> variables,
-                       std::span<const Real> values) {
+ModelSpec apply_design(const ModelSpec& base, std::span<const DesignVariable> variables, std::span<const Real> values) {
   ModelSpec spec = base;
   for (std::size_t i = 0; i < variables.size(); ++i)
     for (std::size_t k = 0; k < variables[i].paths.size(); ++k)

@@ -66,10 +66,12 @@ class Reader {
 
  private:
   void need(std::size_t n) const {
-    if (bytes_.size() - at_ < n) throw Error(fmt::format("packed evaluations cut short at byte {} of {}", at_, bytes_.size()));
+    if (bytes_.size() - at_ < n)
+      throw Error(fmt::format("packed evaluations cut short at byte {} of {}", at_, bytes_.size()));
   }
   void need_items(std::uint64_t n, std::size_t item) const {
-    if (n > (bytes_.size() - at_) / item) throw Error(fmt::format("packed evaluations cut short at byte {} of {}", at_, bytes_.size()));
+    if (n > (bytes_.size() - at_) / item)
+      throw Error(fmt::format("packed evaluations cut short at byte {} of {}", at_, bytes_.size()));
   }
   const std::string& bytes_;
   std::size_t at_ = 0;

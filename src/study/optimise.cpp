@@ -79,9 +79,10 @@ int batch_fitness(void* opaque, const double* points, long n, double* fitness) {
       index[k] = c.next++;
       if (const auto at = c.all.find(index[k]); at != c.all.end()) {
         if (at->second.unit != p)
-          throw Error(fmt::format("the resumed optimisation asked for another design {} than the recorded one: "
-                                  "the study or the program changed; start it afresh in another directory",
-                                  index[k]));
+          throw Error(
+              fmt::format("the resumed optimisation asked for another design {} than the recorded one: "
+                          "the study or the program changed; start it afresh in another directory",
+                          index[k]));
         continue;
       }
       todo.emplace_back(index[k], std::move(p));
@@ -89,7 +90,8 @@ int batch_fitness(void* opaque, const double* points, long n, double* fitness) {
     if (!todo.empty()) {
       if (c.stop.requested()) return feran_optimise_stopped;
       auto results = c.evaluator->evaluate(study, todo);
-      const bool stopped = std::any_of(results.begin(), results.end(), [](const Evaluation& e) { return e.interrupted; });
+      const bool stopped =
+          std::any_of(results.begin(), results.end(), [](const Evaluation& e) { return e.interrupted; });
       std::erase_if(results, [](const Evaluation& e) { return e.interrupted; });
       if (*c.sink) (*c.sink)(results);
       for (auto& e : results) c.all.emplace(e.index, std::move(e));
@@ -116,9 +118,10 @@ OptimiseFunction optimiser() {
                                     "with cmake --install, or use a grid, latin or sobol study");
     const auto version = reinterpret_cast<int (*)()>(module_function(module, "feran_optimise_interface"))();
     if (version != FERAN_OPTIMISE_INTERFACE)
-      throw Error(fmt::format("the optimiser module {} is of another feran (interface {}, this program's {}); "
-                              "install this feran again (cmake --install)",
-                              module.path, version, FERAN_OPTIMISE_INTERFACE));
+      throw Error(
+          fmt::format("the optimiser module {} is of another feran (interface {}, this program's {}); "
+                      "install this feran again (cmake --install)",
+                      module.path, version, FERAN_OPTIMISE_INTERFACE));
     f = reinterpret_cast<OptimiseFunction>(module_function(module, "feran_optimise"));
   });
   return f;
@@ -146,8 +149,8 @@ std::vector<Evaluation> run_optimisation(const StudySpec& study, BatchEvaluator&
   feran_optimise_problem problem{};
   problem.dimension = static_cast<long>(study.variables.size());
   problem.objectives = static_cast<long>(study.objectives.size());
-  problem.method = pareto ? feran_optimise_nsga2
-                          : (x.algorithm == GlobalAlgorithm::gaco ? feran_optimise_gaco : feran_optimise_pso);
+  problem.method =
+      pareto ? feran_optimise_nsga2 : (x.algorithm == GlobalAlgorithm::gaco ? feran_optimise_gaco : feran_optimise_pso);
   problem.population = static_cast<long>(x.population);
   problem.generations = static_cast<long>(x.generations);
   problem.polish = pareto ? 0 : static_cast<long>(x.polish);

@@ -48,32 +48,42 @@ constexpr std::array<std::pair<QuantityKind, std::string_view>, 24> kind_names{{
 
 bool uses_response(QuantityKind k) {
   return k == QuantityKind::peak_response || k == QuantityKind::peak_spring_force || k == QuantityKind::peak_stress ||
-         k == QuantityKind::amplification_factor || k == QuantityKind::required_margin || k == QuantityKind::margin_surplus ||
-         k == QuantityKind::min_margin_surplus;
+         k == QuantityKind::amplification_factor || k == QuantityKind::required_margin ||
+         k == QuantityKind::margin_surplus || k == QuantityKind::min_margin_surplus;
 }
 bool uses_runup(QuantityKind k) { return k == QuantityKind::runup_peak || k == QuantityKind::runup_spring_force; }
 
 bool selected(Whirl w, WhirlSelection s) {
   switch (s) {
-    case WhirlSelection::forward: return w == Whirl::forward;
-    case WhirlSelection::backward: return w == Whirl::backward;
-    case WhirlSelection::any: return w != Whirl::none;
+    case WhirlSelection::forward:
+      return w == Whirl::forward;
+    case WhirlSelection::backward:
+      return w == Whirl::backward;
+    case WhirlSelection::any:
+      return w != Whirl::none;
   }
   return false;
 }
 
 std::string_view whirl_word(WhirlSelection s) {
   switch (s) {
-    case WhirlSelection::forward: return "forward ";
-    case WhirlSelection::backward: return "backward ";
-    case WhirlSelection::any: return "";
+    case WhirlSelection::forward:
+      return "forward ";
+    case WhirlSelection::backward:
+      return "backward ";
+    case WhirlSelection::any:
+      return "";
   }
   return "";
 }
 
 std::string ordinal(int n) {
   const int tens = n % 100, units = n % 10;
-  const char* suffix = (tens >= 11 && tens <= 13) ? "th" : units == 1 ? "st" : units == 2 ? "nd" : units == 3 ? "rd" : "th";
+  const char* suffix = (tens >= 11 && tens <= 13) ? "th"
+                       : units == 1               ? "st"
+                       : units == 2               ? "nd"
+                       : units == 3               ? "rd"
+                                                  : "th";
   return fmt::format("{}{}", n, suffix);
 }
 
@@ -89,13 +99,15 @@ Index spring_index(const Model& model, const std::string& name) { return spring_
 class Analyses {
  public:
   Analyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop)
-      : spec_(spec), model_(model), stop_(std::move(stop)) {
+      : spec_(spec), model_(model), stop_(stop) {
     for (const auto& q : quantities) {
       if (q.probe && uses_response(q.kind)) add(response_probes_, node_index(model, *q.probe));
       if (q.probe && uses_runup(q.kind)) add(runup_probes_, node_index(model, *q.probe));
       if (q.kind == QuantityKind::runup_spring_force) {
-        if (q.spring) add(runup_springs_, spring_index(model, *q.spring));
-        else all_runup_springs_ = true;
+        if (q.spring)
+          add(runup_springs_, spring_index(model, *q.spring));
+        else
+          all_runup_springs_ = true;
       }
     }
   }
@@ -242,9 +254,10 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
       for (const Real s : selected_criticals(c, q, low, high))
         nearest = std::min(nearest, separation_margin(s, q.operating_low, q.operating_high));
       if (!(nearest <= margin))
-        clipped = fmt::format("a lower bound: no {}critical speed of order {} between {} and {} lies nearer the "
-                              "operating range than the range's {}; widen the Campbell range to find the margin",
-                              whirl_word(q.whirl), q.order, rpm(low), rpm(high), low > 0 ? "ends" : "end");
+        clipped = fmt::format(
+            "a lower bound: no {}critical speed of order {} between {} and {} lies nearer the "
+            "operating range than the range's {}; widen the Campbell range to find the margin",
+            whirl_word(q.whirl), q.order, rpm(low), rpm(high), low > 0 ? "ends" : "end");
       return std::min(margin, nearest);
     }
     case QuantityKind::min_damping_ratio:
@@ -257,9 +270,10 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
       const auto& c = a.campbell();
       // None in the range: the threshold lies above it; its end is a lower bound.
       if (c.stability_threshold) return c.stability_threshold->speed;
-      clipped = fmt::format("a lower bound: the rotor is stable up to the Campbell range's end, {}; widen the range to "
-                            "find the threshold",
-                            rpm(c.speeds.back()));
+      clipped = fmt::format(
+          "a lower bound: the rotor is stable up to the Campbell range's end, {}; widen the range to "
+          "find the threshold",
+          rpm(c.speeds.back()));
       return c.speeds.back();
     }
     case QuantityKind::natural_frequency:
@@ -293,13 +307,14 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
         if (p.resolved()) resolved.push_back(p);
       const int needed = q.kind == QuantityKind::min_margin_surplus ? 1 : q.n;
       if (static_cast<int>(resolved.size()) < needed)
-        throw Error(fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
-                                "the amplitude falls to 1/√2 of it on both sides within the sweep)",
-                                ordinal(needed),
-                                q.low || q.high ? fmt::format(" between {} and {}", rpm(q.low.value_or(0)),
-                                                              q.high ? rpm(*q.high) : std::string("the sweep's end"))
-                                                : std::string(),
-                                resolved.size()));
+        throw Error(
+            fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
+                        "the amplitude falls to 1/√2 of it on both sides within the sweep)",
+                        ordinal(needed),
+                        q.low || q.high ? fmt::format(" between {} and {}", rpm(q.low.value_or(0)),
+                                                      q.high ? rpm(*q.high) : std::string("the sweep's end"))
+                                        : std::string(),
+                        resolved.size()));
       const auto required = [&](const ResponsePeak& peak) {
         return required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
       };
@@ -343,8 +358,9 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
       s.points = 2;
       const StabilitySweepResult r = run_stability_sweep(a.model(), s);
       if (!r.q_zero)
-        throw Error(fmt::format("no Q₀: the first forward mode at {} is {}", rpm(s.speed),
-                                r.log_decrement.front() <= 0 ? "unstable without cross-coupling" : "stable up to 1e13 N/m"));
+        throw Error(
+            fmt::format("no Q₀: the first forward mode at {} is {}", rpm(s.speed),
+                        r.log_decrement.front() <= 0 ? "unstable without cross-coupling" : "stable up to 1e13 N/m"));
       return *r.q_zero;
     }
     case QuantityKind::peak_spring_force: {
@@ -386,7 +402,8 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
             peak = std::max(peak, std::hypot(sample.springs[i][1], sample.springs[i][2]));
       return peak;
     }
-    case QuantityKind::rotor_mass: return rotating_mass(a.model());
+    case QuantityKind::rotor_mass:
+      return rotating_mass(a.model());
     case QuantityKind::min_bearing_value:
     case QuantityKind::max_bearing_value: {
       // Over the Campbell diagram's speeds within the range: each bearing's state at
@@ -418,9 +435,13 @@ Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
         throw Error(fmt::format("no value of '{}' between {} and {}", q.value, rpm(low), rpm(high)));
       return best * scale;
     }
-    case QuantityKind::parameter: return get_parameter(a.spec(), q.path).value;
+    case QuantityKind::parameter:
+      return get_parameter(a.spec(), q.path).value;
     case QuantityKind::function:
-      if (!q.function || !*q.function) throw Error("no function is given for it (a quantity of kind \"function\" is computed by code, e.g. feran.Study's quantities)");
+      if (!q.function || !*q.function)
+        throw Error(
+            "no function is given for it (a quantity of kind \"function\" is computed by code, e.g. feran.Study's "
+            "quantities)");
       return (*q.function)(a.spec(), a.model());
   }
   throw Error("unknown quantity");
@@ -432,16 +453,24 @@ std::optional<Quantity> quantity_kind_unit(QuantityKind kind) {
   switch (kind) {
     case QuantityKind::critical_speed:
     case QuantityKind::stability_threshold:
-    case QuantityKind::undamped_critical_speed: return Quantity::speed;
-    case QuantityKind::level1_q_zero: return Quantity::stiffness;
-    case QuantityKind::natural_frequency: return Quantity::frequency;
+    case QuantityKind::undamped_critical_speed:
+      return Quantity::speed;
+    case QuantityKind::level1_q_zero:
+      return Quantity::stiffness;
+    case QuantityKind::natural_frequency:
+      return Quantity::frequency;
     case QuantityKind::peak_response:
-    case QuantityKind::runup_peak: return Quantity::length;
+    case QuantityKind::runup_peak:
+      return Quantity::length;
     case QuantityKind::peak_spring_force:
-    case QuantityKind::runup_spring_force: return Quantity::force;
-    case QuantityKind::peak_stress: return Quantity::pressure;
-    case QuantityKind::rotor_mass: return Quantity::mass;
-    default: return std::nullopt;
+    case QuantityKind::runup_spring_force:
+      return Quantity::force;
+    case QuantityKind::peak_stress:
+      return Quantity::pressure;
+    case QuantityKind::rotor_mass:
+      return Quantity::mass;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -496,6 +525,5 @@ std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
   }
   return values;
 }
-
 
 }  // namespace feran

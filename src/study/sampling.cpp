@@ -63,8 +63,10 @@ std::vector<UnitPoint> full_grid(const std::vector<Index>& levels, const std::ve
       const Index n = levels[d], k = rest % n;
       rest /= n;
       Real t = 0.5;
-      if (discrete[d]) t = (static_cast<Real>(k) + 0.5) / static_cast<Real>(n);
-      else if (n > 1) t = static_cast<Real>(k) / static_cast<Real>(n - 1);
+      if (discrete[d])
+        t = (static_cast<Real>(k) + 0.5) / static_cast<Real>(n);
+      else if (n > 1)
+        t = static_cast<Real>(k) / static_cast<Real>(n - 1);
       points[static_cast<std::size_t>(p)][d] = t;
     }
   }
@@ -135,8 +137,7 @@ std::array<std::uint32_t, bits> directions(Index d) {
     return v;
   }
   const auto& p = joe_kuo[static_cast<std::size_t>(d - 1)];
-  for (int k = 0; k < p.s; ++k)
-    v[static_cast<std::size_t>(k)] = p.m[static_cast<std::size_t>(k)] << (bits - 1 - k);
+  for (int k = 0; k < p.s; ++k) v[static_cast<std::size_t>(k)] = p.m[static_cast<std::size_t>(k)] << (bits - 1 - k);
   for (int k = p.s; k < bits; ++k) {
     std::uint32_t x = v[static_cast<std::size_t>(k - p.s)] ^ (v[static_cast<std::size_t>(k - p.s)] >> p.s);
     for (int j = 1; j < p.s; ++j)
@@ -151,8 +152,8 @@ std::array<std::uint32_t, bits> directions(Index d) {
 std::vector<UnitPoint> sobol(Index n, Index dim, Index skip) {
   if (n < 1 || dim < 1) throw Error("sobol: needs at least one point and one dimension");
   if (dim > max_sobol_dimensions)
-    throw Error(fmt::format("a Sobol' sequence here has at most {} dimensions, asked for {}",
-                            max_sobol_dimensions, dim));
+    throw Error(
+        fmt::format("a Sobol' sequence here has at most {} dimensions, asked for {}", max_sobol_dimensions, dim));
   if (skip < 0 || n + skip > (Index(1) << 31)) throw Error("sobol: at most 2^31 points");
   std::vector<std::array<std::uint32_t, bits>> v;
   for (Index d = 0; d < dim; ++d) v.push_back(directions(d));

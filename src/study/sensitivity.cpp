@@ -29,7 +29,9 @@ Vector ranks(const Vector& x) {
 // Standardised coefficients of y on the columns of X, and R².
 std::pair<std::vector<Real>, Real> standardised_fit(const Matrix& X, const Vector& y) {
   const Index n = X.rows(), d = X.cols();
-  const auto sd = [n](const Vector& v) { return std::sqrt((v.array() - v.mean()).square().sum() / static_cast<Real>(n - 1)); };
+  const auto sd = [n](const Vector& v) {
+    return std::sqrt((v.array() - v.mean()).square().sum() / static_cast<Real>(n - 1));
+  };
   const Real sy = sd(y);
   std::vector<Real> coefficients(static_cast<std::size_t>(d), 0.0);
   if (!(sy > 0)) return {coefficients, 0.0};

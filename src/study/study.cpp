@@ -19,8 +19,10 @@ std::string violated(const StudySpec& study, const Evaluation& e) {
   for (const auto& c : study.constraints) {
     const auto& q = study.quantities[static_cast<std::size_t>(c.quantity)];
     const Real v = e.quantities[static_cast<std::size_t>(c.quantity)];
-    if (c.at_most && !(v <= *c.at_most)) return fmt::format("constraint {} <= {:g} violated ({:g})", q.name, *c.at_most, v);
-    if (c.at_least && !(v >= *c.at_least)) return fmt::format("constraint {} >= {:g} violated ({:g})", q.name, *c.at_least, v);
+    if (c.at_most && !(v <= *c.at_most))
+      return fmt::format("constraint {} <= {:g} violated ({:g})", q.name, *c.at_most, v);
+    if (c.at_least && !(v >= *c.at_least))
+      return fmt::format("constraint {} >= {:g} violated ({:g})", q.name, *c.at_least, v);
   }
   return {};
 }
@@ -39,11 +41,16 @@ std::vector<Real> costs(const StudySpec& study, const Evaluation& e) {
 
 std::string_view to_string(ExploreMethod method) {
   switch (method) {
-    case ExploreMethod::grid: return "grid";
-    case ExploreMethod::latin_hypercube: return "latin_hypercube";
-    case ExploreMethod::sobol: return "sobol";
-    case ExploreMethod::optimise: return "optimise";
-    case ExploreMethod::pareto: return "pareto";
+    case ExploreMethod::grid:
+      return "grid";
+    case ExploreMethod::latin_hypercube:
+      return "latin_hypercube";
+    case ExploreMethod::sobol:
+      return "sobol";
+    case ExploreMethod::optimise:
+      return "optimise";
+    case ExploreMethod::pareto:
+      return "pareto";
   }
   return "?";
 }
@@ -89,10 +96,13 @@ std::vector<UnitPoint> exploration_points(const StudySpec& study) {
       }
       return full_grid(levels, discrete);
     }
-    case ExploreMethod::latin_hypercube: return latin_hypercube(study.explore.samples, dim, study.explore.seed);
-    case ExploreMethod::sobol: return sobol(study.explore.samples, dim);
+    case ExploreMethod::latin_hypercube:
+      return latin_hypercube(study.explore.samples, dim, study.explore.seed);
+    case ExploreMethod::sobol:
+      return sobol(study.explore.samples, dim);
     case ExploreMethod::optimise:
-    case ExploreMethod::pareto: break;
+    case ExploreMethod::pareto:
+      break;
   }
   return {};
 }
@@ -195,7 +205,8 @@ std::vector<Index> spread_along_front(const StudySpec& study, std::span<const Ev
   std::vector<Index> out;
   for (Index k = 0; k < count; ++k) {
     const Index at = count == 1 ? 0 : (k * (n - 1) + (count - 1) / 2) / (count - 1);
-    if (out.empty() || out.back() != front[static_cast<std::size_t>(at)]) out.push_back(front[static_cast<std::size_t>(at)]);
+    if (out.empty() || out.back() != front[static_cast<std::size_t>(at)])
+      out.push_back(front[static_cast<std::size_t>(at)]);
   }
   return out;
 }

@@ -255,8 +255,11 @@ class SpeedUnit(OutputTest):
         hz = run("modal", self.model, "--speed", "30Hz")
         rpm = run("modal", self.model, "--speed", "30Hz", "--speed-unit", "rpm")
         self.assertIn("frequency [cpm]", rpm.stdout)
-        f_hz = [float(line.split()[1]) for line in hz.stdout.splitlines() if line.split()[:1] and line.split()[0].isdigit()]
-        f_cpm = [float(line.split()[1]) for line in rpm.stdout.splitlines() if line.split()[:1] and line.split()[0].isdigit()]
+
+        def frequencies(out):
+            rows = (line.split() for line in out.splitlines())
+            return [float(row[1]) for row in rows if row[:1] and row[0].isdigit()]
+        f_hz, f_cpm = frequencies(hz.stdout), frequencies(rpm.stdout)
         self.assertEqual(len(f_hz), len(f_cpm))
         for f, g in zip(f_hz, f_cpm):
             self.assertAlmostEqual(g, 60 * f, delta=0.01)  # 1e-4 Hz against 0.01 cpm

@@ -79,7 +79,8 @@ class Study(unittest.TestCase):
             f.write(text.replace('model = "../../../examples', f'model = "{SOURCE}/examples'))
         r = run(bad, "-o", self.dirs[0])
         self.assertEqual(r.returncode, 1)
-        self.assertRegex(r.stderr, r"bad_study\.toml:36:8: unknown quantity kind 'min_damping'; did you mean 'min_damping_ratio'\?")
+        self.assertRegex(r.stderr, r"bad_study\.toml:36:8: unknown quantity kind 'min_damping'; "
+                                   r"did you mean 'min_damping_ratio'\?")
         self.assertNotIn("terminate", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.dirs[0], "evaluations.jsonl")))
 

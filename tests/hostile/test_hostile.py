@@ -509,8 +509,8 @@ def cases():
         return lambda d: [f(d) for f in fs]
 
     two = study_text.replace("MODEL", "m.toml").replace("[[quantities]]", '[[variables]]\nname = "d"\npaths = '
-                                                      '["journal_bearings[0].viscosity"]\nlower = "0.01 Pa*s"\n'
-                                                      'upper = "0.02 Pa*s"\n[[quantities]]')
+                                                        '["journal_bearings[0].viscosity"]\nlower = "0.01 Pa*s"\n'
+                                                        'upper = "0.02 Pa*s"\n[[quantities]]')
     add(Case("studies", "study_two_variables_on_one_path", ["study", "s.toml", "-q"], 1,
              r"s\.toml:10:\d+: 'journal_bearings\[0\]\.viscosity' is already set by the variable 'c'",
              files={"s.toml": two, "m.toml": study_model}))
@@ -545,16 +545,16 @@ def cases():
     add(Case("inputs", "report_output_is_a_study_file", ["report", "model.toml", "--study", "st", "-o", "st/summary.json"], 1,
              r"cannot write: it is a file of the study shown 'st/summary\.json'", model=J, files=shown_study,
              setup=mkdir("st")))
-    add(Case("inputs", "report_output_is_the_config_study", ["report", "model.toml", "--config", "r.toml", "-o",
-                                                              "st/evaluations.jsonl"], 1,
+    add(Case("inputs", "report_output_is_the_config_study",
+             ["report", "model.toml", "--config", "r.toml", "-o", "st/evaluations.jsonl"], 1,
              r"it is a file of the study shown 'st/evaluations\.jsonl'", model=J,
              files={"r.toml": config + '[study]\ndirectory = "st"\n', **shown_study}, setup=mkdir("st")))
     add(Case("inputs", "report_output_links_to_model", ["report", "model.toml", "-o", "o.html"], 1,
              r"cannot write: it is the model file 'model\.toml'", model=J, setup=link("o.html", "model.toml")))
     add(Case("inputs", "api684_json_hard_linked_to_model", ["api684", "model.toml", "--json", "a.json"], 1,
              r"--json 'a\.json': cannot write: it is the model file", model=J, setup=hard_link("a.json", "model.toml")))
-    add(Case("inputs", "runup_csv_links_to_model", ["runup", "model.toml", "--speed", "1Hz", "--duration", "0.01s",
-                                                     "--csv", "r.csv"], 1,
+    add(Case("inputs", "runup_csv_links_to_model",
+             ["runup", "model.toml", "--speed", "1Hz", "--duration", "0.01s", "--csv", "r.csv"], 1,
              r"--csv 'r\.csv': cannot write: it is the model file", model=J, setup=link("r.csv", "model.toml")))
     add(Case("inputs", "static_json_is_model_by_another_name", ["static", "./model.toml", "--json", "model.toml"], 1,
              r"--json 'model\.toml': cannot write: it is the model file", model=J))
@@ -572,8 +572,8 @@ def cases():
     add(Case("encodings", "study_model_utf16_be", ["study", "s.toml", "-q"], 1,
              r"m\.toml:1:1: the file is in UTF-16 \(big-endian, by the zero bytes of its first characters\)",
              files={"s.toml": study_text.replace("MODEL", "m.toml"), "m.toml": study_model.encode("utf-16-be")}))
-    add(Case("encodings", "report_config_with_bom_read", ["report", "model.toml", "--config", "r.toml", "-o", "o.html",
-                                                           "-q"], 0, r"^$", model=J,
+    add(Case("encodings", "report_config_with_bom_read",
+             ["report", "model.toml", "--config", "r.toml", "-o", "o.html", "-q"], 0, r"^$", model=J,
              files={"r.toml": b"\xef\xbb\xbf" + config.encode()}))
 
     # ------------------------------------------------------------------ REPORT.toml

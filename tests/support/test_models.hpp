@@ -29,14 +29,12 @@ inline Index add_node(Model& m, Real x, bool rotating = true, std::string name =
   return m.n_nodes() - 1;
 }
 
-inline Material steel(Real E = 211e9, Real G = 81.2e9, Real rho = 7810) {
-  return Material{"steel", E, G, rho};
-}
+inline Material steel(Real E = 211e9, Real G = 81.2e9, Real rho = 7810) { return Material{"steel", E, G, rho}; }
 
 // A uniform shaft from x0 of n_el elements, nodes appended; returns the first node.
 // Its elements get @p opt (shear deformation, gyroscopic form, rotating damping β).
-inline Index add_shaft(Model& m, Real x0, Real length, int n_el, Real d_out, const Material& mat,
-                       Real d_in = 0.0, const BeamOptions& opt = {}) {
+inline Index add_shaft(Model& m, Real x0, Real length, int n_el, Real d_out, const Material& mat, Real d_in = 0.0,
+                       const BeamOptions& opt = {}) {
   const Index first = add_node(m, x0);
   Index prev = first;
   const Real le = length / n_el;
@@ -48,13 +46,11 @@ inline Index add_shaft(Model& m, Real x0, Real length, int n_el, Real d_out, con
   return first;
 }
 
-inline void add_body(Model& m, Index node, Real mass, Real Ja, Real Jp, Real offset = 0.0,
-                     bool rotating = true) {
+inline void add_body(Model& m, Index node, Real mass, Real Ja, Real Jp, Real offset = 0.0, bool rotating = true) {
   m.elements.emplace_back(RigidBody(node, RigidBodyProperties{mass, Ja, Jp, offset}, rotating));
 }
 
-inline void add_isotropic_bearing(Model& m, Index node, Real k, Real c = 0.0,
-                                  std::optional<Index> to = std::nullopt) {
+inline void add_isotropic_bearing(Model& m, Index node, Real k, Real c = 0.0, std::optional<Index> to = std::nullopt) {
   SpringDamperCoefficients sc;
   sc.k[static_cast<std::size_t>(Dof::v)] = k;
   sc.k[static_cast<std::size_t>(Dof::w)] = k;
@@ -70,9 +66,7 @@ inline void fix(Model& m, Index node, std::initializer_list<Dof> dofs) {
   m.fixed.push_back(f);
 }
 
-inline void fix_all(Model& m, Index node) {
-  fix(m, node, {Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz});
-}
+inline void fix_all(Model& m, Index node) { fix(m, node, {Dof::u, Dof::v, Dof::w, Dof::rx, Dof::ry, Dof::rz}); }
 
 // Jeffcott rotor: a point mass m (tiny tilt inertia, tilts fixed) on an isotropic
 // spring k with external damping c_a and, when c_i > 0, a rotating damper c_i to the

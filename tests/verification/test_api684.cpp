@@ -31,7 +31,8 @@ TEST(Api684, AmplificationFactorAndMarginsOfADampedMassMatchTheClosedForm) {
   // c from 63.25 to 1265 N s/m: ζ from 0.01 to 0.2, AF from about 50 to 2.4. The operating
   // range 60–70 Hz lies above every peak (50.3–52.5 Hz).
   const auto file = read_study_string(
-      "model = \"" FERAN_TEST_MODELS "/studies/damped_mass.toml\"\n"
+      "model = \"" FERAN_TEST_MODELS
+      "/studies/damped_mass.toml\"\n"
       "[[variables]]\nname = \"c\"\npaths = [\"springs[support].cy\", \"springs[support].cz\"]\n"
       "lower = \"63.25 N*s/m\"\nupper = \"1265 N*s/m\"\nscale = \"log\"\n"
       "[[quantities]]\nname = \"af\"\nkind = \"amplification_factor\"\nprobe = \"mass\"\n"
@@ -69,7 +70,8 @@ TEST(Api684, ADesignWithoutAResolvedPeakIsRecordedAsFailed) {
   // A sweep that stops before the resonance (25–45 Hz) has no peak with both
   // half-power points: the quantity says so, and the design is infeasible.
   const auto file = read_study_string(
-      "model = \"" FERAN_TEST_MODELS "/studies/damped_mass.toml\"\n"
+      "model = \"" FERAN_TEST_MODELS
+      "/studies/damped_mass.toml\"\n"
       "[settings]\n\"response.stop\" = \"45 Hz\"\n"
       "[[variables]]\nname = \"c\"\npaths = [\"springs[support].cy\"]\nlower = \"2 N*s/m\"\nupper = \"4 N*s/m\"\n"
       "[[quantities]]\nname = \"af\"\nkind = \"amplification_factor\"\n"
@@ -91,11 +93,13 @@ TEST(Api684, TheSmallestSurplusIsThatOfTheWorstPeak) {
   // quantity is its own study, so that a missing 2nd peak fails only that one.
   const auto study = [](const std::string& quantity) {
     return read_study_string(
-        "model = \"" FERAN_SOURCE_DIR "/examples/05_api684_bearings/model.toml\"\n"
+        "model = \"" FERAN_SOURCE_DIR
+        "/examples/05_api684_bearings/model.toml\"\n"
         "[[variables]]\nname = \"k\"\npaths = [\"springs[bearing 1].ky\", \"springs[bearing 1].kz\", "
         "\"springs[bearing 2].ky\", \"springs[bearing 2].kz\"]\nlower = \"20 MN/m\"\nupper = \"500 MN/m\"\n"
         "scale = \"log\"\n[[quantities]]\nname = \"q\"\nprobe = \"bearing 1\"\n"
-        "operating = [\"9000 rpm\", \"11000 rpm\"]\n" + quantity + "[explore]\nmethod = \"grid\"\nlevels = 5\n",
+        "operating = [\"9000 rpm\", \"11000 rpm\"]\n" +
+            quantity + "[explore]\nmethod = \"grid\"\nlevels = 5\n",
         "api684.toml");
   };
   ThreadEvaluator evaluator(2);
@@ -133,7 +137,8 @@ TEST(Api684, StudiesReadUndampedCriticalSpeedsAndTheLevelOneThresholdOfADampedMa
   // cross-coupling that cancels the forward mode's damping Q₀ = c·√(k/M) (the
   // threshold s = iω of M s² + c s + k − iQ = 0; docs/theory/api684.md), at any speed.
   const auto file = read_study_string(
-      "model = \"" FERAN_TEST_MODELS "/studies/damped_mass.toml\"\n"
+      "model = \"" FERAN_TEST_MODELS
+      "/studies/damped_mass.toml\"\n"
       "[[variables]]\nname = \"c\"\npaths = [\"springs[support].cy\", \"springs[support].cz\"]\n"
       "lower = \"100 N*s/m\"\nupper = \"1000 N*s/m\"\n"
       "[[quantities]]\nname = \"critical\"\nkind = \"undamped_critical_speed\"\n"
@@ -148,11 +153,12 @@ TEST(Api684, StudiesReadUndampedCriticalSpeedsAndTheLevelOneThresholdOfADampedMa
     EXPECT_NEAR(e.quantities[0] / wn - 1, 0, 1e-12);
     EXPECT_NEAR(e.quantities[1] / (e.values[0] * wn) - 1, 0, 1e-8) << "c " << e.values[0];
   }
-  EXPECT_THROW(read_study_string("model = \"" FERAN_TEST_MODELS "/studies/damped_mass.toml\"\n"
-                                 "[[variables]]\nname = \"c\"\npaths = [\"springs[support].cy\"]\nlower = 1\nupper = 2\n"
-                                 "[[quantities]]\nname = \"q0\"\nkind = \"level1_q_zero\"\n",
-                                 "level1.toml"),
-               ModelError);
+  EXPECT_THROW(
+      read_study_string("model = \"" FERAN_TEST_MODELS "/studies/damped_mass.toml\"\n"
+                        "[[variables]]\nname = \"c\"\npaths = [\"springs[support].cy\"]\nlower = 1\nupper = 2\n"
+                        "[[quantities]]\nname = \"q0\"\nkind = \"level1_q_zero\"\n",
+                        "level1.toml"),
+      ModelError);
 }
 
 }  // namespace

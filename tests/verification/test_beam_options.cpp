@@ -35,8 +35,15 @@ ModelSpec shaft() {
   ShaftSpec shaft;
   shaft.material = "steel";
   shaft.start_node = "a";
-  shaft.sections.push_back({.length = L, .outer_diameter = d, .inner_diameter = 0.0, .outer_diameter_end = {}, .inner_diameter_end = {}, .axial_force = 0.0,
-                            .material = {}, .elements = n_el, .end_node = "b"});
+  shaft.sections.push_back({.length = L,
+                            .outer_diameter = d,
+                            .inner_diameter = 0.0,
+                            .outer_diameter_end = {},
+                            .inner_diameter_end = {},
+                            .axial_force = 0.0,
+                            .material = {},
+                            .elements = n_el,
+                            .end_node = "b"});
   s.shafts.push_back(shaft);
   s.fixed.push_back({.node = std::string("a"), .dofs = {"u", "v", "w", "rx"}});
   s.fixed.push_back({.node = std::string("b"), .dofs = {"v", "w"}});
@@ -84,7 +91,8 @@ TEST(BeamOptions, WithoutRotaryInertiaTheEulerBernoulliBeam) {
   const std::vector<Mode> rayleigh = bending_modes(build_model(s));
   for (int n = 1; n <= 3; ++n)
     EXPECT_NEAR(rayleigh[static_cast<std::size_t>(n - 1)].frequency_hz / analytic_hz(n, false, true, 1.0), 1.0,
-                1e-7 * std::pow(n, 4)) << n;
+                1e-7 * std::pow(n, 4))
+        << n;
   EXPECT_LT(rayleigh[2].frequency_hz, modes[2].frequency_hz * (1 - 1e-3));
 }
 

@@ -134,7 +134,8 @@ TEST(ExampleOilWhip, OnFiniteBearingsTheTabulatedRunupFollowsTheSolversAndWhips)
   const ModelFile exact = read_model_string(exact_text, finite_path);
   RunupRequest quarter;
   quarter.duration = 0.25;
-  const TransientResult a = run_transient(tabulated.model, runup_settings(tabulated.model, tabulated.spec.runup, quarter));
+  const TransientResult a =
+      run_transient(tabulated.model, runup_settings(tabulated.model, tabulated.spec.runup, quarter));
   const TransientResult b = run_transient(exact.model, runup_settings(exact.model, exact.spec.runup, quarter));
   ASSERT_TRUE(a.info.converged() && b.info.converged());
   ASSERT_EQ(a.samples.size(), b.samples.size());

@@ -29,8 +29,8 @@ namespace feran::test_frequency_dependent {
 namespace {
 
 const Complex I(0, 1);
-constexpr Real k1 = 2e7;             // bearing [N/m]
-constexpr Real m_ped = 20.0;         // pedestal mass [kg]
+constexpr Real k1 = 2e7;                // bearing [N/m]
+constexpr Real m_ped = 20.0;            // pedestal mass [kg]
 constexpr Real k2y = 1e8, k2z = 1.5e8;  // pedestal to ground [N/m]
 constexpr Real speed = 3000.0 * 2.0 * pi / 60.0;
 
@@ -162,8 +162,7 @@ TEST(FrequencyDependent, ModesFromUniformTablesConvergeAtTheRateOfLinearInterpol
   const auto largest_error = [&](int intervals) {
     std::vector<Real> knots;
     for (int i = 0; i <= intervals; ++i) knots.push_back(2200.0 * i / intervals);
-    const std::vector<Mode> got =
-        lateral_modes_below(run_modal(condensed_model(y, z, knots), speed, options), 2000.0);
+    const std::vector<Mode> got = lateral_modes_below(run_modal(condensed_model(y, z, knots), speed, options), 2000.0);
     EXPECT_EQ(got.size(), expected.size());
     Real worst = 0.0;
     for (std::size_t i = 0; i < std::min(got.size(), expected.size()); ++i)
@@ -200,8 +199,9 @@ TEST(FrequencyDependent, ResponseAtTheKnotsEqualsTheExplicitPedestal) {
       ASSERT_GT(scale, 0.0);
       for (std::size_t p = 0; p < a.probes.size(); ++p)
         for (const Dof d : {Dof::v, Dof::w})
-          EXPECT_LE(std::abs(a.probes[p].q[k][static_cast<std::size_t>(d)] - b.probes[p].q[k][static_cast<std::size_t>(d)]),
-                    1e-9 * scale);
+          EXPECT_LE(
+              std::abs(a.probes[p].q[k][static_cast<std::size_t>(d)] - b.probes[p].q[k][static_cast<std::size_t>(d)]),
+              1e-9 * scale);
       // The force the bearing k1 passes on (explicit: the spring from the journal to
       // the pedestal, the third element from the end; condensed: the table spring).
       const auto force_of = [&](const HarmonicResult& r, std::string_view label, const Model& m) {

@@ -73,7 +73,8 @@ TEST(HarmonicResponse, CrossCoupledBearingGivesTheIndependentEllipse) {
     opt.probes = {n};
     const HarmonicResult r = run_harmonic_response(m, opt);
     const Complex F = mu * e * speed * speed * std::polar(1.0, phase);
-    const Complex a11(kyy - mass * speed * speed, speed * cyy), a12(kyz), a21(kzy), a22(kzz - mass * speed * speed, speed * czz);
+    const Complex a11(kyy - mass * speed * speed, speed * cyy), a12(kyz), a21(kzy),
+        a22(kzz - mass * speed * speed, speed * czz);
     const Complex det = a11 * a22 - a12 * a21;
     const Complex V = (F * a22 - a12 * (-I * F)) / det, W = (a11 * (-I * F) - a21 * F) / det;
     Real rmax = 0, rmin = 1e300, angle = 0;
@@ -119,7 +120,8 @@ TEST(HarmonicResponse, SpeedDependentBearingUsesTheCoefficientAtEachSpeed) {
     for (std::size_t p = 0; p < 2; ++p)
       for (std::size_t d = 0; d < dofs_per_node; ++d)  // same matrices, same solver: round-off
         EXPECT_NEAR(std::abs(a.probes[p].q[0][d] - b.probes[p].q[0][d]), 0.0,
-                    1e-12 * b.probes[p].orbit[0].major + 1e-18) << hz << " Hz";
+                    1e-12 * b.probes[p].orbit[0].major + 1e-18)
+            << hz << " Hz";
     EXPECT_NEAR(a.springs[0].peak_lateral[0], b.springs[0].peak_lateral[0], 1e-12 * b.springs[0].peak_lateral[0]);
   }
 }
@@ -181,7 +183,8 @@ TEST(HarmonicResponse, ClampForceBalancesTheRotorInertia) {
       if (lm.M.size() == 0) continue;
       ComplexVector q(static_cast<Index>(lm.dofs.size()));
       for (std::size_t i = 0; i < lm.dofs.size(); ++i)
-        q(static_cast<Index>(i)) = r.probes[static_cast<std::size_t>(lm.dofs[i] / dofs_per_node)].q[k][static_cast<std::size_t>(lm.dofs[i] % dofs_per_node)];
+        q(static_cast<Index>(i)) = r.probes[static_cast<std::size_t>(lm.dofs[i] / dofs_per_node)]
+                                       .q[k][static_cast<std::size_t>(lm.dofs[i] % dofs_per_node)];
       const ComplexVector mq = lm.M.cast<Complex>() * q;
       for (std::size_t i = 0; i < lm.dofs.size(); ++i)
         if (lm.dofs[i] % dofs_per_node == static_cast<Index>(Dof::v)) inertia_y += mq(static_cast<Index>(i));

@@ -85,7 +85,8 @@ std::map<std::string, Real> state_at(const OperatingSeries& s, std::size_t k) {
 // The same from a static analysis at @p speed under the model's gravity: its own
 // equilibrium, solved apart from the linear analyses' (another door).
 std::vector<std::map<std::string, Real>> static_state(const Model& model, Real speed) {
-  const StaticResult st = run_static(model, {.gravity = model.gravity, .speed = speed, .loads = true, .stability = false});
+  const StaticResult st =
+      run_static(model, {.gravity = model.gravity, .speed = speed, .loads = true, .stability = false});
   std::vector<std::map<std::string, Real>> out;
   for (const auto& data : st.support_data) {
     out.emplace_back();

@@ -24,7 +24,8 @@ Model rotor(bool step_bearing = false) {
   SpringDamperCoefficients c;
   for (Dof d : {Dof::v, Dof::w}) {
     c.c[static_cast<std::size_t>(d)] = SpeedCoefficient(2e3);
-    if (step_bearing) c.k[static_cast<std::size_t>(d)] = SpeedCoefficient(SpeedCoefficient::Step{0.0, -8e5, hz_to_rad(25.0)});
+    if (step_bearing)
+      c.k[static_cast<std::size_t>(d)] = SpeedCoefficient(SpeedCoefficient::Step{0.0, -8e5, hz_to_rad(25.0)});
   }
   m.elements.emplace_back(SpringDamper(0, std::nullopt, c));
   m.elements.emplace_back(SpringDamper(12, std::nullopt, c));

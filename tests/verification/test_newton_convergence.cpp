@@ -50,8 +50,10 @@ TEST(TrapezoidalNewton, FrictionWhirlConvergesAsDtSquared) {
       if (sample.t < 2.0 - 1e-12) continue;
       const Real a = std::atan2(sample.probes[0][static_cast<std::size_t>(Dof::w)],
                                 sample.probes[0][static_cast<std::size_t>(Dof::v)]);
-      if (std::isnan(previous)) t0 = sample.t;
-      else angle += std::remainder(a - previous, 2.0 * pi);
+      if (std::isnan(previous))
+        t0 = sample.t;
+      else
+        angle += std::remainder(a - previous, 2.0 * pi);
       previous = a;
     }
     const Real measured = angle / (r.samples.back().t - t0);

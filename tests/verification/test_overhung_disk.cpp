@@ -30,8 +30,10 @@ std::vector<Real> roots(const std::function<Real(Real)>& f, Real w_max) {
       Real lo = a, hi = b, flo = fa;
       for (int it = 0; it < 200; ++it) {
         const Real mid = 0.5 * (lo + hi), fm = f(mid);
-        if ((fm > 0) == (flo > 0)) lo = mid, flo = fm;
-        else hi = mid;
+        if ((fm > 0) == (flo > 0))
+          lo = mid, flo = fm;
+        else
+          hi = mid;
       }
       out.push_back(0.5 * (lo + hi));
     }
@@ -70,8 +72,12 @@ TEST(OverhungDisk, WhirlFrequenciesMatchClosedForm) {
     ASSERT_EQ(fb.size(), 2u);
     for (int i = 0; i < 2; ++i) {
       // 1e-9 relative: the bisection resolves 1e-15, the FE model is exact.
-      EXPECT_NEAR(ff[static_cast<std::size_t>(i)], wf[static_cast<std::size_t>(i)], 1e-9 * wf[static_cast<std::size_t>(i)]) << "speed " << speed;
-      EXPECT_NEAR(fb[static_cast<std::size_t>(i)], wb[static_cast<std::size_t>(i)], 1e-9 * wb[static_cast<std::size_t>(i)]) << "speed " << speed;
+      EXPECT_NEAR(ff[static_cast<std::size_t>(i)], wf[static_cast<std::size_t>(i)],
+                  1e-9 * wf[static_cast<std::size_t>(i)])
+          << "speed " << speed;
+      EXPECT_NEAR(fb[static_cast<std::size_t>(i)], wb[static_cast<std::size_t>(i)],
+                  1e-9 * wb[static_cast<std::size_t>(i)])
+          << "speed " << speed;
     }
   }
 }

@@ -151,7 +151,8 @@ TEST(PaperRunups, Fig5WithInternalDampingGrowsAtTheEigenvalueRateUntilItBlowsUp)
   constexpr Real rate_hz_per_s = 16.0, a = 74.0, b = 76.5;
   Real exponent = 0;  // ∫ −Re p dt from a to b, trapezoidal rule over 0.25 Hz steps
   for (Real f = a; f < b - 1e-9; f += 0.25)
-    exponent += 0.5 * 0.25 * (forward_1(run.model, f).eigenvalue.real() + forward_1(run.model, f + 0.25).eigenvalue.real()) /
+    exponent += 0.5 * 0.25 *
+                (forward_1(run.model, f).eigenvalue.real() + forward_1(run.model, f + 0.25).eigenvalue.real()) /
                 rate_hz_per_s;
   const Envelope& e = r.envelopes.at(0);
   const auto bin = [&](Real hz) {
@@ -232,7 +233,8 @@ std::vector<Real> backward_whirl_hz(const TransientResult& r) {
     std::vector<C> sum(n + 1, C(0));
     for (std::size_t i = first; i < last; ++i) sum[i + 1] = sum[i] + z[i];
     std::vector<C> out(n, C(0));
-    for (std::size_t i = first + box / 2; i + box / 2 <= last; ++i) out[i] = (sum[i + box / 2] - sum[i - box / 2]) / Real(box);
+    for (std::size_t i = first + box / 2; i + box / 2 <= last; ++i)
+      out[i] = (sum[i + box / 2] - sum[i - box / 2]) / Real(box);
     z = out;
     first += box / 2;
     last -= box / 2;
@@ -279,7 +281,8 @@ TEST(PaperRunups, Fig7StepExcitesTheFirstBackwardWhirlFalling0_98To0_68Hz) {
   // Half a second after the step the faster whirls (1.6 Hz, 44-50 % damping) have
   // died out: from 48 Hz on the signal's whirl is backward whirl 1 within 1.5 % (filter
   // and fit window bias).
-  for (Real f : {48.0, 50.0, 55.0, 60.0, 63.0}) EXPECT_NEAR(at(f), campbell_bw1(f), 0.015 * campbell_bw1(f)) << f << " Hz";
+  for (Real f : {48.0, 50.0, 55.0, 60.0, 63.0})
+    EXPECT_NEAR(at(f), campbell_bw1(f), 0.015 * campbell_bw1(f)) << f << " Hz";
   // Right after the step: 1.00 Hz at 43.5 Hz (the paper: 0.98 Hz), ±5 % as the
   // paper's value is read from a time signal and the mixture of whirls is still there.
   EXPECT_NEAR(at(43.5), 0.98, 0.05 * 0.98);
@@ -339,7 +342,6 @@ TEST(PaperRunups, Fig10ArctanLawLowersTheRunUpPeakByAbout30Percent) {
   EXPECT_NEAR(*std::max_element(steady.radius.begin(), steady.radius.end()), 0.116e-3, 0.0005e-3);
 }
 
-
 // The centrifuge driven by a DC motor instead of the prescribed ramp
 // (model_motor.toml): T = T_s(1 − Ω/Ω₀) − c_v Ω accelerates the polar inertia J of
 // everything that turns, so the speed follows Ω_eq(1 − e^{−bt/J}) with b = T_s/Ω₀ + c_v
@@ -352,8 +354,8 @@ TEST(PaperRunups, Fig10ArctanLawLowersTheRunUpPeakByAbout30Percent) {
 TEST(PaperRunups, CentrifugeOnADcMotorFollowsTheMotorsExponentialRise) {
   const RunUp r = runup("02_centrifuge/model_motor.toml", 2.0);
   const Real pi = std::acos(-1.0);
-  const Real shaft = 7850.0 * pi / 32.0 *
-                     (std::pow(0.017, 4) * 0.068 + std::pow(0.01105, 4) * 0.025 + std::pow(0.0187, 4) * 0.005);
+  const Real shaft =
+      7850.0 * pi / 32.0 * (std::pow(0.017, 4) * 0.068 + std::pow(0.01105, 4) * 0.025 + std::pow(0.0187, 4) * 0.005);
   const Real J = 0.0104 + 5e-4 + 0.003 * 0.08 * 0.08 + shaft;
   const Real stall = 4.0, no_load = hz_to_rad(105.0), viscous = 2e-4;
   const Real b = stall / no_load + viscous;

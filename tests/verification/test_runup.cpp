@@ -106,8 +106,8 @@ TEST(Runup, InternalDampingGrowthMatchesTheEigenvalue) {
     t.initial_velocity(global_dof(0, Dof::w)) = omega * 1e-3;
     const TransientResult r = run_transient(model, t);
     ASSERT_TRUE(r.info.converged()) << r.info.message;
-    const Real measured = std::log(r.samples.back().magnitude[0] / r.samples[10].magnitude[0]) /
-                          (r.samples.back().t - r.samples[10].t);
+    const Real measured =
+        std::log(r.samples.back().magnitude[0] / r.samples[10].magnitude[0]) / (r.samples.back().t - r.samples[10].t);
     EXPECT_NEAR(measured, rate, 1e-4 * std::abs(rate) + 1e-6) << "speed/threshold " << speed / (wn * (1 + ca / ci));
     EXPECT_EQ(measured > 0, speed > wn * (1 + ca / ci));
   }

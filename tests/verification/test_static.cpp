@@ -82,7 +82,7 @@ TEST(StaticAnalysis, CantileverReactionsFromStatics) {
   ASSERT_EQ(r.reactions.size(), 1u);
   const NodeValues& R = r.reactions[0].second;
   const Real ws = mat.rho * CircularSection{0.03, 0}.area() * 0.4 * g;  // shaft weight, centre at 0.2 m
-  const Real wd = md * g;                                            // disk weight at 0.4 + e
+  const Real wd = md * g;                                               // disk weight at 0.4 + e
   const Real tol = 1e-9 * (ws + wd + 100);
   EXPECT_NEAR(R[static_cast<std::size_t>(Dof::v)], -(ws + wd), tol);
   EXPECT_NEAR(R[static_cast<std::size_t>(Dof::w)], 100.0, tol);

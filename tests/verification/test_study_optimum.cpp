@@ -160,8 +160,8 @@ TEST(StudyOptimum, NsgaTwoFindsTheParetoFrontOfDampingAgainstItsCost) {
   EXPECT_LE(exact - found, bound + 1e-9 * exact);
   EXPECT_LT(bound, 2e-3 * exact);
   RecordProperty("hypervolume_relative_gap", std::to_string((exact - found) / exact));
-  std::printf("hypervolume: exact %.6f, found %.6f (relative gap %.2e, bound %.2e), %zu front points\n", exact,
-              found, (exact - found) / exact, bound / exact, points.size());
+  std::printf("hypervolume: exact %.6f, found %.6f (relative gap %.2e, bound %.2e), %zu front points\n", exact, found,
+              (exact - found) / exact, bound / exact, points.size());
 }
 
 }  // namespace

@@ -37,8 +37,8 @@ inline constexpr int campbell_modes = 8;
 inline constexpr int response_points = 201;
 inline constexpr int frequency_points = 201;
 inline constexpr Real gravity = standard_gravity;  ///< [m/s²], pulling along −y
-inline constexpr Real runup_dt = 1e-4;         ///< [s]
-inline constexpr Real output_interval = 1e-3;  ///< [s]
+inline constexpr Real runup_dt = 1e-4;             ///< [s]
+inline constexpr Real output_interval = 1e-3;      ///< [s]
 /// The most steps a fixed-step run-up takes (duration / dt), and the most samples it
 /// records (duration / output interval): bounds on its work and its output files, the
 /// same whether the values come from the model file or the command line.
@@ -78,7 +78,7 @@ struct CampbellRequest {
   std::optional<int> modes;         ///< default [campbell], else 8
   std::vector<int> orders;          ///< empty: [campbell] orders, else {1}
   EigenSolver solver = EigenSolver::automatic;
-  int n_threads = 1;                ///< 0: all cores
+  int n_threads = 1;  ///< 0: all cores
 };
 
 /// Throws Error when no last speed is given anywhere or it is not above the first.
@@ -104,7 +104,7 @@ struct ResponseRequest {
   bool unbalance = true;                    ///< include the model's unbalances
   /// Judge the rotor's stability at each point (HarmonicOptions::stability).
   bool stability = true;
-  int n_threads = 1;                        ///< 0: all cores
+  int n_threads = 1;  ///< 0: all cores
 };
 
 /// Throws Error for a sweep without a last point, a last point not above the first,
@@ -112,8 +112,7 @@ struct ResponseRequest {
 /// The StationOutput named @p name ("all", "summary", "none"); throws Error otherwise.
 StationOutput station_output(std::string_view name);
 
-HarmonicOptions response_settings(const Model& model, const ResponseSpec& file,
-                                  const ResponseRequest& request);
+HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, const ResponseRequest& request);
 
 // ---------------------------------------------------------------------------------
 
@@ -139,21 +138,21 @@ struct RunupRequest {
   std::vector<std::pair<Real, Real>> table;
   /// Default: [runup] duration (with the file's profile), else the profile's length.
   std::optional<Real> duration;
-  std::optional<std::string> integrator;   ///< default [runup], else "trapezoidal"
-  std::optional<Real> dt;                  ///< default [runup], else 1e-4 s
-  std::optional<Real> rel_tol, abs_tol;    ///< default [runup], else the integrator's
-  std::optional<Real> output_interval;     ///< default [runup], else 1 ms
-  std::optional<int> modes;                ///< default [runup] modes, else the full model
-  std::vector<Index> probes;               ///< empty: [runup] probes, else default_probes()
-  std::vector<Index> springs;              ///< elements; empty: [runup] springs
+  std::optional<std::string> integrator;  ///< default [runup], else "trapezoidal"
+  std::optional<Real> dt;                 ///< default [runup], else 1e-4 s
+  std::optional<Real> rel_tol, abs_tol;   ///< default [runup], else the integrator's
+  std::optional<Real> output_interval;    ///< default [runup], else 1 ms
+  std::optional<int> modes;               ///< default [runup] modes, else the full model
+  std::vector<Index> probes;              ///< empty: [runup] probes, else default_probes()
+  std::vector<Index> springs;             ///< elements; empty: [runup] springs
   std::optional<Real> newton_tol;
   std::optional<int> newton_max_iterations;
   bool allow_unstable_step = false;
   bool exact_jacobian = true;
   std::optional<int> jacobian_interval;
-  std::optional<Real> blowup_limit;        ///< [m]; default 1 m
-  bool static_loads = false;               ///< true, or else [runup] static_loads
-  bool gravity = false;                    ///< true (Model::gravity), or else [runup] gravity
+  std::optional<Real> blowup_limit;  ///< [m]; default 1 m
+  bool static_loads = false;         ///< true, or else [runup] static_loads
+  bool gravity = false;              ///< true (Model::gravity), or else [runup] gravity
   /// "rest", "equilibrium" or "steady"; default [runup] start, else "rest".
   std::optional<std::string> start;
   /// Torque-driven by the model's [drive]; default [runup] drive, else false.
@@ -162,8 +161,7 @@ struct RunupRequest {
 
 /// Throws Error for two profile forms, an incomplete ramp, no profile anywhere, no
 /// duration, or a non-positive time.
-TransientOptions runup_settings(const Model& model, const RunupSpec& file,
-                                const RunupRequest& request);
+TransientOptions runup_settings(const Model& model, const RunupSpec& file, const RunupRequest& request);
 
 // ---------------------------------------------------------------------------------
 
@@ -175,15 +173,15 @@ struct Api684Request {
   std::optional<bool> model_unbalance;       ///< default [api684] unbalance = "model", else 4W/N
   std::optional<Real> unbalance_multiple;    ///< default [api684], else 1
   std::vector<Index> probes;                 ///< empty: [api684] probes, else the default
-  std::vector<Index> bearings;               ///< elements; empty: [api684] bearings, else bearing_elements(linearised(model))
-  bool map = true;                           ///< the critical speed map
-  std::optional<Real> map_low, map_high;     ///< [N/m]; default [api684], else the bearings' k/100 and ×100
-  std::optional<int> map_points;             ///< default [api684], else 41
-  std::optional<int> map_criticals;          ///< default [api684], else 4
-  bool stability = true;                     ///< the level I stability sweep
-  std::optional<Index> stability_node;       ///< default [api684], else where the first forward mode moves most
-  std::optional<Real> anticipated_q;         ///< [N/m]; default [api684]
-  int n_threads = 1;                         ///< 0: all cores
+  std::vector<Index> bearings;  ///< elements; empty: [api684] bearings, else bearing_elements(linearised(model))
+  bool map = true;              ///< the critical speed map
+  std::optional<Real> map_low, map_high;  ///< [N/m]; default [api684], else the bearings' k/100 and ×100
+  std::optional<int> map_points;          ///< default [api684], else 41
+  std::optional<int> map_criticals;       ///< default [api684], else 4
+  bool stability = true;                  ///< the level I stability sweep
+  std::optional<Index> stability_node;    ///< default [api684], else where the first forward mode moves most
+  std::optional<Real> anticipated_q;      ///< [N/m]; default [api684]
+  int n_threads = 1;                      ///< 0: all cores
 };
 
 /// The options of run_api684() from @p request, the file's [api684] and [static]

@@ -15,8 +15,8 @@ namespace feran {
 /// A motion along which the stiffness (at zero speed, after constraints) is singular.
 struct FreeMotionInfo {
   FreeMotion family = FreeMotion::lateral;
-  std::string description;    ///< e.g. "rotation about the x axis (torsion) of nodes 1–7"
-  std::vector<Index> nodes;   ///< nodes that take part
+  std::string description;   ///< e.g. "rotation about the x axis (torsion) of nodes 1–7"
+  std::vector<Index> nodes;  ///< nodes that take part
 };
 
 /// An M-orthonormal basis (reduced coordinates) of the motions along which the

@@ -25,7 +25,7 @@ class SparseSum {
   Index position(Index row, Index col) const;
 
  private:
-  SparseMatrix pattern_;                  // the union, values zero
+  SparseMatrix pattern_;                   // the union, values zero
   std::vector<std::vector<Index>> where_;  // per term: each entry's index in pattern_'s values
 };
 

@@ -104,8 +104,8 @@ class BandedLU {
   std::vector<Block> blocks_;
   std::vector<Index> block_of_, local_of_;  // per unknown; empty: one block, unknowns in order
   std::vector<Index> order_;                // the unknowns component by component
-  std::vector<Real> a_;        // each component's column j: rows j − b … j + b, at offset + j·(2b + 1) + (i − j + b)
-  std::vector<Real> inverse_;  // 1 / U(k, k)
+  std::vector<Real> a_;  // each component's column j: rows j − b … j + b, at offset + j·(2b + 1) + (i − j + b)
+  std::vector<Real> inverse_;       // 1 / U(k, k)
   mutable std::vector<Real> work_;  // solve_in_place's gathered right-hand side
   // The lanes' matrices and 1 / U(k, k), lane-interleaved (entry e of lane L at
   // e·lanes + L from a vector-aligned start).
@@ -145,9 +145,9 @@ class ComplexBandedLU {
 
  private:
   Index n_ = 0, b_ = 0, ld_ = 1;
-  std::vector<Complex> ab_;     // LAPACK's band storage: A(i, j) at j·ld + (2b + i − j)
+  std::vector<Complex> ab_;       // LAPACK's band storage: A(i, j) at j·ld + (2b + i − j)
   std::vector<Index> positions_;  // of the pattern's stored entries in ab_
-  std::vector<int> pivots_;      // row interchanged with each row, as LAPACK's ipiv (0-based)
+  std::vector<int> pivots_;       // row interchanged with each row, as LAPACK's ipiv (0-based)
   std::vector<Complex> inverse_;  // 1 / U(k, k)
   // Where the given order is too wide: the unknown at each position of the reverse
   // Cuthill–McKee order (core/ordering.hpp), the matrix's entries in that order

@@ -15,7 +15,6 @@ namespace feran {
 /// of their first unknowns. With @p nonzero_only, entries whose value is zero join
 /// nothing; otherwise every stored entry does (a pattern of what can become
 /// nonzero). Throws feran::Error for a matrix of another size.
-std::vector<Index> connected_components(Index n, const std::vector<const SparseMatrix*>& patterns,
-                                        bool nonzero_only);
+std::vector<Index> connected_components(Index n, const std::vector<const SparseMatrix*>& patterns, bool nonzero_only);
 
 }  // namespace feran

@@ -57,8 +57,7 @@ class SpecError : public Error {
 /// as a ModelError). @p node is the index of a node involved, or -1.
 class ModelStructureError : public Error {
  public:
-  ModelStructureError(const std::string& message, long node = -1)
-      : Error(message), node_(node) {}
+  ModelStructureError(const std::string& message, long node = -1) : Error(message), node_(node) {}
   long node() const { return node_; }
 
  private:

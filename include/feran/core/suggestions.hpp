@@ -25,14 +25,12 @@ std::size_t edit_distance_at_most(std::string_view a, std::string_view b, std::s
 /// there is one, else the candidate at the smallest edit distance when that distance
 /// is at most @p max_distance (the first such candidate on ties); std::nullopt
 /// otherwise or when @p word is itself a candidate.
-std::optional<std::string> closest_match(std::string_view word,
-                                         const std::vector<std::string>& candidates,
+std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates,
                                          std::size_t max_distance);
 
 /// "a, b or c" (or "a, b and c" with @p conjunction "and"); each item quoted with
 /// @p quote when it is not '\0'.
-std::string join_list(const std::vector<std::string>& items, std::string_view conjunction = "or",
-                      char quote = '\0');
+std::string join_list(const std::vector<std::string>& items, std::string_view conjunction = "or", char quote = '\0');
 
 /// "1-8, 20 and 21": @p numbers sorted, runs of consecutive numbers joined.
 std::string number_ranges(std::vector<int> numbers);

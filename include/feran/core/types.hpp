@@ -38,9 +38,7 @@ inline constexpr int dofs_per_node = 6;
 enum class Dof : int { u = 0, v = 1, w = 2, rx = 3, ry = 4, rz = 5 };
 
 /// Global (unconstrained) DOF number of local DOF @p d of node @p node.
-constexpr Index global_dof(Index node, Dof d) {
-  return dofs_per_node * node + static_cast<Index>(d);
-}
+constexpr Index global_dof(Index node, Dof d) { return dofs_per_node * node + static_cast<Index>(d); }
 
 /// Short name of a local DOF ("u", "v", "w", "rx", "ry", "rz").
 const char* dof_name(Dof d);

@@ -116,10 +116,8 @@ class QuantityError : public Error {
     not_finite,    ///< the number is infinite or NaN
     wrong_unit,    ///< the unit is not accepted for the kind
   };
-  QuantityError(Reason reason, Quantity kind, std::string text, std::string unit,
-                const std::string& message)
-      : Error(message), reason_(reason), kind_(kind), text_(std::move(text)),
-        unit_(std::move(unit)) {}
+  QuantityError(Reason reason, Quantity kind, std::string text, std::string unit, const std::string& message)
+      : Error(message), reason_(reason), kind_(kind), text_(std::move(text)), unit_(std::move(unit)) {}
   Reason reason() const { return reason_; }
   Quantity kind() const { return kind_; }
   /// The text that was parsed.

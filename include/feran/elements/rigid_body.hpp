@@ -25,8 +25,7 @@ class RigidBody {
   RigidBody(Index node, RigidBodyProperties props, bool rotating);
 
   /// Mass properties of a solid or annular disk of uniform density, centred on the node.
-  static RigidBodyProperties disk(Real density, Real outer_diameter, Real inner_diameter,
-                                  Real width);
+  static RigidBodyProperties disk(Real density, Real outer_diameter, Real inner_diameter, Real width);
 
   LocalMatrices local_matrices(const OperatingPoint& op) const;
   std::string_view kind() const { return "rigid_body"; }

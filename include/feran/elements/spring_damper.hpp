@@ -22,7 +22,7 @@ struct SpringDamperCoefficients {
   std::array<SpeedCoefficient, dofs_per_node> c{};  ///< [N s/m] or [N m s/rad]
   SpeedCoefficient kyz, kzy;                        ///< [N/m]
   SpeedCoefficient cyz, czy;                        ///< [N s/m]
-  Real loss_factor = 0.0;  ///< hysteretic loss factor η of the stiffness (harmonic analyses)
+  Real loss_factor = 0.0;                           ///< hysteretic loss factor η of the stiffness (harmonic analyses)
 };
 
 /// Spring–damper from @p node_a to @p node_b, or to ground when node_b is empty.
@@ -48,8 +48,7 @@ class SpringDamper {
   Matrix damping_6x6(Real speed, std::optional<Real> frequency = std::nullopt) const;
   /// The force it transmits (ability of connecting elements, model/element.hpp).
   Transmission transmission(Real speed, std::optional<Real> frequency = std::nullopt) const {
-    return {node_a_, node_b_, stiffness_6x6(speed, frequency), damping_6x6(speed, frequency),
-            coeffs_.loss_factor};
+    return {node_a_, node_b_, stiffness_6x6(speed, frequency), damping_6x6(speed, frequency), coeffs_.loss_factor};
   }
   /// The speed ranges of its tabulated coefficients (ability, model/element.hpp).
   std::vector<SpeedRange> speed_ranges() const;

@@ -49,12 +49,12 @@ struct BeamOptions {
 /// Timoshenko shaft element between nodes @p node_a (at x) and @p node_b (at x + L).
 class TimoshenkoBeam {
  public:
-  TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section,
-                 Material material, BeamOptions options);
+  TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section, Material material,
+                 BeamOptions options);
   /// A tapered element: @p section_a at node a, @p section_b at node b, outer and inner
   /// diameters linear in between.
-  TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section_a,
-                 CircularSection section_b, Material material, BeamOptions options);
+  TimoshenkoBeam(Index node_a, Index node_b, Real length, CircularSection section_a, CircularSection section_b,
+                 Material material, BeamOptions options);
 
   LocalMatrices local_matrices(const OperatingPoint& op) const;
   std::string_view kind() const { return "shaft"; }

@@ -76,7 +76,11 @@ class FiniteBearingTable {
   struct Node {
     Value g, gt, ga, gta;
   };
-  const Node& node(int i, int j) const { return nodes_[static_cast<std::size_t>(i * layout_.angles + ((j % layout_.angles) + layout_.angles) % layout_.angles)]; }
+  const Node& node(int i, int j) const {
+    const int angle = ((j % layout_.angles) + layout_.angles) % layout_.angles;
+    return nodes_[static_cast<std::size_t>(i) * static_cast<std::size_t>(layout_.angles) +
+                  static_cast<std::size_t>(angle)];
+  }
   // (Ψ, Π) and their derivatives in ε and α at (t, α).
   void interpolate(Real t, Real alpha, Value& psi, Value& dpsi_de, Value& dpsi_da) const;
   // (Ψ, Π) and ∂Ψ/∂e′ at e′; false beyond the table.

@@ -46,9 +46,9 @@ enum class FilmTheory {
 /// Jacobian with respect to the journal's position and velocity relative to the
 /// housing.
 struct FilmForce {
-  Eigen::Vector2d f = Eigen::Vector2d::Zero();      ///< [N]
-  Eigen::Matrix2d dfdx = Eigen::Matrix2d::Zero();   ///< ∂f/∂(y, z) [N/m]
-  Eigen::Matrix2d dfdv = Eigen::Matrix2d::Zero();   ///< ∂f/∂(ẏ, ż) [N s/m]
+  Eigen::Vector2d f = Eigen::Vector2d::Zero();     ///< [N]
+  Eigen::Matrix2d dfdx = Eigen::Matrix2d::Zero();  ///< ∂f/∂(y, z) [N/m]
+  Eigen::Matrix2d dfdv = Eigen::Matrix2d::Zero();  ///< ∂f/∂(ẏ, ż) [N s/m]
   /// The largest film pressure [Pa] where the solution gives the pressure field (the
   /// finite bearing: its largest nodal value); NaN else (the closed forms give it in
   /// operating_data()).
@@ -128,7 +128,7 @@ struct FluidFilmBearing {
 /// of Fluid Film Lubrication", 2nd ed. 2004, ch. 10): the unit load W/(L·D) at start
 /// and stop at most 300 psi, and the minimum film thickness at least
 /// 0.0002 in + 0.00004·D.
-inline constexpr Real trumpler_specific_load_limit = 2.0684e6;  ///< [Pa], 300 psi
+inline constexpr Real trumpler_specific_load_limit = 2.0684e6;                      ///< [Pa], 300 psi
 inline Real trumpler_min_film(Real diameter) { return 5.08e-6 + 4e-5 * diameter; }  ///< [m]
 
 /// The largest film pressure [Pa] of the short bearing (Ocvirk, π film) at journal

@@ -19,9 +19,9 @@ namespace feran {
 /// table acts in run-ups only, with the table's value at t.
 struct HarmonicForce {
   enum class Kind {
-    fixed,            ///< along a fixed DOF direction: F(t) = A·cos(ωt + phase)
-    rotating_force,   ///< lateral force rotating with the shaft: F_y + i·F_z = A·e^{i(Ωt + phase)}
-    rotating_moment   ///< lateral moment rotating with the shaft: M_y + i·M_z = A·e^{i(Ωt + phase)}
+    fixed,           ///< along a fixed DOF direction: F(t) = A·cos(ωt + phase)
+    rotating_force,  ///< lateral force rotating with the shaft: F_y + i·F_z = A·e^{i(Ωt + phase)}
+    rotating_moment  ///< lateral moment rotating with the shaft: M_y + i·M_z = A·e^{i(Ωt + phase)}
   };
   Index node = 0;
   Kind type = Kind::fixed;

@@ -24,7 +24,7 @@ struct RollingBearingGeometry {
   Real clearance = 0.0;         ///< radial clearance c_r [m] (≥ 0)
   /// Hertz constant K of one element's load–deflection law Q = K·δⁿ [N/mⁿ].
   Real hertz_constant = 0.0;
-  bool roller = false;          ///< n = 10/9 (line contact) instead of 3/2 (point contact)
+  bool roller = false;  ///< n = 10/9 (line contact) instead of 3/2 (point contact)
 
   Real exponent() const { return roller ? 10.0 / 9.0 : 1.5; }
   /// The cage's angular speed over the shaft's (inner race turning, outer at rest):

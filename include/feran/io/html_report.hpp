@@ -20,24 +20,24 @@ namespace feran {
 /// What a report shows, and the settings of the analyses it runs; each unset value
 /// comes from the model's own tables and then from the defaults (docs/report.md).
 struct ReportOptions {
-  std::string title;              ///< empty: the model's title, else its file name
-  std::string speed_unit = "rpm"; ///< "rpm" or "Hz": how speeds are shown
-  std::string command;            ///< the command that made the report (its inputs table)
-  std::string version;            ///< feran's version (its inputs table)
-  CampbellRequest campbell;       ///< stop default: [campbell], else 1.5 × the maximum operating speed
+  std::string title;               ///< empty: the model's title, else its file name
+  std::string speed_unit = "rpm";  ///< "rpm" or "Hz": how speeds are shown
+  std::string command;             ///< the command that made the report (its inputs table)
+  std::string version;             ///< feran's version (its inputs table)
+  CampbellRequest campbell;        ///< stop default: [campbell], else 1.5 × the maximum operating speed
   /// Speeds of the mode shapes [rad/s]; empty: 0 (for a rotor on oil films, which
   /// carry it only while it turns: the minimum operating speed, else the Campbell
   /// diagram's first speed above 0) and the maximum operating speed (or the Campbell
   /// diagram's last speed).
   std::vector<Real> mode_speeds;
-  int mode_count = 6;             ///< lateral modes drawn at each speed
-  ResponseRequest response;       ///< the unbalance response (when the model has unbalances or forces)
+  int mode_count = 6;                    ///< lateral modes drawn at each speed
+  ResponseRequest response;              ///< the unbalance response (when the model has unbalances or forces)
   std::optional<Real> deflection_speed;  ///< [rad/s]; default: the largest response peak's speed
-  bool static_analysis = true;    ///< the static deflection under [static] gravity
-  bool runup = true;              ///< the run-up of [runup], when the model has one
-  bool api684 = true;             ///< the API 617 / 684 analyses, when an operating range is known
+  bool static_analysis = true;           ///< the static deflection under [static] gravity
+  bool runup = true;                     ///< the run-up of [runup], when the model has one
+  bool api684 = true;                    ///< the API 617 / 684 analyses, when an operating range is known
   Api684Request api684_request;
-  std::string study_directory;    ///< a design study's output directory (evaluations.jsonl, summary.json)
+  std::string study_directory;  ///< a design study's output directory (evaluations.jsonl, summary.json)
   int n_threads = 0;
   StopToken stop;
 };

@@ -25,9 +25,9 @@ class Assembler;  // feran/assembly/assembler.hpp
 /// stay in the spec (spec.modal, spec.campbell, …); analyses/settings.hpp resolves
 /// them with a caller's request and the built-in defaults.
 struct ModelFile {
-  ModelSpec spec;      ///< what the file says
-  SpecSource source;   ///< where the file says it (for messages about the spec)
-  Model model;         ///< build_model(spec)
+  ModelSpec spec;     ///< what the file says
+  SpecSource source;  ///< where the file says it (for messages about the spec)
+  Model model;        ///< build_model(spec)
   /// The model as the reader's check assembled it: analyses of this very model may
   /// reuse it instead of assembling again (not after changing the model).
   std::shared_ptr<const Assembler> assembler;

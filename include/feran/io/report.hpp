@@ -18,8 +18,8 @@ namespace feran {
 std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source);
 /// Summary of a Campbell diagram: frequencies at selected speeds, critical speeds and
 /// the stability threshold.
-std::string campbell_report(const CampbellResult& result, const CampbellOptions& options,
-                            const Model& model, const ResultSource& source);
+std::string campbell_report(const CampbellResult& result, const CampbellOptions& options, const Model& model,
+                            const ResultSource& source);
 
 /// Summary of a steady-state response: orbit sizes at selected points and the peaks.
 std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,

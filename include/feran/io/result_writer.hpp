@@ -28,8 +28,7 @@ struct ResultSource {
 };
 
 /// JSON text of a modal result. With @p shapes each mode carries its shape.
-std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source,
-                       bool shapes);
+std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source, bool shapes);
 /// CSV text of a modal result: one row per mode (the supports' state is in the JSON).
 std::string modal_csv(const ModalResult& result);
 

@@ -33,7 +33,7 @@ class StudyLog {
   /// reads, @p inputs (its study file and model file), must not be among those it
   /// writes there (however reached: through links or another name). Throws
   /// feran::Error.
-  StudyLog(std::string directory, const StudySpec& study, bool resume, std::vector<std::string> inputs = {});
+  StudyLog(std::string directory, const StudySpec& study, bool resume, const std::vector<std::string>& inputs = {});
   ~StudyLog();
   StudyLog(const StudyLog&) = delete;
   StudyLog& operator=(const StudyLog&) = delete;

@@ -16,8 +16,8 @@ namespace feran {
 
 struct StudyFile {
   StudySpec study;
-  ModelFile base;     ///< the base model as read (before the study's settings)
-  std::string path;   ///< the study file's path
+  ModelFile base;    ///< the base model as read (before the study's settings)
+  std::string path;  ///< the study file's path
 };
 
 /// Reads the study at @p path; the model it names is read relative to the study

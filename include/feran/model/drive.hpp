@@ -19,11 +19,11 @@ struct MotorLaw {
     table       ///< (Ω, T) points, linear between them, held beyond the ends
   };
   Kind kind = Kind::dc;
-  Real stall_torque = 0.0;       ///< T_s [N m] (dc)
-  Real no_load_speed = 0.0;      ///< Ω₀ [rad/s] (dc)
-  Real synchronous_speed = 0.0;  ///< Ω_s [rad/s] (induction)
-  Real breakdown_torque = 0.0;   ///< T_b, the largest torque [N m] (induction)
-  Real breakdown_slip = 0.0;     ///< s_b, the slip of T_b, 0 < s_b < 1 (induction)
+  Real stall_torque = 0.0;                   ///< T_s [N m] (dc)
+  Real no_load_speed = 0.0;                  ///< Ω₀ [rad/s] (dc)
+  Real synchronous_speed = 0.0;              ///< Ω_s [rad/s] (induction)
+  Real breakdown_torque = 0.0;               ///< T_b, the largest torque [N m] (induction)
+  Real breakdown_slip = 0.0;                 ///< s_b, the slip of T_b, 0 < s_b < 1 (induction)
   std::vector<std::pair<Real, Real>> table;  ///< (Ω [rad/s], T [N m]), speeds increasing
 
   Real torque(Real speed) const;
@@ -38,10 +38,10 @@ struct MotorLaw {
 /// resist the rotation besides the bearings' and the unbalances' reactions.
 struct Drive {
   MotorLaw motor;
-  Real inertia = 0.0;            ///< polar inertia of the motor's rotor, couplings … [kg m²]
-  Real friction_torque = 0.0;    ///< constant resisting torque T_f [N m] (seals, brushes)
-  Real viscous_torque = 0.0;     ///< c₁ of a resisting c₁Ω [N m s/rad] (windage, viscous)
-  Real quadratic_torque = 0.0;   ///< c₂ of a resisting c₂Ω² [N m s²/rad²] (fan, pump)
+  Real inertia = 0.0;           ///< polar inertia of the motor's rotor, couplings … [kg m²]
+  Real friction_torque = 0.0;   ///< constant resisting torque T_f [N m] (seals, brushes)
+  Real viscous_torque = 0.0;    ///< c₁ of a resisting c₁Ω [N m s/rad] (windage, viscous)
+  Real quadratic_torque = 0.0;  ///< c₂ of a resisting c₂Ω² [N m s²/rad²] (fan, pump)
 
   /// The net driving torque without bearings and unbalances: T(Ω) − T_f·σ(Ω) − c₁Ω −
   /// c₂Ω|Ω|, σ(Ω) = Ω/√(Ω² + Ω_ε²) a sign smoothed over Ω_ε = 10⁻³ rad/s (friction

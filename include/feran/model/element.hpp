@@ -151,8 +151,8 @@ class Element {
  public:
   /// Wraps @p e; @p label is the user's name for it (may be empty).
   template <class E>
-    requires(!std::same_as<std::remove_cvref_t<E>, Element> && ElementType<E>)
-  Element(E e, std::string label = {})  // NOLINT(google-explicit-constructor)
+  requires(!std::same_as<std::remove_cvref_t<E>, Element> && ElementType<E>)
+      Element(E e, std::string label = {})  // NOLINT(google-explicit-constructor)
       : self_(std::make_unique<Holder<E>>(std::move(e))), label_(std::move(label)) {}
 
   Element(const Element& other) : self_(other.self_->clone()), label_(other.label_) {}
@@ -226,46 +226,61 @@ class Element {
   struct Holder final : Concept {
     explicit Holder(E e) : value(std::move(e)) {}
     std::unique_ptr<Concept> clone() const override { return std::make_unique<Holder>(value); }
-    LocalMatrices local_matrices(const OperatingPoint& op) const override {
-      return value.local_matrices(op);
-    }
+    LocalMatrices local_matrices(const OperatingPoint& op) const override { return value.local_matrices(op); }
     std::vector<Index> dofs() const override {
-      if constexpr (HasDofs<E>) return value.dofs();
-      else return value.local_matrices({}).dofs;
+      if constexpr (HasDofs<E>)
+        return value.dofs();
+      else
+        return value.local_matrices({}).dofs;
     }
     std::string_view kind() const override { return value.kind(); }
     bool speed_dependent() const override { return value.speed_dependent(); }
     bool frequency_dependent() const override {
-      if constexpr (HasFrequencyDependence<E>) return value.frequency_dependent();
-      else return false;
+      if constexpr (HasFrequencyDependence<E>)
+        return value.frequency_dependent();
+      else
+        return false;
     }
     std::vector<SpeedRange> frequency_ranges() const override {
-      if constexpr (HasFrequencyDependence<E>) return value.frequency_ranges();
-      else return {};
+      if constexpr (HasFrequencyDependence<E>)
+        return value.frequency_ranges();
+      else
+        return {};
     }
     std::optional<Transmission> transmission(Real speed, std::optional<Real> frequency) const override {
-      if constexpr (HasFrequencyTransmission<E>) return value.transmission(speed, frequency);
-      else if constexpr (HasTransmission<E>) return value.transmission(speed);
-      else return std::nullopt;
+      if constexpr (HasFrequencyTransmission<E>)
+        return value.transmission(speed, frequency);
+      else if constexpr (HasTransmission<E>)
+        return value.transmission(speed);
+      else
+        return std::nullopt;
     }
     std::optional<Connection> connection() const override {
-      if constexpr (HasConnection<E>) return value.connection();
+      if constexpr (HasConnection<E>)
+        return value.connection();
       else if constexpr (HasTransmission<E> || HasFrequencyTransmission<E>) {
         const std::optional<Transmission> t = transmission(0.0, std::nullopt);  // its nodes, by evaluating it
         return Connection{t->node_a, t->node_b};
-      } else return std::nullopt;
+      } else
+        return std::nullopt;
     }
     std::vector<SpeedRange> speed_ranges() const override {
-      if constexpr (HasSpeedRanges<E>) return value.speed_ranges();
-      else return {};
+      if constexpr (HasSpeedRanges<E>)
+        return value.speed_ranges();
+      else
+        return {};
     }
     std::optional<ShaftSegment> shaft_segment() const override {
-      if constexpr (HasShaftSegment<E>) return value.shaft_segment();
-      else return std::nullopt;
+      if constexpr (HasShaftSegment<E>)
+        return value.shaft_segment();
+      else
+        return std::nullopt;
     }
     std::optional<std::vector<OperatingValue>> operating_data(Real speed) const override {
-      if constexpr (HasOperatingState<E>) return value.operating_data(speed);
-      else return std::nullopt;
+      if constexpr (HasOperatingState<E>)
+        return value.operating_data(speed);
+      else
+        return std::nullopt;
     }
     const std::type_info& type() const override { return typeid(E); }
     const void* data() const override { return &value; }

@@ -61,10 +61,10 @@ namespace feran {
 
 /// One point of a steady-state analysis: the motion is x(t) = Re(X·e^{iωt}).
 struct HarmonicExcitation {
-  Real speed = 0.0;          ///< rotor speed Ω [rad/s]
-  Real frequency = 0.0;      ///< excitation frequency ω [rad/s]; ω = Ω in a speed sweep
-  bool synchronous = true;   ///< a speed sweep (ω = Ω); false: a frequency sweep
-  bool unbalance = true;     ///< unbalances take part (they act only at ω = Ω)
+  Real speed = 0.0;         ///< rotor speed Ω [rad/s]
+  Real frequency = 0.0;     ///< excitation frequency ω [rad/s]; ω = Ω in a speed sweep
+  bool synchronous = true;  ///< a speed sweep (ω = Ω); false: a frequency sweep
+  bool unbalance = true;    ///< unbalances take part (they act only at ω = Ω)
 };
 
 /// Where and how fast the rotor is when a time-dependent force is evaluated.
@@ -105,7 +105,9 @@ concept HasTransientLoad = requires(const F& f, const MotionState& s, Vector& v)
   f.add_transient(s, v);
 };
 template <class F>
-concept HasStaticLoad = requires(const F& f, Vector& v) { f.add_static(v); };
+concept HasStaticLoad = requires(const F& f, Vector& v) {
+  f.add_static(v);
+};
 template <class F>
 concept HasNonlinearForce = requires(const F& f, const MotionState& s, const Vector& x) {
   { f.dofs() } -> std::convertible_to<std::vector<Index>>;
@@ -147,8 +149,8 @@ class Force {
  public:
   /// Wraps @p f; @p label is the user's name for it (may be empty).
   template <class F>
-    requires(!std::same_as<std::remove_cvref_t<F>, Force> && ForceType<F>)
-  Force(F f, std::string label = {})  // NOLINT(google-explicit-constructor)
+  requires(!std::same_as<std::remove_cvref_t<F>, Force> && ForceType<F>)
+      Force(F f, std::string label = {})  // NOLINT(google-explicit-constructor)
       : self_(std::make_unique<Holder<F>>(std::move(f))), label_(std::move(label)) {}
 
   Force(const Force& other) : self_(other.self_->clone()), label_(other.label_) {}
@@ -187,9 +189,7 @@ class Force {
   bool has_drag_torque() const { return self_->has_drag_torque(); }
   /// The torque [N m] with which it resists the rotation at local displacements @p x
   /// and velocities @p v (on dofs()); 0 without the ability.
-  Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const {
-    return self_->drag_torque(s, x, v);
-  }
+  Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const { return self_->drag_torque(s, x, v); }
   /// Its operating state at local displacements @p x and velocities @p v (on dofs());
   /// empty without the ability.
   std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const {
@@ -257,33 +257,47 @@ class Force {
     }
     bool is_nonlinear() const override { return HasNonlinearForce<F>; }
     bool supports() const override {
-      if constexpr (HasSupport<F>) return value.supports();
-      else return false;
+      if constexpr (HasSupport<F>)
+        return value.supports();
+      else
+        return false;
     }
     bool needs_speed() const override {
-      if constexpr (NeedsSpeed<F>) return value.needs_speed();
-      else return false;
+      if constexpr (NeedsSpeed<F>)
+        return value.needs_speed();
+      else
+        return false;
     }
     bool has_drag_torque() const override { return HasDragTorque<F>; }
     Real drag_torque(const MotionState& s, const Vector& x, const Vector& v) const override {
-      if constexpr (HasDragTorque<F>) return value.drag_torque(s, x, v);
-      else return 0.0;
+      if constexpr (HasDragTorque<F>)
+        return value.drag_torque(s, x, v);
+      else
+        return 0.0;
     }
     std::vector<OperatingValue> operating_data(const MotionState& s, const Vector& x, const Vector& v) const override {
-      if constexpr (HasOperatingData<F>) return value.operating_data(s, x, v);
-      else return {};
+      if constexpr (HasOperatingData<F>)
+        return value.operating_data(s, x, v);
+      else
+        return {};
     }
     std::optional<Real> clearance() const override {
-      if constexpr (HasClearance<F>) return static_cast<Real>(value.clearance());
-      else return std::nullopt;
+      if constexpr (HasClearance<F>)
+        return static_cast<Real>(value.clearance());
+      else
+        return std::nullopt;
     }
     std::vector<Index> dofs() const override {
-      if constexpr (HasNonlinearForce<F>) return value.dofs();
-      else return {};
+      if constexpr (HasNonlinearForce<F>)
+        return value.dofs();
+      else
+        return {};
     }
     NonlinearForceValue force(const MotionState& s, const Vector& x, const Vector& v) const override {
-      if constexpr (HasNonlinearForce<F>) return value.force(s, x, v);
-      else return {};
+      if constexpr (HasNonlinearForce<F>)
+        return value.force(s, x, v);
+      else
+        return {};
     }
     const std::type_info& type() const override { return typeid(F); }
     const void* data() const override { return &value; }

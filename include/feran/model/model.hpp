@@ -18,9 +18,9 @@ namespace feran {
 
 /// A node on the x axis. Its global DOFs are global_dof(index, Dof::...).
 struct Node {
-  int number = 0;      ///< the number users refer to (unique)
-  std::string name;    ///< optional name users refer to (unique when not empty)
-  Real x = 0.0;        ///< axial position [m]
+  int number = 0;        ///< the number users refer to (unique)
+  std::string name;      ///< optional name users refer to (unique when not empty)
+  Real x = 0.0;          ///< axial position [m]
   bool rotating = true;  ///< belongs to a rotating body (shaft, rotor) or not (stator)
 };
 

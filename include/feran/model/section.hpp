@@ -11,9 +11,9 @@ struct CircularSection {
   Real outer_diameter = 0.0;  ///< [m]
   Real inner_diameter = 0.0;  ///< [m], 0 for a solid section
 
-  Real area() const;              ///< A [m²]
-  Real second_moment() const;     ///< I about a diameter [m⁴]
-  Real polar_moment() const;      ///< I_p = J = 2I [m⁴]
+  Real area() const;           ///< A [m²]
+  Real second_moment() const;  ///< I about a diameter [m⁴]
+  Real polar_moment() const;   ///< I_p = J = 2I [m⁴]
   /// Cowper's (1966) shear coefficient κ for a hollow circle with Poisson ratio @p nu.
   Real cowper_shear_coefficient(Real nu) const;
   /// Hutchinson's (2001) shear coefficient κ for a hollow circle with Poisson ratio

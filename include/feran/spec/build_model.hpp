@@ -56,7 +56,6 @@ struct BuildInfo {
 /// Throws SpecError at the path of the first problem. @p source, when given, makes
 /// messages quote values as they were written and name other places by line and
 /// column. @p info, when given, receives the BuildInfo.
-Model build_model(const ModelSpec& spec, const SpecSource* source = nullptr,
-                  BuildInfo* info = nullptr);
+Model build_model(const ModelSpec& spec, const SpecSource* source = nullptr, BuildInfo* info = nullptr);
 
 }  // namespace feran

@@ -46,19 +46,17 @@ enum class FieldKind {
 struct Bound {
   enum class Kind { none, positive, non_negative, at_least };
   Kind kind = Kind::none;
-  std::int64_t minimum = 0;  ///< for at_least (integers)
+  std::int64_t minimum = 0;              ///< for at_least (integers)
   std::int64_t maximum = 1'000'000'000;  ///< integers: the largest allowed value
 };
 
 /// The member of S a field is stored in.
 template <class S>
 using Member = std::variant<Real S::*, std::optional<Real> S::*, int S::*, std::optional<int> S::*,
-                            std::optional<std::int64_t> S::*, bool S::*, std::optional<bool> S::*,
-                            std::string S::*, std::optional<std::string> S::*,
-                            std::vector<std::string> S::*, NodeRef S::*,
-                            std::optional<NodeRef> S::*, std::vector<NodeRef> S::*,
-                            std::vector<int> S::*, std::optional<SpeedCoefficient> S::*,
-                            std::vector<std::pair<Real, Real>> S::*>;
+                            std::optional<std::int64_t> S::*, bool S::*, std::optional<bool> S::*, std::string S::*,
+                            std::optional<std::string> S::*, std::vector<std::string> S::*, NodeRef S::*,
+                            std::optional<NodeRef> S::*, std::vector<NodeRef> S::*, std::vector<int> S::*,
+                            std::optional<SpeedCoefficient> S::*, std::vector<std::pair<Real, Real>> S::*>;
 
 /// One key of a table.
 template <class S>
@@ -69,7 +67,7 @@ struct Field {
   std::string_view doc;
   Quantity quantity = Quantity::length;  ///< for quantities and coefficients
   Bound bound = {};
-  bool required = false;                 ///< the reader reports a missing key
+  bool required = false;  ///< the reader reports a missing key
   /// The unit values are written and shown in when no text was given ("mm", "GPa");
   /// empty: the SI unit.
   std::string_view unit = {};
@@ -91,8 +89,8 @@ using FieldTable = std::vector<Field<S>>;
 
 /// The field table of spec type S. Defined for ModelSpec (top-level keys), OptionsSpec,
 /// MaterialSpec, ShaftSpec, SectionSpec, NodeSpec, RigidBodySpec, SpringSpec,
-/// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RollingBearingSpec, RigidLinkSpec, FixedSpec, UnbalanceSpec, ForceSpec,
-/// StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec, Api684Spec and DriveSpec.
+/// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RollingBearingSpec, RigidLinkSpec, FixedSpec, UnbalanceSpec,
+/// ForceSpec, StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec, Api684Spec and DriveSpec.
 template <class S>
 const FieldTable<S>& fields_of();
 
@@ -132,26 +130,20 @@ void visit_tables(Spec& spec, F&& f) {
   f("options", table, "model-wide options", spec.options);
   f("materials", array_of_tables, "isotropic materials", spec.materials);
   f("shafts", array_of_tables, "shafts made of shaft elements; they create nodes", spec.shafts);
-  f("nodes", array_of_tables, "extra nodes (stator, housing, foundation, a lumped rotor)",
-    spec.nodes);
-  f("rigid_bodies", array_of_tables, "rigid bodies (disks, rotors, stators) at nodes",
-    spec.rigid_bodies);
-  f("springs", array_of_tables,
-    "spring–dampers to ground or between nodes (bearings, foot springs)", spec.springs);
-  f("rotating_dampers", array_of_tables,
-    "viscous dampers between rotating parts (internal damping)", spec.rotating_dampers);
+  f("nodes", array_of_tables, "extra nodes (stator, housing, foundation, a lumped rotor)", spec.nodes);
+  f("rigid_bodies", array_of_tables, "rigid bodies (disks, rotors, stators) at nodes", spec.rigid_bodies);
+  f("springs", array_of_tables, "spring–dampers to ground or between nodes (bearings, foot springs)", spec.springs);
+  f("rotating_dampers", array_of_tables, "viscous dampers between rotating parts (internal damping)",
+    spec.rotating_dampers);
   f("friction", array_of_tables, "Coulomb friction between rotating parts", spec.friction);
-  f("journal_bearings", array_of_tables, "plain journal bearings on an oil film (nonlinear)",
-    spec.journal_bearings);
+  f("journal_bearings", array_of_tables, "plain journal bearings on an oil film (nonlinear)", spec.journal_bearings);
   f("rolling_bearings", array_of_tables, "ball and roller bearings in Hertzian contact (nonlinear)",
     spec.rolling_bearings);
   f("rigid_links", array_of_tables, "nodes moving together as one rigid body", spec.rigid_links);
   f("fixed", array_of_tables, "DOFs held at zero", spec.fixed);
   f("unbalances", array_of_tables, "point unbalances", spec.unbalances);
-  f("forces", array_of_tables, "harmonic forces and moments, or forces given in time (run-ups)",
-    spec.forces);
-  f("static_loads", array_of_tables, "constant forces and moments (static analysis)",
-    spec.static_loads);
+  f("forces", array_of_tables, "harmonic forces and moments, or forces given in time (run-ups)", spec.forces);
+  f("static_loads", array_of_tables, "constant forces and moments (static analysis)", spec.static_loads);
   f("modal", table, "defaults for a modal analysis", spec.modal);
   f("campbell", table, "defaults for a Campbell diagram", spec.campbell);
   f("response", table, "defaults for a steady-state (harmonic) response", spec.response);
@@ -166,8 +158,7 @@ void visit_tables(Spec& spec, F&& f) {
 template <class S, class F>
 void visit_children(S& entry, F&& f) {
   if constexpr (std::is_same_v<std::remove_const_t<S>, ShaftSpec>)
-    f("sections", "sections of uniform circular cross-section, in order along x",
-      entry.sections);
+    f("sections", "sections of uniform circular cross-section, in order along x", entry.sections);
 }
 
 /// The quantity of a force's amplitude: a moment for kind "rotating_moment" and the

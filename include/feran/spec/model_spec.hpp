@@ -28,51 +28,51 @@ using NodeRef = std::variant<std::int64_t, std::string>;
 
 /// [options]: model-wide options.
 struct OptionsSpec {
-  bool shear_deformation = true;        ///< Timoshenko (true) or Euler–Bernoulli shafts
-  std::string gyroscopic = "consistent";  ///< "consistent" or "lumped"
-  Real shaft_damping = 0.0;             ///< β [s] of rotating shafts: C_i = β K
-  std::vector<std::string> free_motions;  ///< "axial", "torsion", "lateral"
-  bool rotary_inertia = true;             ///< rotary inertia ρI of shaft sections
+  bool shear_deformation = true;             ///< Timoshenko (true) or Euler–Bernoulli shafts
+  std::string gyroscopic = "consistent";     ///< "consistent" or "lumped"
+  Real shaft_damping = 0.0;                  ///< β [s] of rotating shafts: C_i = β K
+  std::vector<std::string> free_motions;     ///< "axial", "torsion", "lateral"
+  bool rotary_inertia = true;                ///< rotary inertia ρI of shaft sections
   std::string shear_coefficient = "cowper";  ///< "cowper" or "hutchinson"
-  std::optional<Real> kappa;              ///< a fixed shear coefficient (overrides the formula)
-  Real rayleigh_alpha = 0.0;              ///< non-rotating damping α·M of shafts [1/s]
-  Real rayleigh_beta = 0.0;               ///< non-rotating damping β·K of shafts [s]
+  std::optional<Real> kappa;                 ///< a fixed shear coefficient (overrides the formula)
+  Real rayleigh_alpha = 0.0;                 ///< non-rotating damping α·M of shafts [1/s]
+  Real rayleigh_beta = 0.0;                  ///< non-rotating damping β·K of shafts [s]
   bool operator==(const OptionsSpec&) const = default;
 };
 
 /// [[materials]]: an isotropic material. Exactly one of G and nu is given.
 struct MaterialSpec {
   std::string name;
-  Real E = 0.0;             ///< Young's modulus [Pa]
-  std::optional<Real> G;    ///< shear modulus [Pa]
-  std::optional<Real> nu;   ///< Poisson's ratio
-  Real rho = 0.0;           ///< density [kg/m³]
-  Real loss_factor = 0.0;   ///< hysteretic loss factor η
+  Real E = 0.0;            ///< Young's modulus [Pa]
+  std::optional<Real> G;   ///< shear modulus [Pa]
+  std::optional<Real> nu;  ///< Poisson's ratio
+  Real rho = 0.0;          ///< density [kg/m³]
+  Real loss_factor = 0.0;  ///< hysteretic loss factor η
   bool operator==(const MaterialSpec&) const = default;
 };
 
 /// [[shafts.sections]]: a length of circular section, uniform or tapered (diameters
 /// linear from the start to the end), meshed into elements.
 struct SectionSpec {
-  Real length = 0.0;          ///< [m]
-  Real outer_diameter = 0.0;  ///< [m], at the start
-  Real inner_diameter = 0.0;  ///< [m], 0 for a solid section
+  Real length = 0.0;                       ///< [m]
+  Real outer_diameter = 0.0;               ///< [m], at the start
+  Real inner_diameter = 0.0;               ///< [m], 0 for a solid section
   std::optional<Real> outer_diameter_end;  ///< [m] at the end; default outer_diameter
   std::optional<Real> inner_diameter_end;  ///< [m] at the end; default inner_diameter
-  Real axial_force = 0.0;     ///< constant axial force [N], tension positive
-  std::string material;       ///< empty: the shaft's material
-  int elements = 1;           ///< number of shaft elements
-  std::string end_node;       ///< name of the section's last node (may be empty)
+  Real axial_force = 0.0;                  ///< constant axial force [N], tension positive
+  std::string material;                    ///< empty: the shaft's material
+  int elements = 1;                        ///< number of shaft elements
+  std::string end_node;                    ///< name of the section's last node (may be empty)
   bool operator==(const SectionSpec&) const = default;
 };
 
 /// [[shafts]]: a shaft along x made of sections; it creates nodes.
 struct ShaftSpec {
   std::string name;
-  Real x = 0.0;                   ///< axial position of the first node [m]
+  Real x = 0.0;  ///< axial position of the first node [m]
   bool rotating = true;
-  std::string material;           ///< default material of the sections (may be empty)
-  std::string start_node;         ///< name of the first node (may be empty)
+  std::string material;                ///< default material of the sections (may be empty)
+  std::string start_node;              ///< name of the first node (may be empty)
   std::optional<Real> rayleigh_alpha;  ///< this shaft's α [1/s]; default [options]
   std::optional<Real> rayleigh_beta;   ///< this shaft's β [s]; default [options]
   std::vector<SectionSpec> sections;
@@ -81,7 +81,7 @@ struct ShaftSpec {
 
 /// [[nodes]]: a node that no shaft creates (stator, housing, a lumped rotor).
 struct NodeSpec {
-  Real x = 0.0;                  ///< [m]
+  Real x = 0.0;  ///< [m]
   std::string name;
   std::optional<std::int64_t> number;  ///< not given: the next free number
   bool rotating = false;
@@ -121,10 +121,10 @@ struct RotatingDamperSpec {
   std::string name;
   NodeRef node;
   std::optional<NodeRef> to;  ///< not given (or "axis"): to the rotating frame's axis
-  Real ct = 0.0;   ///< lateral [N s/m]
-  Real cr = 0.0;   ///< tilt [N m s/rad]
-  Real cx = 0.0;   ///< axial [N s/m]
-  Real crx = 0.0;  ///< torsional [N m s/rad]
+  Real ct = 0.0;              ///< lateral [N s/m]
+  Real cr = 0.0;              ///< tilt [N m s/rad]
+  Real cx = 0.0;              ///< axial [N s/m]
+  Real crx = 0.0;             ///< torsional [N m s/rad]
   bool operator==(const RotatingDamperSpec&) const = default;
 };
 
@@ -143,30 +143,30 @@ struct FrictionSpec {
 /// [[journal_bearings]]: a plain journal bearing on an oil film.
 struct JournalBearingSpec {
   std::string name;
-  NodeRef node;               ///< the journal
-  std::optional<NodeRef> to;  ///< the housing; not given (or "ground"): the ground
-  Real diameter = 0.0;        ///< D [m]
-  Real length = 0.0;          ///< L [m]
-  Real clearance = 0.0;       ///< radial clearance c [m]
-  Real viscosity = 0.0;       ///< μ [Pa s]
-  std::string theory = "short";  ///< "short" (Ocvirk), "long" (Sommerfeld) or "finite"
-  std::optional<std::string> cavitation;  ///< "reynolds" or "gumbel" (finite only)
+  NodeRef node;                                           ///< the journal
+  std::optional<NodeRef> to;                              ///< the housing; not given (or "ground"): the ground
+  Real diameter = 0.0;                                    ///< D [m]
+  Real length = 0.0;                                      ///< L [m]
+  Real clearance = 0.0;                                   ///< radial clearance c [m]
+  Real viscosity = 0.0;                                   ///< μ [Pa s]
+  std::string theory = "short";                           ///< "short" (Ocvirk), "long" (Sommerfeld) or "finite"
+  std::optional<std::string> cavitation;                  ///< "reynolds" or "gumbel" (finite only)
   std::optional<int> circumferential_cells, axial_cells;  ///< the finite bearing's grid
-  std::optional<std::string> evaluation;  ///< "auto", "table" or "exact" (finite only)
+  std::optional<std::string> evaluation;                  ///< "auto", "table" or "exact" (finite only)
   bool operator==(const JournalBearingSpec&) const = default;
 };
 
 /// [[rolling_bearings]]: a ball or roller bearing, its elements in Hertzian contact.
 struct RollingBearingSpec {
   std::string name;
-  NodeRef node;               ///< the journal (inner race)
-  std::optional<NodeRef> to;  ///< the housing (outer race); not given (or "ground"): the ground
-  int elements = 0;           ///< Z
+  NodeRef node;                                       ///< the journal (inner race)
+  std::optional<NodeRef> to;                          ///< the housing (outer race); not given (or "ground"): the ground
+  int elements = 0;                                   ///< Z
   Real element_diameter = 0.0, pitch_diameter = 0.0;  ///< d, D_p [m]
-  Real contact_angle = 0.0;   ///< α [rad]
-  Real clearance = 0.0;       ///< radial clearance [m]
-  Real hertz_constant = 0.0;  ///< K [N/mⁿ]
-  std::string type = "ball";  ///< "ball" or "roller"
+  Real contact_angle = 0.0;                           ///< α [rad]
+  Real clearance = 0.0;                               ///< radial clearance [m]
+  Real hertz_constant = 0.0;                          ///< K [N/mⁿ]
+  std::string type = "ball";                          ///< "ball" or "roller"
   bool operator==(const RollingBearingSpec&) const = default;
 };
 
@@ -200,10 +200,10 @@ struct UnbalanceSpec {
 struct ForceSpec {
   std::string name;
   NodeRef node;
-  std::string kind = "fixed";  ///< "fixed", "rotating_force" or "rotating_moment"
-  std::string direction;       ///< "x", "y", "z", "rx", "ry", "rz" (kind "fixed")
+  std::string kind = "fixed";     ///< "fixed", "rotating_force" or "rotating_moment"
+  std::string direction;          ///< "x", "y", "z", "rx", "ry", "rz" (kind "fixed")
   std::optional<Real> amplitude;  ///< [N] or [N m]; required unless time_table
-  Real phase = 0.0;            ///< [rad]
+  Real phase = 0.0;               ///< [rad]
   std::optional<Real> frequency;  ///< [Hz]: a fixed force at its own frequency (run-ups)
   /// (time [s], force [N] or moment [N m]): a fixed force given in time (run-ups)
   std::vector<std::pair<Real, Real>> time_table;
@@ -253,9 +253,9 @@ struct StaticSpec {
 
 /// [runup]: the speed profile (one of three forms) and defaults of a run-up.
 struct RunupSpec {
-  std::optional<Real> speed;                  ///< constant speed [rad/s]
-  std::optional<Real> from, to, ramp_time;    ///< linear ramp [rad/s, rad/s, s]
-  std::vector<std::pair<Real, Real>> table;   ///< (time [s], speed [rad/s]) points
+  std::optional<Real> speed;                          ///< constant speed [rad/s]
+  std::optional<Real> from, to, ramp_time;            ///< linear ramp [rad/s, rad/s, s]
+  std::vector<std::pair<Real, Real>> table;           ///< (time [s], speed [rad/s]) points
   std::optional<Real> duration, dt, output_interval;  ///< [s]
   std::optional<std::string> integrator;
   std::optional<Real> rel_tol, abs_tol;
@@ -274,30 +274,30 @@ struct Api684Spec {
   std::optional<Real> min_speed, max_speed;  ///< the operating range [rad/s]
   std::optional<Real> stop;                  ///< last speed of the unbalance responses [rad/s]
   std::optional<int> points, modes;
-  std::optional<std::string> unbalance;      ///< "4W/N" or "model"
+  std::optional<std::string> unbalance;  ///< "4W/N" or "model"
   std::optional<Real> unbalance_multiple;
   std::vector<NodeRef> probes;
-  std::vector<std::string> bearings;         ///< names of [[springs]] entries
-  std::optional<Real> map_low, map_high;     ///< [N/m]
+  std::vector<std::string> bearings;      ///< names of [[springs]] entries
+  std::optional<Real> map_low, map_high;  ///< [N/m]
   std::optional<int> map_points, map_criticals;
   std::optional<NodeRef> stability_node;
-  std::optional<Real> anticipated_q;         ///< [N/m]
+  std::optional<Real> anticipated_q;  ///< [N/m]
   bool operator==(const Api684Spec&) const = default;
 };
 
 /// [drive]: the motor and load torques of torque-driven run-ups; no motor: none.
 struct DriveSpec {
-  std::string motor;                     ///< "dc", "induction" or "table"; empty: no drive
-  Real inertia = 0.0;                    ///< [kg m²]
-  std::optional<Real> stall_torque;      ///< [N m] (dc)
-  std::optional<Real> no_load_speed;     ///< [rad/s] (dc)
-  std::optional<Real> synchronous_speed; ///< [rad/s] (induction)
-  std::optional<Real> breakdown_torque;  ///< [N m] (induction)
-  std::optional<Real> breakdown_slip;    ///< (induction)
+  std::string motor;                       ///< "dc", "induction" or "table"; empty: no drive
+  Real inertia = 0.0;                      ///< [kg m²]
+  std::optional<Real> stall_torque;        ///< [N m] (dc)
+  std::optional<Real> no_load_speed;       ///< [rad/s] (dc)
+  std::optional<Real> synchronous_speed;   ///< [rad/s] (induction)
+  std::optional<Real> breakdown_torque;    ///< [N m] (induction)
+  std::optional<Real> breakdown_slip;      ///< (induction)
   std::optional<SpeedCoefficient> torque;  ///< a table over speed [N m] (table)
-  Real friction_torque = 0.0;            ///< [N m]
-  Real viscous_torque = 0.0;             ///< [N m s/rad]
-  Real quadratic_torque = 0.0;           ///< [N m s²/rad²]
+  Real friction_torque = 0.0;              ///< [N m]
+  Real viscous_torque = 0.0;               ///< [N m s/rad]
+  Real quadratic_torque = 0.0;             ///< [N m s²/rad²]
   bool operator==(const DriveSpec&) const = default;
 };
 

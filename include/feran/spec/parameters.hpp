@@ -41,12 +41,12 @@ class ParameterError : public Error {
 
 /// One settable number of a spec.
 struct Parameter {
-  std::string path;                ///< e.g. "springs[bearing 1].ky"
-  Real value = 0.0;                ///< in SI units (speeds in rad/s, frequencies in Hz)
+  std::string path;                  ///< e.g. "springs[bearing 1].ky"
+  Real value = 0.0;                  ///< in SI units (speeds in rad/s, frequencies in Hz)
   std::optional<Quantity> quantity;  ///< empty for dimensionless numbers and counts
-  bool integer = false;            ///< a count (set with an integer)
-  std::string unit;                ///< the unit it is shown in ("mm"); empty: SI
-  std::string doc;                 ///< what the key means
+  bool integer = false;              ///< a count (set with an integer)
+  std::string unit;                  ///< the unit it is shown in ("mm"); empty: SI
+  std::string doc;                   ///< what the key means
   /// The value with its unit, as written back to a file ("68 mm", "0.3", "4").
   std::string text() const;
 };

@@ -29,11 +29,11 @@ struct DesignVariable {
   /// factors[k]·value, for paths tied by a linear relation instead of equal (an
   /// arctan law's c0 and c1 from one remaining stiffness fraction).
   std::vector<Real> factors, offsets;
-  Real lower = 0.0, upper = 0.0;   ///< bounds in SI units (continuous variables)
+  Real lower = 0.0, upper = 0.0;  ///< bounds in SI units (continuous variables)
   VariableScale scale = VariableScale::linear;
-  std::vector<Real> values;        ///< discrete values in SI units; empty: continuous
+  std::vector<Real> values;          ///< discrete values in SI units; empty: continuous
   std::optional<Quantity> quantity;  ///< the kind of the paths' values (none: a number)
-  std::string unit;                ///< the unit values are shown in (e.g. "N/m"); empty: SI
+  std::string unit;                  ///< the unit values are shown in (e.g. "N/m"); empty: SI
 
   bool discrete() const { return !values.empty(); }
   /// The value path @p k takes when the variable is @p value.
@@ -53,8 +53,7 @@ std::vector<Real> design_values(std::span<const DesignVariable> variables, std::
 /// @p base with every variable's paths set to its value (path_value()). Throws ParameterError for a
 /// path that names nothing settable (checked when the study is read, so that this is
 /// found before any analysis runs).
-ModelSpec apply_design(const ModelSpec& base, std::span<const DesignVariable> variables,
-                       std::span<const Real> values);
+ModelSpec apply_design(const ModelSpec& base, std::span<const DesignVariable> variables, std::span<const Real> values);
 
 /// Throws SpecError (path "variables[i]…") for an inconsistent variable: no path,
 /// bounds not finite or lower ≥ upper, a log scale with lower ≤ 0, duplicate names.

@@ -62,7 +62,7 @@ bool all_agree(Communicator& group, bool ok, const std::string& message, std::st
 class DistributedEvaluator : public BatchEvaluator {
  public:
   DistributedEvaluator(Communicator& group, BatchEvaluator& local, StopToken stop = {})
-      : group_(group), local_(local), stop_(std::move(stop)), stopped_(std::make_unique<std::atomic<bool>>(false)) {}
+      : group_(group), local_(local), stop_(stop), stopped_(std::make_unique<std::atomic<bool>>(false)) {}
   std::vector<Evaluation> evaluate(const StudySpec& study,
                                    const std::vector<std::pair<Index, UnitPoint>>& batch) override;
   /// Set on every member once any member was asked to stop (between batches).

@@ -24,30 +24,31 @@
 namespace feran {
 
 enum class QuantityKind {
-  critical_speed,       ///< the n-th critical speed of a whirl and order in a speed range [rad/s]
-  separation_margin,    ///< smallest relative distance of the critical speeds from the operating range [-]
-  min_damping_ratio,    ///< smallest damping ratio of the lateral modes over a speed range [-]
-  min_log_decrement,    ///< smallest logarithmic decrement over a speed range [-]
-  stability_threshold,  ///< lowest speed where a mode's damping turns negative [rad/s]
-  natural_frequency,    ///< the n-th natural frequency of a whirl at a speed [Hz]
-  damping_ratio,        ///< the damping ratio of that mode [-]
-  log_decrement,        ///< the logarithmic decrement of that mode [-]
-  peak_response,        ///< largest orbit semi-axis at a probe over the unbalance response [m]
-  amplification_factor, ///< API 684 amplification factor (half-power) of the n-th resonance peak at a probe [-]
-  required_margin,      ///< the separation margin API 617 requires of that peak from the operating range [-]
-  margin_surplus,       ///< that peak's separation margin less the required one: ≥ 0 passes [-]
-  min_margin_surplus,   ///< the smallest margin_surplus of every resonance peak at the probe: ≥ 0 all pass [-]
+  critical_speed,           ///< the n-th critical speed of a whirl and order in a speed range [rad/s]
+  separation_margin,        ///< smallest relative distance of the critical speeds from the operating range [-]
+  min_damping_ratio,        ///< smallest damping ratio of the lateral modes over a speed range [-]
+  min_log_decrement,        ///< smallest logarithmic decrement over a speed range [-]
+  stability_threshold,      ///< lowest speed where a mode's damping turns negative [rad/s]
+  natural_frequency,        ///< the n-th natural frequency of a whirl at a speed [Hz]
+  damping_ratio,            ///< the damping ratio of that mode [-]
+  log_decrement,            ///< the logarithmic decrement of that mode [-]
+  peak_response,            ///< largest orbit semi-axis at a probe over the unbalance response [m]
+  amplification_factor,     ///< API 684 amplification factor (half-power) of the n-th resonance peak at a probe [-]
+  required_margin,          ///< the separation margin API 617 requires of that peak from the operating range [-]
+  margin_surplus,           ///< that peak's separation margin less the required one: ≥ 0 passes [-]
+  min_margin_surplus,       ///< the smallest margin_surplus of every resonance peak at the probe: ≥ 0 all pass [-]
   undamped_critical_speed,  ///< the n-th forward undamped critical speed with the bearings as given [rad/s]
-  level1_q_zero,        ///< API 617 level I: the cross-coupling Q at the probe where the first forward mode's log decrement is 0 at the speed [N/m]
-  peak_spring_force,    ///< largest lateral force of a spring (or of all) over the response [N]
-  peak_stress,          ///< largest equivalent (von Mises) shaft stress over the response [Pa]
-  runup_peak,           ///< largest |r| at a probe during the run-up [m]
-  runup_spring_force,   ///< largest lateral force of a spring (or of all) during the run-up [N]
-  rotor_mass,           ///< mass of the rotating parts [kg]
-  min_bearing_value,    ///< smallest value of a bearing's operating quantity over the Campbell speeds [its unit]
-  max_bearing_value,    ///< largest value of it [its unit]
-  parameter,            ///< a number of the design's model, by its parameter path (its SI unit)
-  function,             ///< a function given in code (the Python package's feran.Study) [its own unit]
+  level1_q_zero,  ///< API 617 level I: the cross-coupling Q at the probe where the first forward mode's log decrement
+                  ///< is 0 at the speed [N/m]
+  peak_spring_force,   ///< largest lateral force of a spring (or of all) over the response [N]
+  peak_stress,         ///< largest equivalent (von Mises) shaft stress over the response [Pa]
+  runup_peak,          ///< largest |r| at a probe during the run-up [m]
+  runup_spring_force,  ///< largest lateral force of a spring (or of all) during the run-up [N]
+  rotor_mass,          ///< mass of the rotating parts [kg]
+  min_bearing_value,   ///< smallest value of a bearing's operating quantity over the Campbell speeds [its unit]
+  max_bearing_value,   ///< largest value of it [its unit]
+  parameter,           ///< a number of the design's model, by its parameter path (its SI unit)
+  function,            ///< a function given in code (the Python package's feran.Study) [its own unit]
 };
 
 /// A quantity computed by the caller's code from the design's model (its
@@ -63,18 +64,18 @@ struct QuantitySpec {
   std::string name;
   QuantityKind kind = QuantityKind::critical_speed;
   WhirlSelection whirl = WhirlSelection::forward;
-  int order = 1;                 ///< excitation order of critical speeds
-  int n = 1;                     ///< which one (1: the lowest)
-  std::optional<Real> low, high; ///< the speed range it applies to [rad/s]; default the analysis'
+  int order = 1;                                   ///< excitation order of critical speeds
+  int n = 1;                                       ///< which one (1: the lowest)
+  std::optional<Real> low, high;                   ///< the speed range it applies to [rad/s]; default the analysis'
   Real operating_low = 0.0, operating_high = 0.0;  ///< the operating speed range [rad/s]
-  std::optional<Real> speed;     ///< natural_frequency, damping_ratio, log_decrement: the rotor speed [rad/s]
-  std::optional<NodeRef> probe;  ///< peak_response, runup_peak
-  std::optional<std::string> spring;  ///< *_spring_force: a spring's name; empty: all
+  std::optional<Real> speed;           ///< natural_frequency, damping_ratio, log_decrement: the rotor speed [rad/s]
+  std::optional<NodeRef> probe;        ///< peak_response, runup_peak
+  std::optional<std::string> spring;   ///< *_spring_force: a spring's name; empty: all
   std::optional<std::string> bearing;  ///< *_bearing_value: a bearing's name; empty: all
-  std::string value;             ///< *_bearing_value: the operating quantity ("min_film_thickness_m")
-  std::string path;              ///< parameter: the parameter path
+  std::string value;                   ///< *_bearing_value: the operating quantity ("min_film_thickness_m")
+  std::string path;                    ///< parameter: the parameter path
   std::optional<Quantity> value_kind;  ///< parameter: the kind of its value (none: a number)
-  std::string unit;              ///< unit the value is shown in ("rpm", "mm"); empty: SI
+  std::string unit;                    ///< unit the value is shown in ("rpm", "mm"); empty: SI
   std::shared_ptr<const QuantityFunction> function;  ///< function: the code computing it
 };
 

@@ -26,7 +26,7 @@ struct Sensitivity {
   Real r2 = 0;             ///< of the linear fit
   std::vector<Real> srrc;  ///< per variable, on ranks
   Real r2_ranks = 0;
-  Index samples = 0;       ///< evaluated designs used
+  Index samples = 0;  ///< evaluated designs used
 };
 
 /// One entry per quantity, from the evaluated designs of @p evaluations; empty

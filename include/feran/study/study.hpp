@@ -91,16 +91,15 @@ struct Evaluation {
   /// Per quantity (empty when the design failed): why its value is only a bound,
   /// clipped by the range an analysis covered ("" when it is exact).
   std::vector<std::string> clipped;
-  Real seconds = 0;              ///< wall time of this evaluation
-  bool interrupted = false;      ///< stopped by a StopToken: not a result, not recorded
+  Real seconds = 0;          ///< wall time of this evaluation
+  bool interrupted = false;  ///< stopped by a StopToken: not a result, not recorded
 };
 
 /// Evaluates the design at unit coordinates @p unit (index @p index): sets the
 /// variables, builds the model, computes the quantities, checks the constraints.
 /// Never throws for a bad design: the failure is recorded in the result. When @p stop
 /// is set during the evaluation, the result is marked interrupted.
-Evaluation evaluate_design(const StudySpec& study, Index index, std::span<const Real> unit,
-                           const StopToken& stop = {});
+Evaluation evaluate_design(const StudySpec& study, Index index, std::span<const Real> unit, const StopToken& stop = {});
 
 /// The designs the study's exploration visits, in index order.
 std::vector<UnitPoint> exploration_points(const StudySpec& study);
@@ -118,7 +117,7 @@ class BatchEvaluator {
 /// Evaluates a batch on @p n_threads threads (0: all cores), one design per thread.
 class ThreadEvaluator : public BatchEvaluator {
  public:
-  explicit ThreadEvaluator(int n_threads = 0, StopToken stop = {}) : n_threads_(n_threads), stop_(std::move(stop)) {}
+  explicit ThreadEvaluator(int n_threads = 0, StopToken stop = {}) : n_threads_(n_threads), stop_(stop) {}
   std::vector<Evaluation> evaluate(const StudySpec& study,
                                    const std::vector<std::pair<Index, UnitPoint>>& batch) override;
 

@@ -21,9 +21,7 @@ constexpr Real rpm_per_rad_s = 30.0 / pi;
 // The mode's lateral amplitude at each node, signed against its largest: the
 // projection of the node's (V, W) on the largest node's.
 std::vector<Real> signed_amplitudes(const Model& model, const ComplexVector& shape) {
-  const auto vw = [&](Index n) {
-    return std::pair{shape(global_dof(n, Dof::v)), shape(global_dof(n, Dof::w))};
-  };
+  const auto vw = [&](Index n) { return std::pair{shape(global_dof(n, Dof::v)), shape(global_dof(n, Dof::w))}; };
   Index ref = -1;
   Real largest = 0;
   for (Index n = 0; n < model.n_nodes(); ++n) {
@@ -158,15 +156,17 @@ std::vector<PlacedUnbalance> api684_placement(const Model& model, const ComplexV
 OperatingStability operating_stability(const Model& model, Real low, Real high, int points) {
   OperatingStability out;
   const int n = low == high ? 1 : std::max(points, 2);
-  for (int i = 0; i < n; ++i) out.points.push_back(stability_at(model, n == 1 ? low : low + (high - low) * i / (n - 1)));
+  for (int i = 0; i < n; ++i)
+    out.points.push_back(stability_at(model, n == 1 ? low : low + (high - low) * i / (n - 1)));
   const auto rpm = [](Real speed) { return fmt::format("{:.0f} rpm", speed * rpm_per_rad_s); };
   for (const StabilityPoint& p : out.points) {
     if (p.unstable) {
       out.passes = false;
       out.reason = p.divergence
-                       ? fmt::format("unstable at {}: divergence (a real eigenvalue {:.4g} 1/s: a negative stiffness "
-                                     "or a load beyond buckling)",
-                                     rpm(p.speed), p.growth_rate)
+                       ? fmt::format(
+                             "unstable at {}: divergence (a real eigenvalue {:.4g} 1/s: a negative stiffness "
+                             "or a load beyond buckling)",
+                             rpm(p.speed), p.growth_rate)
                        : fmt::format("unstable at {}: a mode at {:.4g} Hz grows at {:.4g} 1/s (log. decrement {:.3g})",
                                      rpm(p.speed), p.frequency_hz, p.growth_rate,
                                      -2 * pi * p.growth_rate / (2 * pi * p.frequency_hz));
@@ -196,8 +196,9 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
   const Model lin = linearised(model);
   result.bearings = options.bearings.empty() ? bearing_elements(lin) : options.bearings;
   if (result.bearings.empty())
-    throw Error("the model has no bearings: no spring–damper, journal or rolling bearing holds a rotating node to "
-                "the ground or to a non-rotating node");
+    throw Error(
+        "the model has no bearings: no spring–damper, journal or rolling bearing holds a rotating node to "
+        "the ground or to a non-rotating node");
   std::vector<Index> bearing_nodes;
   for (const Index e : result.bearings) bearing_nodes.push_back(journal_node(lin, e));
   // An oil film carries nothing at rest: the undamped critical speeds start from the
@@ -208,9 +209,9 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
   if (speeds.size() < 3) throw Error("the unbalance responses need at least 3 speeds above 0");
 
   result.stability_verdict = operating_stability(model, options.low, options.high);
-  result.undamped = undamped_critical_speeds(with_direct_bearing_stiffness(lin, result.bearings),
-                                             std::max(options.modes, 4), true, &result.info,
-                                             running ? options.high : 0.0);
+  result.undamped =
+      undamped_critical_speeds(with_direct_bearing_stiffness(lin, result.bearings), std::max(options.modes, 4), true,
+                               &result.info, running ? options.high : 0.0);
 
   // The unbalance cases.
   Model base = model;
@@ -279,9 +280,8 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
   // Stopped on request where no sweep was running to say so (before the first
   // unbalance case, between cases): the result is incomplete all the same.
   if (options.stop.requested() && result.info.status != SolverStatus::interrupted)
-    result.info.fail(SolverStatus::interrupted,
-                     fmt::format("stopped on request after {} unbalance case{}", result.cases.size(),
-                                 result.cases.size() == 1 ? "" : "s"));
+    result.info.fail(SolverStatus::interrupted, fmt::format("stopped on request after {} unbalance case{}",
+                                                            result.cases.size(), result.cases.size() == 1 ? "" : "s"));
   return result;
 }
 

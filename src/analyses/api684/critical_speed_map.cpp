@@ -46,13 +46,16 @@ Matrix lateral_block(const SparseMatrix& A, const std::vector<Index>& dofs, cons
       const Index pi = position[static_cast<std::size_t>(it.row())];
       const Index pj = position[static_cast<std::size_t>(it.col())];
       largest = std::max(largest, std::abs(it.value()));
-      if (pi >= 0 && pj >= 0) out(pi, pj) = it.value();
-      else if ((pi >= 0) != (pj >= 0)) coupling = std::max(coupling, std::abs(it.value()));
+      if (pi >= 0 && pj >= 0)
+        out(pi, pj) = it.value();
+      else if ((pi >= 0) != (pj >= 0))
+        coupling = std::max(coupling, std::abs(it.value()));
     }
   if (coupling > 1e-9 * largest)
-    throw Error(fmt::format("the {} matrix couples the lateral motion with axial or torsional motion; undamped "
-                            "critical speeds are defined for lateral motion alone",
-                            what));
+    throw Error(
+        fmt::format("the {} matrix couples the lateral motion with axial or torsional motion; undamped "
+                    "critical speeds are defined for lateral motion alone",
+                    what));
   return out;
 }
 
@@ -60,8 +63,8 @@ Matrix lateral_block(const SparseMatrix& A, const std::vector<Index>& dofs, cons
 // definite: with K = L·Lᴴ, μ = 1/Ω² are the eigenvalues of L⁻¹(M − iG)L⁻ᴴ; a μ ≤ 0
 // has no synchronous whirl (a disk whose polar inertia exceeds its diametral one).
 struct Synchronous {
-  std::vector<Real> speeds;     // increasing
-  std::vector<ComplexVector> x; // reduced lateral shapes
+  std::vector<Real> speeds;      // increasing
+  std::vector<ComplexVector> x;  // reduced lateral shapes
 };
 
 Synchronous synchronous_whirl(const Matrix& M, const Matrix& G, const Matrix& K) {
@@ -107,8 +110,8 @@ struct LateralSystem {
     G = lateral_block(c.G, dofs, position, "gyroscopic");
   }
   Matrix stiffness(Real speed) const {
-    return lateral_block(assembler.speed_dependent() ? assembler.at(speed).K : assembler.constant().K, dofs,
-                         position, "stiffness");
+    return lateral_block(assembler.speed_dependent() ? assembler.at(speed).K : assembler.constant().K, dofs, position,
+                         "stiffness");
   }
   // The forward solutions at stiffness K, the lowest first.
   std::vector<UndampedCritical> forward(const Matrix& K, bool gyroscopic) const {
@@ -192,7 +195,8 @@ std::vector<Real> criticals_of(const LateralSystem& system, int n, bool gyroscop
                                Real start = 0.0) {
   std::vector<UndampedCritical> at_rest = system.forward(system.stiffness(start), gyroscopic);
   std::vector<Real> out(static_cast<std::size_t>(n), nan);
-  for (int i = 0; i < n && i < static_cast<int>(at_rest.size()); ++i) out[static_cast<std::size_t>(i)] = at_rest[static_cast<std::size_t>(i)].speed;
+  for (int i = 0; i < n && i < static_cast<int>(at_rest.size()); ++i)
+    out[static_cast<std::size_t>(i)] = at_rest[static_cast<std::size_t>(i)].speed;
   if (!system.assembler.speed_dependent()) return out;
   for (int i = 0; i < n; ++i) {
     Real& speed = out[static_cast<std::size_t>(i)];
@@ -336,15 +340,17 @@ std::vector<UndampedCritical> undamped_critical_speeds(const Model& model, int n
 
 CriticalSpeedMapResult run_critical_speed_map(const Model& model, const CriticalSpeedMapOptions& options) {
   if (!(options.k_low > 0) || !(options.k_high > options.k_low))
-    throw Error(fmt::format("the stiffness range must have 0 < low < high, got {} to {} N/m", options.k_low,
-                            options.k_high));
+    throw Error(
+        fmt::format("the stiffness range must have 0 < low < high, got {} to {} N/m", options.k_low, options.k_high));
   if (options.points < 2) throw Error(fmt::format("the map needs at least 2 stiffness values, got {}", options.points));
-  if (options.criticals < 1) throw Error(fmt::format("the map needs at least 1 critical speed, got {}", options.criticals));
+  if (options.criticals < 1)
+    throw Error(fmt::format("the map needs at least 1 critical speed, got {}", options.criticals));
   CriticalSpeedMapResult result;
   result.springs = options.springs.empty() ? bearing_elements(model) : options.springs;
   if (result.springs.empty())
-    throw Error("the model has no bearings to vary: no spring–damper or bearing holds a rotating node to the ground "
-                "or to a non-rotating node");
+    throw Error(
+        "the model has no bearings to vary: no spring–damper or bearing holds a rotating node to the ground "
+        "or to a non-rotating node");
   for (const Index e : result.springs) bearing_at(model, e);
 
   const std::size_t np = static_cast<std::size_t>(options.points);
@@ -410,8 +416,8 @@ CriticalSpeedMapResult run_critical_speed_map(const Model& model, const Critical
         const Real fa = grid[j - 1][i] - a, fb = grid[j][i] - b;
         if (!(std::isfinite(fa) && std::isfinite(fb) && fa * fb <= 0 && fa != 0)) continue;
         const RootResult r = brent_root(h, a, b, fa, fb, 1e-9 * b);
-        result.intersections.push_back({curve.element, curve.direction, n, r.x,
-                                        direct_stiffness(model, curve.element, d, r.x)});
+        result.intersections.push_back(
+            {curve.element, curve.direction, n, r.x, direct_stiffness(model, curve.element, d, r.x)});
         break;
       }
     }

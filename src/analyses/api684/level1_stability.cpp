@@ -54,16 +54,17 @@ Index largest_forward_motion_node(const Model& model, Real speed) {
     }
     if (best >= 0) return best;
   }
-  throw Error("the rotor has no forward lateral mode at the maximum continuous speed to place the cross-coupling "
-              "at; give the node");
+  throw Error(
+      "the rotor has no forward lateral mode at the maximum continuous speed to place the cross-coupling "
+      "at; give the node");
 }
 
 StabilitySweepResult run_stability_sweep(const Model& model, const StabilitySweepOptions& options) {
   if (options.node < 0 || options.node >= model.n_nodes())
     throw Error(fmt::format("no node {} in the model", options.node));
   if (!model.nodes[static_cast<std::size_t>(options.node)].rotating)
-    throw Error(fmt::format("the cross-coupling acts on the rotor: node {} does not rotate",
-                            model.node_label(options.node)));
+    throw Error(
+        fmt::format("the cross-coupling acts on the rotor: node {} does not rotate", model.node_label(options.node)));
   if (!(options.speed > 0)) throw Error(fmt::format("the speed must be positive, got {} rad/s", options.speed));
   if (options.points < 2) throw Error(fmt::format("the sweep needs at least 2 points, got {}", options.points));
   if (options.anticipated && !(*options.anticipated > 0))
@@ -73,7 +74,9 @@ StabilitySweepResult run_stability_sweep(const Model& model, const StabilitySwee
   result.node = options.node;
   result.speed = options.speed;
   result.anticipated = options.anticipated;
-  const auto delta = [&](Real q) { return first_forward_log_decrement(with_cross_coupling(model, options.node, q), options.speed).first; };
+  const auto delta = [&](Real q) {
+    return first_forward_log_decrement(with_cross_coupling(model, options.node, q), options.speed).first;
+  };
 
   // Q₀: bracket by doubling from a Q small against any bearing, then Brent's method.
   const Real d0 = delta(0.0);

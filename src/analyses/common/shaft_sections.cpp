@@ -46,8 +46,8 @@ SectionStress section_stress(const CircularSection& section, const SectionForces
   s.bending = orbit(f.My, f.Mz).major * ro / I;
   s.torsion = std::abs(f.T) * ro / J;
   s.shear = k_shear * orbit(f.Vy, f.Vz).major / A;
-  s.von_mises = std::sqrt((s.axial + s.bending) * (s.axial + s.bending) +
-                          3.0 * (s.torsion + s.shear) * (s.torsion + s.shear));
+  s.von_mises =
+      std::sqrt((s.axial + s.bending) * (s.axial + s.bending) + 3.0 * (s.torsion + s.shear) * (s.torsion + s.shear));
   return s;
 }
 

@@ -64,8 +64,8 @@ std::vector<ResponsePeak> response_peaks(std::span<const Real> speeds, std::span
         break;
       }
     }
-    p.amplification_factor = p.resolved() ? p.speed / (*p.upper_half_power - *p.lower_half_power)
-                                          : std::numeric_limits<Real>::quiet_NaN();
+    p.amplification_factor =
+        p.resolved() ? p.speed / (*p.upper_half_power - *p.lower_half_power) : std::numeric_limits<Real>::quiet_NaN();
     peaks.push_back(p);
   }
   return peaks;

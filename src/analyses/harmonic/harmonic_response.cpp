@@ -129,9 +129,9 @@ class DynamicStiffness {
   // Coefficients of M, C, K, G, C_i, K_i, K_h in the dynamic stiffness.
   static void add(const SystemMatrices& s, const std::array<std::vector<Index>, 7>& pos, Real speed, Real omega,
                   Real eta, ComplexSparse& A) {
-    const std::array<Complex, 7> coef{Complex(-omega * omega, 0.0), Complex(0.0, omega),      Complex(1.0, eta),
-                                      Complex(0.0, omega * speed),  Complex(0.0, omega),      Complex(speed, 0.0),
-                                      Complex(0.0, 1.0)};
+    const std::array<Complex, 7> coef{
+        Complex(-omega * omega, 0.0), Complex(0.0, omega), Complex(1.0, eta), Complex(0.0, omega * speed),
+        Complex(0.0, omega),          Complex(speed, 0.0), Complex(0.0, 1.0)};
     Complex* values = A.valuePtr();
     const auto mats = parts(s);
     for (std::size_t m = 0; m < mats.size(); ++m) {
@@ -152,7 +152,7 @@ struct PointResult {
   bool skipped = false;  // not started: a stop was asked for
   bool finite = true;    // false: the solve gave non-finite amplitudes
   std::vector<NodeAmplitudes> probes, springs, supports, reactions;
-  std::vector<Real> support_orbits;  // per support: the journal's orbit relative to its housing [m]
+  std::vector<Real> support_orbits;   // per support: the journal's orbit relative to its housing [m]
   std::vector<SectionForces> forces;  // every station (StationOutput::all)
   std::vector<SectionStress> stress;
   StationPeaks peaks;
@@ -222,7 +222,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       result.reactions.push_back({f.node, {}, {}, {}});
       it = result.reactions.end() - 1;
     }
-    for (int d = 0; d < dofs_per_node; ++d) it->fixed[static_cast<std::size_t>(d)] |= f.dofs[static_cast<std::size_t>(d)];
+    for (int d = 0; d < dofs_per_node; ++d)
+      it->fixed[static_cast<std::size_t>(d)] |= f.dofs[static_cast<std::size_t>(d)];
   }
 
   for (Index node : options.probes) result.probes.push_back({node, {}, {}});
@@ -311,8 +312,7 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       }
     }
     out.solved = true;
-    if (options.stability)
-      out.stability = fixed_speed_stability ? *fixed_speed_stability : scan->at(speed);
+    if (options.stability) out.stability = fixed_speed_stability ? *fixed_speed_stability : scan->at(speed);
     if (!q_full.allFinite()) {
       out.finite = false;
       return;
@@ -335,7 +335,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       const Eigen::Map<const Eigen::Matrix<Complex, dofs_per_node, 1>> delta(dq.data());
       const Eigen::Matrix<Complex, dofs_per_node, 1> force =
           (Complex(1.0, link.loss_factor + options.loss_factor) * link.K.cast<Complex>() +
-           I * omega * link.C.cast<Complex>()) * delta;
+           I * omega * link.C.cast<Complex>()) *
+          delta;
       NodeAmplitudes f;
       for (int d = 0; d < dofs_per_node; ++d) f[static_cast<std::size_t>(d)] = force(d);
       return f;
@@ -345,7 +346,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       const Element& element = linear.elements[static_cast<std::size_t>(e)];
       out.supports.push_back(transmitted(element));
       const NodeAmplitudes dq = relative(*element.transmission(speed, omega));
-      out.support_orbits.push_back(orbit(dq[static_cast<std::size_t>(Dof::v)], dq[static_cast<std::size_t>(Dof::w)]).major);
+      out.support_orbits.push_back(
+          orbit(dq[static_cast<std::size_t>(Dof::v)], dq[static_cast<std::size_t>(Dof::w)]).major);
     }
     if (!result.reactions.empty()) {
       // The force the structure puts on its supports at the fixed DOFs: the applied
@@ -393,7 +395,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
   parallel_for(static_cast<Index>(n_points), options.n_threads, [&](Index k, int worker) {
     solve_point(static_cast<std::size_t>(k), workspaces[static_cast<std::size_t>(worker)]);
   });
-  if (n_points > 0 && std::none_of(workspaces.begin(), workspaces.end(), [](const Workspace& w) { return w.used_sparse; }) &&
+  if (n_points > 0 &&
+      std::none_of(workspaces.begin(), workspaces.end(), [](const Workspace& w) { return w.used_sparse; }) &&
       std::any_of(workspaces.begin(), workspaces.end(), [](const Workspace& w) { return w.banded; }))
     result.info.method = SolverMethod::banded_lu;
 
@@ -403,9 +406,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
     const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
     if (pt.skipped) {
-      result.info.fail(SolverStatus::interrupted,
-                       fmt::format("stopped on request before {:.6g} Hz",
-                                   rad_to_hz(result.frequency_sweep ? omega : speed)));
+      result.info.fail(SolverStatus::interrupted, fmt::format("stopped on request before {:.6g} Hz",
+                                                              rad_to_hz(result.frequency_sweep ? omega : speed)));
       break;
     }
     if (!pt.solved) {
@@ -430,7 +432,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     for (std::size_t p = 0; p < result.probes.size(); ++p) {
       ProbeResponse& pr = result.probes[p];
       pr.q.push_back(pt.probes[p]);
-      pr.orbit.push_back(orbit(pt.probes[p][static_cast<std::size_t>(Dof::v)], pt.probes[p][static_cast<std::size_t>(Dof::w)]));
+      pr.orbit.push_back(
+          orbit(pt.probes[p][static_cast<std::size_t>(Dof::v)], pt.probes[p][static_cast<std::size_t>(Dof::w)]));
     }
     for (std::size_t s = 0; s < result.springs.size(); ++s) {
       result.springs[s].force.push_back(pt.springs[s]);
@@ -463,7 +466,8 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
     for (std::size_t k = 0; k < result.speeds.size(); ++k) {
       if (k > 0 && result.speeds[k] == result.speeds[k - 1])
         for (OperatingSeries& s : result.operating) s.values.push_back(s.values.back());
-      else append_at_equilibrium(result.operating, linear, result.speeds[k]);
+      else
+        append_at_equilibrium(result.operating, linear, result.speeds[k]);
     }
   }
   return result;
@@ -509,9 +513,12 @@ ResponseSummary summarize(const HarmonicResult& r) {
 
 const char* to_string(StationOutput output) {
   switch (output) {
-    case StationOutput::all: return "all";
-    case StationOutput::summary: return "summary";
-    case StationOutput::none: return "none";
+    case StationOutput::all:
+      return "all";
+    case StationOutput::summary:
+      return "summary";
+    case StationOutput::none:
+      return "none";
   }
   return "?";
 }
@@ -528,11 +535,11 @@ std::vector<std::string> clearance_warnings(const HarmonicResult& result, const 
     const Real x = result.frequency_sweep ? result.frequencies[at] : result.speeds[at];
     const std::string where = result.frequency_sweep ? fmt::format("{:.6g} Hz excitation", x / (2 * pi))
                                                      : fmt::format("{:.6g} rpm", x * 30 / pi);
-    out.push_back(fmt::format("the journal orbit in {} reaches {:.3g} × its clearance at {}: the linearised "
-                              "response is no motion the bearing allows there (the excitation is too large for a "
-                              "linear analysis; a run-up shows the real motion)",
-                              force.label().empty() ? std::string(force.kind()) : "'" + force.label() + "'", largest,
-                              where));
+    out.push_back(
+        fmt::format("the journal orbit in {} reaches {:.3g} × its clearance at {}: the linearised "
+                    "response is no motion the bearing allows there (the excitation is too large for a "
+                    "linear analysis; a run-up shows the real motion)",
+                    force.label().empty() ? std::string(force.kind()) : "'" + force.label() + "'", largest, where));
   }
   return out;
 }

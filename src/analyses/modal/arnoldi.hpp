@@ -260,8 +260,7 @@ template <class S>
 bool set_shift_or_fail(StateShiftInvert<S>& op, Real sigma, SolverInfo& info) {
   op.set_shift(sigma);
   if (op.ok()) return true;
-  info.fail(SolverStatus::numerical_failure,
-            fmt::format("K + σD + σ²M is singular at the shift σ = {} rad/s", sigma));
+  info.fail(SolverStatus::numerical_failure, fmt::format("K + σD + σ²M is singular at the shift σ = {} rad/s", sigma));
   return false;
 }
 

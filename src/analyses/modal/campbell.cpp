@@ -26,14 +26,13 @@ std::vector<Mode> oscillatory_modes(ModalResult&& r, std::size_t count) {
   std::vector<Mode> out;
   for (Mode& m : r.modes)
     if (m.oscillatory) out.push_back(std::move(m));
-  std::stable_sort(out.begin(), out.end(), [](const Mode& a, const Mode& b) {
-    return abs2(a.eigenvalue) < abs2(b.eigenvalue);
-  });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Mode& a, const Mode& b) { return abs2(a.eigenvalue) < abs2(b.eigenvalue); });
   if (out.size() > count) {
     // Keep a repeated pair whole (isotropic rotors at rest).
     std::size_t n = count;
-    while (n < out.size() &&
-           magnitude(out[n].eigenvalue - out[n - 1].eigenvalue) <= tolerance::repeated_eigenvalue * magnitude(out[n].eigenvalue))
+    while (n < out.size() && magnitude(out[n].eigenvalue - out[n - 1].eigenvalue) <=
+                                 tolerance::repeated_eigenvalue * magnitude(out[n].eigenvalue))
       ++n;
     out.resize(n);
   }
@@ -302,9 +301,9 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
   std::sort(result.critical_speeds.begin(), result.critical_speeds.end(),
             [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
   if (!thresholds.empty())
-    result.stability_threshold = *std::min_element(
-        thresholds.begin(), thresholds.end(),
-        [](const StabilityThreshold& a, const StabilityThreshold& b) { return a.speed < b.speed; });
+    result.stability_threshold =
+        *std::min_element(thresholds.begin(), thresholds.end(),
+                          [](const StabilityThreshold& a, const StabilityThreshold& b) { return a.speed < b.speed; });
 
   // Labels: the sense in which a mode whirls at most speeds of the sweep (a nearly
   // straight-line orbit counts by the sign of its directivity) and the shape it has at
@@ -334,8 +333,16 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
       }
     std::string family;
     switch (tm.type) {
-      case ModeType::axial: family = "axial"; tm.whirl = Whirl::none; tm.shape_kind = ModeShape::none; break;
-      case ModeType::torsional: family = "torsional"; tm.whirl = Whirl::none; tm.shape_kind = ModeShape::none; break;
+      case ModeType::axial:
+        family = "axial";
+        tm.whirl = Whirl::none;
+        tm.shape_kind = ModeShape::none;
+        break;
+      case ModeType::torsional:
+        family = "torsional";
+        tm.whirl = Whirl::none;
+        tm.shape_kind = ModeShape::none;
+        break;
       default:
         family = to_string(tm.whirl);
         if (tm.shape_kind != ModeShape::none) family += std::string(" ") + to_string(tm.shape_kind);

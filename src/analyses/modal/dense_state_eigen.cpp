@@ -8,46 +8,43 @@
 
 extern "C" {
 // LAPACK: eigenvalues and right eigenvectors of a real general matrix.
-void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda,
-            double* wr, double* wi, double* vl, const int* ldvl, double* vr, const int* ldvr,
-            double* work, const int* lwork, int* info);
+void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda, double* wr, double* wi,
+            double* vl, const int* ldvl, double* vr, const int* ldvr, double* work, const int* lwork, int* info);
 // LAPACK: the steps of dgeev, for eigenvalues first and selected vectors after.
-void dgebal_(const char* job, const int* n, double* a, const int* lda, int* ilo, int* ihi,
-             double* scale, int* info);
-void dgehrd_(const int* n, const int* ilo, const int* ihi, double* a, const int* lda, double* tau,
-             double* work, const int* lwork, int* info);
-void dhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi,
-             double* h, const int* ldh, double* wr, double* wi, double* z, const int* ldz,
-             double* work, const int* lwork, int* info);
-void dhsein_(const char* side, const char* eigsrc, const char* initv, int* select, const int* n,
-             const double* h, const int* ldh, double* wr, const double* wi, double* vl,
-             const int* ldvl, double* vr, const int* ldvr, const int* mm, int* m, double* work,
-             int* ifaill, int* ifailr, int* info);
-void dormhr_(const char* side, const char* trans, const int* m, const int* n, const int* ilo,
-             const int* ihi, const double* a, const int* lda, const double* tau, double* c,
-             const int* ldc, double* work, const int* lwork, int* info);
-void dgebak_(const char* job, const char* side, const int* n, const int* ilo, const int* ihi,
-             const double* scale, const int* m, double* v, const int* ldv, int* info);
+void dgebal_(const char* job, const int* n, double* a, const int* lda, int* ilo, int* ihi, double* scale, int* info);
+void dgehrd_(const int* n, const int* ilo, const int* ihi, double* a, const int* lda, double* tau, double* work,
+             const int* lwork, int* info);
+void dhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi, double* h,
+             const int* ldh, double* wr, double* wi, double* z, const int* ldz, double* work, const int* lwork,
+             int* info);
+void dhsein_(const char* side, const char* eigsrc, const char* initv, int* select, const int* n, const double* h,
+             const int* ldh, double* wr, const double* wi, double* vl, const int* ldvl, double* vr, const int* ldvr,
+             const int* mm, int* m, double* work, int* ifaill, int* ifailr, int* info);
+void dormhr_(const char* side, const char* trans, const int* m, const int* n, const int* ilo, const int* ihi,
+             const double* a, const int* lda, const double* tau, double* c, const int* ldc, double* work,
+             const int* lwork, int* info);
+void dgebak_(const char* job, const char* side, const int* n, const int* ilo, const int* ihi, const double* scale,
+             const int* m, double* v, const int* ldv, int* info);
 // The same steps for a complex general matrix.
 void zgeev_(const char* jobvl, const char* jobvr, const int* n, std::complex<double>* a, const int* lda,
             std::complex<double>* w, std::complex<double>* vl, const int* ldvl, std::complex<double>* vr,
             const int* ldvr, std::complex<double>* work, const int* lwork, double* rwork, int* info);
-void zgebal_(const char* job, const int* n, std::complex<double>* a, const int* lda, int* ilo, int* ihi,
-             double* scale, int* info);
+void zgebal_(const char* job, const int* n, std::complex<double>* a, const int* lda, int* ilo, int* ihi, double* scale,
+             int* info);
 void zgehrd_(const int* n, const int* ilo, const int* ihi, std::complex<double>* a, const int* lda,
              std::complex<double>* tau, std::complex<double>* work, const int* lwork, int* info);
-void zhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi,
-             std::complex<double>* h, const int* ldh, std::complex<double>* w, std::complex<double>* z,
-             const int* ldz, std::complex<double>* work, const int* lwork, int* info);
+void zhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi, std::complex<double>* h,
+             const int* ldh, std::complex<double>* w, std::complex<double>* z, const int* ldz,
+             std::complex<double>* work, const int* lwork, int* info);
 void zhsein_(const char* side, const char* eigsrc, const char* initv, const int* select, const int* n,
              const std::complex<double>* h, const int* ldh, std::complex<double>* w, std::complex<double>* vl,
              const int* ldvl, std::complex<double>* vr, const int* ldvr, const int* mm, int* m,
              std::complex<double>* work, double* rwork, int* ifaill, int* ifailr, int* info);
 void zunmhr_(const char* side, const char* trans, const int* m, const int* n, const int* ilo, const int* ihi,
-             const std::complex<double>* a, const int* lda, const std::complex<double>* tau,
-             std::complex<double>* c, const int* ldc, std::complex<double>* work, const int* lwork, int* info);
-void zgebak_(const char* job, const char* side, const int* n, const int* ilo, const int* ihi,
-             const double* scale, const int* m, std::complex<double>* v, const int* ldv, int* info);
+             const std::complex<double>* a, const int* lda, const std::complex<double>* tau, std::complex<double>* c,
+             const int* ldc, std::complex<double>* work, const int* lwork, int* info);
+void zgebak_(const char* job, const char* side, const int* n, const int* ilo, const int* ihi, const double* scale,
+             const int* m, std::complex<double>* v, const int* ldv, int* info);
 
 // LAPACK's error handler, called with the routine's name and the position of an
 // illegal argument before the routine returns info < 0. OpenBLAS's (a weak symbol,
@@ -109,12 +106,10 @@ StateEigenpairs all_pairs(Matrix A, Index n) {
   const int one = 1;
   int info = 0, lwork = -1;
   double work_query = 0.0;
-  dgeev_("N", "V", &N, A.data(), &N, wr.data(), wi.data(), &vl_dummy, &one, vr.data(), &N,
-         &work_query, &lwork, &info);
+  dgeev_("N", "V", &N, A.data(), &N, wr.data(), wi.data(), &vl_dummy, &one, vr.data(), &N, &work_query, &lwork, &info);
   lwork = static_cast<int>(work_query);
   Vector work(lwork);
-  dgeev_("N", "V", &N, A.data(), &N, wr.data(), wi.data(), &vl_dummy, &one, vr.data(), &N,
-         work.data(), &lwork, &info);
+  dgeev_("N", "V", &N, A.data(), &N, wr.data(), wi.data(), &vl_dummy, &one, vr.data(), &N, work.data(), &lwork, &info);
   if (info != 0) {
     fail(out, "dgeev", info);
     return out;
@@ -155,8 +150,7 @@ std::vector<Index> select_pairs(const Vector& wr, const Vector& wi, const DenseS
     // stability of a sweep of oscillatory modes still sees it.
     const bool divergent = s.oscillatory_only && wi(j) == 0.0 && wr(j) > 0.0;
     if (counted >= s.count) {
-      if (counts && repeated(pj, last)) chosen.push_back(j);
-      else if (divergent) chosen.push_back(j);
+      if ((counts && repeated(pj, last)) || divergent) chosen.push_back(j);
       continue;
     }
     if (!counts) {
@@ -233,8 +227,7 @@ std::vector<Index> select_complex(const ComplexVector& w, const DenseSelection& 
     const bool counts = !s.oscillatory_only || q.imag() > 0.0;
     const bool divergent = s.oscillatory_only && q.imag() == 0.0 && q.real() > 0.0;
     if (counted >= s.count) {
-      if (counts && repeated(q, last)) chosen.push_back(j);
-      else if (divergent) chosen.push_back(j);
+      if ((counts && repeated(q, last)) || divergent) chosen.push_back(j);
       continue;
     }
     if (!counts) {
@@ -322,8 +315,7 @@ StateEigenpairs dense_complex_eigen(const ComplexMatrix& M, const ComplexMatrix&
   return out;
 }
 
-StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix& K,
-                                  const DenseSelection& selection) {
+StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix& K, const DenseSelection& selection) {
   const Index n = M.rows();
   StateEigenpairs out;
   out.info.method = SolverMethod::dense_qr;
@@ -355,8 +347,7 @@ StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix
   double z_dummy = 0.0;
   const int one = 1;
   lwork = static_cast<int>(work.size());
-  dhseqr_("E", "N", &N, &ilo, &ihi, T.data(), &N, wr.data(), wi.data(), &z_dummy, &one, work.data(), &lwork,
-          &info);
+  dhseqr_("E", "N", &N, &ilo, &ihi, T.data(), &N, wr.data(), wi.data(), &z_dummy, &one, work.data(), &lwork, &info);
   if (info != 0) return all_pairs(A0, n);
 
   bool has_repeated = false;
@@ -375,8 +366,8 @@ StateEigenpairs dense_state_eigen(const Matrix& M, const Matrix& D, const Matrix
   std::vector<int> ifaill(static_cast<std::size_t>(std::max(mm, 1))), ifailr(ifaill.size());
   double vl_dummy = 0.0;
   int m = 0;
-  dhsein_("R", "Q", "N", select.data(), &N, H.data(), &N, wr_work.data(), wi.data(), &vl_dummy, &one, V.data(),
-          &N, &mm, &m, work.data(), ifaill.data(), ifailr.data(), &info);
+  dhsein_("R", "Q", "N", select.data(), &N, H.data(), &N, wr_work.data(), wi.data(), &vl_dummy, &one, V.data(), &N, &mm,
+          &m, work.data(), ifaill.data(), ifailr.data(), &info);
   if (info != 0) return all_pairs(A0, n);
   lwork = -1;
   dormhr_("L", "N", &N, &m, &ilo, &ihi, A.data(), &N, tau.data(), V.data(), &N, &query, &lwork, &info);

@@ -58,8 +58,8 @@ std::optional<StateEigenpairs> dense_gyroscopic_eigen(const ComplexMatrix& M, co
   std::vector<int> iwork(static_cast<std::size_t>(liwork));
   Vector mu(N);
   int info = 0;
-  zheevd_("V", "L", &Ni, C.data(), &Ni, mu.data(), work.data(), &lwork, rwork.data(), &lrwork, iwork.data(),
-          &liwork, &info);
+  zheevd_("V", "L", &Ni, C.data(), &Ni, mu.data(), work.data(), &lwork, rwork.data(), &lrwork, iwork.data(), &liwork,
+          &info);
   if (info != 0) return std::nullopt;
 
   // μ = 1/ω; the lowest |ω| are the largest |μ| at both ends of the spectrum.
@@ -73,8 +73,8 @@ std::optional<StateEigenpairs> dense_gyroscopic_eigen(const ComplexMatrix& M, co
   if (selection.count > 0 && static_cast<std::size_t>(selection.count) < order.size()) {
     // The partners of a repeated |ω| at the cut stay (1e-7 relative, as ModalSolver).
     keep = static_cast<std::size_t>(selection.count);
-    while (keep < order.size() &&
-           std::abs(std::abs(mu(order[keep])) - std::abs(mu(order[keep - 1]))) <= tolerance::repeated_eigenvalue * std::abs(mu(order[keep])))
+    while (keep < order.size() && std::abs(std::abs(mu(order[keep])) - std::abs(mu(order[keep - 1]))) <=
+                                      tolerance::repeated_eigenvalue * std::abs(mu(order[keep])))
       ++keep;
   }
 

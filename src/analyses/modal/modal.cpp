@@ -22,31 +22,44 @@ namespace feran {
 
 const char* to_string(Whirl w) {
   switch (w) {
-    case Whirl::forward: return "forward";
-    case Whirl::backward: return "backward";
-    case Whirl::mixed: return "mixed";
-    case Whirl::planar: return "planar";
-    case Whirl::none: return "none";
+    case Whirl::forward:
+      return "forward";
+    case Whirl::backward:
+      return "backward";
+    case Whirl::mixed:
+      return "mixed";
+    case Whirl::planar:
+      return "planar";
+    case Whirl::none:
+      return "none";
   }
   return "?";
 }
 
 const char* to_string(ModeType t) {
   switch (t) {
-    case ModeType::lateral: return "lateral";
-    case ModeType::axial: return "axial";
-    case ModeType::torsional: return "torsional";
-    case ModeType::coupled: return "coupled";
+    case ModeType::lateral:
+      return "lateral";
+    case ModeType::axial:
+      return "axial";
+    case ModeType::torsional:
+      return "torsional";
+    case ModeType::coupled:
+      return "coupled";
   }
   return "?";
 }
 
 const char* to_string(ModeShape s) {
   switch (s) {
-    case ModeShape::none: return "none";
-    case ModeShape::cylindrical: return "cylindrical";
-    case ModeShape::conical: return "conical";
-    case ModeShape::bending: return "bending";
+    case ModeShape::none:
+      return "none";
+    case ModeShape::cylindrical:
+      return "cylindrical";
+    case ModeShape::conical:
+      return "conical";
+    case ModeShape::bending:
+      return "bending";
   }
   return "?";
 }
@@ -55,9 +68,12 @@ namespace {
 
 int family_of(Index full_dof) {
   switch (static_cast<Dof>(full_dof % dofs_per_node)) {
-    case Dof::u: return 1;
-    case Dof::rx: return 2;
-    default: return 0;  // lateral
+    case Dof::u:
+      return 1;
+    case Dof::rx:
+      return 2;
+    default:
+      return 0;  // lateral
   }
 }
 
@@ -68,9 +84,7 @@ void split_repeated(ComplexVector& values, ComplexMatrix& vectors, const DofMap&
   const Index m = values.size();
   std::vector<Index> order(static_cast<std::size_t>(m));
   for (Index i = 0; i < m; ++i) order[static_cast<std::size_t>(i)] = i;
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
-    return values(a).imag() < values(b).imag();
-  });
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return values(a).imag() < values(b).imag(); });
   std::size_t start = 0;
   while (start < order.size()) {
     std::size_t end = start + 1;
@@ -121,8 +135,7 @@ ComplexVector normalise(const ComplexVector& full, ModeType type) {
 
 // Groups of reduced DOFs that no nonzero entry of M, D or K couples, each in
 // increasing order, the groups ordered by their first DOF (union–find).
-std::vector<std::vector<Index>> decoupled_blocks(const SparseMatrix& M, const SparseMatrix& D,
-                                                 const SparseMatrix& K) {
+std::vector<std::vector<Index>> decoupled_blocks(const SparseMatrix& M, const SparseMatrix& D, const SparseMatrix& K) {
   const std::vector<Index> component = connected_components(M.rows(), {&M, &D, &K}, true);
   std::vector<std::vector<Index>> blocks;
   for (Index i = 0; i < M.rows(); ++i) {
@@ -204,8 +217,8 @@ std::optional<ComplexForm> complex_pairs(const std::vector<Index>& dofs, const s
 // (A(a,a') + A(b,b'))/2 − i·(A(a,b') − A(b,a'))/2, built here entry by entry from the
 // nonzeros of A.
 std::optional<ComplexForm> complex_form(const std::vector<Index>& dofs, const std::vector<Index>& local,
-                                        const std::vector<Index>& twin, const SparseMatrix& M,
-                                        const SparseMatrix& D, const SparseMatrix& K) {
+                                        const std::vector<Index>& twin, const SparseMatrix& M, const SparseMatrix& D,
+                                        const SparseMatrix& K) {
   std::optional<ComplexForm> f = complex_pairs(dofs, local, twin);
   if (!f) return std::nullopt;
   const auto nb = static_cast<Index>(dofs.size()), nc = static_cast<Index>(f->a.size());
@@ -322,10 +335,14 @@ detail::StateEigenpairs real_pairs(const detail::StateEigenpairs& c, const Compl
 // The most general method any decoupled block needed names the solve.
 int method_rank(SolverMethod method) {
   switch (method) {
-    case SolverMethod::dense_hermitian: return 0;
-    case SolverMethod::dense_qr: return 1;
-    case SolverMethod::shift_invert_lanczos: return 2;
-    default: return 3;
+    case SolverMethod::dense_hermitian:
+      return 0;
+    case SolverMethod::dense_qr:
+      return 1;
+    case SolverMethod::shift_invert_lanczos:
+      return 2;
+    default:
+      return 3;
   }
 }
 
@@ -339,15 +356,14 @@ struct ModalSolver::BlockCache {
   std::map<std::tuple<Index, Index, Index, bool>, detail::StateEigenpairs> parts;
 };
 
-ModalSolver::ModalSolver(const Model& model, ModalOptions options)
-    : ModalSolver(model, options, nullptr) {}
+ModalSolver::ModalSolver(const Model& model, ModalOptions options) : ModalSolver(model, options, nullptr) {}
 
 ModalSolver::ModalSolver(const Model& model, ModalOptions options, std::shared_ptr<const Assembler> assembled)
     : options_(options),
       // Supports (fluid-film bearings) enter as their tangent about the equilibrium at
       // each speed, which an assembly of the model itself does not hold.
       linear_(has_supports(model) ? std::make_shared<const Model>(linearised(model)) : nullptr),
-      assembler_(linear_      ? std::make_shared<const Assembler>(*linear_)
+      assembler_(linear_     ? std::make_shared<const Assembler>(*linear_)
                  : assembled ? std::move(assembled)
                              : std::make_shared<const Assembler>(model)),
       operating_(operating_series(model)),
@@ -355,7 +371,8 @@ ModalSolver::ModalSolver(const Model& model, ModalOptions options, std::shared_p
   for (const Force& f : model.forces)
     if (f.supports()) supports_.push_back(f);
   for (Index i = 0; i < model.n_nodes(); ++i)
-    if (model.nodes[static_cast<std::size_t>(i)].rotating) rotor_nodes_.emplace_back(i, model.nodes[static_cast<std::size_t>(i)].x);
+    if (model.nodes[static_cast<std::size_t>(i)].rotating)
+      rotor_nodes_.emplace_back(i, model.nodes[static_cast<std::size_t>(i)].x);
   const SystemMatrices sys = assembler_->at(0.0);
   lambda_max_ = 0.0;
   for (Index i = 0; i < sys.M.rows(); ++i)
@@ -480,8 +497,8 @@ ModalResult ModalSolver::solve_self_consistent(Real speed) const {
       }
       const std::vector<const Mode*> modes = oscillatory(r);
       if (modes.size() <= i) {
-        trouble = fmt::format("with the coefficients at {:.6g} Hz it has no oscillatory mode of its rank",
-                              rad_to_hz(w));
+        trouble =
+            fmt::format("with the coefficients at {:.6g} Hz it has no oscillatory mode of its rank", rad_to_hz(w));
         break;
       }
       mode = *modes[i];
@@ -498,12 +515,12 @@ ModalResult ModalSolver::solve_self_consistent(Real speed) const {
     }
     result.frequency_iterations = std::max(result.frequency_iterations, iterations);
     if (!converged && result.info.converged())
-      result.info.fail(SolverStatus::not_converged,
-                       fmt::format("the mode near {:.6g} Hz at {:.6g} Hz did not settle on its own frequency "
-                                   "(frequency-dependent coefficients) {}; its last iterate is kept",
-                                   start.frequency_hz, rad_to_hz(speed),
-                                   trouble.empty() ? fmt::format("in {} eigen solves", max_iterations)
-                                                   : "— " + trouble));
+      result.info.fail(
+          SolverStatus::not_converged,
+          fmt::format("the mode near {:.6g} Hz at {:.6g} Hz did not settle on its own frequency "
+                      "(frequency-dependent coefficients) {}; its last iterate is kept",
+                      start.frequency_hz, rad_to_hz(speed),
+                      trouble.empty() ? fmt::format("in {} eigen solves", max_iterations) : "— " + trouble));
     settled.push_back(std::move(mode));
   }
   result.info.iterations = 0;
@@ -765,9 +782,8 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
       ++keep;
     result.modes.resize(keep);
   }
-  std::stable_sort(result.modes.begin(), result.modes.end(), [](const Mode& a, const Mode& b) {
-    return a.frequency_hz < b.frequency_hz;
-  });
+  std::stable_sort(result.modes.begin(), result.modes.end(),
+                   [](const Mode& a, const Mode& b) { return a.frequency_hz < b.frequency_hz; });
   return result;
 }
 

@@ -25,8 +25,7 @@ StateEigenpairs sparse_complex_eigen(const ComplexSparseMatrix& M, const Complex
   out.info.iterations = 1;
   out.info.n_converged = ritz.converged ? ritz.values.size() : 0;
   if (!ritz.converged) {
-    out.info.fail(SolverStatus::not_converged,
-                  fmt::format("Arnoldi iteration did not converge {} eigenvalues", nev));
+    out.info.fail(SolverStatus::not_converged, fmt::format("Arnoldi iteration did not converge {} eigenvalues", nev));
     return out;
   }
   out.values = ritz.eigenvalues(sigma);

@@ -26,8 +26,8 @@ Index arnoldi_subspace_size(Index n, Index n_wanted) {
   return std::min<Index>(2 * n, std::max<Index>(3 * n_eigenvalues(n, n_wanted) + 1, 20));
 }
 
-StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
-                                   const SparseMatrix& K, Index n_wanted, Real sigma) {
+StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D, const SparseMatrix& K, Index n_wanted,
+                                   Real sigma) {
   const Index n = M.rows();
   StateEigenpairs out;
   out.info.method = SolverMethod::shift_invert_arnoldi;
@@ -49,8 +49,8 @@ StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
   } else {
     Spectra::GenEigsRealShiftSolver<StateShiftInvert<Real>> solver(op, nev, ncv, sigma);
     solver.init();
-    const Index n_conv = solver.compute(Spectra::SortRule::LargestMagn, 1000, arnoldi_tolerance,
-                                        Spectra::SortRule::LargestMagn);
+    const Index n_conv =
+        solver.compute(Spectra::SortRule::LargestMagn, 1000, arnoldi_tolerance, Spectra::SortRule::LargestMagn);
     out.info.iterations = solver.num_iterations();
     out.info.n_converged = n_conv;
     if (solver.info() != Spectra::CompInfo::Successful) {

@@ -44,8 +44,8 @@ class ShiftInvertLdlt {
 
 }  // namespace
 
-std::optional<StateEigenpairs> sparse_undamped_eigen(const SparseMatrix& M, const SparseMatrix& D, const SparseMatrix& K,
-                                                     Index n_wanted, Real sigma) {
+std::optional<StateEigenpairs> sparse_undamped_eigen(const SparseMatrix& M, const SparseMatrix& D,
+                                                     const SparseMatrix& K, Index n_wanted, Real sigma) {
   const Index n = M.rows();
   if (n < 3 || max_abs(D) != 0.0 || !symmetric(K) || !symmetric(M)) return std::nullopt;
   const Index nev = std::min(n_wanted, n - 2);

@@ -69,7 +69,8 @@ bool energy_stable_element(const Element& element, Real speed) {
 StabilityPoint from_modes(const ModalResult& r, Real speed) {
   StabilityPoint out;
   out.speed = speed;
-  if (!r.info.converged()) return StabilityPoint::unknown(speed, fmt::format("the modal analysis failed: {}", r.info.message));
+  if (!r.info.converged())
+    return StabilityPoint::unknown(speed, fmt::format("the modal analysis failed: {}", r.info.message));
   Real largest = 0;
   for (const Mode& m : r.modes) largest = std::max(largest, std::abs(m.eigenvalue));
   out.growth_rate = -std::numeric_limits<Real>::infinity();
@@ -133,7 +134,8 @@ bool StabilityScan::energy_stable_at(Real speed) const {
 }
 
 const ModalSolver& StabilityScan::solver() const {
-  std::call_once(solver_once_, [&] { solver_ = std::make_shared<const ModalSolver>(linear_, stability_modal_options()); });
+  std::call_once(solver_once_,
+                 [&] { solver_ = std::make_shared<const ModalSolver>(linear_, stability_modal_options()); });
   return *solver_;
 }
 
@@ -185,9 +187,10 @@ std::string stability_phrase(const StabilityPoint& point) {
     return point.by_energy ? "stable (no element feeds energy in)"
                            : fmt::format("stable (the least damped mode decays at {:.4g} 1/s)", -point.growth_rate);
   if (point.divergence)
-    return fmt::format("UNSTABLE: divergence, a real eigenvalue {:.4g} 1/s (a disturbance grows without "
-                       "oscillating)",
-                       point.growth_rate);
+    return fmt::format(
+        "UNSTABLE: divergence, a real eigenvalue {:.4g} 1/s (a disturbance grows without "
+        "oscillating)",
+        point.growth_rate);
   return fmt::format("UNSTABLE: flutter, a mode at {:.4g} Hz grows at {:.4g} 1/s", point.frequency_hz,
                      point.growth_rate);
 }

@@ -61,8 +61,8 @@ Index arnoldi_subspace_size(Index n, Index n_wanted);
 // K + σD + σ²M. An unrestarted factorisation grows until the wanted eigenvalues
 // converge (usually well below arnoldi_subspace_size); Spectra's implicitly
 // restarted solver takes over when they have not within that size.
-StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D,
-                                   const SparseMatrix& K, Index n_wanted, Real sigma);
+StateEigenpairs sparse_state_eigen(const SparseMatrix& M, const SparseMatrix& D, const SparseMatrix& K, Index n_wanted,
+                                   Real sigma);
 
 // The complex form of an axisymmetric rotor's lateral motion: with M, D, K commuting
 // with the quarter turn J about the spin axis, the real problem splits into the

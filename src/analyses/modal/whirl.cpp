@@ -102,9 +102,9 @@ ShapeResult classify_shape(const ComplexVector& shape, const std::vector<std::pa
   }
   if (!(total > 0)) return out;
   out.bending = std::clamp(residual / total, 0.0, 1.0);
-  out.kind = out.bending >= 0.1       ? ModeShape::bending
-             : translation >= tilt    ? ModeShape::cylindrical
-                                      : ModeShape::conical;
+  out.kind = out.bending >= 0.1    ? ModeShape::bending
+             : translation >= tilt ? ModeShape::cylindrical
+                                   : ModeShape::conical;
   return out;
 }
 
@@ -115,9 +115,8 @@ ComplexMatrix whirl_form(const ComplexMatrix& shapes) {
 }
 
 ComplexMatrix lateral_form(const ComplexMatrix& shapes) {
-  return node_form(shapes, [](Complex Va, Complex Wa, Complex Vb, Complex Wb) {
-    return std::conj(Va) * Vb + std::conj(Wa) * Wb;
-  });
+  return node_form(
+      shapes, [](Complex Va, Complex Wa, Complex Vb, Complex Wb) { return std::conj(Va) * Vb + std::conj(Wa) * Wb; });
 }
 
 }  // namespace feran

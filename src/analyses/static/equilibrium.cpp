@@ -43,9 +43,10 @@ void require_unloaded_free_motions(const Model& model, const Assembler& assemble
   if (work.cwiseAbs().maxCoeff() <= 1e-9 * f.norm() * std::sqrt(free.colwise().squaredNorm().maxCoeff())) return;
   std::vector<std::string> names;
   for (const FreeMotionInfo& m : find_free_motions(model, assembler)) names.push_back(m.description);
-  throw Error(fmt::format("static analysis: the load drives a free motion of the model ({}); hold it with a "
-                          "spring or a fixed DOF",
-                          fmt::join(names, "; ")));
+  throw Error(
+      fmt::format("static analysis: the load drives a free motion of the model ({}); hold it with a "
+                  "spring or a fixed DOF",
+                  fmt::join(names, "; ")));
 }
 
 bool has_supports(const Model& model) {
@@ -93,7 +94,8 @@ class Residual {
     if (free_.cols() > 0) {
       require_unloaded_free_motions(model, assembler, free_, f_);
       Real lambda_max = 0;
-      for (Index i = 0; i < M_.rows(); ++i) lambda_max = std::max(lambda_max, std::abs(K_.coeff(i, i)) / M_.coeff(i, i));
+      for (Index i = 0; i < M_.rows(); ++i)
+        lambda_max = std::max(lambda_max, std::abs(K_.coeff(i, i)) / M_.coeff(i, i));
       shift_ = 1e-8 * lambda_max;
     }
   }
@@ -130,7 +132,8 @@ class Residual {
         if (jacobian)
           for (Index b = 0; b < n; ++b)
             if (value.dfdx(a, b) != 0.0)
-              triplets.emplace_back(dofs[static_cast<std::size_t>(a)], dofs[static_cast<std::size_t>(b)], value.dfdx(a, b));
+              triplets.emplace_back(dofs[static_cast<std::size_t>(a)], dofs[static_cast<std::size_t>(b)],
+                                    value.dfdx(a, b));
       }
     }
     if (jacobian) {
@@ -189,7 +192,7 @@ bool newton(const Residual& residual, Real load_scale, Real scale, const Equilib
           if (!r_trial || r_trial->norm() >= (1.0 - 1e-4 * t) * r->norm()) continue;
           q = trial;
           r = std::move(r_trial);
-          J = std::move(J_trial);
+          J.swap(J_trial);  // Eigen's sparse matrices copy on assignment
           stepped = true;
           break;
         }
@@ -212,10 +215,11 @@ bool newton(const Residual& residual, Real load_scale, Real scale, const Equilib
 void require_running(const std::vector<Force>& forces, Real speed) {
   for (const Force& force : forces)
     if (force.supports() && force.needs_speed() && !(speed > 0))
-      throw Error(fmt::format("the {} carries no load at rest (an oil film has no stiffness at speed 0): the "
-                              "equilibrium and the linear analyses need a speed above 0 (start a sweep above "
-                              "0), got {:.6g} rad/s",
-                              force_name(force), speed));
+      throw Error(
+          fmt::format("the {} carries no load at rest (an oil film has no stiffness at speed 0): the "
+                      "equilibrium and the linear analyses need a speed above 0 (start a sweep above "
+                      "0), got {:.6g} rad/s",
+                      force_name(force), speed));
 }
 
 Equilibrium solve_equilibrium(const Model& model, const Assembler& assembler, Real speed,
@@ -274,18 +278,20 @@ Equilibrium solve_equilibrium(const Model& model, const Assembler& assembler, Re
       try {
         const NonlinearForceValue value = force.force({.speed = speed}, x, Vector::Zero(x.size()));
         if (value.dfdx.size() == 0 || value.dfdx.cwiseAbs().maxCoeff() == 0)
-          cause += fmt::format("{}the {} has no stiffness where its journal is (a clearance not closed, or "
-                               "nothing to carry the load there)",
-                               cause.empty() ? "" : "; ", force_name(force));
+          cause += fmt::format(
+              "{}the {} has no stiffness where its journal is (a clearance not closed, or "
+              "nothing to carry the load there)",
+              cause.empty() ? "" : "; ", force_name(force));
       } catch (const Error& e) {
         cause += fmt::format("{}the {}: {}", cause.empty() ? "" : "; ", force_name(force), e.what());
       }
       if (x.norm() > furthest) furthest = x.norm(), far_name = force_name(force);
     }
     if (cause.empty() && furthest >= 0)
-      cause = fmt::format("the {} moved furthest ({:.3g} m): too weak for its load, or its journal pressed to its "
-                          "wall",
-                          far_name, furthest);
+      cause = fmt::format(
+          "the {} moved furthest ({:.3g} m): too weak for its load, or its journal pressed to its "
+          "wall",
+          far_name, furthest);
     out.info.fail(SolverStatus::not_converged,
                   fmt::format("the static equilibrium at {:.6g} rad/s was not found: Newton's method with load "
                               "continuation carried {:.3g} % of the load; likely cause: {}",
@@ -364,13 +370,16 @@ class LinearisedSupport {
     const Force& force = path_->model().forces[force_];
     const std::vector<Index> nodes = force.nodes();
     const LocalMatrices lm = local_matrices({speed});
-    Transmission t{.node_a = nodes.front(), .node_b = {}, .K = Matrix::Zero(dofs_per_node, dofs_per_node),
+    Transmission t{.node_a = nodes.front(),
+                   .node_b = {},
+                   .K = Matrix::Zero(dofs_per_node, dofs_per_node),
                    .C = Matrix::Zero(dofs_per_node, dofs_per_node)};
     if (nodes.size() > 1) t.node_b = nodes[1];
     for (std::size_t i = 0; i < lm.dofs.size(); ++i)
       for (std::size_t j = 0; j < lm.dofs.size(); ++j) {
         if (lm.dofs[i] / dofs_per_node != t.node_a || lm.dofs[j] / dofs_per_node != t.node_a) continue;
-        const auto a = static_cast<Index>(lm.dofs[i] % dofs_per_node), b = static_cast<Index>(lm.dofs[j] % dofs_per_node);
+        const auto a = static_cast<Index>(lm.dofs[i] % dofs_per_node),
+                   b = static_cast<Index>(lm.dofs[j] % dofs_per_node);
         t.K(a, b) = lm.K(static_cast<Index>(i), static_cast<Index>(j));
         t.C(a, b) = lm.C(static_cast<Index>(i), static_cast<Index>(j));
       }
@@ -395,8 +404,10 @@ Model linearised(const Model& model, const EquilibriumOptions& about) {
   out.forces.clear();
   for (std::size_t i = 0; i < model.forces.size(); ++i) {
     const Force& force = model.forces[i];
-    if (force.supports()) out.elements.emplace_back(LinearisedSupport(path, i), force.label());
-    else out.forces.push_back(force);
+    if (force.supports())
+      out.elements.emplace_back(LinearisedSupport(path, i), force.label());
+    else
+      out.forces.push_back(force);
   }
   return out;
 }

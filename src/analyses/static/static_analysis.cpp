@@ -30,8 +30,7 @@ Vector solve_linear(const Model& model, const Assembler& assembler, const System
   }
   require_unloaded_free_motions(model, assembler, N, f);
   Real lambda_max = 0;
-  for (Index i = 0; i < sys.M.rows(); ++i)
-    lambda_max = std::max(lambda_max, sys.K.coeff(i, i) / sys.M.coeff(i, i));
+  for (Index i = 0; i < sys.M.rows(); ++i) lambda_max = std::max(lambda_max, sys.K.coeff(i, i) / sys.M.coeff(i, i));
   lu.compute(SparseMatrix(sys.K + 1e-8 * lambda_max * sys.M));
   if (lu.info() != Eigen::Success) throw Error("static analysis: the stiffness matrix is singular");
   auto project = [&](Vector& x) { x -= N * (N.transpose() * (sys.M * x)); };
@@ -55,8 +54,8 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
   const Vector f_full = static_load_vector(model, options.gravity, options.loads);
   if (has_supports(model)) {
     // Nonlinear supports (fluid-film bearings): the equilibrium by Newton's method.
-    Equilibrium e = solve_equilibrium(model, assembler, options.speed,
-                                      {.gravity = options.gravity, .loads = options.loads});
+    Equilibrium e =
+        solve_equilibrium(model, assembler, options.speed, {.gravity = options.gravity, .loads = options.loads});
     result.q = std::move(e.q);
     if (!e.info.converged()) {
       result.info = e.info;  // the last iterate is kept
@@ -112,7 +111,8 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
   bool any_fixed = false;
   for (const FixedDofs& fd : model.fixed)
     for (int d = 0; d < dofs_per_node; ++d)
-      if (fd.dofs[static_cast<std::size_t>(d)]) fixed[static_cast<std::size_t>(fd.node)][static_cast<std::size_t>(d)] = any_fixed = true;
+      if (fd.dofs[static_cast<std::size_t>(d)])
+        fixed[static_cast<std::size_t>(fd.node)][static_cast<std::size_t>(d)] = any_fixed = true;
   if (any_fixed) {
     Vector r = f_full + support_forces;
     for (const Element& e : model.elements) {
@@ -148,7 +148,7 @@ StaticResult run_static(const Model& model, const StaticOptions& options) {
     const ShaftSegment segment = *el.shaft_segment();
     if (st.element != last) {
       const LocalMatrices lm = el.local_matrices({});
-      Vector g = Vector::Zero(2 * dofs_per_node);
+      Vector g = Vector::Zero(Index{2} * dofs_per_node);
       for (int k = 0; k < 2; ++k)
         for (int d = 0; d < 3; ++d) g(dofs_per_node * k + d) = options.gravity(d);
       end_forces = (lm.K * element_values(segment, qc).real() - lm.M * g).cast<Complex>();

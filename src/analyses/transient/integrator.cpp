@@ -9,8 +9,8 @@ StepReport initial_acceleration(std::string_view method, SecondOrderSystem& sys,
   const Index n = sys.size();
   if (s.x.size() != n || s.v.size() != n) {
     report.ok = false;
-    report.message = fmt::format("{}: state has {} displacements and {} velocities, the system {} unknowns",
-                                 method, s.x.size(), s.v.size(), n);
+    report.message = fmt::format("{}: state has {} displacements and {} velocities, the system {} unknowns", method,
+                                 s.x.size(), s.v.size(), n);
     return report;
   }
   r.resize(n);

@@ -35,9 +35,10 @@ Matrix undamped_mode_basis(const Assembler& assembler, const std::vector<Real>& 
   if (modes < 1 || modes > n)
     throw Error(fmt::format("modal reduction: the number of modes must be between 1 and {} (got {})", n, modes));
   if (n > modal_basis_max_dofs)
-    throw Error(fmt::format("modal reduction: the model has {} DOFs; the dense eigensolver used for the basis "
-                            "takes at most {}",
-                            n, modal_basis_max_dofs));
+    throw Error(
+        fmt::format("modal reduction: the model has {} DOFs; the dense eigensolver used for the basis "
+                    "takes at most {}",
+                    n, modal_basis_max_dofs));
   if (speeds.empty()) throw Error("modal reduction: no speed to compute modes at");
   if (loads.size() != 0 && loads.rows() != n)
     throw Error(fmt::format("modal reduction: load vectors need {} rows (got {})", n, loads.rows()));

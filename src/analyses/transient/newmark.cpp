@@ -23,19 +23,17 @@ constexpr Real round_off_ulps = 16.0;
 
 Newmark::Newmark(const IntegratorSettings& settings, NewmarkParameters parameters)
     : settings_(settings), parameters_(parameters) {
-  if (!(parameters_.beta > 0.0))
-    throw Error(fmt::format("Newmark: beta must be positive (got {})", parameters_.beta));
+  if (!(parameters_.beta > 0.0)) throw Error(fmt::format("Newmark: beta must be positive (got {})", parameters_.beta));
   if (!(settings_.newton_tol > 0.0))
     throw Error(fmt::format("Newmark: newton_tol must be positive (got {})", settings_.newton_tol));
   if (settings_.newton_max_iterations < 1)
-    throw Error(fmt::format("Newmark: newton_max_iterations must be at least 1 (got {})",
-                            settings_.newton_max_iterations));
+    throw Error(
+        fmt::format("Newmark: newton_max_iterations must be at least 1 (got {})", settings_.newton_max_iterations));
 }
 
 std::string_view Newmark::name() const {
   const NewmarkParameters avg = NewmarkParameters::average_acceleration();
-  return parameters_.beta == avg.beta && parameters_.gamma == avg.gamma ? "trapezoidal"
-                                                                          : "newmark";
+  return parameters_.beta == avg.beta && parameters_.gamma == avg.gamma ? "trapezoidal" : "newmark";
 }
 
 StepReport Newmark::start(SecondOrderSystem& sys, State& s) {
@@ -50,8 +48,7 @@ Real Newmark::tolerance(const Vector& x_old) const {
   // step that changes (almost) nothing: an absolute test (as once, 1e-10·(1 + ‖x‖), in
   // metres) accepted corrections comparable to a slowly moving state's whole increment.
   return settings_.newton_tol * (x1_ - x_old).norm() +
-         round_off_ulps * std::numeric_limits<Real>::epsilon() * x1_.norm() +
-         std::numeric_limits<Real>::min();
+         round_off_ulps * std::numeric_limits<Real>::epsilon() * x1_.norm() + std::numeric_limits<Real>::min();
 }
 
 StepReport Newmark::step(SecondOrderSystem& sys, State& s, Real dt) {

@@ -21,7 +21,9 @@ using Factory = std::function<std::unique_ptr<Integrator>(const IntegratorSettin
 const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> table{
       {"trapezoidal",
-       [](const IntegratorSettings& s) { return std::make_unique<Newmark>(s, NewmarkParameters::average_acceleration()); }},
+       [](const IntegratorSettings& s) {
+         return std::make_unique<Newmark>(s, NewmarkParameters::average_acceleration());
+       }},
       {"rk3", [](const IntegratorSettings& s) { return std::make_unique<Rk3>(s); }},
       {"wolfbrandt",
        [](const IntegratorSettings& s) { return std::make_unique<WMethod>(WTableau::wolfbrandt(), s, false); }},

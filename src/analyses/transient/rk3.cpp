@@ -17,8 +17,7 @@ const Real imaginary_axis_limit = std::sqrt(3.0);
 }  // namespace
 
 Rk3::Rk3(const IntegratorSettings& settings) : settings_(settings) {
-  if (!(settings_.dt > 0.0))
-    throw Error(fmt::format("rk3: dt must be positive (got {})", settings_.dt));
+  if (!(settings_.dt > 0.0)) throw Error(fmt::format("rk3: dt must be positive (got {})", settings_.dt));
 }
 
 std::string Rk3::check_limit(Real dt) const {
@@ -36,8 +35,7 @@ StepReport Rk3::start(SecondOrderSystem& sys, State& s) {
   if (!report.ok) return report;
 
   omega_max_ = sys.highest_frequency();
-  dt_limit_ = omega_max_ > 0.0 ? imaginary_axis_limit / omega_max_
-                               : std::numeric_limits<Real>::infinity();
+  dt_limit_ = omega_max_ > 0.0 ? imaginary_axis_limit / omega_max_ : std::numeric_limits<Real>::infinity();
   report.dt = settings_.dt;
   report.dt_next = settings_.dt;
   report.message = check_limit(settings_.dt);

@@ -123,7 +123,8 @@ void RotorSystem::set_up_drive(const Drive& drive) {
     std::vector<Index> rx;
     for (std::size_t i = 0; i < lm.dofs.size(); ++i) {
       const Index node = lm.dofs[i] / dofs_per_node;
-      if (lm.dofs[i] % dofs_per_node == static_cast<Index>(Dof::rx) && model_.nodes[static_cast<std::size_t>(node)].rotating)
+      if (lm.dofs[i] % dofs_per_node == static_cast<Index>(Dof::rx) &&
+          model_.nodes[static_cast<std::size_t>(node)].rotating)
         rx.push_back(static_cast<Index>(i));
     }
     for (const Index a : rx)
@@ -131,8 +132,9 @@ void RotorSystem::set_up_drive(const Drive& drive) {
   }
   inertia_ = drive.inertia + rotor_inertia + unbalance_inertia;
   if (!(inertia_ > 0))
-    throw Error("runup: a driven run needs a polar inertia to accelerate: give the drive an 'inertia' or the rotor "
-                "rotating parts with mass");
+    throw Error(
+        "runup: a driven run needs a polar inertia to accelerate: give the drive an 'inertia' or the rotor "
+        "rotating parts with mass");
   for (std::size_t i = 0; i < forces_.size(); ++i)
     if (forces_[i].has_drag_torque()) drag_.push_back(i);
   // The speed column of the tangent: rows where G, K_i or the unbalances act.
@@ -209,8 +211,8 @@ void RotorSystem::rhs(Real t, const Vector& x, const Vector& v, Vector& r) {
   r(n_) = inertia_ * a;
 }
 
-void RotorSystem::model_rhs(const MotionState& external, const MotionState& nonlinear, const Vector& x,
-                            const Vector& v, Vector& r) {
+void RotorSystem::model_rhs(const MotionState& external, const MotionState& nonlinear, const Vector& x, const Vector& v,
+                            Vector& r) {
   const Real W = external.speed;
   update_speed(W);
   external_forces(external, f_full_);
@@ -233,8 +235,7 @@ const NonlinearForceValue& RotorSystem::evaluate(std::size_t i, const MotionStat
   ForceCache& cache = force_cache_[i];
   xl_.noalias() = selectors_[i] * x;
   vl_.noalias() = selectors_[i] * v;
-  if (cache.valid && cache.state == state && cache.x == xl_ && cache.v == vl_)
-    return cache.value;
+  if (cache.valid && cache.state == state && cache.x == xl_ && cache.v == vl_) return cache.value;
   try {
     cache.valid = false;
     cache.value = forces_[i].force(state, xl_, vl_);
@@ -248,7 +249,8 @@ const NonlinearForceValue& RotorSystem::evaluate(std::size_t i, const MotionStat
     std::string kind(forces_[i].kind());
     std::replace(kind.begin(), kind.end(), '_', ' ');
     const std::string& label = forces_[i].label();
-    throw Error(label.empty() ? fmt::format("{}: {}", kind, e.what()) : fmt::format("{} '{}': {}", kind, label, e.what()));
+    throw Error(label.empty() ? fmt::format("{}: {}", kind, e.what())
+                              : fmt::format("{} '{}': {}", kind, label, e.what()));
   }
 }
 
@@ -415,9 +417,8 @@ int RotorSystem::lane_at(Real speed) const {
   // own (t + j·h against the integrator's sums of Δt): a lane within 4ε of the speed
   // is its tangent to round-off, as the factorisation itself is.
   for (int l = 0; l < BandedLU::lanes; ++l)
-    if ((lanes_good_ >> l & 1u) != 0 &&
-        std::abs(lane_speeds_[static_cast<std::size_t>(l)] - speed) <=
-            4 * std::numeric_limits<Real>::epsilon() * std::abs(speed))
+    if ((lanes_good_ >> l & 1u) != 0 && std::abs(lane_speeds_[static_cast<std::size_t>(l)] - speed) <=
+                                            4 * std::numeric_limits<Real>::epsilon() * std::abs(speed))
       return l;
   return -1;
 }
@@ -449,8 +450,9 @@ bool RotorSystem::factor_lanes(Real speed, Real spacing, Real c_x, Real c_v) {
       }
     }
     update_speed(speed);
-    std::stable_sort(lane_additions_.begin(), lane_additions_.end(),
-                     [](const BandedLU::LaneAddition& a, const BandedLU::LaneAddition& b) { return a.position < b.position; });
+    std::stable_sort(
+        lane_additions_.begin(), lane_additions_.end(),
+        [](const BandedLU::LaneAddition& a, const BandedLU::LaneAddition& b) { return a.position < b.position; });
   }
   lanes_good_ = band_.factorize_lanes(band_constant_, lane_speeds_, band_speed_, lane_additions_);
   lanes_used_ = 1u;

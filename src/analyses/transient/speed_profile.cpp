@@ -14,8 +14,8 @@ SpeedProfile::SpeedProfile(std::vector<std::pair<Real, Real>> points) : points_(
   // φ(t_0) counts the constant speed held from t = 0 to the first point.
   angle_at_[0] = points_[0].second * points_[0].first;
   for (std::size_t i = 1; i < points_.size(); ++i)
-    angle_at_[i] = angle_at_[i - 1] + 0.5 * (points_[i - 1].second + points_[i].second) *
-                                          (points_[i].first - points_[i - 1].first);
+    angle_at_[i] = angle_at_[i - 1] +
+                   0.5 * (points_[i - 1].second + points_[i].second) * (points_[i].first - points_[i - 1].first);
 }
 
 namespace {

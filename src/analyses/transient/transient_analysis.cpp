@@ -72,9 +72,10 @@ std::pair<Vector, Vector> steady_unbalance_response(const Model& model, Real spe
   const ComplexSparse T = assembler.dof_map().transformation().cast<Complex>();
   Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> lu(Z);
   if (lu.info() != Eigen::Success)
-    throw Error(fmt::format("runup: the steady state at {:.6g} rad/s cannot be found: the dynamic stiffness is "
-                            "singular there (an undamped resonance)",
-                            speed));
+    throw Error(
+        fmt::format("runup: the steady state at {:.6g} rad/s cannot be found: the dynamic stiffness is "
+                    "singular there (an undamped resonance)",
+                    speed));
   const ComplexVector X = T * ComplexVector(lu.solve(ComplexVector(T.transpose() * f)));
   return {X.real(), Vector((Complex(0, speed) * X).real())};
 }
@@ -116,8 +117,8 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
 
   TransientResult result;
   const Vector constant_load = options.gravity.squaredNorm() > 0 || options.static_loads
-                                  ? static_load_vector(model, options.gravity, options.static_loads)
-                                  : Vector();
+                                   ? static_load_vector(model, options.gravity, options.static_loads)
+                                   : Vector();
   if (options.driven && !model.drive)
     throw Error("runup: a torque-driven run needs the model's [drive] (its motor and load torques)");
   if (options.driven && options.reduced_modes > 0)
@@ -128,18 +129,19 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     const Drive& d = *model.drive;
     const Real start = d.motor.torque(0.0);
     if (start < 0.0)
-      throw Error(fmt::format("runup: the drive's motor gives {:.4g} N m at rest: it would turn the rotor backwards; "
-                              "a motor torque at 0 Hz above 0 starts it",
-                              start));
+      throw Error(
+          fmt::format("runup: the drive's motor gives {:.4g} N m at rest: it would turn the rotor backwards; "
+                      "a motor torque at 0 Hz above 0 starts it",
+                      start));
     if (d.friction_torque > 0.0 && start <= d.friction_torque)
-      throw Error(fmt::format("runup: the drive cannot start the rotor from rest: its motor gives {:.4g} N m at 0 Hz, "
-                              "not more than the friction torque {:.4g} N m of [drive], which holds the rotor at "
-                              "rest; a stronger motor or less friction starts it",
-                              start, d.friction_torque));
+      throw Error(
+          fmt::format("runup: the drive cannot start the rotor from rest: its motor gives {:.4g} N m at 0 Hz, "
+                      "not more than the friction torque {:.4g} N m of [drive], which holds the rotor at "
+                      "rest; a stronger motor or less friction starts it",
+                      start, d.friction_torque));
   }
   const auto [x_start, v_start] = start_state(model, options);
-  RotorSystem rotor(model, options.profile, constant_load, options.driven ? &*model.drive : nullptr,
-                    options.assembled);
+  RotorSystem rotor(model, options.profile, constant_load, options.driven ? &*model.drive : nullptr, options.assembled);
   std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
   result.info.method = SolverMethod::time_integration;
   const DofMap& dofs = rotor.dof_map();
@@ -149,7 +151,8 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
     for (int i = 0; i < modal_basis_speeds; ++i)
       speeds.push_back(options.profile.speed(options.duration * i / (modal_basis_speeds - 1)));
     projected = std::make_unique<ProjectedSystem>(
-        rotor, undamped_mode_basis(rotor.assembler(), speeds, options.reduced_modes, load_vectors(model, dofs, options, constant_load)));
+        rotor, undamped_mode_basis(rotor.assembler(), speeds, options.reduced_modes,
+                                   load_vectors(model, dofs, options, constant_load)));
     result.basis_size = projected->size();
   }
   SecondOrderSystem& sys = projected ? static_cast<SecondOrderSystem&>(*projected) : rotor;
@@ -177,7 +180,8 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   const Index bins = w_hi > w_lo ? std::max<Index>(options.envelope_bins, 1) : 1;
   for (std::size_t p = 0; p < options.probes.size(); ++p) {
     Envelope e;
-    for (Index b = 0; b < bins; ++b) e.speed.push_back(w_lo + (w_hi - w_lo) * (static_cast<Real>(b) + 0.5) / static_cast<Real>(bins));
+    for (Index b = 0; b < bins; ++b)
+      e.speed.push_back(w_lo + (w_hi - w_lo) * (static_cast<Real>(b) + 0.5) / static_cast<Real>(bins));
     e.magnitude.assign(static_cast<std::size_t>(bins), nan);
     result.envelopes.push_back(e);
   }
@@ -207,7 +211,10 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   auto update_envelopes = [&](const State& s) {
     const Vector x = rotor.expand(model_coordinates(s.x, x_model));
     const Real w = rotor.speed(s.t, s.v);
-    const Index b = bins == 1 ? 0 : std::clamp<Index>(static_cast<Index>((w - w_lo) / (w_hi - w_lo) * static_cast<Real>(bins)), 0, bins - 1);
+    const Index b =
+        bins == 1
+            ? 0
+            : std::clamp<Index>(static_cast<Index>((w - w_lo) / (w_hi - w_lo) * static_cast<Real>(bins)), 0, bins - 1);
     for (std::size_t p = 0; p < options.probes.size(); ++p) {
       const Real r = std::hypot(x(global_dof(options.probes[p], Dof::v)), x(global_dof(options.probes[p], Dof::w)));
       Envelope& e = result.envelopes[p];
@@ -290,15 +297,13 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
   State previous = s;
   Vector xi, vi;
   auto fail = [&](const std::string& why) {
-    result.info.fail(SolverStatus::numerical_failure,
-                     fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
-                                 rad_to_hz(rotor.speed(s.t, s.v)), why));
+    result.info.fail(SolverStatus::numerical_failure, fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
+                                                                  rad_to_hz(rotor.speed(s.t, s.v)), why));
   };
   while (s.t < t_end * (1 - 1e-12)) {
     if (options.stop.requested()) {
-      result.info.fail(SolverStatus::interrupted,
-                       fmt::format("stopped on request at t = {:.6g} s (speed {:.4g} Hz)", s.t,
-                                   rad_to_hz(rotor.speed(s.t, s.v))));
+      result.info.fail(SolverStatus::interrupted, fmt::format("stopped on request at t = {:.6g} s (speed {:.4g} Hz)",
+                                                              s.t, rad_to_hz(rotor.speed(s.t, s.v))));
       break;
     }
     const Real h = std::min(dt, t_end - s.t);

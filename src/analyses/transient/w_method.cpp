@@ -67,28 +67,25 @@ WMethod::WMethod(WTableau tableau, const IntegratorSettings& settings, bool adap
     : tableau_(std::move(tableau)), settings_(settings), adaptive_(adaptive) {
   const Index s = tableau_.stages();
   const std::string& nm = tableau_.name;
-  if (s < 1 || tableau_.alpha.rows() != s || tableau_.alpha.cols() != s ||
-      tableau_.gamma_ij.rows() != s || tableau_.gamma_ij.cols() != s ||
-      (tableau_.b_hat.size() != 0 && tableau_.b_hat.size() != s))
+  if (s < 1 || tableau_.alpha.rows() != s || tableau_.alpha.cols() != s || tableau_.gamma_ij.rows() != s ||
+      tableau_.gamma_ij.cols() != s || (tableau_.b_hat.size() != 0 && tableau_.b_hat.size() != s))
     throw Error(fmt::format("{}: inconsistent W-method coefficients", nm));
-  if (!(tableau_.gamma > 0.0))
-    throw Error(fmt::format("{}: the diagonal gamma must be positive", nm));
+  if (!(tableau_.gamma > 0.0)) throw Error(fmt::format("{}: the diagonal gamma must be positive", nm));
   if (adaptive_ && tableau_.b_hat.size() == 0)
     throw Error(fmt::format("{}: adaptive stepping needs an embedded method", nm));
-  if (!(settings_.dt > 0.0))
-    throw Error(fmt::format("{}: dt must be positive (got {})", nm, settings_.dt));
+  if (!(settings_.dt > 0.0)) throw Error(fmt::format("{}: dt must be positive (got {})", nm, settings_.dt));
   if (settings_.jacobian_interval < 1)
-    throw Error(fmt::format("{}: jacobian_interval must be at least 1 (got {})", nm,
-                            settings_.jacobian_interval));
+    throw Error(fmt::format("{}: jacobian_interval must be at least 1 (got {})", nm, settings_.jacobian_interval));
   if (adaptive_) {
     if (!(settings_.rel_tol >= 0.0 && settings_.abs_tol >= 0.0) ||
         !(settings_.rel_tol > 0.0 || settings_.abs_tol > 0.0))
-      throw Error(fmt::format("{}: tolerances must be non-negative and not both zero "
-                              "(rel_tol = {}, abs_tol = {})",
-                              nm, settings_.rel_tol, settings_.abs_tol));
+      throw Error(
+          fmt::format("{}: tolerances must be non-negative and not both zero "
+                      "(rel_tol = {}, abs_tol = {})",
+                      nm, settings_.rel_tol, settings_.abs_tol));
     if (!(settings_.dt_min > 0.0) || !(settings_.dt_min <= settings_.dt_max))
-      throw Error(fmt::format("{}: need 0 < dt_min <= dt_max (dt_min = {}, dt_max = {})", nm,
-                              settings_.dt_min, settings_.dt_max));
+      throw Error(fmt::format("{}: need 0 < dt_min <= dt_max (dt_min = {}, dt_max = {})", nm, settings_.dt_min,
+                              settings_.dt_max));
   }
   c_ = tableau_.alpha.rowwise().sum();
   if (tableau_.b_hat.size() == s) b_error_ = tableau_.b - tableau_.b_hat;
@@ -108,8 +105,7 @@ StepReport WMethod::start(SecondOrderSystem& sys, State& s) {
   return report;
 }
 
-bool WMethod::prepare(SecondOrderSystem& sys, const State& s, Real h, bool after_rejection,
-                      StepReport& report) {
+bool WMethod::prepare(SecondOrderSystem& sys, const State& s, Real h, bool after_rejection, StepReport& report) {
   bool refactor = !factored_ || std::abs(h - h_factored_) > step_reuse_tolerance * h_factored_;
   if (!jacobian_set_ || steps_since_jacobian_ >= settings_.jacobian_interval ||
       (after_rejection && !jacobian_current_)) {
@@ -231,9 +227,10 @@ StepReport WMethod::step(SecondOrderSystem& sys, State& s, Real dt) {
     report.dt_next = dt;
     if (!prepare(sys, s, dt, false, report)) {
       report.ok = false;
-      report.message = fmt::format("{}: singular stage matrix M + h*gamma*D_T + (h*gamma)^2*K_T at "
-                                   "t = {:.9g} (dt = {:.6g})",
-                                   name(), s.t, dt);
+      report.message = fmt::format(
+          "{}: singular stage matrix M + h*gamma*D_T + (h*gamma)^2*K_T at "
+          "t = {:.9g} (dt = {:.6g})",
+          name(), s.t, dt);
       return report;
     }
     stages(sys, s, dt);
@@ -259,8 +256,7 @@ StepReport WMethod::step(SecondOrderSystem& sys, State& s, Real dt) {
     }
     ++report.rejected;
     // err > 1, so the factor is below the safety factor; NaN or ∞ gives max_shrink.
-    const Real factor = std::isfinite(err) ? std::max(max_shrink, safety * std::pow(err, -1.0 / 3.0))
-                                           : max_shrink;
+    const Real factor = std::isfinite(err) ? std::max(max_shrink, safety * std::pow(err, -1.0 / 3.0)) : max_shrink;
     Real h_new = h * factor;
     if (h_new < settings_.dt_min) {
       if (h > settings_.dt_min) {

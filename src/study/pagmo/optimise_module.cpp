@@ -46,7 +46,9 @@ struct StudyProblem {
     const auto dim = static_cast<std::size_t>(p->dimension);
     return {pagmo::vector_double(dim, 0.0), pagmo::vector_double(dim, 1.0)};
   }
-  pagmo::vector_double::size_type get_nobj() const { return static_cast<pagmo::vector_double::size_type>(p->objectives); }
+  pagmo::vector_double::size_type get_nobj() const {
+    return static_cast<pagmo::vector_double::size_type>(p->objectives);
+  }
   std::string get_name() const { return "feran study"; }
 };
 
@@ -98,7 +100,7 @@ int error(const char* what, char* message, long capacity) {
 extern "C" __attribute__((visibility("default"))) int feran_optimise_interface() { return FERAN_OPTIMISE_INTERFACE; }
 
 extern "C" __attribute__((visibility("default"))) int feran_optimise(const feran_optimise_problem* problem,
-                                                                      char* message, long capacity) {
+                                                                     char* message, long capacity) {
   try {
     evolve(*problem);
     return feran_optimise_done;

@@ -25,14 +25,14 @@ enum feran_optimise_status {
 };
 
 struct feran_optimise_problem {
-  long dimension;   /* variables, each in [0, 1] */
-  long objectives;  /* 1 for "optimise", 2 or more for "pareto" */
-  int method;       /* enum feran_optimise_method */
+  long dimension;  /* variables, each in [0, 1] */
+  long objectives; /* 1 for "optimise", 2 or more for "pareto" */
+  int method;      /* enum feran_optimise_method */
   long population;
   long generations;
-  long polish;      /* compass-search evaluations after the global method ("optimise") */
+  long polish; /* compass-search evaluations after the global method ("optimise") */
   unsigned seed;
-  void* context;    /* handed back to batch_fitness */
+  void* context; /* handed back to batch_fitness */
   /* The fitness of n points (n × dimension numbers, point after point) into
      n × objectives numbers, each minimised; returns a feran_optimise_status. */
   int (*batch_fitness)(void* context, const double* points, long n, double* fitness);

@@ -66,8 +66,7 @@ TEST(Api684Unbalance, TheAmountIs6350WOverNGramMillimetresCappedAt25000Rpm) {
   EXPECT_NEAR(api684_unbalance_amount(100, 10000 * pi / 30), 6350.0 * 100 / 10000 * 1e-6, 1e-15);
   EXPECT_NEAR(api684_unbalance_amount(100, 30000 * pi / 30), 0.254 * 100 * 1e-6, 1e-15);
   // In US units 4·W/N oz·in: W = 220.46 lb at 10 000 rpm is 0.0882 oz·in = 63.5 g·mm.
-  EXPECT_NEAR(api684_unbalance_amount(100, 10000 * pi / 30) / (4 * 220.462 / 10000 * 28.3495e-3 * 25.4e-3), 1,
-              2e-4);
+  EXPECT_NEAR(api684_unbalance_amount(100, 10000 * pi / 30) / (4 * 220.462 / 10000 * 28.3495e-3 * 25.4e-3), 1, 2e-4);
 }
 
 // A rotor of 1.5 m between two bearings with two disks (Friswell Example 5.9.1).
@@ -84,7 +83,8 @@ TEST(Api684Unbalance, JournalLoadsCarryTheRotorAndTheModesGetTheirPlacements) {
   Real rotor = 0;
   for (const auto& j : journals) rotor += j.mass;
   const Real shaft = 7810 * pi * 0.025 * 0.025 * 1.5;
-  const Real disks = 7810 * pi * (0.14 * 0.14 - 0.025 * 0.025) * 0.07 + 7810 * pi * (0.175 * 0.175 - 0.025 * 0.025) * 0.07;
+  const Real disks =
+      7810 * pi * (0.14 * 0.14 - 0.025 * 0.025) * 0.07 + 7810 * pi * (0.175 * 0.175 - 0.025 * 0.025) * 0.07;
   EXPECT_NEAR(rotor / (shaft + disks) - 1, 0, 1e-9);
   EXPECT_GT(journals[1].mass, journals[0].mass);
 

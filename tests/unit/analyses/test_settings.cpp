@@ -20,11 +20,11 @@ TEST(Settings, RequestThenFileThenBuiltIn) {
   file.points = 11;
   CampbellRequest request;
   CampbellOptions c = campbell_settings(file, request);
-  EXPECT_EQ(c.speeds.size(), 11u);                       // the file's
+  EXPECT_EQ(c.speeds.size(), 11u);  // the file's
   EXPECT_EQ(c.speeds.back(), 100.0);
-  EXPECT_EQ(c.n_modes, defaults::campbell_modes);       // built in
+  EXPECT_EQ(c.n_modes, defaults::campbell_modes);  // built in
   EXPECT_EQ(c.orders, std::vector<int>{1});
-  EXPECT_EQ(c.n_threads, 1);                            // the library runs on one thread
+  EXPECT_EQ(c.n_threads, 1);  // the library runs on one thread
   request.points = 3;
   request.stop = 50.0;
   request.orders = {2};

@@ -72,7 +72,7 @@ TEST(Whirl, FormsMatchTheCircleRadii) {
   two.col(0) = shape({{1.0, -I}});
   two.col(1) = shape({{1.0, I}});
   const ComplexMatrix s = whirl_form(two), n = lateral_form(two);
-  EXPECT_NEAR(s(0, 0).real(), 1.0, 1e-15);   // Im(V·conj(W)) = Im(1·i) = 1
+  EXPECT_NEAR(s(0, 0).real(), 1.0, 1e-15);  // Im(V·conj(W)) = Im(1·i) = 1
   EXPECT_NEAR(s(1, 1).real(), -1.0, 1e-15);
   EXPECT_NEAR(std::abs(s(0, 1)), 0.0, 1e-15);
   EXPECT_NEAR(n(0, 0).real(), 2.0, 1e-15);

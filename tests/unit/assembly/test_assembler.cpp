@@ -105,7 +105,9 @@ TEST(Assembler, VariableValuesInPlaceEqualTheAssembledOnes) {
   for (const Real speed : {0.0, 50.0, 95.0, 115.0, 150.0, 50.0}) {
     assembler.variable_values(speed, in_place);
     const SystemMatrices ref = assembler.variable_at(speed);
-    auto diff = [](const SparseMatrix& a, const SparseMatrix& b) { return Matrix(Matrix(a) - Matrix(b)).cwiseAbs().maxCoeff(); };
+    auto diff = [](const SparseMatrix& a, const SparseMatrix& b) {
+      return Matrix(Matrix(a) - Matrix(b)).cwiseAbs().maxCoeff();
+    };
     const Real scale = Matrix(ref.K).cwiseAbs().maxCoeff();
     ASSERT_GT(scale, 1e5);
     EXPECT_LE(diff(in_place.K, ref.K), 1e-13 * scale) << speed;

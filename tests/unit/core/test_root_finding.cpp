@@ -9,7 +9,10 @@ namespace {
 
 TEST(BrentRoot, FindsCosineRootToTolerance) {
   int calls = 0;
-  auto f = [&](Real x) { ++calls; return std::cos(x); };
+  auto f = [&](Real x) {
+    ++calls;
+    return std::cos(x);
+  };
   const RootResult r = brent_root(f, 1.0, 2.0, std::cos(1.0), std::cos(2.0), 1e-12);
   ASSERT_TRUE(r.converged);
   EXPECT_NEAR(r.x, pi / 2, 1e-12);  // the requested tolerance

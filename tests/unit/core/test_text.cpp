@@ -13,7 +13,9 @@ TEST(Printable, ControlCharactersBecomeVisible) {
   EXPECT_EQ(printable(std::string("nul\0bel\a del\x7f", 13)), "nul\\x00bel\\x07 del\\x7f");
   // C1 controls in UTF-8 (U+009B is a one-character CSI to some terminals); other
   // non-ASCII text stays as it is.
-  EXPECT_EQ(printable("csi\xc2\x9b" "31m"), "csi\\u009b31m");
+  EXPECT_EQ(printable("csi\xc2\x9b"
+                      "31m"),
+            "csi\\u009b31m");
   EXPECT_EQ(printable("Lager \xc3\xa4 \xc2\xb5m"), "Lager \xc3\xa4 \xc2\xb5m");
   // Messages of several lines keep their lines, and nothing else.
   EXPECT_EQ(printable("line 1\nline\x1b 2", true), "line 1\nline\\e 2");

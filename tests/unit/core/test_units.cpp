@@ -110,7 +110,8 @@ TEST(Units, Acceleration) {
   EXPECT_DOUBLE_EQ(parse_quantity("9.81", Quantity::acceleration), 9.81);
   EXPECT_EQ(si_unit(Quantity::acceleration), "m/s^2");
   EXPECT_EQ(quantity_name(Quantity::acceleration), "an acceleration");
-  EXPECT_EQ(accepted_units_text(Quantity::acceleration), "m/s^2 or mm/s^2 (any SI prefix on m/s^2 too: km/s^2, mm/s^2, …)");
+  EXPECT_EQ(accepted_units_text(Quantity::acceleration),
+            "m/s^2 or mm/s^2 (any SI prefix on m/s^2 too: km/s^2, mm/s^2, …)");
   // A velocity unit is not an acceleration, and the message says what it is.
   try {
     parse_quantity("9.81 m/s", Quantity::acceleration);
@@ -157,9 +158,12 @@ TEST(Units, EverySiPrefixWorksOnTheCoherentUnitsAndTheGram) {
   EXPECT_EQ(parse_quantity("10 mrad", Quantity::angle), 10e-3);
   EXPECT_EQ(parse_quantity("7 kN*m", Quantity::moment), 7e3);
   // Not on kg (already prefixed), rpm, deg or cP, and one prefix only.
-  for (const auto& [text, kind] : {std::pair{"1 kkg", Quantity::mass}, {"1 krpm", Quantity::speed},
-                                  {"1 mdeg", Quantity::angle}, {"1 kcP", Quantity::viscosity},
-                                  {"1 kmm", Quantity::length}, {"1 MM", Quantity::length}})
+  for (const auto& [text, kind] : {std::pair{"1 kkg", Quantity::mass},
+                                   {"1 krpm", Quantity::speed},
+                                   {"1 mdeg", Quantity::angle},
+                                   {"1 kcP", Quantity::viscosity},
+                                   {"1 kmm", Quantity::length},
+                                   {"1 MM", Quantity::length}})
     EXPECT_THROW(parse_quantity(text, kind), QuantityError) << text;
   EXPECT_EQ(format_quantity(2e6, Quantity::force, "MN"), "2 MN");
 }

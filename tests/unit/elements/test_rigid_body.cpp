@@ -42,8 +42,7 @@ TEST(RigidBody, DiskMassProperties) {
   const RigidBodyProperties ring = RigidBody::disk(rho, D, d, h);
   const RigidBodyProperties bore = solid_disk(rho, d, h);
   EXPECT_NEAR(ring.mass, ref.mass - bore.mass, 1e-14 * ref.mass);
-  EXPECT_NEAR(ring.polar_inertia, ref.polar_inertia - bore.polar_inertia,
-              1e-14 * ref.polar_inertia);
+  EXPECT_NEAR(ring.polar_inertia, ref.polar_inertia - bore.polar_inertia, 1e-14 * ref.polar_inertia);
   EXPECT_NEAR(ring.transverse_inertia, ref.transverse_inertia - bore.transverse_inertia,
               1e-14 * ref.transverse_inertia);
 
@@ -75,11 +74,11 @@ TEST(RigidBody, OffsetMassMatrixGivesTheKineticEnergy) {
   for (int trial = 0; trial < 20; ++trial) {
     Vector qd(6);
     for (Index k = 0; k < 6; ++k) qd(k) = dist(gen);
-    const Real u = qd(i_of(Dof::u)), v = qd(i_of(Dof::v)), w = qd(i_of(Dof::w)),
-               rx = qd(i_of(Dof::rx)), ry = qd(i_of(Dof::ry)), rz = qd(i_of(Dof::rz));
+    const Real u = qd(i_of(Dof::u)), v = qd(i_of(Dof::v)), w = qd(i_of(Dof::w)), rx = qd(i_of(Dof::rx)),
+               ry = qd(i_of(Dof::ry)), rz = qd(i_of(Dof::rz));
     const Real vcg = v + e * rz, wcg = w - e * ry;
-    const Real T = 0.5 * m * (u * u + vcg * vcg + wcg * wcg) + 0.5 * p.polar_inertia * rx * rx +
-                   0.5 * Jcg * (ry * ry + rz * rz);
+    const Real T =
+        0.5 * m * (u * u + vcg * vcg + wcg * wcg) + 0.5 * p.polar_inertia * rx * rx + 0.5 * Jcg * (ry * ry + rz * rz);
     EXPECT_NEAR(0.5 * qd.dot(lm.M * qd), T, 1e-13 * T) << "trial " << trial;
   }
   EXPECT_LE((lm.M - lm.M.transpose()).cwiseAbs().maxCoeff(), 0.0);

@@ -81,8 +81,7 @@ TEST(RotatingDamper, ForceMatchesTheRotatingFrameLaw) {
     expected(i_of(Dof::w)) = -coeffs.translational * (qd(i_of(Dof::w)) - W * q(i_of(Dof::v)));
     expected(i_of(Dof::ry)) = -coeffs.rotational * (qd(i_of(Dof::ry)) + W * q(i_of(Dof::rz)));
     expected(i_of(Dof::rz)) = -coeffs.rotational * (qd(i_of(Dof::rz)) - W * q(i_of(Dof::ry)));
-    for (Index k = 0; k < 6; ++k)
-      EXPECT_NEAR(f(k), expected(k), 1e-13 * W * coeffs.translational) << "trial " << trial;
+    for (Index k = 0; k < 6; ++k) EXPECT_NEAR(f(k), expected(k), 1e-13 * W * coeffs.translational) << "trial " << trial;
   }
 }
 
@@ -96,8 +95,8 @@ TEST(RotatingDamper, SynchronousForwardWhirlFeelsNoForce) {
   const Real W = 2 * pi * 33.4;
   const Complex i1(0, 1);
   const ComplexMatrix D = i1 * W * lm.Ci.cast<Complex>() + W * lm.Ki.cast<Complex>();
-  for (const auto& [a, b, c] : {std::tuple{Dof::v, Dof::w, coeffs.translational},
-                                std::tuple{Dof::ry, Dof::rz, coeffs.rotational}}) {
+  for (const auto& [a, b, c] :
+       {std::tuple{Dof::v, Dof::w, coeffs.translational}, std::tuple{Dof::ry, Dof::rz, coeffs.rotational}}) {
     ComplexVector fwd = ComplexVector::Zero(6), bwd = ComplexVector::Zero(6);
     fwd(i_of(a)) = 1.0;
     fwd(i_of(b)) = -i1;

@@ -142,8 +142,8 @@ TEST(SpringDamper, SpeedDependentOnlyWithANonConstantLaw) {
     EXPECT_TRUE(SpringDamper(0, 1, c).speed_dependent()) << "c " << d;
   }
   for (SpeedCoefficient SpringDamperCoefficients::*cross :
-       {&SpringDamperCoefficients::kyz, &SpringDamperCoefficients::kzy,
-        &SpringDamperCoefficients::cyz, &SpringDamperCoefficients::czy}) {
+       {&SpringDamperCoefficients::kyz, &SpringDamperCoefficients::kzy, &SpringDamperCoefficients::cyz,
+        &SpringDamperCoefficients::czy}) {
     SpringDamperCoefficients sc = direct_coefficients();
     sc.*cross = SpeedCoefficient(SpeedCoefficient::Step{1.0, 2.0, 5.0});
     EXPECT_TRUE(SpringDamper(0, std::nullopt, sc).speed_dependent());

@@ -24,8 +24,7 @@ const Material mat{"steel", E, E / (2.0 * (1.0 + nu)), rho};
 constexpr Index idx(Index node, Dof d) { return global_dof(node, d); }
 
 TimoshenkoBeam make_beam(Real length, CircularSection section, bool shear,
-                         GyroscopicForm gyro = GyroscopicForm::consistent, Real beta = 0.0,
-                         bool rotating = true) {
+                         GyroscopicForm gyro = GyroscopicForm::consistent, Real beta = 0.0, bool rotating = true) {
   return TimoshenkoBeam(0, 1, length, section, mat, BeamOptions{shear, gyro, rotating, beta});
 }
 
@@ -36,8 +35,7 @@ Matrix plane_block(const Matrix& a, Dof r1, Dof r2, Dof c1, Dof c2) {
   const std::array<Index, 4> cols{idx(0, c1), idx(0, c2), idx(1, c1), idx(1, c2)};
   Matrix out(4, 4);
   for (std::size_t i = 0; i < 4; ++i)
-    for (std::size_t j = 0; j < 4; ++j)
-      out(static_cast<Index>(i), static_cast<Index>(j)) = a(rows[i], cols[j]);
+    for (std::size_t j = 0; j < 4; ++j) out(static_cast<Index>(i), static_cast<Index>(j)) = a(rows[i], cols[j]);
   return out;
 }
 Matrix xy_block(const Matrix& a) { return plane_block(a, Dof::v, Dof::rz, Dof::v, Dof::rz); }
@@ -51,9 +49,9 @@ Real max_abs(const Matrix& a) { return a.cwiseAbs().maxCoeff(); }
 // Published Euler–Bernoulli matrices in one plane, DOFs (d1, s1, d2, s2), s = dd/dx.
 Matrix published_stiffness(Real EI, Real L) {
   Matrix k(4, 4);
-  k << 12, 6 * L, -12, 6 * L,           //
+  k << 12, 6 * L, -12, 6 * L,               //
       6 * L, 4 * L * L, -6 * L, 2 * L * L,  //
-      -12, -6 * L, 12, -6 * L,           //
+      -12, -6 * L, 12, -6 * L,              //
       6 * L, 2 * L * L, -6 * L, 4 * L * L;
   return EI / (L * L * L) * k;
 }
@@ -150,23 +148,20 @@ TEST(TimoshenkoBeam, ShearOnMatchesQuadratureOfShapeFunctions) {
   const Real phi = 12.0 * E * I / (kappa * mat.G * A * L * L);
   ASSERT_GT(phi, 0.5);  // shear matters for this stubby element
 
-  const std::array<Real, 4> gx{-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                               0.8611363115940526};
-  const std::array<Real, 4> gw{0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                               0.3478548451374538};
+  const std::array<Real, 4> gx{-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  const std::array<Real, 4> gw{0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
   Matrix MT = Matrix::Zero(4, 4), MR = Matrix::Zero(4, 4), K = Matrix::Zero(4, 4);
   const Real c = 1.0 / (1.0 + phi);
   for (std::size_t g = 0; g < 4; ++g) {
     const Real x = 0.5 * (gx[g] + 1.0), wgt = 0.5 * L * gw[g];  // x = ξ in [0, 1]
     Eigen::RowVector4d nt, ntx, nr, nrx;
     nt << c * (1 - 3 * x * x + 2 * x * x * x + phi * (1 - x)),
-        c * L * (x - 2 * x * x + x * x * x + phi * (x - x * x) / 2),
-        c * (3 * x * x - 2 * x * x * x + phi * x),
+        c * L * (x - 2 * x * x + x * x * x + phi * (x - x * x) / 2), c * (3 * x * x - 2 * x * x * x + phi * x),
         c * L * (-x * x + x * x * x - phi * (x - x * x) / 2);
     ntx << c * (-6 * x + 6 * x * x - phi) / L, c * (1 - 4 * x + 3 * x * x + phi * (1 - 2 * x) / 2),
         c * (6 * x - 6 * x * x + phi) / L, c * (-2 * x + 3 * x * x - phi * (1 - 2 * x) / 2);
-    nr << c * 6 * (x * x - x) / L, c * (1 - 4 * x + 3 * x * x + phi * (1 - x)),
-        c * 6 * (x - x * x) / L, c * (-2 * x + 3 * x * x + phi * x);
+    nr << c * 6 * (x * x - x) / L, c * (1 - 4 * x + 3 * x * x + phi * (1 - x)), c * 6 * (x - x * x) / L,
+        c * (-2 * x + 3 * x * x + phi * x);
     nrx << c * 6 * (2 * x - 1) / (L * L), c * (-4 + 6 * x - phi) / L, c * 6 * (1 - 2 * x) / (L * L),
         c * (-2 + 6 * x + phi) / L;
     const Eigen::RowVector4d gamma = ntx - nr;
@@ -201,8 +196,8 @@ TEST(TimoshenkoBeam, SymmetryAndDefiniteness) {
 
 // Rigid-body motions of a free element, node a at x = 0 and node b at x = L.
 struct RigidMotions {
-  Vector axial = Vector::Zero(12), torsion = Vector::Zero(12), y = Vector::Zero(12),
-         z = Vector::Zero(12), about_z = Vector::Zero(12), about_y = Vector::Zero(12);
+  Vector axial = Vector::Zero(12), torsion = Vector::Zero(12), y = Vector::Zero(12), z = Vector::Zero(12),
+         about_z = Vector::Zero(12), about_y = Vector::Zero(12);
   explicit RigidMotions(Real L) {
     for (Index n = 0; n < 2; ++n) {
       const Real x = static_cast<Real>(n) * L;
@@ -230,8 +225,7 @@ TEST(TimoshenkoBeam, RigidBodyMotionsAreStrainFreeAndCarryTheMass) {
     const LocalMatrices lm = make_beam(L, {d, di}, shear).local_matrices({});
     const Real kn = max_abs(lm.K);
     for (const Vector* q : {&r.axial, &r.torsion, &r.y, &r.z, &r.about_z, &r.about_y})
-      EXPECT_LE((lm.K * *q).cwiseAbs().maxCoeff(), 1e-13 * kn * q->cwiseAbs().maxCoeff())
-          << "shear " << shear;
+      EXPECT_LE((lm.K * *q).cwiseAbs().maxCoeff(), 1e-13 * kn * q->cwiseAbs().maxCoeff()) << "shear " << shear;
     const Real m = rho * A * L;
     EXPECT_NEAR(r.y.dot(lm.M * r.y), m, 1e-13 * m);
     EXPECT_NEAR(r.z.dot(lm.M * r.z), m, 1e-13 * m);
@@ -311,8 +305,7 @@ TEST(TimoshenkoBeam, RigidTiltGyroscopicCouplingIsPolarInertia) {
   EXPECT_EQ(G(idx(0, Dof::v), idx(0, Dof::w)), 0.0);
 
   // A non-rotating beam has no gyroscopic matrix and no rotating damping.
-  const LocalMatrices still =
-      make_beam(L, {d, di}, true, GyroscopicForm::consistent, 1e-4, false).local_matrices({});
+  const LocalMatrices still = make_beam(L, {d, di}, true, GyroscopicForm::consistent, 1e-4, false).local_matrices({});
   EXPECT_TRUE(still.G.size() == 0 || still.G.isZero(0.0));
   EXPECT_TRUE(still.Ci.size() == 0 || still.Ci.isZero(0.0));
   EXPECT_TRUE(still.Ki.size() == 0 || still.Ki.isZero(0.0));
@@ -324,10 +317,8 @@ TEST(TimoshenkoBeam, RigidTiltGyroscopicCouplingIsPolarInertia) {
 // within ~1e-8 of the limit; tolerance 1e-7.
 TEST(TimoshenkoBeam, CowperShearCoefficient) {
   for (const Real n : {0.0, 0.25, 0.3, 0.45}) {
-    EXPECT_NEAR(CircularSection({0.05, 0.0}).cowper_shear_coefficient(n), 6 * (1 + n) / (7 + 6 * n),
-                1e-15);
-    EXPECT_NEAR(CircularSection({0.05, 0.9999 * 0.05}).cowper_shear_coefficient(n),
-                2 * (1 + n) / (4 + 3 * n), 1e-7);
+    EXPECT_NEAR(CircularSection({0.05, 0.0}).cowper_shear_coefficient(n), 6 * (1 + n) / (7 + 6 * n), 1e-15);
+    EXPECT_NEAR(CircularSection({0.05, 0.9999 * 0.05}).cowper_shear_coefficient(n), 2 * (1 + n) / (4 + 3 * n), 1e-7);
   }
   // Four-digit hand values, so half a unit in the last digit.
   EXPECT_NEAR(CircularSection({0.05, 0.0}).cowper_shear_coefficient(0.3), 0.8864, 5e-5);
@@ -354,9 +345,9 @@ TEST(TimoshenkoBeam, MaterialDampingIsStiffnessProportional) {
 
   const Real phi = solid_phi(d, L), I = pi * std::pow(d, 4) / 64.0;
   Matrix kb(4, 4);
-  kb << 12, 6 * L, -12, 6 * L,                                  //
-      6 * L, (4 + phi) * L * L, -6 * L, (2 - phi) * L * L,      //
-      -12, -6 * L, 12, -6 * L,                                  //
+  kb << 12, 6 * L, -12, 6 * L,                              //
+      6 * L, (4 + phi) * L * L, -6 * L, (2 - phi) * L * L,  //
+      -12, -6 * L, 12, -6 * L,                              //
       6 * L, (2 - phi) * L * L, -6 * L, (4 + phi) * L * L;
   kb *= E * I / ((1 + phi) * L * L * L);
   const Matrix S = slope_flip();

@@ -17,7 +17,9 @@ namespace {
 
 constexpr Real D = 0.1, c = 1e-4, mu = 0.1, speed = 157.08;
 
-JournalBearingGeometry bearing(Real l_over_d) { return {.diameter = D, .length = l_over_d * D, .clearance = c, .viscosity = mu}; }
+JournalBearingGeometry bearing(Real l_over_d) {
+  return {.diameter = D, .length = l_over_d * D, .clearance = c, .viscosity = mu};
+}
 
 // |f| and the attitude angle of the steady film force at eccentricity ε along +y.
 std::pair<Real, Real> steady(const JournalBearingGeometry& g, const FiniteBearingGrid& grid, Real eps) {
@@ -54,7 +56,8 @@ TEST(FiniteBearing, ConvergesToTheLongBearingAsLengthGrows) {
   // 0.012 at L/D = 5, 20 and 80 (ε = 0.5).
   Real previous = 1.0;
   for (const Real ld : {5.0, 20.0, 80.0}) {
-    const FiniteBearingGrid grid{.circumferential = 144, .axial = static_cast<int>(4 * ld), .cavitation = Cavitation::gumbel};
+    const FiniteBearingGrid grid{
+        .circumferential = 144, .axial = static_cast<int>(4 * ld), .cavitation = Cavitation::gumbel};
     const auto [load, phi] = steady(bearing(ld), grid, 0.5);
     const Real deficit = 1.0 - load / film_load(bearing(ld), FilmTheory::long_bearing, speed, 0.5);
     EXPECT_GT(deficit, 0.0) << ld;
@@ -72,7 +75,8 @@ TEST(FiniteBearing, LoadCapacityOfTheSquareBearingMatchesRaimondiAndBoyd) {
   // agree to 1.5 % (measured 1.4 %, 0.4 %, 0.3 %, 0.3 %).
   const FiniteBearingGrid grid{.circumferential = 144, .axial = 16, .cavitation = Cavitation::reynolds};
   const JournalBearingGeometry g = bearing(1.0);
-  for (const auto& [eps, S] : {std::pair{0.4, 0.264}, std::pair{0.6, 0.121}, std::pair{0.8, 0.0446}, std::pair{0.9, 0.0188}}) {
+  for (const auto& [eps, S] :
+       {std::pair{0.4, 0.264}, std::pair{0.6, 0.121}, std::pair{0.8, 0.0446}, std::pair{0.9, 0.0188}}) {
     const Real load = steady(g, grid, eps).first;
     const Real sommerfeld = std::pow(0.5 * D / c, 2) * mu * (speed / (2 * pi)) / (load / (D * D));
     EXPECT_NEAR(sommerfeld, S, 0.015 * S) << "ε = " << eps;
@@ -89,7 +93,10 @@ TEST(FiniteBearing, OperatingDataOfTheSquareBearingMatchesRaimondiAndBoydsTable)
   // to 2.5°; h_min = c(1 − ε). Measured: 65.13°, 51.99°, 36.79° at the first three,
   // which 576 × 64 cells change by less than 0.01° (so the gap, 2.0°, 1.4°, 0.6°, is the
   // table's: their relaxation solution on a coarse mesh; its S is 1.4 % off at 0.4 too).
-  FluidFilmBearing b{.node_a = 0, .node_b = {}, .geometry = bearing(1.0), .theory = FilmTheory::finite_length,
+  FluidFilmBearing b{.node_a = 0,
+                     .node_b = {},
+                     .geometry = bearing(1.0),
+                     .theory = FilmTheory::finite_length,
                      .grid = {.circumferential = 144, .axial = 16, .cavitation = Cavitation::reynolds}};
   struct Row {
     Real eps, S, phi_deg, friction;
@@ -120,13 +127,18 @@ TEST(FiniteBearing, PeakPressureTendsToTheShortBearingsAndMatchesRaimondiAndBoyd
   for (const Real eps : {0.3, 0.5, 0.8}) {
     const JournalBearingGeometry g = bearing(0.05);
     const Eigen::Vector2d x(eps * c, 0.0);
-    const FilmForce f = finite_bearing_force(g, {.circumferential = 576, .axial = 8}, speed, x, Eigen::Vector2d::Zero());
+    const FilmForce f =
+        finite_bearing_force(g, {.circumferential = 576, .axial = 8}, speed, x, Eigen::Vector2d::Zero());
     const Real exact = short_bearing_peak_pressure(g, speed, x, Eigen::Vector2d::Zero());
     EXPECT_NEAR(f.peak_pressure, exact, (6 * 0.05 * 0.05 / (1 - eps * eps) + 1e-3) * exact) << "ε = " << eps;
   }
-  FluidFilmBearing b{.node_a = 0, .node_b = {}, .geometry = bearing(1.0), .theory = FilmTheory::finite_length,
+  FluidFilmBearing b{.node_a = 0,
+                     .node_b = {},
+                     .geometry = bearing(1.0),
+                     .theory = FilmTheory::finite_length,
                      .grid = {.circumferential = 144, .axial = 16, .cavitation = Cavitation::reynolds}};
-  for (const auto& [eps, ratio] : {std::pair{0.4, 0.484}, std::pair{0.6, 0.415}, std::pair{0.8, 0.313}, std::pair{0.9, 0.247}}) {
+  for (const auto& [eps, ratio] :
+       {std::pair{0.4, 0.484}, std::pair{0.6, 0.415}, std::pair{0.8, 0.313}, std::pair{0.9, 0.247}}) {
     Vector x(2);
     x << 0.0, eps * c;
     std::map<std::string, Real> d;
@@ -144,22 +156,27 @@ TEST(FiniteBearing, JacobianEqualsCentralDifferences) {
   const Real h = 1e-7 * c, hv = 1e-7 * c * speed;
   for (const Cavitation cav : {Cavitation::gumbel, Cavitation::reynolds})
     for (const auto& [n, m] : {std::pair{48, 6}, std::pair{16, 12}}) {
-    const FiniteBearingGrid grid{.circumferential = n, .axial = m, .cavitation = cav};
-    for (const auto& [x, v] : {std::pair{Eigen::Vector2d(0.3 * c, -0.2 * c), Eigen::Vector2d(0.05 * c * speed, 0.02 * c * speed)},
-                               std::pair{Eigen::Vector2d(-0.6 * c, 0.1 * c), Eigen::Vector2d(-0.1 * c * speed, 0.0)}}) {
-      const FilmForce f = finite_bearing_force(g, grid, speed, x, v);
-      Eigen::Matrix2d dx, dv;
-      for (int k = 0; k < 2; ++k) {
-        Eigen::Vector2d e = Eigen::Vector2d::Zero();
-        e(k) = h;
-        dx.col(k) = (finite_bearing_force(g, grid, speed, x + e, v).f - finite_bearing_force(g, grid, speed, x - e, v).f) / (2 * h);
-        e(k) = hv;
-        dv.col(k) = (finite_bearing_force(g, grid, speed, x, v + e).f - finite_bearing_force(g, grid, speed, x, v - e).f) / (2 * hv);
+      const FiniteBearingGrid grid{.circumferential = n, .axial = m, .cavitation = cav};
+      for (const auto& [x, v] :
+           {std::pair{Eigen::Vector2d(0.3 * c, -0.2 * c), Eigen::Vector2d(0.05 * c * speed, 0.02 * c * speed)},
+            std::pair{Eigen::Vector2d(-0.6 * c, 0.1 * c), Eigen::Vector2d(-0.1 * c * speed, 0.0)}}) {
+        const FilmForce f = finite_bearing_force(g, grid, speed, x, v);
+        Eigen::Matrix2d dx, dv;
+        for (int k = 0; k < 2; ++k) {
+          Eigen::Vector2d e = Eigen::Vector2d::Zero();
+          e(k) = h;
+          dx.col(k) =
+              (finite_bearing_force(g, grid, speed, x + e, v).f - finite_bearing_force(g, grid, speed, x - e, v).f) /
+              (2 * h);
+          e(k) = hv;
+          dv.col(k) =
+              (finite_bearing_force(g, grid, speed, x, v + e).f - finite_bearing_force(g, grid, speed, x, v - e).f) /
+              (2 * hv);
+        }
+        EXPECT_LT((f.dfdx - dx).norm(), 1e-5 * f.dfdx.norm()) << n << " × " << m;
+        EXPECT_LT((f.dfdv - dv).norm(), 1e-5 * f.dfdv.norm()) << n << " × " << m;
       }
-      EXPECT_LT((f.dfdx - dx).norm(), 1e-5 * f.dfdx.norm()) << n << " × " << m;
-      EXPECT_LT((f.dfdv - dv).norm(), 1e-5 * f.dfdv.norm()) << n << " × " << m;
     }
-  }
 }
 
 TEST(FiniteBearing, AxiallyFineGridsNumberedAlongTheCirclesAgreeWithRingOrderedOnes) {
@@ -177,9 +194,12 @@ TEST(FiniteBearing, AxiallyFineGridsNumberedAlongTheCirclesAgreeWithRingOrderedO
         const JournalBearingGeometry g = bearing(ld);
         // Off the grid's axes: on them the nodes at θ = 0 and π have no pressure, and
         // the discrete force's derivative across the film's edge is one-sided.
-        const Eigen::Vector2d x = eps * c * Eigen::Vector2d(std::cos(0.37), std::sin(0.37)), v = Eigen::Vector2d::Zero();
-        const FilmForce rings = finite_bearing_force(g, {.circumferential = 34, .axial = 16, .cavitation = cav}, speed, x, v);
-        const FilmForce circles = finite_bearing_force(g, {.circumferential = 34, .axial = 18, .cavitation = cav}, speed, x, v);
+        const Eigen::Vector2d x = eps * c * Eigen::Vector2d(std::cos(0.37), std::sin(0.37)),
+                              v = Eigen::Vector2d::Zero();
+        const FilmForce rings =
+            finite_bearing_force(g, {.circumferential = 34, .axial = 16, .cavitation = cav}, speed, x, v);
+        const FilmForce circles =
+            finite_bearing_force(g, {.circumferential = 34, .axial = 18, .cavitation = cav}, speed, x, v);
         EXPECT_LT((circles.f - rings.f).norm(), 5e-4 * rings.f.norm()) << ld << ", ε = " << eps;
         EXPECT_LT(std::abs(circles.peak_pressure / rings.peak_pressure - 1.0), 5e-4) << ld << ", ε = " << eps;
         const Real stiffness = cav == Cavitation::gumbel ? 5e-4 : 2e-2;
@@ -194,7 +214,8 @@ TEST(FiniteBearing, ReynoldsConditionCarriesMoreThanGumbelsAndNoNegativePressure
   const JournalBearingGeometry g = bearing(1.0);
   for (const Real eps : {0.3, 0.7}) {
     const auto [gumbel, phi_g] = steady(g, {.circumferential = 96, .axial = 8, .cavitation = Cavitation::gumbel}, eps);
-    const auto [reynolds, phi_r] = steady(g, {.circumferential = 96, .axial = 8, .cavitation = Cavitation::reynolds}, eps);
+    const auto [reynolds, phi_r] =
+        steady(g, {.circumferential = 96, .axial = 8, .cavitation = Cavitation::reynolds}, eps);
     EXPECT_GT(reynolds, gumbel) << eps;
     EXPECT_LT(reynolds, 1.3 * gumbel) << eps;
     EXPECT_LT(phi_r, phi_g) << eps;

@@ -124,9 +124,10 @@ TEST(FiniteBearingTable, JacobianIsTheDerivativeOfTheTabulatedForce) {
   const auto force = [&](const Eigen::Vector2d& x, const Eigen::Vector2d& v) {
     return film_force(half, FilmTheory::finite_length, speed, x, v, grid);
   };
-  for (const auto& [x, v] : {std::pair{Eigen::Vector2d(0.3 * c, -0.2 * c), Eigen::Vector2d(0.05 * c * speed, 0.02 * c * speed)},
-                             std::pair{Eigen::Vector2d(-0.6 * c, 0.5 * c), Eigen::Vector2d(-0.1 * c * speed, 0.0)},
-                             std::pair{Eigen::Vector2d(1e-3 * c, 0.0), Eigen::Vector2d(0.0, 0.0)}}) {
+  for (const auto& [x, v] :
+       {std::pair{Eigen::Vector2d(0.3 * c, -0.2 * c), Eigen::Vector2d(0.05 * c * speed, 0.02 * c * speed)},
+        std::pair{Eigen::Vector2d(-0.6 * c, 0.5 * c), Eigen::Vector2d(-0.1 * c * speed, 0.0)},
+        std::pair{Eigen::Vector2d(1e-3 * c, 0.0), Eigen::Vector2d(0.0, 0.0)}}) {
     const FilmForce f = force(x, v);
     Eigen::Matrix2d dx, dv;
     for (int k = 0; k < 2; ++k) {
@@ -153,7 +154,8 @@ TEST(FiniteBearingTable, BeyondItsEccentricityTheSolverAnswersAndTablesAreShared
   const FilmForce solved = film_force(half, FilmTheory::finite_length, 300.0, 0.5 * x, v, exact(grid));
   EXPECT_NE(inside.f, solved.f);
   const auto table = FiniteBearingTable::shared(0.5, grid);
-  EXPECT_LT(std::abs(inside.peak_pressure - solved.peak_pressure), 1.5 * table->error().peak_pressure * solved.peak_pressure);
+  EXPECT_LT(std::abs(inside.peak_pressure - solved.peak_pressure),
+            1.5 * table->error().peak_pressure * solved.peak_pressure);
   // The automatic evaluation: the table along trajectories only.
   FiniteBearingGrid automatic = grid;
   automatic.evaluation = FilmEvaluation::automatic;

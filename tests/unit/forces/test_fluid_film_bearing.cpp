@@ -21,7 +21,9 @@ using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
 // Friswell et al. (2010), Example 5.5.1.
-JournalBearingGeometry friswell_5_5_1() { return {.diameter = 0.1, .length = 0.03, .clearance = 1e-4, .viscosity = 0.1}; }
+JournalBearingGeometry friswell_5_5_1() {
+  return {.diameter = 0.1, .length = 0.03, .clearance = 1e-4, .viscosity = 0.1};
+}
 
 Vec2 direction(Real angle) { return {std::cos(angle), std::sin(angle)}; }
 
@@ -121,10 +123,12 @@ TEST(FilmForce, LinearisedForceEqualsTheClosedFormCoefficients) {
           const Mat2 T = load_frame(load_angle);
           const Mat2 K = -T.transpose() * F.dfdx * T, C = -T.transpose() * F.dfdv * T;
           const BearingCoefficients closed = film_coefficients(g, theory, speed, load);
-          EXPECT_LT((K - closed.K).norm() / closed.K.norm(), 1e-9)
-              << name(theory) << ", W = " << load << "\n" << K << "\n" << closed.K;
-          EXPECT_LT((C - closed.C).norm() / closed.C.norm(), 1e-9)
-              << name(theory) << ", W = " << load << "\n" << C << "\n" << closed.C;
+          EXPECT_LT((K - closed.K).norm() / closed.K.norm(), 1e-9) << name(theory) << ", W = " << load << "\n"
+                                                                   << K << "\n"
+                                                                   << closed.K;
+          EXPECT_LT((C - closed.C).norm() / closed.C.norm(), 1e-9) << name(theory) << ", W = " << load << "\n"
+                                                                   << C << "\n"
+                                                                   << closed.C;
         }
       }
     }
@@ -185,7 +189,6 @@ TEST(ShortBearing, Friswell551) {
   EXPECT_NEAR(c.C(1, 1), 294.9e3, 0.05e3);
 }
 
-
 // The operating data an engineer checks first, against their definitions and closed
 // forms: the short bearing at eccentricity ε has h_min = c(1 − ε), the attitude angle
 // tan φ = π√(1 − ε²)/(4ε) (its closed form, film_attitude_angle), the Sommerfeld number
@@ -219,7 +222,8 @@ TEST(JournalOperatingData, ShortBearingAgreesWithItsClosedForms) {
   }
   // Petroff at the centre: no load, the whole film shears, T = 2πμR³LΩ/c.
   std::map<std::string, Real> d;
-  for (const OperatingValue& o : b.operating_data({.speed = speed}, Vector::Zero(2), Vector::Zero(2))) d[o.name] = o.value;
+  for (const OperatingValue& o : b.operating_data({.speed = speed}, Vector::Zero(2), Vector::Zero(2)))
+    d[o.name] = o.value;
   const Real R = g.diameter / 2;
   EXPECT_NEAR(d["friction_torque_nm"], 2 * pi * g.viscosity * R * R * R * g.length * speed / g.clearance, 1e-15);
   EXPECT_EQ(d["min_film_thickness_m"], g.clearance);

@@ -17,8 +17,13 @@ namespace {
 
 // A deep-groove ball bearing of 9 balls of 12 mm on a 60 mm pitch circle.
 RollingBearingGeometry ball_bearing(Real clearance = 0.0) {
-  return {.elements = 9, .element_diameter = 0.012, .pitch_diameter = 0.06, .contact_angle = 0.0,
-          .clearance = clearance, .hertz_constant = 1e10, .roller = false};
+  return {.elements = 9,
+          .element_diameter = 0.012,
+          .pitch_diameter = 0.06,
+          .contact_angle = 0.0,
+          .clearance = clearance,
+          .hertz_constant = 1e10,
+          .roller = false};
 }
 
 Eigen::Vector2d force_on_journal(const RollingBearing& b, const Eigen::Vector2d& x, Real angle = 0.0) {
@@ -106,7 +111,6 @@ TEST(RollingBearing, CageTurnsAtTheKinematicRatioAndTheStiffnessRepeatsAtTheBall
   EXPECT_LT((f0 - f1).norm(), 1e-12 * f0.norm());
   EXPECT_GT((f0 - fh).norm(), 1e-3 * f0.norm());
 }
-
 
 // The most loaded element, the loaded count, and Hertz's contact stress of a sphere of
 // radius R on a steel plane: with K = (4/3)E*√R, p_max = (6QE*²/(π³R²))^(1/3)

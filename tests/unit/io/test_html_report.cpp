@@ -18,7 +18,6 @@
 namespace feran::test_html_report {
 namespace {
 
-
 // A uniform steel shaft, 0.8 m × Ø 40 mm, on two bearings.
 std::string shaft_model(const std::string& title, const std::string& extra = "") {
   return "title = \"" + title + "\"\n" + R"(
@@ -124,7 +123,8 @@ TEST(HtmlReport, RunsTheApi684SectionWhenTheModelGivesAnOperatingRange) {
   // films by ("not checked", with the reason).
   if (!report_available()) GTEST_SKIP() << "built without plotly.js";
   const ModelFile file = read_model_string(
-      shaft_model("shaft", "[api684]\nmin_speed = \"2000 rpm\"\nmax_speed = \"3000 rpm\"\npoints = 41\nmap_points = 5\n"),
+      shaft_model("shaft",
+                  "[api684]\nmin_speed = \"2000 rpm\"\nmax_speed = \"3000 rpm\"\npoints = 41\nmap_points = 5\n"),
       "shaft.toml");
   ReportOptions options;
   options.runup = false;
@@ -180,9 +180,10 @@ TEST(HtmlReport, JudgesTheJournalBearingsFilmAndLoadByTrumplersLimits) {
 TEST(ReportConfig, ReadsItsKeysAndLocatesMistakes) {
   const ModelFile file = read_model_string(shaft_model("shaft"), "shaft.toml");
   ReportOptions options;
-  read_report_config("title = \"T\"\nspeed_unit = \"Hz\"\n[campbell]\nstop = \"50 Hz\"\n[modes]\nspeeds = [0, \"10 Hz\"]\n"
-                     "[response]\nprobes = [\"left\", 5]\n[runup]\nenabled = false\n",
-                     "report.toml", file.model, options);
+  read_report_config(
+      "title = \"T\"\nspeed_unit = \"Hz\"\n[campbell]\nstop = \"50 Hz\"\n[modes]\nspeeds = [0, \"10 Hz\"]\n"
+      "[response]\nprobes = [\"left\", 5]\n[runup]\nenabled = false\n",
+      "report.toml", file.model, options);
   EXPECT_EQ(options.title, "T");
   EXPECT_EQ(options.speed_unit, "Hz");
   EXPECT_NEAR(*options.campbell.stop, 2 * pi * 50, 1e-9);

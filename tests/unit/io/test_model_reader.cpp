@@ -124,8 +124,7 @@ std::vector<Material> shaft_materials(const Model& m) {
   std::vector<Material> out;
   for (const Element& e : m.elements)
     if (const auto* beam = e.target<TimoshenkoBeam>())
-      if (std::none_of(out.begin(), out.end(),
-                       [&](const Material& x) { return x.name == beam->material().name; }))
+      if (std::none_of(out.begin(), out.end(), [&](const Material& x) { return x.name == beam->material().name; }))
         out.push_back(beam->material());
   return out;
 }
@@ -152,7 +151,7 @@ TEST_F(EverythingModel, Materials) {
   EXPECT_EQ(steel.name, "steel");
   EXPECT_DOUBLE_EQ(steel.E, 210e9);
   EXPECT_DOUBLE_EQ(steel.G, 210e9 / (2.0 * 1.3));  // from nu = 0.3
-  EXPECT_DOUBLE_EQ(steel.rho, 7850.0);              // "7.85 g/cm^3"
+  EXPECT_DOUBLE_EQ(steel.rho, 7850.0);             // "7.85 g/cm^3"
   EXPECT_EQ(steel.loss_factor, 0.002);
   const Material& aluminium = materials[1];
   EXPECT_EQ(aluminium.name, "aluminium");
@@ -172,12 +171,10 @@ TEST_F(EverythingModel, NodeNumbersNamesPositions) {
   // Shaft "rotor" from x = 10 mm: 68 mm in 2 elements, 30 mm in 3; the sleeve from
   // 0, one 100 mm element; then [[nodes]]: next free number 9, explicit 20, and 21.
   const std::vector<Expected> expected = {
-      {1, "drive", 0.010, true},      {2, "", 0.010 + 0.034, true},
-      {3, "bearing a", 0.078, true},  {4, "", 0.088, true},
-      {5, "", 0.098, true},           {6, "tip", 0.108, true},
-      {7, "sleeve a", 0.0, false},    {8, "", 0.1, false},
-      {9, "stator a", 0.078, false},  {20, "stator b", 0.108, false},
-      {21, "foot", 0.090, false},
+      {1, "drive", 0.010, true},      {2, "", 0.010 + 0.034, true}, {3, "bearing a", 0.078, true},
+      {4, "", 0.088, true},           {5, "", 0.098, true},         {6, "tip", 0.108, true},
+      {7, "sleeve a", 0.0, false},    {8, "", 0.1, false},          {9, "stator a", 0.078, false},
+      {20, "stator b", 0.108, false}, {21, "foot", 0.090, false},
   };
   ASSERT_EQ(m().nodes.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -256,11 +253,11 @@ TEST_F(EverythingModel, RigidBodies) {
   const auto& disk = element_as<RigidBody>(m(), "disk");
   const Real ro = 0.030, ri = 0.010, width = 0.010, rho = 7850.0;
   const Real mass = rho * pi * (ro * ro - ri * ri) * width;  // 0.19729 kg
-  EXPECT_EQ(disk.node(), 1);                                  // node = 2
+  EXPECT_EQ(disk.node(), 1);                                 // node = 2
   EXPECT_NEAR(disk.properties().mass, mass, 1e-12 * mass);
   EXPECT_NEAR(disk.properties().polar_inertia, 0.5 * mass * (ro * ro + ri * ri), 1e-15);
-  EXPECT_NEAR(disk.properties().transverse_inertia,
-              0.25 * mass * (ro * ro + ri * ri) + mass * width * width / 12.0, 1e-15);
+  EXPECT_NEAR(disk.properties().transverse_inertia, 0.25 * mass * (ro * ro + ri * ri) + mass * width * width / 12.0,
+              1e-15);
   EXPECT_EQ(disk.properties().offset, 0.0);
 
   const auto& stator = element_as<RigidBody>(m(), "rigid body 3");  // default label
@@ -275,10 +272,10 @@ TEST_F(EverythingModel, SpringsWithEveryLaw) {
   EXPECT_EQ(a.node_a(), index_of(m(), "bearing a"));
   EXPECT_EQ(a.node_b(), index_of(m(), "stator a"));
   const SpringDamperCoefficients& ca = a.coefficients();
-  EXPECT_EQ(ca.k[0], SpeedCoefficient(1e6));   // kx = "1 MN/m"
-  EXPECT_EQ(ca.k[1], SpeedCoefficient(6e7));   // ky = "6e7 N/m"
-  EXPECT_EQ(ca.k[2], SpeedCoefficient(6e7));   // kz = 6e7
-  EXPECT_EQ(ca.kyz, SpeedCoefficient(-1e5));   // cross terms may be negative
+  EXPECT_EQ(ca.k[0], SpeedCoefficient(1e6));  // kx = "1 MN/m"
+  EXPECT_EQ(ca.k[1], SpeedCoefficient(6e7));  // ky = "6e7 N/m"
+  EXPECT_EQ(ca.k[2], SpeedCoefficient(6e7));  // kz = 6e7
+  EXPECT_EQ(ca.kyz, SpeedCoefficient(-1e5));  // cross terms may be negative
   EXPECT_TRUE(ca.kzy.is_zero());
   EXPECT_EQ(ca.loss_factor, 0.1);
   EXPECT_EQ(a.local_matrices(OperatingPoint{}).loss_factor, 0.1);
@@ -366,7 +363,7 @@ TEST_F(EverythingModel, RotatingDampersAndFriction) {
   EXPECT_EQ(friction[1].second, "friction 2");
   EXPECT_EQ(second_friction.node_b, 4);
   EXPECT_DOUBLE_EQ(second_friction.force_amplitude, 1.0);  // "0.001 kN"
-  EXPECT_EQ(second_friction.epsilon_t, 1e-4);    // defaults
+  EXPECT_EQ(second_friction.epsilon_t, 1e-4);              // defaults
   EXPECT_EQ(second_friction.epsilon_r, 1e-3);
 }
 
@@ -379,7 +376,7 @@ TEST_F(EverythingModel, JournalBearings) {
   EXPECT_FALSE(a.node_b);  // the ground
   EXPECT_DOUBLE_EQ(a.geometry.diameter, 0.05);
   EXPECT_DOUBLE_EQ(a.geometry.length, 0.02);
-  EXPECT_DOUBLE_EQ(a.geometry.clearance, 5e-5);  // "50 um"
+  EXPECT_DOUBLE_EQ(a.geometry.clearance, 5e-5);   // "50 um"
   EXPECT_DOUBLE_EQ(a.geometry.viscosity, 0.028);  // "28 cP"
   EXPECT_EQ(a.theory, FilmTheory::short_bearing);
   const FluidFilmBearing& b = bearings[1].first;
@@ -461,7 +458,7 @@ TEST_F(EverythingModel, HarmonicForces) {
 
   const HarmonicForce& axial = forces[4].first;
   EXPECT_EQ(axial.type, Kind::fixed);
-  EXPECT_EQ(axial.direction, Dof::u);  // "x"
+  EXPECT_EQ(axial.direction, Dof::u);       // "x"
   EXPECT_DOUBLE_EQ(axial.amplitude, 10.0);  // "0.01 kN"
 }
 
@@ -515,8 +512,7 @@ TEST_F(EverythingModel, RunupDefaultsWithARamp) {
   EXPECT_EQ(r.settings.abs_tol, 1e-8);
   EXPECT_DOUBLE_EQ(r.output_interval, 2.0 / 1000.0);
   EXPECT_EQ(r.probes, (std::vector<Index>{index_of(m(), "tip"), 1}));
-  EXPECT_EQ(r.springs,
-            (std::vector<Index>{element_index(m(), "bearing b"), element_index(m(), "bearing a")}));
+  EXPECT_EQ(r.springs, (std::vector<Index>{element_index(m(), "bearing b"), element_index(m(), "bearing a")}));
   EXPECT_NE(element(m(), "bearing b").target<SpringDamper>(), nullptr);
 }
 
@@ -550,8 +546,7 @@ void expect_same_model(const Model& expected, const Model& actual) {
     SCOPED_TRACE("element " + expected.elements[i].label());
     EXPECT_EQ(actual.elements[i].label(), expected.elements[i].label());
     EXPECT_EQ(actual.elements[i].kind(), expected.elements[i].kind());
-    for (const Real speed : {0.0, 100.0, 1000.0})
-      expect_same_matrices(expected.elements[i], actual.elements[i], speed);
+    for (const Real speed : {0.0, 100.0, 1000.0}) expect_same_matrices(expected.elements[i], actual.elements[i], speed);
   }
   ASSERT_EQ(actual.fixed.size(), expected.fixed.size());
   for (std::size_t i = 0; i < expected.fixed.size(); ++i) {
@@ -590,8 +585,7 @@ TEST(ModelReaderRoundTrip, JeffcottRotor) {
                                  "shaft 1 section 1 element 1");
   expected.elements.emplace_back(TimoshenkoBeam(1, 2, 0.25, section, shaft_material, beam),
                                  "shaft 1 section 2 element 1");
-  expected.elements.emplace_back(RigidBody(1, RigidBodyProperties{5.0, 0.02, 0.04, 0.0}, true),
-                                 "disk");
+  expected.elements.emplace_back(RigidBody(1, RigidBodyProperties{5.0, 0.02, 0.04, 0.0}, true), "disk");
   FixedDofs all{0, {}};
   all.dofs.fill(true);
   expected.fixed = {all, all};
@@ -610,8 +604,8 @@ TEST(ModelReaderRoundTrip, StatorJoinedByARigidLink) {
   Model expected;
   expected.name = "Rotor in a linked stator";
   const Material steel{"steel", 2.1e11, 2.1e11 / 2.6, 7850.0};
-  expected.nodes = {{1, "journal a", 0.0, true}, {2, "", 0.02, true},    {3, "", 0.04, true},
-                    {4, "journal b", 0.06, true}, {5, "", 0.08, true},   {6, "tip", 0.1, true},
+  expected.nodes = {{1, "journal a", 0.0, true},  {2, "", 0.02, true},         {3, "", 0.04, true},
+                    {4, "journal b", 0.06, true}, {5, "", 0.08, true},         {6, "tip", 0.1, true},
                     {7, "stator a", 0.0, false},  {8, "stator b", 0.06, false}};
   const BeamOptions beam{};
   const CircularSection section{0.020, 0.0};
@@ -624,10 +618,8 @@ TEST(ModelReaderRoundTrip, StatorJoinedByARigidLink) {
           TimoshenkoBeam(a, a + 1, length, section, steel, beam),
           "shaft rotor section " + std::to_string(s + 1) + " element " + std::to_string(j + 1));
     }
-  expected.elements.emplace_back(RigidBody(6, RigidBodyProperties{5.0, 0.01, 0.01, 0.03}, false),
-                                 "stator");
-  expected.elements.emplace_back(RigidBody(5, RigidBodyProperties{1.93, 0.0063, 0.0104, 0.0}, true),
-                                 "rotor");
+  expected.elements.emplace_back(RigidBody(6, RigidBodyProperties{5.0, 0.01, 0.01, 0.03}, false), "stator");
+  expected.elements.emplace_back(RigidBody(5, RigidBodyProperties{1.93, 0.0063, 0.0104, 0.0}, true), "rotor");
   SpringDamperCoefficients bearing_a;
   bearing_a.k = {6e7, 6e7, 6e7, 1.0, 0.0, 0.0};
   expected.elements.emplace_back(SpringDamper(0, 6, bearing_a), "bearing a");
@@ -657,11 +649,10 @@ TEST(ModelReaderValid, TwoDisksOnBearings) {
   const auto& disk = element_as<RigidBody>(m, "disk 2");
   const RigidBodyProperties centre = RigidBody::disk(7810.0, 0.35, 0.05, 0.07);
   EXPECT_DOUBLE_EQ(disk.properties().mass, centre.mass);
-  EXPECT_DOUBLE_EQ(disk.properties().transverse_inertia,
-                   centre.transverse_inertia + centre.mass * 0.01 * 0.01);
+  EXPECT_DOUBLE_EQ(disk.properties().transverse_inertia, centre.transverse_inertia + centre.mass * 0.01 * 0.01);
   EXPECT_DOUBLE_EQ(disk.properties().offset, 0.01);
   const auto& bearing = element_as<SpringDamper>(m, "bearing 2");
-  EXPECT_FALSE(bearing.node_b());  // to = "ground"
+  EXPECT_FALSE(bearing.node_b());                                 // to = "ground"
   EXPECT_EQ(bearing.coefficients().k[1], SpeedCoefficient(1e7));  // "10 kN/mm"
   EXPECT_DOUBLE_EQ(*file.spec.campbell.stop, 6000.0 * rpm);
 }
@@ -721,10 +712,10 @@ radius = 0.01
   EXPECT_EQ(file.title, "");
   EXPECT_TRUE(m.free_motions.empty());
   ASSERT_EQ(m.nodes.size(), 4u);
-  EXPECT_EQ(m.nodes[0].x, 0.0);        // shaft x defaults to 0
-  EXPECT_TRUE(m.nodes[0].rotating);    // shafts rotate by default
-  EXPECT_EQ(m.nodes[3].number, 4);     // next after the shaft's 1-3
-  EXPECT_FALSE(m.nodes[3].rotating);   // [[nodes]] do not rotate by default
+  EXPECT_EQ(m.nodes[0].x, 0.0);       // shaft x defaults to 0
+  EXPECT_TRUE(m.nodes[0].rotating);   // shafts rotate by default
+  EXPECT_EQ(m.nodes[3].number, 4);    // next after the shaft's 1-3
+  EXPECT_FALSE(m.nodes[3].rotating);  // [[nodes]] do not rotate by default
   const auto& beam = element_as<TimoshenkoBeam>(m, "shaft 1 section 1 element 2");
   EXPECT_TRUE(beam.options().shear_deformation);  // [options] defaults
   EXPECT_EQ(beam.options().gyroscopic, GyroscopicForm::consistent);
@@ -733,7 +724,7 @@ radius = 0.01
   EXPECT_DOUBLE_EQ(beam.length(), 0.05);
   EXPECT_FALSE(element_as<RigidBody>(m, "rigid body 1").rotating());  // from its node
   EXPECT_EQ(element_as<RigidBody>(m, "rigid body 1").properties().offset, 0.0);
-  EXPECT_FALSE(element_as<SpringDamper>(m, "spring 1").node_b());     // to ground
+  EXPECT_FALSE(element_as<SpringDamper>(m, "spring 1").node_b());  // to ground
   EXPECT_TRUE(element_as<SpringDamper>(m, "spring 1").coefficients().c[1].is_zero());
   ASSERT_EQ(forces_of<Unbalance>(m).size(), 1u);
   EXPECT_EQ(forces_of<Unbalance>(m)[0].first.phase, 0.0);
@@ -776,9 +767,8 @@ TEST(ModelReaderStatic, GravityDirectionsAndDefaultMagnitude) {
     Eigen::Vector3d expected;
   };
   const std::vector<Case> cases = {
-      {"+x", {9.81, 0.0, 0.0}},  {"-x", {-9.81, 0.0, 0.0}}, {"+y", {0.0, 9.81, 0.0}},
-      {"-y", {0.0, -9.81, 0.0}}, {"+z", {0.0, 0.0, 9.81}},  {"-z", {0.0, 0.0, -9.81}},
-      {"none", Eigen::Vector3d::Zero()}};
+      {"+x", {9.81, 0.0, 0.0}}, {"-x", {-9.81, 0.0, 0.0}}, {"+y", {0.0, 9.81, 0.0}},         {"-y", {0.0, -9.81, 0.0}},
+      {"+z", {0.0, 0.0, 9.81}}, {"-z", {0.0, 0.0, -9.81}}, {"none", Eigen::Vector3d::Zero()}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.gravity);
     const ModelFile file = read_with(std::string("[static]\ngravity = \"") + c.gravity + "\"\n");
@@ -820,9 +810,9 @@ TEST(ModelReaderRunup, ConstantSpeedIsOnePointAndHasNoDefaultDuration) {
   const TransientOptions t = runup_of(timed);
   EXPECT_EQ(t.profile.points(), (std::vector<std::pair<Real, Real>>{{0.0, 100.0}}));
   EXPECT_DOUBLE_EQ(t.duration, 0.25);
-  EXPECT_EQ(t.integrator, "trapezoidal");   // built-in defaults
+  EXPECT_EQ(t.integrator, "trapezoidal");  // built-in defaults
   EXPECT_EQ(t.settings.dt, 1e-4);
-  EXPECT_TRUE(t.probes.empty());            // the model has no unbalance
+  EXPECT_TRUE(t.probes.empty());  // the model has no unbalance
   EXPECT_TRUE(t.springs.empty());
 }
 
@@ -934,8 +924,7 @@ springs = ["right", "left"]
   constant.duration = 1.0;
   const TransientOptions t = runup_settings(m, file.spec.runup, constant);
   EXPECT_EQ(t.probes, (std::vector<Index>{1, 0}));
-  EXPECT_EQ(t.springs,
-            (std::vector<Index>{element_index(m, "right"), element_index(m, "left")}));
+  EXPECT_EQ(t.springs, (std::vector<Index>{element_index(m, "right"), element_index(m, "left")}));
   EXPECT_EQ(element_as<SpringDamper>(m, "left").node_a(), 0);
 }
 
@@ -1057,8 +1046,7 @@ kz = 1e6
     EXPECT_NE(e.message().find("torsion"), std::string::npos) << e.what();
   }
   // Allowed with free_motions, the same model reads.
-  EXPECT_NO_THROW((void)read_model_string(text + "\n[options]\nfree_motions = [\"torsion\"]\n",
-                                          "torsion.toml"));
+  EXPECT_NO_THROW((void)read_model_string(text + "\n[options]\nfree_motions = [\"torsion\"]\n", "torsion.toml"));
 }
 
 // ---------------------------------------------------------------------------------
@@ -1126,8 +1114,7 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
   for (const std::string& snippet : runup_snippets) {
     SCOPED_TRACE(snippet);
     try {
-      const ModelFile file =
-          read_model_string(examples[0].text + "\n" + snippet, "docs/model-format.md snippet");
+      const ModelFile file = read_model_string(examples[0].text + "\n" + snippet, "docs/model-format.md snippet");
       // A complete run-up: profile and duration (runup_settings throws otherwise).
       EXPECT_GT(runup_of(file).duration, 0.0);
     } catch (const ModelError& e) {

@@ -37,10 +37,8 @@ void PrintTo(const InvalidFixture& fixture, std::ostream* os) { *os << fixture.p
 std::vector<InvalidFixture> invalid_fixtures() {
   std::vector<InvalidFixture> out;
   for (const auto& entry : fs::directory_iterator(fs::path(FERAN_TEST_MODELS) / "invalid"))
-    if (entry.path().extension() == ".toml")
-      out.push_back({entry.path().stem().string(), entry.path().string()});
-  std::sort(out.begin(), out.end(),
-            [](const InvalidFixture& a, const InvalidFixture& b) { return a.name < b.name; });
+    if (entry.path().extension() == ".toml") out.push_back({entry.path().stem().string(), entry.path().string()});
+  std::sort(out.begin(), out.end(), [](const InvalidFixture& a, const InvalidFixture& b) { return a.name < b.name; });
   return out;
 }
 
@@ -67,8 +65,7 @@ TEST_P(InvalidModel, IsRejectedAtTheStatedLineWithTheStatedMessage) {
   const InvalidFixture& fixture = GetParam();
   const Expectation expected = read_expectation(fixture.path);
   ASSERT_GT(expected.line, 0) << fixture.path << ": first line must be '# error-line: N'";
-  ASSERT_FALSE(expected.pattern.empty())
-      << fixture.path << ": second line must be '# error-match: <regex>'";
+  ASSERT_FALSE(expected.pattern.empty()) << fixture.path << ": second line must be '# error-match: <regex>'";
   const std::regex pattern(expected.pattern, std::regex::ECMAScript);
 
   try {
@@ -93,25 +90,21 @@ std::string fixture_test_name(const ::testing::TestParamInfo<InvalidFixture>& pa
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Fixtures, InvalidModel, ::testing::ValuesIn(invalid_fixtures()),
-                         fixture_test_name);
+INSTANTIATE_TEST_SUITE_P(Fixtures, InvalidModel, ::testing::ValuesIn(invalid_fixtures()), fixture_test_name);
 
 // The error classes the reader promises to report; each must keep a fixture.
 TEST(InvalidModelFixtures, CoverEveryErrorClass) {
   const std::vector<std::string> required = {
-      "syntax_error",         "unknown_key",      "missing_key",
-      "wrong_type",           "wrong_unit",       "negative_length",
-      "inner_not_smaller",    "unknown_node",     "unknown_material",
-      "duplicate_node_name",  "bad_coefficient_law", "zero_mass",
-      "singular_stiffness",   "conflicting_rigid_body",
+      "syntax_error", "unknown_key", "missing_key", "wrong_type", "wrong_unit", "negative_length", "inner_not_smaller",
+      "unknown_node", "unknown_material", "duplicate_node_name", "bad_coefficient_law", "zero_mass",
+      "singular_stiffness", "conflicting_rigid_body",
       // Loads, loss factors and the [response] and [static] defaults.
-      "force_missing_amplitude", "force_direction_for_rotating", "force_bad_direction",
-      "rotating_force_on_stator", "response_unknown_probe", "static_g_with_none",
-      "static_bad_gravity", "static_load_no_component", "negative_loss_factor",
+      "force_missing_amplitude", "force_direction_for_rotating", "force_bad_direction", "rotating_force_on_stator",
+      "response_unknown_probe", "static_g_with_none", "static_bad_gravity", "static_load_no_component",
+      "negative_loss_factor",
       // The [runup] defaults.
-      "runup_mixed_profile_forms", "runup_table_not_increasing", "runup_table_not_at_zero",
-      "runup_negative_speed", "runup_unknown_integrator", "runup_unknown_spring",
-      "runup_unnamed_spring", "runup_zero_dt"};
+      "runup_mixed_profile_forms", "runup_table_not_increasing", "runup_table_not_at_zero", "runup_negative_speed",
+      "runup_unknown_integrator", "runup_unknown_spring", "runup_unnamed_spring", "runup_zero_dt"};
   std::vector<std::string> present;
   for (const InvalidFixture& f : invalid_fixtures()) present.push_back(f.name);
   for (const std::string& name : required)
@@ -168,16 +161,13 @@ cy = 10
       {"[runup]\nto = \"10 Hz\"\n", 1,
        "^missing key 'ramp_time' in \\[runup\\] \\(expected the ramp's duration, a time"},
       {"[runup]\nto = \"10 Hz\"\nramp_time = 0\n", 3, "^'ramp_time' must be positive, got 0 s$"},
-      {"[runup]\nfrom = -1\nto = 1\nramp_time = 1\n", 2,
-       "^'from' must not be negative, got -1 rad/s$"},
+      {"[runup]\nfrom = -1\nto = 1\nramp_time = 1\n", 2, "^'from' must not be negative, got -1 rad/s$"},
       {"[runup]\nspeed = \"-3 Hz\"\n", 2, "^'speed' must not be negative, got -3 Hz$"},
       {"[runup]\ntable = []\n", 2, "^'table' needs at least one \\[time, speed\\] pair"},
       {"[runup]\ntable = [[0, 0], [1, 2, 3]]\n", 2,
        "^each entry of 'table' must be a \\[time, speed\\] pair .*, got an array of 3 values$"},
-      {"[runup]\ntable = [[0, 0],\n  [1, \"-5 Hz\"]]\n", 3,
-       "^'table\\[1\\]\\[1\\]' must not be negative, got -5 Hz$"},
-      {"[runup]\ntable = [[0, \"5 kg\"]]\n", 2,
-       "^'table\\[0\\]\\[1\\]' has unit 'kg', expected a speed"},
+      {"[runup]\ntable = [[0, 0],\n  [1, \"-5 Hz\"]]\n", 3, "^'table\\[1\\]\\[1\\]' must not be negative, got -5 Hz$"},
+      {"[runup]\ntable = [[0, \"5 kg\"]]\n", 2, "^'table\\[0\\]\\[1\\]' has unit 'kg', expected a speed"},
       {"[runup]\nduration = \"-1 s\"\n", 2, "^'duration' must be positive, got -1 s$"},
       {"[runup]\noutput_interval = 0\n", 2, "^'output_interval' must be positive, got 0 s$"},
       {"[runup]\nrel_tol = 0\n", 2, "^'rel_tol' must be positive, got 0$"},
@@ -192,8 +182,7 @@ cy = 10
       {"[runup]\nsprings = [\"seal\", \"seal\"]\n", 2, "^spring 'seal' appears twice in 'springs'$"},
       {"[runup]\nsprings = [\"bearing\"]\n", 2,
        "^spring name 'bearing' is ambiguous: 2 \\[\\[springs\\]\\] entries have it"},
-      {"[runup]\nsprings = [3]\n", 2,
-       "^'springs\\[0\\]' must be the name of a spring .*, got an integer \\(3\\)$"},
+      {"[runup]\nsprings = [3]\n", 2, "^'springs\\[0\\]' must be the name of a spring .*, got an integer \\(3\\)$"},
       {"[runup]\nsprings = []\n", 2, "^'springs' must not be empty"},
       {"[runup]\nsprings = [\"thrust\"]\n", 2,
        "^spring 'thrust' does not exist; the named springs are 'bearing' and 'seal'$"},
@@ -232,8 +221,9 @@ springs = ["bearing"]
     ADD_FAILURE() << "accepted";
   } catch (const ModelError& e) {
     EXPECT_EQ(e.where().line, 16) << e.what();
-    EXPECT_EQ(e.message(), "spring 'bearing' does not exist; no [[springs]] entry has a 'name', "
-                           "and only named springs can be referenced");
+    EXPECT_EQ(e.message(),
+              "spring 'bearing' does not exist; no [[springs]] entry has a 'name', "
+              "and only named springs can be referenced");
   }
 }
 

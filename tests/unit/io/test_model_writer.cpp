@@ -22,9 +22,9 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> valid_model_files() {
   std::vector<std::string> files;
-  for (const std::string& dir : {std::string(FERAN_SOURCE_DIR) + "/examples",
-                                std::string(FERAN_SOURCE_DIR) + "/bench/models",
-                                std::string(FERAN_TEST_MODELS) + "/valid"})
+  for (const std::string& dir :
+       {std::string(FERAN_SOURCE_DIR) + "/examples", std::string(FERAN_SOURCE_DIR) + "/bench/models",
+        std::string(FERAN_TEST_MODELS) + "/valid"})
     for (const auto& entry : fs::recursive_directory_iterator(dir))
       if (entry.path().extension() == ".toml" && !entry.path().string().ends_with(".study.toml"))
         files.push_back(entry.path().string());  // every model, not the studies
@@ -49,8 +49,7 @@ TEST(ModelWriter, RoundTripOfEveryShippedAndValidModel) {
 }
 
 TEST(ModelWriter, QuantitiesCarryTheirUnit) {
-  const ModelFile file =
-      read_model_file(std::string(FERAN_SOURCE_DIR) + "/examples/01_internal_damping/model.toml");
+  const ModelFile file = read_model_file(std::string(FERAN_SOURCE_DIR) + "/examples/01_internal_damping/model.toml");
   const std::string text = write_toml(file.spec);
   // The field tables' units where they read back exactly.
   EXPECT_NE(text.find("length = \"60 mm\""), std::string::npos) << text;
@@ -64,14 +63,20 @@ TEST(ModelWriter, QuantitiesCarryTheirUnit) {
 TEST(ModelWriter, ValuesThatNoUnitWritesExactlyRoundTrip) {
   ModelSpec spec;
   spec.title = "awkward \"values\"\twith escapes";
-  spec.materials.push_back({.name = "steel", .E = 2.1e11 / 3.0, .G = {}, .nu = 0.1 + 0.2,
-                            .rho = 7850.0 / 7.0, .loss_factor = 1e-300});
+  spec.materials.push_back(
+      {.name = "steel", .E = 2.1e11 / 3.0, .G = {}, .nu = 0.1 + 0.2, .rho = 7850.0 / 7.0, .loss_factor = 1e-300});
   ShaftSpec shaft;
   shaft.material = "steel";
   shaft.start_node = "a";
-  shaft.sections.push_back({.length = 0.1 + 0.2, .outer_diameter = 1.0 / 3.0, .inner_diameter = 0.0,
-                            .outer_diameter_end = 0.2 / 3.0, .inner_diameter_end = 0.01 / 3.0,
-                            .axial_force = -1e3 / 3.0, .material = {}, .elements = 3, .end_node = "b"});
+  shaft.sections.push_back({.length = 0.1 + 0.2,
+                            .outer_diameter = 1.0 / 3.0,
+                            .inner_diameter = 0.0,
+                            .outer_diameter_end = 0.2 / 3.0,
+                            .inner_diameter_end = 0.01 / 3.0,
+                            .axial_force = -1e3 / 3.0,
+                            .material = {},
+                            .elements = 3,
+                            .end_node = "b"});
   spec.shafts.push_back(shaft);
   SpringSpec bearing;
   bearing.name = "bearing";

@@ -14,9 +14,8 @@ namespace {
 /// number 7; the node named "2" shares its text with node number 2.
 Model model_with_nodes() {
   Model m;
-  m.nodes = {{1, "drive", 0.0, true},   {2, "", 0.1, true},    {3, "rotor", 0.2, true},
-             {10, "housing", 0.0, false}, {11, "7", 0.1, false}, {12, "2", 0.2, false},
-             {13, "a:b", 0.3, false}};
+  m.nodes = {{1, "drive", 0.0, true}, {2, "", 0.1, true},    {3, "rotor", 0.2, true}, {10, "housing", 0.0, false},
+             {11, "7", 0.1, false},   {12, "2", 0.2, false}, {13, "a:b", 0.3, false}};
   return m;
 }
 
@@ -73,8 +72,7 @@ TEST(NodeReference, UnknownReferenceListsTheChoices) {
   // Many names: the first eight are listed with the count.
   Model many;
   for (int i = 1; i <= 12; ++i)
-    many.nodes.push_back(
-        {i, "station " + std::string(1, static_cast<char>('a' + i - 1)), 0.0, true});
+    many.nodes.push_back({i, "station " + std::string(1, static_cast<char>('a' + i - 1)), 0.0, true});
   EXPECT_EQ(error_of([&] { (void)find_node_reference(many, "bearing", "--probe"); }),
             "--probe 'bearing': no such node; the node names include 'station a', 'station b', "
             "'station c', 'station d', 'station e', 'station f', 'station g' and 'station h' "
@@ -116,10 +114,8 @@ TEST(Probe, BadDofNamesTheValidOnes) {
 
 TEST(Probe, UnknownNodeIsReportedBeforeTheDof) {
   const Model m = model_with_nodes();
-  EXPECT_EQ(error_of([&] { (void)parse_probe(m, "rotr:v"); }),
-            "probe 'rotr': no such node; did you mean 'rotor'?");
-  EXPECT_EQ(error_of([&] { (void)parse_probe(m, "rotr"); }),
-            "probe 'rotr': no such node; did you mean 'rotor'?");
+  EXPECT_EQ(error_of([&] { (void)parse_probe(m, "rotr:v"); }), "probe 'rotr': no such node; did you mean 'rotor'?");
+  EXPECT_EQ(error_of([&] { (void)parse_probe(m, "rotr"); }), "probe 'rotr': no such node; did you mean 'rotor'?");
   EXPECT_EQ(error_of([&] { (void)parse_probe(m, "42:q"); }),
             "probe '42': no such node; the node numbers are 1-3 and 10-13");
 }

@@ -24,9 +24,8 @@ namespace fs = std::filesystem;
 class OutputFilesTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("feran_outputs_" + std::to_string(::getpid()) + "_" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir = fs::temp_directory_path() / ("feran_outputs_" + std::to_string(::getpid()) + "_" +
+                                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir);
     fs::create_directories(dir);
     model = (dir / "model.toml").string();
@@ -172,8 +171,7 @@ TEST_F(OutputFilesTest, TwoOutputsNeverShareAFile) {
   for (const std::string& second : {a.string(), (dir / "." / "a.json").string(), (dir / "alias.json").string()}) {
     OutputFiles files(model);
     files.add("--json", a.string());
-    EXPECT_NE(error_of([&] { files.add("--csv", second); }).find("--json already writes"), std::string::npos)
-        << second;
+    EXPECT_NE(error_of([&] { files.add("--csv", second); }).find("--json already writes"), std::string::npos) << second;
   }
   // Discarding twice is harmless.
   OutputFiles files(model);
@@ -245,8 +243,7 @@ TEST_F(OutputFilesTest, AllOrNone) {
   }
   ::setrlimit(RLIMIT_FSIZE, &old_limit);
   std::signal(SIGXFSZ, SIG_DFL);
-  EXPECT_NE(message.find("--csv '" + big.string() + "': cannot write: File too large"), std::string::npos)
-      << message;
+  EXPECT_NE(message.find("--csv '" + big.string() + "': cannot write: File too large"), std::string::npos) << message;
   EXPECT_EQ(get(small), "old");
   EXPECT_FALSE(fs::exists(big));
   EXPECT_TRUE(others({"model.toml", "small.json"}).empty());

@@ -44,8 +44,8 @@ TEST(StudyLog, AnInterruptedStudyResumesToTheUninterruptedResult) {
     std::atomic<bool> flag{false};
     StoppingEvaluator evaluator(flag, 3);
     StudyLog log(dir.string(), study, false);
-    const auto part = run_exploration(study, evaluator, log.done(),
-                                      [&](std::span<const Evaluation> e) { log.append(e); }, 10, StopToken(flag));
+    const auto part = run_exploration(
+        study, evaluator, log.done(), [&](std::span<const Evaluation> e) { log.append(e); }, 10, StopToken(flag));
     EXPECT_EQ(part.size(), 30u);
   }
   EXPECT_EQ(lines_of(dir / "evaluations.jsonl").size(), 30u);
@@ -59,12 +59,12 @@ TEST(StudyLog, AnInterruptedStudyResumesToTheUninterruptedResult) {
   {
     StudyLog log(dir.string(), study, true);
     EXPECT_EQ(log.done().size(), 30u);  // the cut line dropped
-    const auto all = run_exploration(study, plain, log.done(),
-                                     [&](std::span<const Evaluation> e) { log.append(e); }, 10);
+    const auto all = run_exploration(
+        study, plain, log.done(), [&](std::span<const Evaluation> e) { log.append(e); }, 10);
     ASSERT_EQ(all.size(), reference.size());
     for (std::size_t i = 0; i < all.size(); ++i) {
       EXPECT_EQ(all[i].index, reference[i].index);
-      EXPECT_EQ(all[i].values, reference[i].values);        // read back bit for bit
+      EXPECT_EQ(all[i].values, reference[i].values);  // read back bit for bit
       EXPECT_EQ(all[i].quantities, reference[i].quantities);
     }
     log.finish(all, true);

@@ -13,9 +13,7 @@ namespace {
 
 const std::string model = FERAN_SOURCE_DIR "/examples/02_centrifuge/model.toml";
 
-std::string study(const std::string& body) {
-  return "title = \"t\"\nmodel = \"" + model + "\"\n" + body;
-}
+std::string study(const std::string& body) { return "title = \"t\"\nmodel = \"" + model + "\"\n" + body; }
 
 const std::string variable =
     "[[variables]]\nname = \"k\"\npaths = [\"springs[bearing k12].ky\", \"springs[bearing k12].kz\"]\n"
@@ -66,17 +64,22 @@ TEST(StudyReader, ReadsAWholeStudy) {
 TEST(StudyReader, LocatesEachMistake) {
   EXPECT_NE(error_at(study("colour = 1\n" + variable + quantity), 3).find("unknown key 'colour'"), std::string::npos);
   EXPECT_NE(error_at(study("[[variables]]\nname = \"k\"\npath = \"springs[bearing k99].ky\"\nlower = 1\nupper = 2\n" +
-                           quantity), 5)
+                           quantity),
+                     5)
                 .find("k99"),
             std::string::npos);
   // Tied paths of different kinds.
   EXPECT_NE(error_at(study("[[variables]]\nname = \"k\"\npaths = [\"springs[bearing k12].ky\",\n"
-                           "  \"springs[foot k11].cy\"]\nlower = 1\nupper = 2\n" + quantity), 6)
+                           "  \"springs[foot k11].cy\"]\nlower = 1\nupper = 2\n" +
+                           quantity),
+                     6)
                 .find("not of the same kind"),
             std::string::npos);
   // A bound of the wrong kind.
   EXPECT_NE(error_at(study("[[variables]]\nname = \"k\"\npath = \"springs[bearing k12].ky\"\nlower = \"1 kg\"\n"
-                           "upper = 2\n" + quantity), 6)
+                           "upper = 2\n" +
+                           quantity),
+                     6)
                 .find("stiffness"),
             std::string::npos);
   // An unknown quantity kind, with a suggestion.
@@ -88,15 +91,17 @@ TEST(StudyReader, LocatesEachMistake) {
                 .find("no quantity named 'n2'; did you mean 'n1'?"),
             std::string::npos);
   // A separation margin without its operating range.
-  EXPECT_NE(error_at(study(variable + "[[quantities]]\nname = \"sm\"\nkind = \"separation_margin\"\n"), 9)
-                .find("operating"),
-            std::string::npos);
+  EXPECT_NE(
+      error_at(study(variable + "[[quantities]]\nname = \"sm\"\nkind = \"separation_margin\"\n"), 9).find("operating"),
+      std::string::npos);
   // A setting the model cannot take.
   EXPECT_NE(error_at(study(variable + quantity + "[settings]\n\"campbell.stopp\" = \"1 Hz\"\n"), 14).find("stopp"),
             std::string::npos);
   // A log scale that starts at zero.
   EXPECT_NE(error_at(study("[[variables]]\nname = \"k\"\npath = \"springs[bearing k12].ky\"\nlower = 0\nupper = 2\n"
-                           "scale = \"log\"\n" + quantity), 3)
+                           "scale = \"log\"\n" +
+                           quantity),
+                     3)
                 .find("log scale"),
             std::string::npos);
 }
@@ -116,7 +121,8 @@ TEST(StudyReader, AFunctionQuantityBelongsToStudiesBuiltInCode) {
   StudyCode code;
   code.base = read_model_file(model);
   code.model_name = "centrifuge";
-  const std::string body = variable + "[[quantities]]\nname = \"f\"\nkind = \"function\"\n"
+  const std::string body = variable +
+                           "[[quantities]]\nname = \"f\"\nkind = \"function\"\n"
                            "[explore]\nmethod = \"grid\"\nlevels = 3\n";
   try {
     read_study_string("model = \"m.toml\"\n" + body, "<study>", code);
@@ -132,8 +138,8 @@ TEST(StudyReader, AFunctionQuantityBelongsToStudiesBuiltInCode) {
   const auto none = run_exploration(file.study, evaluator, {}, {}, 3);
   ASSERT_EQ(none.size(), 3u);
   EXPECT_NE(none[0].message.find("no function is given"), std::string::npos) << none[0].message;
-  file.study.quantities[0].function = std::make_shared<const QuantityFunction>(
-      [](const ModelSpec& spec, const Model& built) {
+  file.study.quantities[0].function =
+      std::make_shared<const QuantityFunction>([](const ModelSpec& spec, const Model& built) {
         EXPECT_EQ(built.name, spec.title);
         return get_parameter(spec, "springs[bearing k12].kz").value;
       });
@@ -149,11 +155,12 @@ TEST(StudyReader, AFunctionQuantityBelongsToStudiesBuiltInCode) {
 
 TEST(StudyReader, PathsTiedByALinearRelation) {
   // The bearing's ky the variable's value, its kz 0.8 of it plus 1 MN/m.
-  const auto file = read_study_string(
-      study("[[variables]]\nname = \"k\"\npaths = [\"springs[bearing k12].ky\",\n"
-            "  { path = \"springs[bearing k12].kz\", factor = 0.8, offset = \"1 MN/m\" }]\n"
-            "lower = \"1e6 N/m\"\nupper = \"1e8 N/m\"\n" + quantity),
-      "s.toml");
+  const auto file =
+      read_study_string(study("[[variables]]\nname = \"k\"\npaths = [\"springs[bearing k12].ky\",\n"
+                              "  { path = \"springs[bearing k12].kz\", factor = 0.8, offset = \"1 MN/m\" }]\n"
+                              "lower = \"1e6 N/m\"\nupper = \"1e8 N/m\"\n" +
+                              quantity),
+                        "s.toml");
   const auto& v = file.study.variables.at(0);
   ASSERT_EQ(v.factors.size(), 2u);
   const ModelSpec spec = apply_design(file.study.base, file.study.variables, std::vector<Real>{2e7});
@@ -161,18 +168,22 @@ TEST(StudyReader, PathsTiedByALinearRelation) {
   EXPECT_EQ(get_parameter(spec, "springs[bearing k12].kz").value, 1e6 + 0.8 * 2e7);
   // Mistakes, where they were written.
   const std::string head = "[[variables]]\nname = \"k\"\npaths = [\"springs[bearing k12].ky\",\n";
-  EXPECT_NE(error_at(study(head + "  { path = \"springs[bearing k12].kz\", factor = 0 }]\nlower = 1\nupper = 2\n" +
-                           quantity), 6)
-                .find("'factor' must be a finite number other than 0"),
-            std::string::npos);
-  EXPECT_NE(error_at(study(head + "  { path = \"springs[bearing k12].kz\", scale = 2 }]\nlower = 1\nupper = 2\n" +
-                           quantity), 6)
-                .find("unknown key 'scale'"),
-            std::string::npos);
-  EXPECT_NE(error_at(study(head + "  { path = \"springs[bearing k12].kz\", offset = \"1 kg\" }]\nlower = 1\nupper = 2\n" +
-                           quantity), 6)
-                .find("stiffness"),
-            std::string::npos);
+  EXPECT_NE(
+      error_at(study(head + "  { path = \"springs[bearing k12].kz\", factor = 0 }]\nlower = 1\nupper = 2\n" + quantity),
+               6)
+          .find("'factor' must be a finite number other than 0"),
+      std::string::npos);
+  EXPECT_NE(
+      error_at(study(head + "  { path = \"springs[bearing k12].kz\", scale = 2 }]\nlower = 1\nupper = 2\n" + quantity),
+               6)
+          .find("unknown key 'scale'"),
+      std::string::npos);
+  EXPECT_NE(
+      error_at(study(head + "  { path = \"springs[bearing k12].kz\", offset = \"1 kg\" }]\nlower = 1\nupper = 2\n" +
+                     quantity),
+               6)
+          .find("stiffness"),
+      std::string::npos);
   EXPECT_NE(error_at(study(head + "  3]\nlower = 1\nupper = 2\n" + quantity), 6).find("'paths' must hold"),
             std::string::npos);
 }

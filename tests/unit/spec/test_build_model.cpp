@@ -17,15 +17,28 @@ ModelSpec jeffcott() {
   ModelSpec s;
   s.title = "Jeffcott rotor";
   s.options.shear_deformation = false;
-  s.materials.push_back({.name = "massless steel", .E = 210e9, .G = {}, .nu = 0.3, .rho = 0.0,
-                         .loss_factor = 0.0});
+  s.materials.push_back({.name = "massless steel", .E = 210e9, .G = {}, .nu = 0.3, .rho = 0.0, .loss_factor = 0.0});
   ShaftSpec shaft;
   shaft.material = "massless steel";
   shaft.start_node = "left";
-  shaft.sections.push_back({.length = 0.25, .outer_diameter = 0.012, .inner_diameter = 0.0, .outer_diameter_end = {}, .inner_diameter_end = {}, .axial_force = 0.0,
-                            .material = {}, .elements = 1, .end_node = "disk"});
-  shaft.sections.push_back({.length = 0.25, .outer_diameter = 0.012, .inner_diameter = 0.0, .outer_diameter_end = {}, .inner_diameter_end = {}, .axial_force = 0.0,
-                            .material = {}, .elements = 1, .end_node = "right"});
+  shaft.sections.push_back({.length = 0.25,
+                            .outer_diameter = 0.012,
+                            .inner_diameter = 0.0,
+                            .outer_diameter_end = {},
+                            .inner_diameter_end = {},
+                            .axial_force = 0.0,
+                            .material = {},
+                            .elements = 1,
+                            .end_node = "disk"});
+  shaft.sections.push_back({.length = 0.25,
+                            .outer_diameter = 0.012,
+                            .inner_diameter = 0.0,
+                            .outer_diameter_end = {},
+                            .inner_diameter_end = {},
+                            .axial_force = 0.0,
+                            .material = {},
+                            .elements = 1,
+                            .end_node = "right"});
   s.shafts.push_back(shaft);
   RigidBodySpec disk;
   disk.name = "disk";
@@ -42,8 +55,8 @@ ModelSpec jeffcott() {
   right.dofs = {"all"};
   s.fixed.push_back(left);
   s.fixed.push_back(right);
-  s.unbalances.push_back({.name = {}, .node = std::string("disk"), .mass = 0.001, .radius = 0.05,
-                          .phase = 0.0, .lever = 0.0});
+  s.unbalances.push_back(
+      {.name = {}, .node = std::string("disk"), .mass = 0.001, .radius = 0.05, .phase = 0.0, .lever = 0.0});
   s.modal.speed = 0.0;
   s.modal.modes = 4;
   return s;

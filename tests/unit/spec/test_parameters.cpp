@@ -80,9 +80,8 @@ TEST(Parameters, PartsOfCoefficientLaws) {
   ModelSpec step = spec_of(examples + "/02_centrifuge/model_step.toml");
   const std::vector<Parameter> all = list_parameters(step);
   const auto has = [&](const std::string& suffix) {
-    return std::any_of(all.begin(), all.end(), [&](const Parameter& p) {
-      return p.path.size() >= suffix.size() && p.path.ends_with(suffix);
-    });
+    return std::any_of(all.begin(), all.end(),
+                       [&](const Parameter& p) { return p.path.size() >= suffix.size() && p.path.ends_with(suffix); });
   };
   EXPECT_TRUE(has(".ky.below"));
   EXPECT_TRUE(has(".ky.at"));
@@ -126,31 +125,30 @@ TEST(Parameters, EveryListedParameterReadsBackAndSetsItself) {
 
 TEST(Parameters, ErrorsNameThePartAndSuggest) {
   ModelSpec spec = spec_of(examples + "/02_centrifuge/model.toml");
-  EXPECT_NE(error_of([&] { set_parameter(spec, "materails[steel].E", "1 GPa"); })
-                .find("there is no table 'materails'; did you mean 'materials'?"),
+  EXPECT_NE(error_of([&] {
+              set_parameter(spec, "materails[steel].E", "1 GPa");
+            }).find("there is no table 'materails'; did you mean 'materials'?"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { set_parameter(spec, "materials[stel].E", "1 GPa"); })
-                .find("'materials' has no entry named 'stel'; did you mean 'steel'?"),
+  EXPECT_NE(error_of([&] {
+              set_parameter(spec, "materials[stel].E", "1 GPa");
+            }).find("'materials' has no entry named 'stel'; did you mean 'steel'?"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { set_parameter(spec, "springs[bearing k12].kyy", "1 N/m"); })
-                .find("has no key 'kyy'; did you mean 'ky'?"),
+  EXPECT_NE(error_of([&] {
+              set_parameter(spec, "springs[bearing k12].kyy", "1 N/m");
+            }).find("has no key 'kyy'; did you mean 'ky'?"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { set_parameter(spec, "springs[bearing k12].ky", "1 kg"); })
-                .find("unit 'kg'"),
+  EXPECT_NE(error_of([&] { set_parameter(spec, "springs[bearing k12].ky", "1 kg"); }).find("unit 'kg'"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { set_parameter(spec, "shafts[0].sections[0].elements", "2.5"); })
-                .find("expected an integer"),
+  EXPECT_NE(error_of([&] { set_parameter(spec, "shafts[0].sections[0].elements", "2.5"); }).find("expected an integer"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { set_parameter(spec, "shafts[7].x", "1 mm"); })
-                .find("'shafts' has 1 entries, indices 0 to 0; got 7"),
+  EXPECT_NE(error_of([&] {
+              set_parameter(spec, "shafts[7].x", "1 mm");
+            }).find("'shafts' has 1 entries, indices 0 to 0; got 7"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { set_parameter(spec, "materials[steel].name", "1"); })
-                .find("is not a number"),
+  EXPECT_NE(error_of([&] { set_parameter(spec, "materials[steel].name", "1"); }).find("is not a number"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { apply_assignment(spec, "campbell.stop"); }).find("expected PATH=VALUE"),
-            std::string::npos);
-  EXPECT_NE(error_of([&] { (void)get_parameter(spec, "response.loss_factor"); }).find("not given"),
-            std::string::npos);
+  EXPECT_NE(error_of([&] { apply_assignment(spec, "campbell.stop"); }).find("expected PATH=VALUE"), std::string::npos);
+  EXPECT_NE(error_of([&] { (void)get_parameter(spec, "response.loss_factor"); }).find("not given"), std::string::npos);
 }
 
 TEST(Parameters, NodeNameNamesAnUnnamedEntry) {
@@ -175,8 +173,8 @@ TEST(Parameters, ChangedByPathTheCriticalSpeedFollowsTheClosedForm) {
   const Real I = pi * std::pow(d, 4) / 64.0;
   const Real expected = std::sqrt(192.0 * E * I / (L * L * L) / m) / (2.0 * pi);
   const ModalResult r = run_modal(model, 0.0);
-  const auto lateral = std::find_if(r.modes.begin(), r.modes.end(),
-                                    [](const Mode& mode) { return mode.type == ModeType::lateral; });
+  const auto lateral =
+      std::find_if(r.modes.begin(), r.modes.end(), [](const Mode& mode) { return mode.type == ModeType::lateral; });
   ASSERT_NE(lateral, r.modes.end());
   EXPECT_NEAR(lateral->frequency_hz / expected, 1.0, 1e-9);
 }

@@ -88,9 +88,7 @@ TEST(Sobol, EveryDimensionIsANetAndTheFirstTwoATwoDimensionalOne) {
   }
 }
 
-TEST(Sobol, RefusesMoreDimensionsThanItHasDirectionNumbers) {
-  EXPECT_THROW(sobol(4, max_sobol_dimensions + 1), Error);
-}
+TEST(Sobol, RefusesMoreDimensionsThanItHasDirectionNumbers) { EXPECT_THROW(sobol(4, max_sobol_dimensions + 1), Error); }
 
 TEST(FullGrid, EveryCombinationOnceFirstDimensionSlowest) {
   const auto g = full_grid({3, 2}, {false, true});

@@ -17,12 +17,13 @@ const std::string model = "model = \"" FERAN_SOURCE_DIR "/examples/02_centrifuge
 TEST(Study, AnInvalidDesignIsRecordedAndTheStudyGoesOn) {
   // The neck's bore from 0 to 15 mm in an 11.05 mm shaft: the designs with a bore
   // of 11.05 mm or more cannot be built.
-  const auto file = read_study_string(model +
-                                          "[[variables]]\nname = \"bore\"\npath = \"shafts[0].sections[1].inner_diameter\"\n"
-                                          "lower = \"0 mm\"\nupper = \"15 mm\"\n"
-                                          "[[quantities]]\nname = \"m\"\nkind = \"rotor_mass\"\n"
-                                          "[explore]\nmethod = \"grid\"\nlevels = 7\n",
-                                      "s.toml");
+  const auto file =
+      read_study_string(model +
+                            "[[variables]]\nname = \"bore\"\npath = \"shafts[0].sections[1].inner_diameter\"\n"
+                            "lower = \"0 mm\"\nupper = \"15 mm\"\n"
+                            "[[quantities]]\nname = \"m\"\nkind = \"rotor_mass\"\n"
+                            "[explore]\nmethod = \"grid\"\nlevels = 7\n",
+                        "s.toml");
   ThreadEvaluator evaluator(2);
   const auto all = run_exploration(file.study, evaluator, {}, {}, 3);
   ASSERT_EQ(all.size(), 7u);

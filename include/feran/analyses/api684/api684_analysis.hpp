@@ -49,10 +49,10 @@ std::vector<JournalLoad> journal_loads(const Model& model, const std::vector<Ind
 /// One analytical unbalance.
 struct PlacedUnbalance {
   Index node = 0;
-  Real amount = 0;     ///< m·r [kg·m]
-  Real phase = 0;      ///< [rad]
-  Real mass = 0;       ///< the W it was computed from [kg]
-  std::string basis;   ///< "rotor", "overhung" or the bearing's name
+  Real amount = 0;    ///< m·r [kg·m]
+  Real phase = 0;     ///< [rad]
+  Real mass = 0;      ///< the W it was computed from [kg]
+  std::string basis;  ///< "rotor", "overhung" or the bearing's name
 };
 
 /// The unbalances API 684 (2nd ed., §2.5.2 and Fig. 2-25) places to excite a mode of
@@ -67,15 +67,15 @@ std::vector<PlacedUnbalance> api684_placement(const Model& model, const ComplexV
                                               Real multiple = 1.0);
 
 struct Api684Options {
-  Real low = 0, high = 0;       ///< the operating speed range [rad/s]; high: the maximum continuous speed
-  std::vector<Real> speeds;     ///< the unbalance responses' speeds [rad/s]
-  int modes = 2;                ///< modes excited by the analytical unbalance, the lowest forward ones
+  Real low = 0, high = 0;    ///< the operating speed range [rad/s]; high: the maximum continuous speed
+  std::vector<Real> speeds;  ///< the unbalance responses' speeds [rad/s]
+  int modes = 2;             ///< modes excited by the analytical unbalance, the lowest forward ones
   /// The model's own unbalances in one response instead of the analytical ones.
   bool model_unbalance = false;
   Real unbalance_multiple = 1.0;
-  std::vector<Index> probes;    ///< empty: each bearing's node and each unbalance's node
-  std::vector<Index> bearings;  ///< elements of linearised(model); empty: bearing_elements() of it
-  StaticOptions gravity;        ///< for the journal loads
+  std::vector<Index> probes;                   ///< empty: each bearing's node and each unbalance's node
+  std::vector<Index> bearings;                 ///< elements of linearised(model); empty: bearing_elements() of it
+  StaticOptions gravity;                       ///< for the journal loads
   std::optional<CriticalSpeedMapOptions> map;  ///< none: no map (its springs: the bearings)
   std::optional<StabilitySweepOptions> stability;
   int n_threads = 1;
@@ -84,8 +84,8 @@ struct Api684Options {
 
 /// One unbalance case and its reading.
 struct Api684Case {
-  std::string name;                 ///< "mode 1", … or "model unbalance"
-  std::optional<Mode> mode;         ///< the mode it excites (at the maximum continuous speed)
+  std::string name;          ///< "mode 1", … or "model unbalance"
+  std::optional<Mode> mode;  ///< the mode it excites (at the maximum continuous speed)
   std::vector<PlacedUnbalance> unbalances;
   HarmonicResult response;
   /// Per probe (in the order of response.probes): its peaks and their margins.
@@ -99,8 +99,8 @@ struct Api684Case {
 /// continuous speed, both included.
 struct OperatingStability {
   std::vector<StabilityPoint> points;
-  bool passes = true;   ///< every point stable (and decided)
-  std::string reason;   ///< why it fails, or "stable at N speeds from … to …"
+  bool passes = true;  ///< every point stable (and decided)
+  std::string reason;  ///< why it fails, or "stable at N speeds from … to …"
 };
 
 /// The verdict at @p points speeds over [@p low, @p high] [rad/s].

@@ -68,16 +68,16 @@ struct CriticalSpeedMapOptions {
   /// may depend on speed), at curve_points speeds; intersections are sought there.
   Real curve_stop = 0;
   int curve_points = 101;
-  int n_threads = 1;           ///< 0: all cores; results do not depend on it
+  int n_threads = 1;  ///< 0: all cores; results do not depend on it
   StopToken stop;
 };
 
 /// A bearing's stiffness in one direction against speed.
 struct BearingCurve {
   Index element = 0;
-  std::string direction;       ///< "y" or "z"
-  std::vector<Real> speeds;    ///< [rad/s]
-  std::vector<Real> stiffness; ///< [N/m]
+  std::string direction;        ///< "y" or "z"
+  std::vector<Real> speeds;     ///< [rad/s]
+  std::vector<Real> stiffness;  ///< [N/m]
 };
 
 /// Where a bearing's curve meets the map's n-th critical speed: every varied bearing
@@ -85,14 +85,14 @@ struct BearingCurve {
 struct MapIntersection {
   Index element = 0;
   std::string direction;
-  int critical = 1;   ///< n (1: the lowest)
-  Real speed = 0;     ///< [rad/s]
-  Real stiffness = 0; ///< [N/m]
+  int critical = 1;    ///< n (1: the lowest)
+  Real speed = 0;      ///< [rad/s]
+  Real stiffness = 0;  ///< [N/m]
 };
 
 struct CriticalSpeedMapResult {
-  std::vector<Index> springs;  ///< the bearings varied
-  std::vector<Real> stiffness; ///< [N/m]
+  std::vector<Index> springs;   ///< the bearings varied
+  std::vector<Real> stiffness;  ///< [N/m]
   /// criticals[i][n]: the (n+1)-th forward critical speed at stiffness[i] [rad/s]; NaN
   /// where the rotor has fewer.
   std::vector<std::vector<Real>> criticals;

@@ -43,14 +43,14 @@ struct StabilitySweepOptions {
 
 struct StabilitySweepResult {
   Index node = 0;
-  Real speed = 0;                  ///< [rad/s]
-  std::vector<Real> q;             ///< [N/m]
-  std::vector<Real> log_decrement; ///< of the first forward mode at each Q
-  std::vector<Real> frequency_hz;  ///< its damped natural frequency
+  Real speed = 0;                   ///< [rad/s]
+  std::vector<Real> q;              ///< [N/m]
+  std::vector<Real> log_decrement;  ///< of the first forward mode at each Q
+  std::vector<Real> frequency_hz;   ///< its damped natural frequency
   /// Q₀: the cross-coupling at which that log decrement is zero [N/m]; none when the
   /// mode is unstable without any, or stays stable up to 1e13 N/m.
   std::optional<Real> q_zero;
-  std::optional<Real> anticipated;             ///< q_A [N/m]
+  std::optional<Real> anticipated;  ///< q_A [N/m]
   std::optional<Real> log_decrement_at_anticipated;
   /// API 617's level I screening: passes when Q₀/q_A ≥ 2 and δ(q_A) ≥ 0.1 (otherwise a
   /// level II analysis is required); none without q_A.

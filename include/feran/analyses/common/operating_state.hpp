@@ -19,9 +19,9 @@ namespace feran {
 
 /// One support's operating state at each point of an analysis.
 struct OperatingSeries {
-  Index force = 0;                         ///< index into Model::forces
-  std::vector<std::string> quantities;     ///< names carrying their unit ("min_film_thickness_m")
-  std::vector<std::vector<Real>> values;   ///< [point][quantity]; NaN where the theory gives none
+  Index force = 0;                        ///< index into Model::forces
+  std::vector<std::string> quantities;    ///< names carrying their unit ("min_film_thickness_m")
+  std::vector<std::vector<Real>> values;  ///< [point][quantity]; NaN where the theory gives none
 
   /// The values of quantity @p name over the points (empty when the support has none).
   std::vector<Real> series(std::string_view name) const;

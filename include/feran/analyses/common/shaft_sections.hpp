@@ -28,10 +28,10 @@ struct SectionForces {
 
 /// Peak stresses over a period at the section [Pa].
 struct SectionStress {
-  Real axial = 0;      ///< |N|/A
-  Real bending = 0;    ///< M_peak·r_o/I, M_peak the largest |(My, Mz)| over a period
-  Real torsion = 0;    ///< |T|·r_o/J
-  Real shear = 0;      ///< transverse shear at the neutral axis: k·V_peak/A
+  Real axial = 0;    ///< |N|/A
+  Real bending = 0;  ///< M_peak·r_o/I, M_peak the largest |(My, Mz)| over a period
+  Real torsion = 0;  ///< |T|·r_o/J
+  Real shear = 0;    ///< transverse shear at the neutral axis: k·V_peak/A
   /// Equivalent (von Mises) stress, combined conservatively at one point:
   /// √((axial + bending)² + 3·(torsion + shear)²).
   Real von_mises = 0;

@@ -39,9 +39,9 @@ std::string_view to_string(SolverStatus status);
 struct SolverInfo {
   SolverMethod method = SolverMethod::none;
   SolverStatus status = SolverStatus::success;
-  Index n_converged = 0; ///< eigenvalues converged (sparse) or computed (dense)
-  Index iterations = 0;  ///< restarts of the Arnoldi iteration (sparse)
-  std::string message;   ///< why it did not succeed, when it did not
+  Index n_converged = 0;  ///< eigenvalues converged (sparse) or computed (dense)
+  Index iterations = 0;   ///< restarts of the Arnoldi iteration (sparse)
+  std::string message;    ///< why it did not succeed, when it did not
 
   bool converged() const { return status == SolverStatus::success; }
   /// Records a failure with its reason.

@@ -43,9 +43,9 @@ struct HarmonicOptions {
   /// act at the rotor speed, not at the swept frequency). Every other force of the
   /// model with a harmonic load (Force::add_harmonic) takes part.
   bool unbalance = true;
-  std::vector<HarmonicForce> extra_forces; ///< forces added for this analysis
-  Real loss_factor = 0.0;                  ///< global hysteretic loss factor η (adds jηK)
-  std::vector<Index> probes;               ///< nodes whose motion is reported
+  std::vector<HarmonicForce> extra_forces;  ///< forces added for this analysis
+  Real loss_factor = 0.0;                   ///< global hysteretic loss factor η (adds jηK)
+  std::vector<Index> probes;                ///< nodes whose motion is reported
   StationOutput stations = StationOutput::summary;
   /// Threads for the sweep's points (0: all cores; the library's default is one, the
   /// command line's all cores); results do not depend on it.
@@ -155,9 +155,9 @@ Index unstable_points(const HarmonicResult& result);
 /// The largest values of a harmonic result.
 struct ResponseSummary {
   struct Peak {
-    Real value = 0;   ///< the peak
-    Index point = -1; ///< where in the sweep (-1: nothing to report)
-    Index item = -1;  ///< which probe / spring / reaction / station
+    Real value = 0;    ///< the peak
+    Index point = -1;  ///< where in the sweep (-1: nothing to report)
+    Index item = -1;   ///< which probe / spring / reaction / station
   };
   std::vector<Peak> probe_peaks;  ///< per probe: largest major semi-axis of the (v, w) orbit
   Peak spring_force;              ///< largest peak lateral spring force

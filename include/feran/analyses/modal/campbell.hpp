@@ -52,8 +52,8 @@ struct TrackedMode {
   std::vector<Real> log_decrement;
   std::vector<Real> directivity;
   std::vector<Whirl> whirl_at;
-  std::vector<Real> bending;         ///< Mode::bending per speed
-  std::vector<ModeShape> shape_at;   ///< Mode::shape_kind per speed
+  std::vector<Real> bending;        ///< Mode::bending per speed
+  std::vector<ModeShape> shape_at;  ///< Mode::shape_kind per speed
   /// The shape it has at the first speed it was found at (none for axial and
   /// torsional modes).
   ModeShape shape_kind = ModeShape::none;
@@ -73,9 +73,9 @@ struct CriticalSpeed {
 
 /// The lowest speed at which a mode's damping ratio turns negative.
 struct StabilityThreshold {
-  Real speed = 0;  ///< [rad/s]
-  Index mode = 0;  ///< index into CampbellResult::modes; −1 for a divergence
-  Real frequency_hz = 0;  ///< the mode's frequency there (0 for a divergence)
+  Real speed = 0;                  ///< [rad/s]
+  Index mode = 0;                  ///< index into CampbellResult::modes; −1 for a divergence
+  Real frequency_hz = 0;           ///< the mode's frequency there (0 for a divergence)
   bool unstable_at_start = false;  ///< already negative at the first speed
   /// A real eigenvalue turns positive (a negative stiffness, a shaft beyond its
   /// buckling load): a divergence, which no tracked (oscillating) mode shows.
@@ -87,7 +87,7 @@ struct CampbellResult {
   std::vector<TrackedMode> modes;
   std::vector<CriticalSpeed> critical_speeds;  ///< sorted by speed
   std::optional<StabilityThreshold> stability_threshold;
-  SolverInfo info;  ///< method used; converged() is false if a solve failed (results so far kept)
+  SolverInfo info;     ///< method used; converged() is false if a solve failed (results so far kept)
   Index n_solves = 0;  ///< eigen solves, grid and refinement
   /// Per support (Force::supports()), its operating state at the equilibrium at each
   /// of speeds.

@@ -40,9 +40,9 @@ const char* to_string(ModeShape s);
 
 /// One eigenpair, represented by the eigenvalue with Im p ≥ 0.
 struct Mode {
-  Complex eigenvalue;       ///< p = −δ + iω [1/s]
-  Real frequency_hz = 0;    ///< damped natural frequency ω/2π [Hz]
-  Real damping_ratio = 0;   ///< D = −Re p/|p| (negative: unstable); NaN when p = 0
+  Complex eigenvalue;      ///< p = −δ + iω [1/s]
+  Real frequency_hz = 0;   ///< damped natural frequency ω/2π [Hz]
+  Real damping_ratio = 0;  ///< D = −Re p/|p| (negative: unstable); NaN when p = 0
   /// Logarithmic decrement 2π·δ/ω; NaN for a non-oscillatory mode.
   Real log_decrement = std::numeric_limits<Real>::quiet_NaN();
   Whirl whirl = Whirl::none;
@@ -58,8 +58,8 @@ struct Mode {
   /// bending < 0.1: cylindrical or conical (whichever of translation and tilt holds
   /// more of the straight line's motion); else bending. None for axial, torsional.
   ModeShape shape_kind = ModeShape::none;
-  bool rigid_body = false;   ///< no elastic deformation (strain energy ≈ 0)
-  bool oscillatory = true;   ///< Im p > 0; false for real (overdamped or rigid) eigenvalues
+  bool rigid_body = false;  ///< no elastic deformation (strain energy ≈ 0)
+  bool oscillatory = true;  ///< Im p > 0; false for real (overdamped or rigid) eigenvalues
   /// Shape over all unconstrained DOFs (global_dof order), scaled so that its largest
   /// component is 1 (real). Empty when shapes were not requested.
   ComplexVector shape;
@@ -73,7 +73,6 @@ enum class EigenSolver {
   dense,      ///< all modes: Hessenberg-QR of the state matrix (LAPACK dgeev)
   sparse      ///< lowest modes: shift-invert Arnoldi (Spectra) on a sparse LU
 };
-
 
 struct ModalOptions {
   /// Number of modes wanted, the lowest by |p|. 0: all (dense) or 12 (sparse).
@@ -174,16 +173,16 @@ class ModalSolver {
   ModalOptions options_;
   std::shared_ptr<const Model> linear_;  // linearised(model) with supports, else null
   std::shared_ptr<const Assembler> assembler_;
-  std::vector<Force> supports_;  // the model's supports (solve() refuses speed 0 with them)
-  std::vector<OperatingSeries> operating_;  // operating_series(model): names, no points
+  std::vector<Force> supports_;                      // the model's supports (solve() refuses speed 0 with them)
+  std::vector<OperatingSeries> operating_;           // operating_series(model): names, no points
   std::vector<std::pair<Index, Real>> rotor_nodes_;  // the rotating nodes and their x, for Mode::bending
-  Real lambda_max_ = 1.0;  // estimate of the largest K/M ratio (scale for tolerances)
-  std::vector<char> speed_touched_;  // per reduced DOF: some speed-dependent entry touches it
+  Real lambda_max_ = 1.0;                            // estimate of the largest K/M ratio (scale for tolerances)
+  std::vector<char> speed_touched_;                  // per reduced DOF: some speed-dependent entry touches it
   // Per reduced DOF: the reduced DOF it pairs with in complex coordinates (v with w,
   // ry with rz at the same node) for the first of a pair, −1 for the second, −2 for
   // a DOF that cannot pair (axial, torsional, or its partner not a reduced DOF).
   std::vector<Index> twin_;
-  struct BlockCache;                 // the modes of speed-independent DOF groups
+  struct BlockCache;  // the modes of speed-independent DOF groups
   std::shared_ptr<BlockCache> cache_;
 };
 

@@ -34,8 +34,7 @@ Vector static_load_vector(const Model& model, const Eigen::Vector3d& gravity, bo
 /// Throws Error, naming the motions, when the load @p f (reduced) does work along the
 /// free motions @p free (an M-orthonormal basis, stiffness_null_space()): a static
 /// solution exists only when the load leaves them alone.
-void require_unloaded_free_motions(const Model& model, const Assembler& assembler, const Matrix& free,
-                                   const Vector& f);
+void require_unloaded_free_motions(const Model& model, const Assembler& assembler, const Matrix& free, const Vector& f);
 
 /// True when some force of @p model carries the rotor (supports()).
 bool has_supports(const Model& model);
@@ -50,9 +49,9 @@ void require_running(const std::vector<Force>& forces, Real speed);
 
 struct EquilibriumOptions {
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< [m/s²]
-  bool loads = true;         ///< include the static loads
-  Real tolerance = 1e-10;    ///< on ‖residual‖ relative to ‖f‖ + the supports' largest force
-  int max_iterations = 60;   ///< Newton steps
+  bool loads = true;                                  ///< include the static loads
+  Real tolerance = 1e-10;   ///< on ‖residual‖ relative to ‖f‖ + the supports' largest force
+  int max_iterations = 60;  ///< Newton steps
   /// Frequency [rad/s] at which frequency-dependent coefficients are taken: 0 for a
   /// static deflection; empty: synchronous (ω = Ω), as a run-up integrates them.
   std::optional<Real> frequency = 0.0;
@@ -60,10 +59,10 @@ struct EquilibriumOptions {
 
 /// The equilibrium at one speed.
 struct Equilibrium {
-  Vector q;                 ///< displacements of all unconstrained DOFs (global_dof order)
-  Real residual = 0.0;      ///< relative residual reached
-  Index iterations = 0;     ///< Newton steps taken
-  SolverInfo info;          ///< not_converged or numerical_failure with the reason
+  Vector q;              ///< displacements of all unconstrained DOFs (global_dof order)
+  Real residual = 0.0;   ///< relative residual reached
+  Index iterations = 0;  ///< Newton steps taken
+  SolverInfo info;       ///< not_converged or numerical_failure with the reason
 };
 
 /// Solves the equilibrium of @p model (assembled as @p assembler) at @p speed

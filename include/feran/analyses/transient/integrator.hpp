@@ -46,7 +46,7 @@ struct StepReport {
   int iterations = 0;  ///< Newton iterations (trapezoidal)
   int rejected = 0;    ///< rejected trial steps (adaptive)
   int factorizations = 0;
-  std::string message; ///< why not ok, or a warning
+  std::string message;  ///< why not ok, or a warning
 };
 
 /// A one-step method for M·x'' = r(t, x, v).

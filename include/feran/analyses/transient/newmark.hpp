@@ -69,7 +69,7 @@ class Newmark final : public Integrator {
 
   IntegratorSettings settings_;
   NewmarkParameters parameters_;
-  bool factored_ = false;    // the system holds a factorisation of S for dt_factored_
+  bool factored_ = false;  // the system holds a factorisation of S for dt_factored_
   Real dt_factored_ = 0.0;
   Vector x1_, v1_, a1_, r_, ma_, residual_, delta_;  // reused work vectors
 };

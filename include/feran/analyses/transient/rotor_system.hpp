@@ -117,18 +117,18 @@ class RotorSystem final : public SecondOrderSystem {
   const Model& model_;
   std::shared_ptr<const Assembler> assembler_;
   SpeedProfile profile_;
-  Vector constant_load_;  // over all unconstrained DOFs; empty: none
+  Vector constant_load_;                  // over all unconstrained DOFs; empty: none
   SparseMatrix M_, C_, K_, G_, Ci_, Ki_;  // speed-independent parts
   SparseMatrix Cc_;                       // C_ + Ci_
   Vector work_;                           // rhs() scratch
   mutable SystemMatrices variable_;       // speed-dependent parts at cached_speed_
   mutable Real cached_speed_;
   Eigen::SimplicialLDLT<SparseMatrix> mass_;
-  std::vector<Force> forces_;  ///< the model's nonlinear forces
+  std::vector<Force> forces_;            ///< the model's nonlinear forces
   std::vector<SparseMatrix> selectors_;  // per force: rows of T for its DOFs
   mutable SparseMatrix DT_, KT_;
-  mutable bool tangent_pending_ = false;  // a linear model's D_T, K_T not yet set at jacobian_speed_
-  SparseSum damping_sum_, stiffness_sum_;  // D_T, K_T in place (the forces' entries included, zero)
+  mutable bool tangent_pending_ = false;      // a linear model's D_T, K_T not yet set at jacobian_speed_
+  SparseSum damping_sum_, stiffness_sum_;     // D_T, K_T in place (the forces' entries included, zero)
   std::vector<SparseMatrix> force_patterns_;  // per force: the pattern of Sᵀ·J·S
   // Per force: (local row p, local column q, position in D_T's and K_T's values,
   // weight S(p, r)·S(q, c)) for each contribution of its Jacobian blocks.
@@ -154,29 +154,29 @@ class RotorSystem final : public SecondOrderSystem {
   // half-bandwidth is at most max_band and the pivots allow it, else a sparse LU.
   static constexpr Index max_band = 64;
   BandedLU band_;
-  Index band_pattern_ = -1;    // nonzeros of the patterns the band was sized for
-  bool band_fits_ = false;     // their half-bandwidth is at most max_band
-  bool banded_factors_ = false;  // the last factorisation is band_'s
+  Index band_pattern_ = -1;                         // nonzeros of the patterns the band was sized for
+  bool band_fits_ = false;                          // their half-bandwidth is at most max_band
+  bool banded_factors_ = false;                     // the last factorisation is band_'s
   std::vector<std::vector<Index>> band_positions_;  // of M_, DT_, KT_ in band_
   // A linear model's tangent in the band's storage, kept: its constant part
   // c_a·M + c_v·(C + C_i) + c_x·K and its speed part c_v·G + c_x·K_i for the
   // coefficients band_coefficients_, so that a step on a speed ramp sets the band as
   // one combination of the two (plus the speed-dependent elements) before factorising.
   std::vector<Real> band_constant_, band_speed_;
-  std::array<Real, 3> band_coefficients_{};  // (c_x, c_v, c_a) of band_constant_, band_speed_
+  std::array<Real, 3> band_coefficients_{};   // (c_x, c_v, c_a) of band_constant_, band_speed_
   std::vector<Index> variable_positions_[2];  // of variable_.C and variable_.K in band_
   Index variable_pattern_ = -1;
   // On a speed ramp the next steps' tangents are factorised four at a time, one in each
   // lane of band_ (BandedLU::factorize_lanes), at the speeds of the times that follow
   // this one at the spacing of the last two factorisations: a later step whose speed
   // is one of them (to round-off) solves with that lane's factors.
-  Real jacobian_time_ = 0.0;  // the time of DT_, KT_
+  Real jacobian_time_ = 0.0;                                     // the time of DT_, KT_
   Real factored_time_ = std::numeric_limits<Real>::quiet_NaN();  // of the last factorisation
   std::array<Real, BandedLU::lanes> lane_speeds_{};
-  unsigned lanes_good_ = 0;       // a bit for each lane factorised for band_coefficients_
-  unsigned lanes_used_ = 0;       // a bit for each lane a step solved with
-  int lane_ = -1;                 // the lane the last factorisation is, −1: band_'s single matrix
-  int lane_pause_ = 0;            // factorisations left before predicting again (after a miss)
+  unsigned lanes_good_ = 0;  // a bit for each lane factorised for band_coefficients_
+  unsigned lanes_used_ = 0;  // a bit for each lane a step solved with
+  int lane_ = -1;            // the lane the last factorisation is, −1: band_'s single matrix
+  int lane_pause_ = 0;       // factorisations left before predicting again (after a miss)
   std::vector<BandedLU::LaneAddition> lane_additions_;
   /// The lane factorised at @p speed (to round-off) for the coefficients kept, or −1.
   int lane_at(Real speed) const;

@@ -21,9 +21,9 @@ class SpeedProfile {
   /// From @p from to @p to in @p time seconds, then held.
   static SpeedProfile ramp(Real from, Real to, Real time) { return SpeedProfile({{0.0, from}, {time, to}}); }
 
-  Real speed(Real t) const;          ///< Ω(t) [rad/s]
-  Real acceleration(Real t) const;   ///< Ω'(t) [rad/s²] (right derivative at a breakpoint)
-  Real angle(Real t) const;          ///< φ(t) = ∫₀ᵗ Ω dτ [rad]
+  Real speed(Real t) const;         ///< Ω(t) [rad/s]
+  Real acceleration(Real t) const;  ///< Ω'(t) [rad/s²] (right derivative at a breakpoint)
+  Real angle(Real t) const;         ///< φ(t) = ∫₀ᵗ Ω dτ [rad]
   const std::vector<std::pair<Real, Real>>& points() const { return points_; }
 
  private:

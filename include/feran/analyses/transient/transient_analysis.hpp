@@ -30,10 +30,10 @@ struct TransientOptions {
   Real duration = 1.0;                     ///< [s]
   std::string integrator = "trapezoidal";  ///< see integrator_names()
   IntegratorSettings settings;
-  Real output_interval = 1e-3;             ///< sampling interval of the output [s]
-  std::vector<Index> probes;               ///< nodes whose motion is recorded
-  std::vector<Index> springs;              ///< spring–damper elements whose force is recorded
-  bool static_loads = false;               ///< apply the model's static loads as constant forces
+  Real output_interval = 1e-3;  ///< sampling interval of the output [s]
+  std::vector<Index> probes;    ///< nodes whose motion is recorded
+  std::vector<Index> springs;   ///< spring–damper elements whose force is recorded
+  bool static_loads = false;    ///< apply the model's static loads as constant forces
   /// Gravitational acceleration applied as a constant force (M·g) [m/s²]; zero: none.
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   /// With equilibrium and steady_state, initial_displacement and initial_velocity are
@@ -45,8 +45,8 @@ struct TransientOptions {
   bool driven = false;
   /// The run stops when a displacement exceeds this [m] or a rotation this [rad].
   Real blowup_limit = 1.0;
-  Index envelope_bins = 400;               ///< speed bins of the |r| envelope
-  bool keep_samples = true;                ///< keep the samples in the result
+  Index envelope_bins = 400;  ///< speed bins of the |r| envelope
+  bool keep_samples = true;   ///< keep the samples in the result
   /// Initial displacements and velocities of all unconstrained DOFs (global_dof
   /// order); empty: at rest. Values at fixed or follower DOFs are ignored.
   Vector initial_displacement, initial_velocity;
@@ -68,10 +68,10 @@ inline constexpr int modal_basis_speeds = 5;
 /// The recorded state at one output time.
 struct TransientSample {
   Real t = 0;
-  Real speed = 0;                                         ///< [rad/s]
-  std::vector<std::array<Real, dofs_per_node>> probes;    ///< per probe node: u, v, w, rx, ry, rz
-  std::vector<Real> magnitude;                            ///< per probe: |r| = √(v² + w²)
-  std::vector<std::array<Real, dofs_per_node>> springs;   ///< per recorded spring: K·Δq + C·Δq'
+  Real speed = 0;                                        ///< [rad/s]
+  std::vector<std::array<Real, dofs_per_node>> probes;   ///< per probe node: u, v, w, rx, ry, rz
+  std::vector<Real> magnitude;                           ///< per probe: |r| = √(v² + w²)
+  std::vector<std::array<Real, dofs_per_node>> springs;  ///< per recorded spring: K·Δq + C·Δq'
   /// Per support (TransientResult::operating), its operating state in this motion.
   std::vector<std::vector<Real>> operating;
 };
@@ -79,11 +79,11 @@ struct TransientSample {
 /// The largest excursion of a support's journal within its clearance over a run
 /// (evaluated at every step, not only at the output times).
 struct ClearanceUse {
-  Index force = 0;       ///< index into Model::forces
-  Real clearance = 0;    ///< its radial clearance [m]
-  Real largest = 0;      ///< largest |journal − housing| (v, w) over the clearance
-  Real time = 0;         ///< when [s]
-  Real speed = 0;        ///< at which speed [rad/s]
+  Index force = 0;     ///< index into Model::forces
+  Real clearance = 0;  ///< its radial clearance [m]
+  Real largest = 0;    ///< largest |journal − housing| (v, w) over the clearance
+  Real time = 0;       ///< when [s]
+  Real speed = 0;      ///< at which speed [rad/s]
 };
 
 /// Largest |r| of a probe within speed bins (evaluated at every step, not only at
@@ -120,7 +120,7 @@ using ProgressSink = std::function<void(Real t, Real dt)>;
 
 /// Integrates from the initial state (rest unless given). Throws feran::Error for a bad option
 /// (unknown integrator, non-positive step or interval).
-TransientResult run_transient(const Model& model, const TransientOptions& options,
-                              const SampleSink& sink = {}, const ProgressSink& progress = {});
+TransientResult run_transient(const Model& model, const TransientOptions& options, const SampleSink& sink = {},
+                              const ProgressSink& progress = {});
 
 }  // namespace feran

@@ -19,13 +19,13 @@ namespace feran {
 /// (Solving ODEs II, sec. IV.7) and of PETSc's TSROSW, whose Γ has γ on the diagonal
 /// and the γ_ij below it.
 struct WTableau {
-  std::string name;   ///< registry name
-  Real gamma = 0.0;   ///< diagonal γ of Γ
-  Matrix alpha;       ///< s×s, strictly lower triangular α_ij
-  Matrix gamma_ij;    ///< s×s, strictly lower triangular γ_ij (Γ without its diagonal)
-  Vector b;           ///< weights of the solution
-  Vector b_hat;       ///< weights of the embedded solution (empty: none)
-  int order = 0;      ///< order of the solution for any T (W-order)
+  std::string name;        ///< registry name
+  Real gamma = 0.0;        ///< diagonal γ of Γ
+  Matrix alpha;            ///< s×s, strictly lower triangular α_ij
+  Matrix gamma_ij;         ///< s×s, strictly lower triangular γ_ij (Γ without its diagonal)
+  Vector b;                ///< weights of the solution
+  Vector b_hat;            ///< weights of the embedded solution (empty: none)
+  int order = 0;           ///< order of the solution for any T (W-order)
   int embedded_order = 0;  ///< order of the embedded solution (0: none)
 
   /// Number of stages s.
@@ -96,8 +96,7 @@ class WMethod final : public Integrator {
 
  private:
   /// Sets the Jacobian and factorises as the reuse rules require; false when singular.
-  bool prepare(SecondOrderSystem& sys, const State& s, Real h, bool after_rejection,
-               StepReport& report);
+  bool prepare(SecondOrderSystem& sys, const State& s, Real h, bool after_rejection, StepReport& report);
   /// Computes the stages for step @p h into x_new_, v_new_ (and the error estimate).
   void stages(SecondOrderSystem& sys, const State& s, Real h);
   /// Scaled maximum norm of the error estimate.

@@ -143,9 +143,9 @@ Model pedestal_rotor(bool pedestal_first) {
   m.elements.emplace_back(RigidBody(first + 14, RigidBody::disk(7810, 0.28, 0.05, 0.07), true));
   m.elements.emplace_back(RigidBody(first + 27, RigidBody::disk(7810, 0.35, 0.05, 0.07), true));
   test::add_body(m, pedestal, 20.0, 0.0, 0.0, 0.0, false);
-  test::add_isotropic_bearing(m, first, 2e7, 0.0, pedestal);     // journal on its pedestal
-  test::add_isotropic_bearing(m, pedestal, 1e8, 3000.0);          // pedestal to ground
-  test::add_isotropic_bearing(m, last, 1e6, 200.0);               // second journal to ground
+  test::add_isotropic_bearing(m, first, 2e7, 0.0, pedestal);  // journal on its pedestal
+  test::add_isotropic_bearing(m, pedestal, 1e8, 3000.0);      // pedestal to ground
+  test::add_isotropic_bearing(m, last, 1e6, 200.0);           // second journal to ground
   test::fix(m, pedestal, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
   test::fix(m, first, {Dof::u, Dof::rx});
   m.forces.emplace_back(Unbalance{first + 27, 1e-3, 0.1, 0.0, 0.0}, "u");
@@ -156,8 +156,10 @@ TEST(HarmonicResponse, SupportNumberedFarFromItsJournalIsStillBanded) {
   for (const bool first : {true, false}) {
     const Assembler assembled(pedestal_rotor(first));
     const Index b = BandedLU::half_bandwidth(assembled.constant().K);
-    if (first) EXPECT_LE(b, 16);
-    else EXPECT_GT(b, 200);
+    if (first)
+      EXPECT_LE(b, 16);
+    else
+      EXPECT_GT(b, 200);
   }
   HarmonicOptions opt;
   for (int i = 1; i <= 40; ++i) opt.speeds.push_back(i * 150.0 * 2 * pi / 60);

@@ -153,11 +153,10 @@ TEST(ModalSolver, SparseAtRestOnAnIsotropicRotor) {
 // reference is the real form of the same rotor (ModalOptions::complex_form = false):
 // eigenvalues within 1e-9 relative by QR (backward stable, ~1e-13 seen) and 1e-8 by
 // Arnoldi (converged to 1e-10 on the shift-inverted eigenvalues; the last mode of 24
-// differs by 1.4e-9), the same whirl, shapes with MAC ≥ 1 − tolerance. The heavily damped bearing of the small rotor makes a creeping
-// mode, p = −0.15 ± 1.1e-5i rad/s: nearly real, yet a conjugate pair in the real
-// form, and so a mode with Im p > 0 in the complex form too (its |Im p|/|p| = 8e-5 is
-// far above the 1e-10 below which the complex form's eigenvalues count as real).
-// A bearing anisotropic by 1e-9 is not axisymmetric (commutation tested to 1e-12).
+// differs by 1.4e-9), the same whirl, shapes with MAC ≥ 1 − tolerance. The heavily damped bearing of the small rotor
+// makes a creeping mode, p = −0.15 ± 1.1e-5i rad/s: nearly real, yet a conjugate pair in the real form, and so a mode
+// with Im p > 0 in the complex form too (its |Im p|/|p| = 8e-5 is far above the 1e-10 below which the complex form's
+// eigenvalues count as real). A bearing anisotropic by 1e-9 is not axisymmetric (commutation tested to 1e-12).
 TEST(ModalSolver, ComplexFormOfAnAxisymmetricRotorMatchesTheRealForm) {
   auto rotor = [](int n_el, Real damping, Real anisotropy) {
     Model m = test::friswell_5_9_1(n_el);
@@ -174,10 +173,11 @@ TEST(ModalSolver, ComplexFormOfAnAxisymmetricRotorMatchesTheRealForm) {
     EigenSolver solver;
     Index n_modes;
   };
-  const std::vector<Case> cases = {
-      {rotor(6, 1e7, 0.0), EigenSolver::dense, 0},   {rotor(6, 1e7, 0.0), EigenSolver::dense, 7},
-      {rotor(48, 300, 0.0), EigenSolver::sparse, 6}, {rotor(48, 300, 0.0), EigenSolver::sparse, 12},
-      {rotor(48, 300, 0.0), EigenSolver::sparse, 24}};
+  const std::vector<Case> cases = {{rotor(6, 1e7, 0.0), EigenSolver::dense, 0},
+                                   {rotor(6, 1e7, 0.0), EigenSolver::dense, 7},
+                                   {rotor(48, 300, 0.0), EigenSolver::sparse, 6},
+                                   {rotor(48, 300, 0.0), EigenSolver::sparse, 12},
+                                   {rotor(48, 300, 0.0), EigenSolver::sparse, 24}};
   for (const Case& k : cases) {
     ModalOptions complex;
     complex.solver = k.solver;
@@ -312,7 +312,8 @@ TEST(ModalSolver, UndampedGyroscopicRotorIsSolvedInHermitianForm) {
   dense.solver = EigenSolver::dense;
   EXPECT_EQ(ModalSolver(damped_anisotropic(), dense).solve(300.0).info.method, SolverMethod::dense_qr);
   EXPECT_EQ(ModalSolver(test::jeffcott(10.0, 1e6, 0.0, 50.0), dense).solve(300.0).info.method, SolverMethod::dense_qr);
-  EXPECT_EQ(ModalSolver(test::jeffcott(10.0, 1e6, 0.0, 0.0), dense).solve(300.0).info.method, SolverMethod::dense_hermitian);
+  EXPECT_EQ(ModalSolver(test::jeffcott(10.0, 1e6, 0.0, 0.0), dense).solve(300.0).info.method,
+            SolverMethod::dense_hermitian);
   Model free = test::friswell_5_9_1();
   free.elements.erase(std::remove_if(free.elements.begin(), free.elements.end(),
                                      [](const Element& e) { return e.kind() == "spring_damper"; }),

@@ -28,8 +28,8 @@ constexpr Real m = 9.1, k = 1.6e5, ca = 50, ci = 100;
 Real closed_form_growth(Real speed) {
   Real best = -1e300;
   for (const Real sign : {1.0, -1.0}) {  // forward (k − iΩc_i) and backward (k + iΩc_i)
-    const std::complex<Real> root = std::sqrt(std::complex<Real>((ca + ci) * (ca + ci), 0) -
-                                              4 * m * std::complex<Real>(k, -sign * speed * ci));
+    const std::complex<Real> root =
+        std::sqrt(std::complex<Real>((ca + ci) * (ca + ci), 0) - 4 * m * std::complex<Real>(k, -sign * speed * ci));
     for (const Real branch : {1.0, -1.0}) best = std::max(best, ((-(ca + ci) + branch * root) / (2 * m)).real());
   }
   return best;

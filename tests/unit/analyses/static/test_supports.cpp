@@ -41,22 +41,25 @@ Model rigid_rotor(Real m_per_bearing, FilmTheory theory, const JournalBearingGeo
   Model model;
   model.nodes = {{1, "centre", 0.0, true}, {2, "left", -a, true}, {3, "right", a, true}};
   const Real mass = 2 * m_per_bearing;
-  model.elements.emplace_back(RigidBody(0, {.mass = mass, .transverse_inertia = 0.05 * mass * a * a,
-                                            .polar_inertia = 0.02 * mass * a * a},
-                                        true),
-                              "rotor");
+  model.elements.emplace_back(
+      RigidBody(0, {.mass = mass, .transverse_inertia = 0.05 * mass * a * a, .polar_inertia = 0.02 * mass * a * a},
+                true),
+      "rotor");
   model.links.push_back({0, {1, 2}});
   FixedDofs fixed{.node = 0, .dofs = {}};
   fixed.dofs[static_cast<std::size_t>(Dof::u)] = fixed.dofs[static_cast<std::size_t>(Dof::rx)] = true;
   model.fixed.push_back(fixed);
-  model.forces.emplace_back(FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "left");
-  model.forces.emplace_back(FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "right");
+  model.forces.emplace_back(
+      FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "left");
+  model.forces.emplace_back(
+      FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "right");
   model.gravity = Eigen::Vector3d(0, -g, 0);
   return model;
 }
 
 // The 2×2 eigenvalue problem (m·λ² + C·λ + K)·x = 0 of one bearing carrying mass m
-// with coefficients @p b (in any frame: the eigenvalues do not depend on it), as the four roots of its characteristic polynomial via the companion matrix.
+// with coefficients @p b (in any frame: the eigenvalues do not depend on it), as the four roots of its characteristic
+// polynomial via the companion matrix.
 std::vector<Complex> closed_form_eigenvalues(Real m, const BearingCoefficients& b) {
   Matrix A = Matrix::Zero(4, 4);
   A.topRightCorner(2, 2) = Matrix::Identity(2, 2);
@@ -102,10 +105,9 @@ Real threshold_margin(const JournalBearingGeometry& geometry, FilmTheory theory,
   const BearingCoefficients b = film_coefficients(geometry, theory, speed, m * g);
   const Matrix& K = b.K;
   const Matrix& C = b.C;
-  const Real k_eq = (K(0, 0) * C(1, 1) + K(1, 1) * C(0, 0) - K(0, 1) * C(1, 0) - K(1, 0) * C(0, 1)) /
-                    (C(0, 0) + C(1, 1));
-  const Real nu2 = ((K(0, 0) - k_eq) * (K(1, 1) - k_eq) - K(0, 1) * K(1, 0)) /
-                   (C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0));
+  const Real k_eq =
+      (K(0, 0) * C(1, 1) + K(1, 1) * C(0, 0) - K(0, 1) * C(1, 0) - K(1, 0) * C(0, 1)) / (C(0, 0) + C(1, 1));
+  const Real nu2 = ((K(0, 0) - k_eq) * (K(1, 1) - k_eq) - K(0, 1) * K(1, 0)) / (C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0));
   return nu2 > 0 ? k_eq / nu2 - m : m;
 }
 
@@ -311,8 +313,12 @@ Model rigid_rotor_on_ball_bearings(Real m_per_bearing, const RollingBearingGeome
   return model;
 }
 
-constexpr RollingBearingGeometry ball_bearing{.elements = 9, .element_diameter = 0.012, .pitch_diameter = 0.06,
-                                              .contact_angle = 0.0, .clearance = 5e-6, .hertz_constant = 1e10,
+constexpr RollingBearingGeometry ball_bearing{.elements = 9,
+                                              .element_diameter = 0.012,
+                                              .pitch_diameter = 0.06,
+                                              .contact_angle = 0.0,
+                                              .clearance = 5e-6,
+                                              .hertz_constant = 1e10,
                                               .roller = false};
 
 TEST(Supports, RotorOnBallBearingsCarriesItsWeightWithTheirDifferencesAsStiffness) {

@@ -27,13 +27,9 @@ void expect_order_two(NewmarkParameters p) {
   EXPECT_NEAR(rates.back(), 2.0, 0.1);
 }
 
-TEST(Newmark, AverageAccelerationConvergesAtOrderTwo) {
-  expect_order_two(NewmarkParameters::average_acceleration());
-}
+TEST(Newmark, AverageAccelerationConvergesAtOrderTwo) { expect_order_two(NewmarkParameters::average_acceleration()); }
 
-TEST(Newmark, LinearAccelerationConvergesAtOrderTwo) {
-  expect_order_two(NewmarkParameters::linear_acceleration());
-}
+TEST(Newmark, LinearAccelerationConvergesAtOrderTwo) { expect_order_two(NewmarkParameters::linear_acceleration()); }
 
 // Nonlinear oscillator (Duffing term, regularised friction) over [0, 4] s against
 // test::nonlinear_reference (error 2.5e-13, far below the finest error here, 1.4e-6).
@@ -43,8 +39,8 @@ TEST(Newmark, TrapezoidalConvergesAtOrderTwoOnANonlinearProblem) {
   const State s0 = test::initial_state(2);
   const State ref = test::nonlinear_reference(s0);
   const IntegratorSettings settings;
-  const auto errors = test::errors_at_halved_steps(
-      [&] { return std::make_unique<Newmark>(settings); }, sys, s0, 4.0, ref.x, ref.v);
+  const auto errors =
+      test::errors_at_halved_steps([&] { return std::make_unique<Newmark>(settings); }, sys, s0, 4.0, ref.x, ref.v);
   const auto rates = test::observed_orders(errors);
   EXPECT_NEAR(rates[rates.size() - 2], 2.0, 0.1);
   EXPECT_NEAR(rates.back(), 2.0, 0.1);
@@ -91,9 +87,7 @@ TEST(Newmark, TrapezoidalRuleConservesEnergyOfUndampedSystem) {
   State s = test::initial_state(2);
   Newmark integ{IntegratorSettings{}};
   ASSERT_TRUE(integ.start(sys, s).ok);
-  const auto energy = [&](const State& st) {
-    return 0.5 * st.v.dot(sys.M * st.v) + 0.5 * st.x.dot(sys.K * st.x);
-  };
+  const auto energy = [&](const State& st) { return 0.5 * st.v.dot(sys.M * st.v) + 0.5 * st.x.dot(sys.K * st.x); };
   const Real e0 = energy(s);
   Real drift = 0.0;
   int factorizations = 0;

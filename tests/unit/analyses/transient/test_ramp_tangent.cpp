@@ -42,7 +42,8 @@ TEST(RampTangent, OneExactSolvePerStepAndTheKeptTangentsTrajectory) {
   KeptTangent kept(plain);
   State a, b;
   a.x = Vector::Zero(refreshed.size());
-  for (Index i = 0; i < a.x.size(); ++i) a.x(i) = 1e-5 * std::sin(0.3 * static_cast<Real>(i));  // a bent, whirling start
+  for (Index i = 0; i < a.x.size(); ++i)
+    a.x(i) = 1e-5 * std::sin(0.3 * static_cast<Real>(i));  // a bent, whirling start
   a.v = 50.0 * a.x.reverse();
   b = a;
   Newmark ia{IntegratorSettings{}}, ib{IntegratorSettings{}};
@@ -84,9 +85,9 @@ TEST(RampTangent, EachSolveIsTheTangentsAtItsOwnSpeedAtAnySpacing) {
   const Vector x = Vector::Zero(n), v = Vector::Zero(n), r = Vector::LinSpaced(n, -1.0, 2.0);
   const Real dt = 1e-4, c_v = 2.0 / dt, c_a = 4.0 / (dt * dt);
   std::vector<Real> times;
-  for (int k = 0; k < 12; ++k) times.push_back(0.2 + k * dt);                  // regular
+  for (int k = 0; k < 12; ++k) times.push_back(0.2 + k * dt);                    // regular
   for (int k = 0; k < 24; ++k) times.push_back(0.3 + k * dt * (1.0 + (k % 3)));  // irregular
-  for (int k = 0; k < 40; ++k) times.push_back(0.4 + k * dt);                  // regular again
+  for (int k = 0; k < 40; ++k) times.push_back(0.4 + k * dt);                    // regular again
   Vector delta, Md, Dd, Kd;
   for (const Real t : times) {
     sys.set_jacobian(t, x, v, true);

@@ -22,7 +22,8 @@ constexpr Real mass = 10.0, ky = 4e6, kz = 6e6, cy = 800.0, cz = 1200.0, mu = 1e
 Model disk_on_support() {
   Model model;
   model.nodes = {{1, "disk", 0.0, true}};
-  model.elements.emplace_back(RigidBody(0, {.mass = mass, .transverse_inertia = 0.1, .polar_inertia = 0.2, .offset = 0.0}, true), "disk");
+  model.elements.emplace_back(
+      RigidBody(0, {.mass = mass, .transverse_inertia = 0.1, .polar_inertia = 0.2, .offset = 0.0}, true), "disk");
   SpringDamperCoefficients c;
   c.k[static_cast<std::size_t>(Dof::v)] = ky;
   c.k[static_cast<std::size_t>(Dof::w)] = kz;
@@ -73,8 +74,9 @@ TEST(StartState, SteadyStartFollowsTheClosedFormOrbitFromTheFirstStep) {
   EXPECT_LT(worst, 1e-6 * std::abs(Y));
   // From rest the same run starts far from that orbit.
   const TransientResult rest = run_transient(model, constant_run(speed, RunupStart::rest));
-  EXPECT_GT(std::abs(rest.samples[10].probes[0][1] - sag - (Y * std::exp(Complex(0, speed * rest.samples[10].t))).real()),
-            0.1 * std::abs(Y));
+  EXPECT_GT(
+      std::abs(rest.samples[10].probes[0][1] - sag - (Y * std::exp(Complex(0, speed * rest.samples[10].t))).real()),
+      0.1 * std::abs(Y));
 }
 
 TEST(StartState, EquilibriumStartHoldsTheStaticSag) {
@@ -98,8 +100,13 @@ TEST(StartState, ForceAtItsOwnFrequencyDrivesTheRunAtThatFrequency) {
   Model model = disk_on_support();
   model.forces.clear();
   constexpr Real A = 100.0, omega = 450.0;
-  model.forces.emplace_back(HarmonicForce{.node = 0, .type = HarmonicForce::Kind::fixed, .direction = Dof::v,
-                                          .amplitude = A, .phase = 0.0, .frequency = omega, .time_table = {}},
+  model.forces.emplace_back(HarmonicForce{.node = 0,
+                                          .type = HarmonicForce::Kind::fixed,
+                                          .direction = Dof::v,
+                                          .amplitude = A,
+                                          .phase = 0.0,
+                                          .frequency = omega,
+                                          .time_table = {}},
                             "shaker");
   TransientOptions options = constant_run(300.0, RunupStart::rest);
   options.gravity.setZero();
@@ -141,7 +148,8 @@ TEST(StartState, ForceGivenInTimeFollowsTheClosedFormRampResponse) {
   for (const TransientSample& s : r.samples) {
     largest = std::max(largest, std::abs(s.probes[0][1]));
     if (s.t <= t1) {
-      const Real y = a / ky * (s.t - cy / ky) + std::exp(-zeta * wn * s.t) * (A * std::cos(wd * s.t) + B * std::sin(wd * s.t));
+      const Real y =
+          a / ky * (s.t - cy / ky) + std::exp(-zeta * wn * s.t) * (A * std::cos(wd * s.t) + B * std::sin(wd * s.t));
       worst_ramp = std::max(worst_ramp, std::abs(s.probes[0][1] - y));
     } else if (s.t >= 0.38) {
       worst_end = std::max(worst_end, std::abs(s.probes[0][1] - F0 / ky));

@@ -83,9 +83,7 @@ class DenseSystem : public SecondOrderSystem {
   }
 
   // sqrt of the ∞-norm of M⁻¹K: an upper bound of ω_max, exact for one DOF.
-  Real highest_frequency() override {
-    return std::sqrt(M.partialPivLu().solve(K).lpNorm<Eigen::Infinity>());
-  }
+  Real highest_frequency() override { return std::sqrt(M.partialPivLu().solve(K).lpNorm<Eigen::Infinity>()); }
 
  private:
   Matrix K_T, D_T;
@@ -157,8 +155,7 @@ class LinearExact {
  public:
   LinearExact(const DenseSystem& sys, const State& s0) : n_(sys.M.rows()), omega_(sys.omega), t0_(s0.t) {
     const Complex i(0.0, 1.0);
-    const ComplexMatrix Z =
-        (sys.K - omega_ * omega_ * sys.M).cast<Complex>() + i * omega_ * sys.D.cast<Complex>();
+    const ComplexMatrix Z = (sys.K - omega_ * omega_ * sys.M).cast<Complex>() + i * omega_ * sys.D.cast<Complex>();
     X_ = Z.partialPivLu().solve(sys.F.cast<Complex>());
     A_ = Matrix::Zero(2 * n_, 2 * n_);
     A_.topRightCorner(n_, n_).setIdentity();
@@ -205,9 +202,8 @@ inline Real state_error(const State& s, const Vector& x, const Vector& v) {
 // Final-state errors of runs with n0, 2·n0, …, 2^(levels−1)·n0 steps against (x_ref, v_ref);
 // @p make returns a fresh integrator for each run.
 template <class MakeIntegrator>
-std::vector<Real> errors_at_halved_steps(MakeIntegrator make, SecondOrderSystem& sys, const State& s0,
-                                         Real t_end, const Vector& x_ref, const Vector& v_ref,
-                                         int n0 = 40, int levels = 6) {
+std::vector<Real> errors_at_halved_steps(MakeIntegrator make, SecondOrderSystem& sys, const State& s0, Real t_end,
+                                         const Vector& x_ref, const Vector& v_ref, int n0 = 40, int levels = 6) {
   std::vector<Real> errors;
   for (int k = 0; k < levels; ++k) {
     auto integ = make();

@@ -56,9 +56,9 @@ TEST(Ros34pw2, EmbeddedSolutionConvergesAtOrderTwo) {
 // four orders).
 struct Approximation {
   const char* what;
-  bool exact;       // settings.exact_jacobian
-  Real scale;       // the test system's jacobian_scale
-  int interval;     // settings.jacobian_interval
+  bool exact;    // settings.exact_jacobian
+  Real scale;    // the test system's jacobian_scale
+  int interval;  // settings.jacobian_interval
 };
 
 const Approximation approximations[] = {
