@@ -39,7 +39,7 @@ for harness in fuzz_reader fuzz_model; do
   log=$build/$harness.log
   set +e
   "$build/tests/fuzz/$harness" -max_total_time="$seconds" -dict=tests/fuzz/model.dict -max_len=65536 \
-    -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$build/findings/$harness-" \
+    -timeout=60 -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$build/findings/$harness-" \
     "$corpus" "$seeds" >"$log" 2>&1
   code=$?
   set -e

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <Eigen/SparseLU>
 #include <fmt/format.h>
@@ -157,14 +158,18 @@ class Residual {
 };
 
 // Newton's method from @p q for the load scaled by @p load_scale, each step cut back
-// (halved, down to 2⁻²⁰) until the residual norm decreases. Where the Jacobian is
-// singular or no cut-back step decreases the residual (a contact support without
-// contact, whose stiffness is zero, or a Hertzian contact at zero deflection), the step
-// is regularised as Levenberg and Marquardt's: J + μ·S, S the identity on the
-// supports' DOFs, μ from ‖r‖/(1 mm) (a first step of a millimetre, larger than any
-// bearing clearance, which the line search halves) up tenfold until a step succeeds and down tenfold
-// after each success (to plain Newton below 1e-12 of its start). Returns whether it
-// met the tolerance; @p q holds the last iterate.
+// (halved, down to 2⁻²⁰; a regularised step below, to a quarter) until the residual
+// norm decreases. Where the Jacobian is singular or no cut-back step decreases the
+// residual (a contact support without contact, whose stiffness is zero, or a Hertzian
+// contact at zero deflection), the step is regularised as Levenberg and Marquardt's:
+// J + μ·S, S the identity on the supports' DOFs, μ from ‖r‖/(1 mm) (a first step of a
+// millimetre, larger than any bearing clearance, which the line search halves) up
+// tenfold until a step succeeds (or up to 1e12 of its start: steps of 1e-15 m) and
+// down tenfold after each success (to plain Newton below 1e-12 of its start). It gives
+// up early where it has stalled, the residual cut by less than a tenth over the last
+// 8 steps (where the load cannot be carried, a step of the continuation below then
+// costs 8 steps rather than 60). Returns whether it met the tolerance; @p q holds the
+// last iterate.
 bool newton(const Residual& residual, Real load_scale, Real scale, const EquilibriumOptions& options, Vector& q,
             Equilibrium& out) {
   SparseMatrix J;
@@ -172,9 +177,13 @@ bool newton(const Residual& residual, Real load_scale, Real scale, const Equilib
   if (!r) return false;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   Real mu = 0.0, mu_start = 0.0;
+  constexpr int stall_window = 8;
+  std::vector<Real> history;
   for (int it = 0; it < options.max_iterations; ++it) {
     out.residual = r->norm() / scale;
     if (out.residual <= options.tolerance) return true;
+    history.push_back(r->norm());
+    if (it >= stall_window && history.back() > 0.9 * history[history.size() - 1 - stall_window]) break;
     ++out.iterations;
     bool stepped = false;
     for (int attempt = 0; attempt < 40 && !stepped; ++attempt) {
@@ -185,7 +194,9 @@ bool newton(const Residual& residual, Real load_scale, Real scale, const Equilib
         residual.project(dq);
       }
       if (lu.info() == Eigen::Success && dq.allFinite()) {
-        for (Real t = 1.0; t >= 0x1p-20; t *= 0.5) {
+        // The regularised steps are short already, and μ their control: two cuts each.
+        const Real shortest = mu > 0 ? 0.25 : 0x1p-20;
+        for (Real t = 1.0; t >= shortest; t *= 0.5) {
           const Vector trial = q + t * dq;
           SparseMatrix J_trial;
           std::optional<Vector> r_trial = residual(trial, load_scale, &J_trial);
@@ -202,6 +213,7 @@ bool newton(const Residual& residual, Real load_scale, Real scale, const Equilib
       } else {
         if (mu_start == 0.0) mu_start = r->norm() / 1e-3;
         mu = mu > 0 ? 10.0 * mu : mu_start;
+        if (mu > 1e12 * mu_start) break;  // steps below a nanometre's millionth: none
       }
     }
     if (!stepped) break;
