@@ -31,7 +31,6 @@ using Runner = std::function<int()>;
 Runner add_modal_command(CLI::App& app);
 Runner add_campbell_command(CLI::App& app);
 Runner add_response_command(CLI::App& app);
-Runner add_static_command(CLI::App& app);
 Runner add_runup_command(CLI::App& app);
 Runner add_params_command(CLI::App& app);
 Runner add_study_command(CLI::App& app);

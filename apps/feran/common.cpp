@@ -18,8 +18,10 @@
 #include <feran/io/output_files.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/core/text.hpp>
+#include <feran/core/suggestions.hpp>
 #include <feran/core/units.hpp>
 
+#include "analysis_command.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 
@@ -193,6 +195,34 @@ CLI::Validator positive_number() {
 
 CLI::Validator non_negative_number() {
   return number_check("non-negative", [](double v) { return v >= 0.0; });
+}
+
+}  // namespace feran::app
+
+namespace feran::app {
+
+std::string flag_name(std::string_view key) {
+  std::string out = "--";
+  for (const char c : key) out += c == '_' ? '-' : c;
+  return out;
+}
+
+std::string flag_help(std::string_view doc, const std::string& default_text,
+                      std::span<const std::string_view> choices) {
+  std::string out;
+  for (const char c : doc)
+    if (c != '`') out += c;
+  if (!out.empty()) out[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(out[0])));
+  if (!choices.empty()) {
+    std::vector<std::string> words(choices.begin(), choices.end());
+    out += "; one of " + detail::join_list(words);
+  }
+  if (!default_text.empty()) out += " (default " + default_text + ")";
+  return out;
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::fprintf(stderr, "feran: warning: %s\n", printable(w, true).c_str());
 }
 
 }  // namespace feran::app

@@ -18,6 +18,9 @@
 #include <feran/core/suggestions.hpp>
 #include <feran/core/text.hpp>
 
+#include <feran/analyses/list.hpp>
+
+#include "analysis_command.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 
@@ -96,7 +99,6 @@ int main(int argc, char** argv) try {
       {"modal", [](CLI::App& a, int, char**) { return feran::app::add_modal_command(a); }},
       {"campbell", [](CLI::App& a, int, char**) { return feran::app::add_campbell_command(a); }},
       {"response", [](CLI::App& a, int, char**) { return feran::app::add_response_command(a); }},
-      {"static", [](CLI::App& a, int, char**) { return feran::app::add_static_command(a); }},
       {"runup", [](CLI::App& a, int, char**) { return feran::app::add_runup_command(a); }},
       {"params", [](CLI::App& a, int, char**) { return feran::app::add_params_command(a); }},
       {"study", [](CLI::App& a, int, char**) { return feran::app::add_study_command(a); }},
@@ -105,12 +107,18 @@ int main(int argc, char** argv) try {
   };
   std::vector<std::string> names;
   for (const auto& [name, add] : commands) names.emplace_back(name);
+  feran::Analyses::for_each([&]<class A>() { names.emplace_back(A::name); });
   const std::string first = argc > 1 ? argv[1] : "";
   const bool named = std::find(names.begin(), names.end(), first) != names.end();
   const bool version_only = argc == 2 && first == "--version";
   std::map<std::string, feran::app::Runner> runners;
   for (const auto& [name, add] : commands)
     if (!version_only && (!named || first == name)) runners[name] = add(app, argc, argv);
+  // The analyses of analyses/list.hpp, each a command made from its face.
+  feran::Analyses::for_each([&]<class A>() {
+    if (!version_only && (!named || first == A::name))
+      runners[std::string(A::name)] = feran::app::add_analysis_command<A>(app);
+  });
   // An option given an empty value ('--json ""', '--speed ""') is an error, not the
   // option left out.
   const CLI::Validator non_empty(

@@ -5,6 +5,7 @@
     modes = feran.modal(model, speed="30 Hz")
     modes.frequency_hz        # numpy array
 """
+import inspect as _inspect
 import json as _json
 
 import numpy as _np
@@ -18,9 +19,43 @@ from ._feran import __version__  # noqa: F401 -- re-exported
 from .study import Study, read_study
 from ._arguments import explained as _explained
 
+from ._feran import _analysis_options
+
 # Every compiled function and Model method names a wrong argument in its TypeError.
-api684, campbell, modal, read_model, report, response, runup, static = (
-    _explained(f) for f in (api684, campbell, modal, read_model, report, response, runup, static))
+api684, campbell, modal, read_model, report, response, runup = (
+    _explained(f) for f in (api684, campbell, modal, read_model, report, response, runup))
+
+
+def _analysis(compiled, options):
+    """The analysis @p compiled (feran.<name>(model, **options)) with the signature and
+    help its options' field table gives it: every option a keyword, None (the model's
+    own table, else the analysis's default) unless given."""
+    name = compiled.__name__
+    summary = [line for line in (compiled.__doc__ or "").splitlines()[1:] if line.strip()]
+
+    def function(model, **keywords):
+        if not isinstance(model, Model):
+            text = repr(model)
+            raise TypeError(f"{name}(): 'model' must be a feran.Model (feran.read_model(path) reads one), got "
+                            f"{type(model).__name__} {text if len(text) <= 40 else text[:37] + '...'}")
+        return compiled(model, **keywords)
+
+    parameters = [_inspect.Parameter("model", _inspect.Parameter.POSITIONAL_OR_KEYWORD)]
+    lines = []
+    for key, _kind, doc, default in options:
+        parameters.append(_inspect.Parameter(key, _inspect.Parameter.KEYWORD_ONLY, default=None))
+        default = {"true": "True", "false": "False"}.get(default, default)
+        lines.append(f"    {key}: {doc.replace('`', '')}" + (f" (default {default})" if default else ""))
+    function.__name__ = function.__qualname__ = name
+    function.__signature__ = _inspect.Signature(parameters)
+    function.__doc__ = "\n".join(summary) + (
+        f", as feran {name} does.\n\nOptions (None: the model's [{name}] table, else the default): a string is read "
+        "as on the command line ('30 Hz'), a number is in SI units (speeds in rad/s).\n" + "\n".join(lines))
+    return function
+
+
+# The analyses made from their faces (analyses/list.hpp in the library).
+static = _analysis(static, _analysis_options["static"])
 for _method in ("__init__", "__getitem__", "__setitem__", "geometry", "_add"):
     setattr(Model, _method, _explained(getattr(Model, _method), "Model"))
 

@@ -14,6 +14,7 @@
 #include <feran/io/node_reference.hpp>
 #include <feran/io/option_text.hpp>
 
+#include "analysis_binding.hpp"
 #include "bindings.hpp"
 
 namespace feran::python {
@@ -85,12 +86,15 @@ std::vector<std::string> text_arguments(const py::handle& value, const char* nam
   return out;
 }
 
+void issue_warnings(const std::vector<std::string>& warnings) {
+  if (warnings.empty()) return;
+  const py::object warn = py::module_::import("warnings").attr("warn");
+  for (const std::string& w : warnings) warn(w, py::handle(PyExc_UserWarning), 2);
+}
+
 ResultContext result_context(std::shared_ptr<const ModelFile> file, double low, double high) {
   ResultContext out{file, ResultSource{file->path, file->title, range_warnings(file->model, low, high)}};
-  if (!out.source.warnings.empty()) {
-    const py::object warn = py::module_::import("warnings").attr("warn");
-    for (const std::string& w : out.source.warnings) warn(w, py::handle(PyExc_UserWarning), 2);
-  }
+  issue_warnings(out.source.warnings);
   return out;
 }
 

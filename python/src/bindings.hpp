@@ -70,7 +70,6 @@ void bind_model(py::module_& m);
 void bind_modal(py::module_& m);
 void bind_campbell(py::module_& m);
 void bind_response(py::module_& m);
-void bind_static(py::module_& m);
 void bind_runup(py::module_& m);
 void bind_study(py::module_& m);
 void bind_api684(py::module_& m);

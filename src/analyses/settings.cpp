@@ -8,12 +8,14 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/transient/integrator.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/suggestions.hpp>
 #include <feran/core/units.hpp>
 #include <feran/spec/fields.hpp>
+#include <feran/spec/request.hpp>
 
 namespace feran {
 
@@ -49,24 +51,9 @@ template <class S>
 std::optional<Real> checked(std::optional<Real> value, std::string_view key, std::string_view option) {
   if (!value) return value;
   const spec::Field<S>& f = spec::field_of<S>(key);
-  const Real v = *value;
-  const bool quantity = f.kind == spec::FieldKind::quantity;
-  const auto text = [&] { return quantity ? format_quantity(v, f.quantity, f.unit) : fmt::format("{:g}", v); };
-  if (!std::isfinite(v)) throw Error(fmt::format("{}: must be a finite number", option));
-  if (f.bound.kind == spec::Bound::Kind::positive && !(v > 0.0))
-    throw Error(fmt::format("{}: must be positive, got {}", option, text()));
-  if (f.bound.kind == spec::Bound::Kind::non_negative && !(v >= 0.0))
-    throw Error(fmt::format("{}: must not be negative, got {}", option, text()));
-  if (quantity) {
-    const PhysicalRange range = physical_range(f.quantity);
-    const auto limit = [&](Real si) { return approximate_quantity(si, f.quantity, f.unit); };
-    if (std::abs(v) > range.largest)
-      throw Error(fmt::format("{}: {} is beyond the physical range of {} (at most {} in magnitude)", option, text(),
-                              quantity_name(f.quantity), limit(range.largest)));
-    if (f.bound.kind == spec::Bound::Kind::positive && v < range.smallest_positive)
-      throw Error(fmt::format("{}: {} is below the physical range of {} (at least {})", option, text(),
-                              quantity_name(f.quantity), limit(range.smallest_positive)));
-  }
+  spec::detail::check_number(*value, f.bound,
+                             f.kind == spec::FieldKind::quantity ? std::optional<Quantity>(f.quantity) : std::nullopt,
+                             f.unit, option);
   return value;
 }
 
@@ -74,11 +61,7 @@ std::optional<Real> checked(std::optional<Real> value, std::string_view key, std
 template <class S>
 std::optional<int> checked_count(std::optional<int> value, std::string_view key, std::string_view option) {
   if (!value) return value;
-  const spec::Bound& b = spec::field_of<S>(key).bound;
-  if (b.kind == spec::Bound::Kind::at_least && *value < b.minimum)
-    throw Error(fmt::format("{}: must be at least {}, got {}", option, b.minimum, *value));
-  if (b.kind == spec::Bound::Kind::at_least && *value > b.maximum)
-    throw Error(fmt::format("{}: must be at most {}, got {}", option, b.maximum, *value));
+  spec::detail::check_integer(*value, spec::field_of<S>(key).bound, option);
   return value;
 }
 
@@ -175,9 +158,8 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
   // the model's own elements (linearised(), analyses/static/equilibrium.hpp).
   const Model lin = linearised(model);
   if (o.bearings.empty()) o.bearings = bearing_elements(lin);
-  StaticRequest gravity;
-  gravity.loads = true;
-  o.gravity = static_settings(file.static_, gravity);
+  // Gravity (for the journal loads) as the file's [static] table gives it.
+  o.gravity = static_options(file, model);
   o.n_threads = request.n_threads;
 
   if (request.map) {
@@ -384,32 +366,6 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, 
   options.probes = !request.probes.empty() ? request.probes
                    : !file.probes.empty()  ? node_indices(model, file.probes)
                                            : default_probes(model, options.extra_forces);
-  return options;
-}
-
-StaticOptions static_settings(const StaticSpec& file, const StaticRequest& request) {
-  StaticOptions options;
-  const std::string direction = request.gravity.value_or(file.gravity.value_or("-y"));
-  // A magnitude asked for applies to the file's direction too; the file's own 'g'
-  // only to its own direction.
-  const Real g = request.g                            ? *request.g
-                 : (!request.gravity && file.gravity) ? file.g.value_or(defaults::gravity)
-                                                      : defaults::gravity;
-  checked<StaticSpec>(request.g, "g", "--g");
-  checked<StaticSpec>(request.speed, "speed", "--speed");
-  if (request.g && direction == "none")
-    throw Error("--g cannot be given with --gravity none; give a direction such as --gravity -z, or leave --g out");
-  if (!(g > 0.0)) throw Error("--g must be positive");
-  if (direction != "none") {
-    const bool signed_direction = direction.size() == 2 && (direction[0] == '+' || direction[0] == '-');
-    const char axis = direction.back();
-    if ((direction.size() != 1 && !signed_direction) || axis < 'x' || axis > 'z')
-      throw Error(fmt::format("static: gravity must be +x, -x, +y, -y, +z, -z or none, got '{}'", direction));
-    options.gravity(axis - 'x') = direction.front() == '-' ? -g : g;
-  }
-  options.speed = request.speed.value_or(file.speed.value_or(0.0));
-  options.loads = request.loads;
-  options.stability = request.stability;
   return options;
 }
 

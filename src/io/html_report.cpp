@@ -16,7 +16,7 @@
 #include <feran/analyses/modal/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
-#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/core/error.hpp>
 #include <feran/elements/rigid_body.hpp>
@@ -397,10 +397,11 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
           // A rotor on oil films rests on them only while it turns: without a speed of
           // its own, the static analysis runs at the maximum operating speed (else the
           // first speed above 0 the mode shapes use).
-          StaticRequest request;
+          StaticSpec request;
           if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
-          const StaticOptions so = static_settings(spec.static_, request);
-          return json::parse(static_json(run_static(model, so), so, model, source));
+          const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
+          return json::parse(StaticAnalysis::json(
+              run_analysis<StaticAnalysis>(unowned, request, file_key_name<StaticAnalysis>(), options.stop)));
         },
         options.stop);
 

@@ -1,5 +1,9 @@
 #include <feran/io/key_reference.hpp>
 
+#include <optional>
+
+#include <feran/analyses/list.hpp>
+
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -71,6 +75,16 @@ template <class S>
 std::string default_of(const Field<S>& f) {
   if (f.required) return "required";
   if (!f.default_text.empty()) return std::string(f.default_text);
+  // An analysis's options: the analysis's own defaults (analyses/list.hpp).
+  std::optional<std::string> analysis_default;
+  Analyses::for_each([&]<class A>() {
+    if constexpr (std::is_same_v<typename A::Spec, S>) {
+      const std::string text = spec::value_text(A::defaults(), f);
+      const bool word = f.kind == FieldKind::choice || f.kind == FieldKind::text;
+      analysis_default = text.empty() ? "—" : word ? fmt::format("`\"{}\"`", text) : fmt::format("`{}`", text);
+    }
+  });
+  if (analysis_default) return *analysis_default;
   static const S defaults{};
   return std::visit(
       [&](auto member) -> std::string {

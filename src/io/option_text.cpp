@@ -9,20 +9,12 @@
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
 #include <feran/io/node_reference.hpp>
+#include <feran/spec/request.hpp>
 
 namespace feran {
 
 Real parse_speed_text(const std::string& text, const std::string& what) {
-  const auto q = split_quantity(text);
-  if (!q || q->unit.empty())
-    throw Error(fmt::format("{} '{}': give a speed with its unit, e.g. 30Hz, 1800rpm or 188.5rad/s", what, text));
-  const auto si = to_si(Quantity::speed, q->value, q->unit);
-  if (!si) throw Error(fmt::format("{} '{}': the unit must be Hz, rpm or rad/s", what, text));
-  const Real largest = physical_range(Quantity::speed).largest;
-  if (!std::isfinite(*si) || std::abs(*si) > largest)
-    throw Error(fmt::format("{} '{}': beyond the physical range of a speed (at most {} in magnitude)", what, text,
-                            approximate_quantity(largest, Quantity::speed, q->unit)));
-  return *si;
+  return spec::detail::quantity_text(text, Quantity::speed, what);
 }
 
 Real parse_time_text(const std::string& text, const std::string& what) {

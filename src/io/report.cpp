@@ -8,64 +8,13 @@
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/text.hpp>
 
+#include "result_text.hpp"
+
 namespace feran {
 
 namespace {
 
-std::string source_line(const char* analysis, const ResultSource& source) {
-  if (source.title.empty()) return fmt::format("feran {}: {}\n", analysis, printable(source.model_path));
-  return fmt::format("feran {}: {} ({})\n", analysis, printable(source.title), printable(source.model_path));
-}
-
-// A speed in the unit the user chose ("Hz" or "rpm"), the other in parentheses.
-std::string speed_text(Real speed, const std::string& unit = "Hz") {
-  if (unit == "rpm") return fmt::format("{:.6g} rpm ({:.4g} Hz)", rad_to_hz(speed) * 60.0, rad_to_hz(speed));
-  return fmt::format("{:.4g} Hz ({:.6g} rpm)", rad_to_hz(speed), rad_to_hz(speed) * 60.0);
-}
-
-// A speed column: its header and the value in the chosen unit.
-std::string speed_header(const std::string& unit) { return unit == "rpm" ? "speed [rpm]" : "speed [Hz]"; }
-Real speed_value(Real speed, const std::string& unit) { return rad_to_hz(speed) * (unit == "rpm" ? 60.0 : 1.0); }
-
-// A speed alone, in the chosen unit ("105.3 Hz", "6318 rpm").
-std::string speed_short(Real speed, const std::string& unit) {
-  return unit == "rpm" ? fmt::format("{:.0f} rpm", speed_value(speed, unit))
-                       : fmt::format("{:.4g} Hz", rad_to_hz(speed));
-}
-
-// The same without the unit (under a speed_header()).
-std::string speed_number(Real speed, const std::string& unit) {
-  return unit == "rpm" ? fmt::format("{:.0f}", speed_value(speed, unit)) : fmt::format("{:.4g}", rad_to_hz(speed));
-}
-
-// Frequencies of the motion follow the speed unit, as in the report: Hz with Hz,
-// cycles per minute with rpm (a synchronous mode's frequency then reads as its speed).
-std::string frequency_unit(const std::string& unit) { return unit == "rpm" ? "cpm" : "Hz"; }
-Real frequency_value(Real hz, const std::string& unit) { return hz * (unit == "rpm" ? 60.0 : 1.0); }
-std::string frequency_text(Real hz, const std::string& unit) {
-  return fmt::format("{:.4g} {}", frequency_value(hz, unit), frequency_unit(unit));
-}
-
-// A right-aligned number; "-" when it does not exist. Values that would print as
-// "-0.000" print as "0.000".
-std::string cell(Real x, const char* format_spec, int width, int decimals) {
-  if (!std::isfinite(x)) return fmt::format("{:>{}}", "-", width);
-  if (std::abs(x) < 0.5 * std::pow(10.0, -decimals)) x = 0.0;
-  return fmt::format(fmt::runtime(fmt::format("{{:>{}{}}}", width, format_spec)), x);
-}
-
-}  // namespace
-
-namespace {
-
-// Names as the model gives them, made printable (core/text.hpp).
-std::string node_name(const Model& model, Index node) { return printable(model.node_label(node)); }
-
-// Also for the elements of linearised(model) that stand for its journal and rolling
-// bearings (numbered after its own).
-std::string element_name(const Model& model, Index element) {
-  return printable(linearised_element_name(model, element));
-}
+using namespace detail;  // NOLINT(google-build-using-namespace): the reports' shared vocabulary (result_text.hpp)
 
 // A steady-state result's stability (modal/stability.hpp), in a few lines: nothing
 // when stable everywhere; else where it is unstable and what that means.
@@ -87,77 +36,6 @@ std::string stability_text(const HarmonicResult& result, const std::string& unit
   if (unknown > 0)
     out += fmt::format("note: the stability is unknown at {} of {} points\n\n", unknown, result.stability.size());
   return out;
-}
-
-std::string force_name(const Model& model, Index force);
-
-// A table of the supports' operating state (Force::operating_data()) with units in the
-// headers: a journal bearing's eccentricity ratio, attitude angle, minimum film
-// thickness and where it is, Sommerfeld number, friction torque and power loss, peak
-// film pressure; a rolling bearing's most loaded element. One row per (label, names,
-// values); only the columns some row has.
-struct OperatingRow {
-  std::string label;
-  const std::vector<std::string>* names;
-  const std::vector<Real>* values;
-};
-
-std::string operating_block(const std::string& title, const std::string& first, const std::vector<OperatingRow>& rows) {
-  struct Column {
-    const char* name;
-    const char* head;
-    Real scale;
-    const char* format;
-  };
-  static const Column columns[] = {{"eccentricity_ratio", "eps [-]", 1, ".4f"},
-                                   {"attitude_angle_deg", "attitude [deg]", 1, ".2f"},
-                                   {"min_film_thickness_m", "h_min [um]", 1e6, ".3f"},
-                                   {"min_film_angle_deg", "at [deg]", 1, ".1f"},
-                                   {"specific_load_pa", "W/(LD) [MPa]", 1e-6, ".4g"},
-                                   {"sommerfeld_number", "Sommerfeld [-]", 1, ".4g"},
-                                   {"friction_torque_nm", "torque [N m]", 1, ".4g"},
-                                   {"power_loss_w", "loss [W]", 1, ".4g"},
-                                   {"peak_pressure_pa", "p_max [MPa]", 1e-6, ".4g"},
-                                   {"max_element_load_n", "Q_max [N]", 1, ".4g"},
-                                   {"loaded_elements", "loaded", 1, ".0f"},
-                                   {"max_contact_stress_pa", "p_Hertz [MPa]", 1e-6, ".4g"}};
-  std::vector<const Column*> used;
-  for (const Column& c : columns)
-    for (const OperatingRow& r : rows)
-      if (std::find(r.names->begin(), r.names->end(), c.name) != r.names->end()) {
-        used.push_back(&c);
-        break;
-      }
-  if (used.empty()) return {};
-  std::string out = fmt::format("\n{}\n{:>30}", title, first);
-  for (const Column* c : used) out += fmt::format(" {:>14}", c->head);
-  out += '\n';
-  for (const OperatingRow& r : rows) {
-    out += fmt::format("{:>30}", r.label);
-    for (const Column* c : used) {
-      std::string text = "-";
-      const auto it = std::find(r.names->begin(), r.names->end(), c->name);
-      if (it != r.names->end()) {
-        const Real v = (*r.values)[static_cast<std::size_t>(it - r.names->begin())];
-        if (std::isfinite(v)) text = fmt::format(fmt::runtime("{:" + std::string(c->format) + "}"), v * c->scale);
-      }
-      out += fmt::format(" {:>14}", text);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-// The supports' state at the equilibrium of a static analysis: one row per support.
-std::string operating_table(const StaticResult& result, const Model& model) {
-  std::vector<std::vector<std::string>> names(result.support_data.size());
-  std::vector<std::vector<Real>> values(result.support_data.size());
-  std::vector<OperatingRow> rows;
-  for (std::size_t i = 0; i < result.supports.size(); ++i) {
-    for (const OperatingValue& o : result.support_data[i]) names[i].push_back(o.name), values[i].push_back(o.value);
-    rows.push_back({force_name(model, result.supports[i].first), &names[i], &values[i]});
-  }
-  return operating_block("Bearing operating data at the equilibrium", "", rows);
 }
 
 // The supports' state at an analysis' one speed (its first point): one row per support.
@@ -186,11 +64,6 @@ std::string operating_tables(const std::vector<OperatingSeries>& series, const M
     out += operating_block(fmt::format("Operating data of {} {}", force_name(model, s.force), what), first, rows);
   }
   return out;
-}
-
-std::string force_name(const Model& model, Index force) {
-  const std::string& label = model.forces[static_cast<std::size_t>(force)].label();
-  return label.empty() ? fmt::format("force {}", force + 1) : printable(label);
 }
 
 std::string point_text(const HarmonicResult& r, Index k, const std::string& unit) {
@@ -387,66 +260,6 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
                             [&](std::size_t k) { return speed_number(result.speeds[k], source.speed_unit); });
   }
   if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
-  return out;
-}
-
-std::string static_report(const StaticResult& result, const StaticOptions& options, const Model& model,
-                          const ResultSource& source) {
-  std::string out = source_line("static", source);
-  out += fmt::format("gravity ({:.4g}, {:.4g}, {:.4g}) m/s^2, {} static load(s), coefficients at {}\n\n",
-                     options.gravity(0), options.gravity(1), options.gravity(2),
-                     options.loads ? model.n_forces("static_load") : 0, speed_text(options.speed, source.speed_unit));
-  if (result.stability.known && result.stability.unstable)
-    out +=
-        fmt::format("warning: the rotor does not stay at this equilibrium: {}\n\n", stability_phrase(result.stability));
-  else
-    out += fmt::format("stability of the equilibrium: {}\n\n", stability_phrase(result.stability));
-  out += "Displacements [mm, mrad]\n";
-  out += fmt::format("{:>20} {:>9} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "node", "x [mm]", "u", "v", "w", "rx",
-                     "ry", "rz");
-  for (Index node = 0; node < model.n_nodes(); ++node) {
-    out += fmt::format("{:>20} {:>9.2f}", node_name(model, node), 1e3 * model.nodes[static_cast<std::size_t>(node)].x);
-    for (int d = 0; d < dofs_per_node; ++d) out += " " + cell(1e3 * result.q(dofs_per_node * node + d), ".5f", 10, 5);
-    out += '\n';
-  }
-  auto forces = [&](const NodeValues& f) {
-    std::string s;
-    for (int d = 0; d < dofs_per_node; ++d) s += " " + cell(f[static_cast<std::size_t>(d)], ".4g", 10, 12);
-    return s;
-  };
-  const std::string head = fmt::format("{:>10} {:>10} {:>10} {:>10} {:>10} {:>10}", "Fx [N]", "Fy [N]", "Fz [N]",
-                                       "Mx [Nm]", "My [Nm]", "Mz [Nm]");
-  if (!result.springs.empty()) {
-    out += fmt::format("\nForces on the spring-dampers' second node or ground\n{:>30}{}\n", "", head);
-    for (const auto& [e, f] : result.springs) out += fmt::format("{:>30}{}\n", element_name(model, e), forces(f));
-  }
-  if (!result.supports.empty()) {
-    out += fmt::format("\nForces the bearings transmit to their housing or ground\n{:>30}{}\n", "", head);
-    for (const auto& [i, f] : result.supports) out += fmt::format("{:>30}{}\n", force_name(model, i), forces(f));
-    out += operating_table(result, model);
-  }
-  if (!result.reactions.empty()) {
-    out += fmt::format("\nForces on the supports (fixed DOFs)\n{:>30}{}\n", "", head);
-    for (const auto& [node, f] : result.reactions)
-      out += fmt::format("{:>30}{}\n", "node " + node_name(model, node), forces(f));
-  }
-  out += fmt::format("{:>30}{}\n", "total applied load", forces(result.total_load));
-  if (!result.stations.empty()) {
-    std::size_t worst = 0;
-    for (std::size_t i = 0; i < result.stresses.size(); ++i)
-      if (result.stresses[i].von_mises > result.stresses[worst].von_mises) worst = i;
-    out += "\nShaft section forces and stresses (element ends)\n";
-    out += fmt::format("{:>9} {:>10} {:>10} {:>10} {:>10} {:>12} {:>12}\n", "x [mm]", "N [N]", "|V| [N]", "T [Nm]",
-                       "|M| [Nm]", "bending[MPa]", "eq. [MPa]");
-    for (std::size_t i = 0; i < result.stations.size(); ++i) {
-      const SectionForces& f = result.section_forces[i];
-      out += fmt::format("{:>9.2f} {} {} {} {} {} {}{}\n", 1e3 * result.stations[i].x, cell(f.N.real(), ".4g", 10, 12),
-                         cell(std::hypot(f.Vy.real(), f.Vz.real()), ".4g", 10, 12), cell(f.T.real(), ".4g", 10, 12),
-                         cell(std::hypot(f.My.real(), f.Mz.real()), ".4g", 10, 12),
-                         cell(1e-6 * result.stresses[i].bending, ".4f", 12, 4),
-                         cell(1e-6 * result.stresses[i].von_mises, ".4f", 12, 4), i == worst ? "  <- largest" : "");
-    }
-  }
   return out;
 }
 

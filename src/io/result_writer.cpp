@@ -8,9 +8,7 @@
 
 #include <feran/analyses/static/equilibrium.hpp>
 
-#include "csv_text.hpp"
-#include "operating_text.hpp"
-#include "json_text.hpp"
+#include "result_text.hpp"
 
 #include <feran/core/error.hpp>
 
@@ -20,36 +18,7 @@ namespace {
 
 using nlohmann::json;
 
-using detail::direction_names;
-using detail::dof_names;
-using detail::json_number;
-
-json numbers(const std::vector<Real>& xs) {
-  json a = json::array();
-  for (Real x : xs) a.push_back(json_number(x));
-  return a;
-}
-
-json solver_json(const SolverInfo& info) {
-  return {{"method", to_string(info.method)}, {"converged", info.converged()}, {"status", to_string(info.status)},
-          {"n_converged", info.n_converged},  {"iterations", info.iterations}, {"message", info.message}};
-}
-
-json header(const std::string& analysis, const ResultSource& source) {
-  return {{"program", "feran"},
-          {"format_version", 1},
-          {"analysis", analysis},
-          {"model", {{"path", source.model_path}, {"title", source.title}}},
-          {"warnings", source.warnings}};
-}
-
-// CSV field: numbers in full precision, empty for NaN.
-using detail::csv_number;
-
-json node_json(const Model& model, Index node) {
-  const Node& n = model.nodes[static_cast<std::size_t>(node)];
-  return {{"node", n.number}, {"name", n.name}, {"x_m", n.x}};
-}
+using namespace detail;  // NOLINT(google-build-using-namespace): the writers' shared vocabulary (result_text.hpp)
 
 Real degrees(Complex c) { return std::arg(c) * 180.0 / pi; }
 
@@ -69,28 +38,9 @@ json dof_series(const std::vector<NodeAmplitudes>& values, const std::array<bool
   return out;
 }
 
-constexpr std::array<bool, dofs_per_node> all_dofs{true, true, true, true, true, true};
-constexpr std::array<bool, dofs_per_node> lateral_dofs{false, true, true, false, false, false};
-
-// Also for the elements of linearised(model) that stand for its journal and rolling
-// bearings (numbered after its own).
-std::string element_label(const Model& model, Index element) { return linearised_element_name(model, element); }
-
-using detail::force_label;
-
 // The rotor's stability at each point of a steady-state result (modal/stability.hpp):
 // per point whether it is unstable (null: unknown), the largest growth rate where
 // eigenvalues were computed, and the first unstable speed.
-// One point's stability (the static equilibrium's).
-json stability_point_json(const StabilityPoint& p) {
-  return {{"kind", stability_kind(p)},
-          {"unstable", p.known ? json(p.unstable) : json(nullptr)},
-          {"growth_rate_per_s", detail::json_number(p.growth_rate)},
-          {"unstable_mode_frequency_hz", p.unstable && !p.divergence ? json(p.frequency_hz) : json(nullptr)},
-          {"by_energy", p.by_energy},
-          {"message", stability_phrase(p)}};
-}
-
 json point_stability_json(const std::vector<StabilityPoint>& points) {
   if (points.empty()) return nullptr;
   json unstable = json::array(), growth = json::array(), frequency = json::array(), kind = json::array();
@@ -115,13 +65,6 @@ json point_stability_json(const std::vector<StabilityPoint>& points) {
       first < 0 ? json(nullptr) : json(rad_to_hz(points[static_cast<std::size_t>(first)].speed));
   j["note"] = count == 0 ? "stable at every point"
                          : "where unstable the response is no steady state the rotor reaches: any disturbance grows";
-  return j;
-}
-
-json station_json(const Model& model, const ShaftStation& st) {
-  json j = node_json(model, st.node);
-  j["element"] = element_label(model, st.element);
-  j["end"] = st.end == 0 ? "start" : "end";
   return j;
 }
 
@@ -346,100 +289,6 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
       out << ',' << (p.known ? (p.unstable ? "1" : "0") : "") << ',' << csv_number(p.growth_rate);
     }
     out << '\n';
-  }
-  return out.str();
-}
-
-std::string static_json(const StaticResult& result, const StaticOptions& options, const Model& model,
-                        const ResultSource& source) {
-  json j = header("static", source);
-  j["gravity_m_s2"] = {options.gravity(0), options.gravity(1), options.gravity(2)};
-  j["speed_hz"] = rad_to_hz(options.speed);
-  j["solver"] = solver_json(result.info);
-  j["stability"] = stability_point_json(result.stability);
-  json nodes = json::array();
-  for (Index node = 0; node < model.n_nodes(); ++node) {
-    json jn = node_json(model, node);
-    for (int d = 0; d < dofs_per_node; ++d) jn[dof_names[d]] = result.q(dofs_per_node * node + d);
-    nodes.push_back(jn);
-  }
-  j["displacements"] = nodes;
-  auto components = [](const NodeValues& v, const std::array<bool, dofs_per_node>& mask) {
-    json out = json::object();
-    for (int d = 0; d < dofs_per_node; ++d)
-      if (mask[static_cast<std::size_t>(d)]) out[direction_names[d]] = v[static_cast<std::size_t>(d)];
-    return out;
-  };
-  json springs = json::array();
-  for (const auto& [e, f] : result.springs) {
-    const Transmission link = *model.elements[static_cast<std::size_t>(e)].transmission(0.0);
-    json js = {{"label", element_label(model, e)},
-               {"node", model.nodes[static_cast<std::size_t>(link.node_a)].number},
-               {"force", components(f, all_dofs)}};
-    js["to"] = link.node_b ? json(model.nodes[static_cast<std::size_t>(*link.node_b)].number) : json("ground");
-    springs.push_back(js);
-  }
-  j["springs"] = springs;
-  json supports = json::array();
-  for (const auto& [i, f] : result.supports) {
-    const Force& force = model.forces[static_cast<std::size_t>(i)];
-    const std::vector<Index> at = force.nodes();
-    json js = {{"label", force_label(model, i)},
-               {"kind", force.kind()},
-               {"node", model.nodes[static_cast<std::size_t>(at.front())].number},
-               {"force", {{"y", f[static_cast<std::size_t>(Dof::v)]}, {"z", f[static_cast<std::size_t>(Dof::w)]}}}};
-    js["to"] = at.size() > 1 ? json(model.nodes[static_cast<std::size_t>(at[1])].number) : json("ground");
-    json operating = json::object();
-    for (const OperatingValue& o : result.support_data[supports.size()]) operating[o.name] = json_number(o.value);
-    js["operating"] = operating;
-    supports.push_back(js);
-  }
-  j["supports"] = supports;
-  json reactions = json::array();
-  for (const auto& [node, f] : result.reactions) {
-    std::array<bool, dofs_per_node> mask{};
-    for (const FixedDofs& fd : model.fixed)
-      if (fd.node == node)
-        for (int d = 0; d < dofs_per_node; ++d)
-          mask[static_cast<std::size_t>(d)] |= fd.dofs[static_cast<std::size_t>(d)];
-    json jr = node_json(model, node);
-    jr["force"] = components(f, mask);
-    reactions.push_back(jr);
-  }
-  j["reactions"] = reactions;
-  json stations = json::array();
-  for (std::size_t i = 0; i < result.stations.size(); ++i) {
-    const SectionForces& f = result.section_forces[i];
-    const SectionStress& s = result.stresses[i];
-    json js = station_json(model, result.stations[i]);
-    js["forces"] = {{"N", f.N.real()}, {"Vy", f.Vy.real()}, {"Vz", f.Vz.real()},
-                    {"T", f.T.real()}, {"My", f.My.real()}, {"Mz", f.Mz.real()}};
-    js["stress_pa"] = {{"axial", s.axial},
-                       {"bending", s.bending},
-                       {"torsion", s.torsion},
-                       {"shear", s.shear},
-                       {"von_mises", s.von_mises}};
-    stations.push_back(js);
-  }
-  j["stations"] = stations;
-  j["total_load"] = components(result.total_load, all_dofs);
-  return detail::json_text(j, 2);
-}
-
-std::string static_csv(const StaticResult& result, const Model& model) {
-  std::ostringstream out;
-  out << "element,end,node,x_m,u_m,v_m,w_m,rx_rad,ry_rad,rz_rad,N_n,Vy_n,Vz_n,T_nm,My_nm,Mz_nm,"
-         "axial_pa,bending_pa,torsion_pa,shear_pa,von_mises_pa\n";
-  for (std::size_t i = 0; i < result.stations.size(); ++i) {
-    const ShaftStation& st = result.stations[i];
-    const SectionForces& f = result.section_forces[i];
-    const SectionStress& s = result.stresses[i];
-    out << st.element + 1 << ',' << (st.end == 0 ? "start" : "end") << ','
-        << model.nodes[static_cast<std::size_t>(st.node)].number << ',' << csv_number(st.x);
-    for (int d = 0; d < dofs_per_node; ++d) out << ',' << csv_number(result.q(dofs_per_node * st.node + d));
-    for (Complex c : {f.N, f.Vy, f.Vz, f.T, f.My, f.Mz}) out << ',' << csv_number(c.real());
-    out << ',' << csv_number(s.axial) << ',' << csv_number(s.bending) << ',' << csv_number(s.torsion) << ','
-        << csv_number(s.shear) << ',' << csv_number(s.von_mises) << '\n';
   }
   return out.str();
 }

@@ -21,7 +21,6 @@ constexpr std::string_view dof_names[] = {"u",  "v",   "w",       "rx",         
                                           "rz", "all", "lateral", "translations", "rotations"};
 constexpr std::string_view force_kinds[] = {"fixed", "rotating_force", "rotating_moment"};
 constexpr std::string_view force_directions[] = {"x", "y", "z", "rx", "ry", "rz"};
-constexpr std::string_view gravity_directions[] = {"+x", "-x", "+y", "-y", "+z", "-z", "none"};
 constexpr std::string_view runup_starts[] = {"rest", "equilibrium", "steady"};
 constexpr std::string_view motor_kinds[] = {"dc", "induction", "table"};
 constexpr std::string_view station_outputs[] = {"all", "summary", "none"};
@@ -830,35 +829,6 @@ const FieldTable<ResponseSpec>& fields_of<ResponseSpec>() {
               "station at every point), `\"summary\"` (per point the largest values and their place) or `\"none\"`",
        .choices = station_outputs,
        .default_text = "`\"summary\"`"},
-  };
-  return table;
-}
-
-template <>
-const FieldTable<StaticSpec>& fields_of<StaticSpec>() {
-  using S = StaticSpec;
-  static const FieldTable<S> table = {
-      {.key = "gravity",
-       .kind = K::choice,
-       .member = &S::gravity,
-       .doc = "the direction in which gravity pulls, or `\"none\"` (explicitly no gravity)",
-       .choices = gravity_directions},
-      {.key = "g",
-       .kind = K::quantity,
-       .member = &S::g,
-       .doc = "magnitude of the gravitational acceleration; only with a direction (an error with `\"none\"` or without "
-              "`gravity`)",
-       .quantity = Q::acceleration,
-       .bound = positive,
-       .default_text = "`9.81 m/s^2`"},
-      {.key = "speed",
-       .kind = K::quantity,
-       .member = &S::speed,
-       .doc = "rotor speed at which speed-dependent coefficients (section 5) are evaluated; without it the static "
-              "analysis uses zero speed",
-       .quantity = Q::speed,
-       .bound = non_negative,
-       .unit = "Hz"},
   };
   return table;
 }

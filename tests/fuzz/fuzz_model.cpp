@@ -7,11 +7,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <string_view>
 
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/settings.hpp>
-#include <feran/analyses/static/static_analysis.hpp>
+#include <feran/analyses/static/analysis.hpp>
 #include <feran/core/error.hpp>
 #include <feran/forces/finite_bearing.hpp>
 #include <feran/io/model_reader.hpp>
@@ -72,12 +73,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const Error&) {
   }
   try {
-    const StaticOptions options = static_settings(file.spec.static_, StaticRequest{});
-    const StaticResult result = run_static(file.model, options);
-    if (result.info.converged()) {
-      (void)static_json(result, options, file.model, source);
-      (void)static_csv(result, file.model);
-      (void)static_report(result, options, file.model, source);
+    const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
+    const Outcome<StaticAnalysis> o = run_analysis<StaticAnalysis>(unowned, {}, file_key_name<StaticAnalysis>());
+    if (o.result.info.converged()) {
+      (void)StaticAnalysis::json(o);
+      (void)StaticAnalysis::csv(o);
+      (void)StaticAnalysis::terminal(o);
     }
   } catch (const Error&) {
   }

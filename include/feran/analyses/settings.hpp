@@ -116,17 +116,7 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, 
 
 // ---------------------------------------------------------------------------------
 
-struct StaticRequest {
-  /// "+x", "-x", …, "none"; default [static] gravity, else "-y".
-  std::optional<std::string> gravity;
-  std::optional<Real> g;      ///< [m/s²]; default [static] g, else 9.81
-  std::optional<Real> speed;  ///< [rad/s]; default [static] speed, else 0
-  bool loads = true;          ///< include the model's [[static_loads]]
-  bool stability = true;      ///< decide whether the equilibrium is stable (StaticResult::stability)
-};
-
-/// Throws Error for a direction that is not one of the seven words or g ≤ 0.
-StaticOptions static_settings(const StaticSpec& file, const StaticRequest& request);
+// The static analysis: analyses/static/analysis.hpp.
 
 // ---------------------------------------------------------------------------------
 

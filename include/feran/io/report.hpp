@@ -24,10 +24,6 @@ std::string campbell_report(const CampbellResult& result, const CampbellOptions&
 /// Summary of a steady-state response: orbit sizes at selected points and the peaks.
 std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
                             const ResultSource& source);
-/// Static result: deflections, spring and support forces, shaft stresses.
-std::string static_report(const StaticResult& result, const StaticOptions& options, const Model& model,
-                          const ResultSource& source);
-
 /// Summary of a run-up: the integrator's work, the peak |r| of each probe and any
 /// warning; @p wall_seconds is the time it took (negative: not shown).
 std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,

@@ -11,21 +11,10 @@
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/model/model.hpp>
+#include <feran/io/result_source.hpp>
 #include <feran/spec/parameters.hpp>
 
 namespace feran {
-
-/// What a result file says about where it came from.
-struct ResultSource {
-  std::string model_path;
-  std::string title;
-  /// What the analysis should be read with (e.g. a table evaluated beyond its range);
-  /// written as the header's "warnings".
-  std::vector<std::string> warnings = {};
-  /// The unit of speeds in the terminal reports' tables: "Hz" or "rpm" (the files
-  /// always hold their documented units).
-  std::string speed_unit = "Hz";
-};
 
 /// JSON text of a modal result. With @p shapes each mode carries its shape.
 std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source, bool shapes);
@@ -47,13 +36,6 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
 /// size and the amplitude and phase of v and w; per spring–damper the peak lateral
 /// force; and the largest equivalent stress along the shaft.
 std::string response_csv(const HarmonicResult& result, const Model& model);
-
-/// JSON text of a static result.
-std::string static_json(const StaticResult& result, const StaticOptions& options, const Model& model,
-                        const ResultSource& source);
-/// CSV text of a static result: one row per shaft station (element end) with the
-/// displacements of its node, the section forces and the stresses.
-std::string static_csv(const StaticResult& result, const Model& model);
 
 /// JSON text of the API 617 / API 684 analyses (feran api684).
 std::string api684_json(const Api684Result& result, const Model& model, const ResultSource& source);

@@ -82,6 +82,14 @@ struct Field {
   /// For lists: when not empty, an empty list is an error and this says what to do
   /// instead ("leave it out to fix all DOFs").
   std::string_view if_empty = {};
+  /// Analysis options (spec/request.hpp): the group of fields this one belongs to
+  /// ("profile": a run-up's speed, ramp and table), taken from a request all together.
+  std::string_view group = {};
+  /// Analysis options: the group this field follows (the magnitude g follows the
+  /// direction of gravity): taken from a request alone when it sets that group.
+  std::string_view follows = {};
+  /// Analysis options: a one-letter name on the command line ("s" for -s,--speed).
+  std::string_view short_name = {};
 };
 
 template <class S>

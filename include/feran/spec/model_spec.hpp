@@ -248,6 +248,8 @@ struct StaticSpec {
   std::optional<std::string> gravity;  ///< "+x", "-x", "+y", "-y", "+z", "-z" or "none"
   std::optional<Real> g;               ///< [m/s²]
   std::optional<Real> speed;           ///< [rad/s]
+  std::optional<bool> loads;           ///< include the [[static_loads]]
+  std::optional<bool> stability;       ///< judge whether the equilibrium is stable
   bool operator==(const StaticSpec&) const = default;
 };
 

@@ -3,6 +3,7 @@
 // a response at one speed needs no last speed.
 
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/static/analysis.hpp>
 #include <feran/io/model_reader.hpp>
 
 #include <gtest/gtest.h>
@@ -74,22 +75,43 @@ TEST(Settings, ResponseAtOneSpeed) {
   EXPECT_THROW((void)response_settings(file.model, ResponseSpec{}, sweep), Error);
 }
 
+// The static options of a file's [static] table and a request (analysis_options()).
+StaticOptions static_of(const StaticSpec& table, const StaticSpec& request) {
+  ModelSpec spec;
+  spec.static_ = table;
+  return analysis_options<StaticAnalysis>(spec, Model{}, request, [](std::string_view k) { return std::string(k); });
+}
+
 TEST(Settings, StaticGravity) {
   StaticSpec file;
-  EXPECT_EQ(static_settings(file, {}).gravity, Eigen::Vector3d(0.0, -defaults::gravity, 0.0));
+  EXPECT_EQ(static_of(file, {}).gravity, Eigen::Vector3d(0.0, -defaults::gravity, 0.0));
   file.gravity = "+x";
   file.g = 1.62;
-  EXPECT_EQ(static_settings(file, {}).gravity, Eigen::Vector3d(1.62, 0.0, 0.0));
-  StaticRequest request;
+  EXPECT_EQ(static_of(file, {}).gravity, Eigen::Vector3d(1.62, 0.0, 0.0));
+  StaticSpec request;
   request.g = 3.0;  // a magnitude asked for applies to the file's direction
-  EXPECT_EQ(static_settings(file, request).gravity, Eigen::Vector3d(3.0, 0.0, 0.0));
+  EXPECT_EQ(static_of(file, request).gravity, Eigen::Vector3d(3.0, 0.0, 0.0));
   request = {};
   request.gravity = "-z";  // a direction asked for takes the built-in magnitude
-  EXPECT_EQ(static_settings(file, request).gravity, Eigen::Vector3d(0.0, 0.0, -defaults::gravity));
+  EXPECT_EQ(static_of(file, request).gravity, Eigen::Vector3d(0.0, 0.0, -defaults::gravity));
   request.gravity = "none";
-  EXPECT_EQ(static_settings(file, request).gravity, Eigen::Vector3d::Zero());
-  request.gravity = "down";
-  EXPECT_THROW((void)static_settings(file, request), Error);
+  EXPECT_EQ(static_of(file, request).gravity, Eigen::Vector3d::Zero());
+  request.g = 5.0;  // a magnitude without a direction
+  EXPECT_THROW((void)static_of(file, request), Error);
+  request = {};
+  request.gravity = "down";  // checked by its field's choices
+  EXPECT_THROW((void)static_of(file, request), Error);
+  request = {};
+  request.speed = -1.0;  // and bounds
+  EXPECT_THROW((void)static_of(file, request), Error);
+  // Flags: the defaults unless asked; the file may set them too.
+  EXPECT_TRUE(static_of(file, {}).loads);
+  EXPECT_TRUE(static_of(file, {}).stability);
+  request.speed.reset();
+  request.loads = false;
+  EXPECT_FALSE(static_of(file, request).loads);
+  file.stability = false;
+  EXPECT_FALSE(static_of(file, {}).stability);
 }
 
 TEST(Settings, RunupProfileForms) {

@@ -18,6 +18,7 @@
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/static/analysis.hpp>
 #include <feran/io/model_reader.hpp>
 
 #include <gtest/gtest.h>
@@ -84,7 +85,7 @@ HarmonicOptions response_of(const ModelFile& f, ResponseRequest request = {}) {
   return response_settings(f.model, f.spec.response, request);
 }
 TransientOptions runup_of(const ModelFile& f) { return runup_settings(f.model, f.spec.runup, {}); }
-StaticOptions static_of(const ModelFile& f) { return static_settings(f.spec.static_, {}); }
+StaticOptions static_of(const ModelFile& f) { return static_options(f); }
 
 constexpr Real hz = 2.0 * pi;          // rad/s per Hz
 constexpr Real rpm = 2.0 * pi / 60.0;  // rad/s per rpm

@@ -1,63 +1,47 @@
-// Static analysis: deflection of every node, spring forces, support reactions and
-// shaft section forces and stresses under gravity and static loads.
-#include <optional>
-#include <string>
-
+// The static analysis's Python result: deflection of every node, spring and bearing
+// forces, support reactions, shaft section forces and stresses as numpy arrays
+// (analysis_binding.hpp binds the function feran.static and what every result has).
 #include <pybind11/stl.h>
 
-#include <feran/analyses/settings.hpp>
-#include <feran/analyses/static/static_analysis.hpp>
-#include <feran/core/error.hpp>
-#include <feran/core/text.hpp>
-#include <feran/io/report.hpp>
-#include <feran/io/result_writer.hpp>
+#include <feran/analyses/static/analysis.hpp>
 
-#include "bindings.hpp"
+#include "analysis_binding.hpp"
 
 namespace feran::python {
 
-namespace {
-
-struct PyStaticResult {
-  ResultContext context;
-  StaticOptions options;
-  StaticResult result;
-  const Model& model() const { return context.file->model; }
-};
-
-}  // namespace
-
-void bind_static(py::module_& m) {
-  py::class_<PyStaticResult>(m, "StaticResult", "Static deflection, forces and stresses")
+template <>
+void bind_result<StaticAnalysis>(py::class_<Outcome<StaticAnalysis>>& result) {
+  using R = Outcome<StaticAnalysis>;
+  result
       .def_property_readonly("nodes",
-                             [](const PyStaticResult& r) {
+                             [](const R& r) {
                                return string_list(r.model().nodes.size(), [&](std::size_t i) {
                                  return node_name(r.model(), static_cast<Index>(i));
                                });
                              })
       .def_property_readonly(
           "x",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return array_1d(r.model().nodes.size(), [&](std::size_t i) { return r.model().nodes[i].x; });
           },
           "axial position of each node [m]")
       .def_property_readonly(
           "displacement",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return array_2d(r.model().nodes.size(), dofs_per_node, [&](std::size_t i, std::size_t d) {
               return r.result.q(static_cast<Index>(dofs_per_node * i + d));
             });
           },
           "u, v, w, rx, ry, rz of every node [m, rad], shape (nodes, 6)")
       .def_property_readonly("springs",
-                             [](const PyStaticResult& r) {
+                             [](const R& r) {
                                return string_list(r.result.springs.size(), [&](std::size_t i) {
                                  return r.model().elements[static_cast<std::size_t>(r.result.springs[i].first)].label();
                                });
                              })
       .def_property_readonly(
           "spring_force",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return array_2d(r.result.springs.size(), dofs_per_node,
                             [&](std::size_t i, std::size_t d) { return r.result.springs[i].second[d]; });
           },
@@ -65,7 +49,7 @@ void bind_static(py::module_& m) {
           "shape (springs, 6)")
       .def_property_readonly(
           "bearings",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return string_list(r.result.supports.size(), [&](std::size_t i) {
               return r.model().forces[static_cast<std::size_t>(r.result.supports[i].first)].label();
             });
@@ -73,7 +57,7 @@ void bind_static(py::module_& m) {
           "journal bearings ([[journal_bearings]] names)")
       .def_property_readonly(
           "stability",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             const StabilityPoint& p = r.result.stability;
             py::dict d;
             d["kind"] = stability_kind(p);
@@ -88,11 +72,11 @@ void bind_static(py::module_& m) {
           "'flutter', 'divergence', 'unknown'), unstable (None: unknown), growth_rate [1/s] (NaN when\n"
           "decided without eigenvalues), frequency_hz of a growing oscillation, and message")
       .def_property_readonly(
-          "unstable", [](const PyStaticResult& r) { return r.result.stability.known && r.result.stability.unstable; },
+          "unstable", [](const R& r) { return r.result.stability.known && r.result.stability.unstable; },
           "True when the equilibrium is unstable (see stability)")
       .def_property_readonly(
           "bearing_data",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             py::list out;
             for (const auto& data : r.result.support_data) {
               py::dict d;
@@ -108,33 +92,33 @@ void bind_static(py::module_& m) {
           "max_contact_stress_pa), as the JSON's supports[].operating")
       .def_property_readonly(
           "bearing_force",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return array_2d(r.result.supports.size(), dofs_per_node,
                             [&](std::size_t i, std::size_t d) { return r.result.supports[i].second[d]; });
           },
           "force each journal bearing transmits to its housing or ground at the equilibrium [N], shape (bearings, 6)")
       .def_property_readonly("reactions",
-                             [](const PyStaticResult& r) {
+                             [](const R& r) {
                                return string_list(r.result.reactions.size(), [&](std::size_t i) {
                                  return node_name(r.model(), r.result.reactions[i].first);
                                });
                              })
       .def_property_readonly(
           "reaction_force",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return array_2d(r.result.reactions.size(), dofs_per_node,
                             [&](std::size_t i, std::size_t d) { return r.result.reactions[i].second[d]; });
           },
           "the force the rotor puts on the support at each node with fixed DOFs [N, N m],\n"
           "shape (reactions, 6); zero in free directions")
       .def_property_readonly("station_x",
-                             [](const PyStaticResult& r) {
+                             [](const R& r) {
                                return array_1d(r.result.stations.size(),
                                                [&](std::size_t s) { return r.result.stations[s].x; });
                              })
       .def_property_readonly(
           "section_forces",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return array_2d(r.result.stations.size(), 6, [&](std::size_t s, std::size_t c) {
               const SectionForces& f = r.result.section_forces[s];
               const Complex v[6] = {f.N, f.Vy, f.Vz, f.T, f.My, f.Mz};
@@ -144,58 +128,14 @@ void bind_static(py::module_& m) {
           "N, Vy, Vz, T, My, Mz at each shaft station [N, N m], shape (stations, 6)")
       .def_property_readonly(
           "von_mises",
-          [](const PyStaticResult& r) {
+          [](const R& r) {
             return array_1d(r.result.stresses.size(), [&](std::size_t s) { return r.result.stresses[s].von_mises; });
           },
           "equivalent stress at each shaft station [Pa]")
       .def_property_readonly(
           "total_load",
-          [](const PyStaticResult& r) {
-            return array_1d(dofs_per_node, [&](std::size_t d) { return r.result.total_load[d]; });
-          },
-          "sum of the applied forces and moments about the origin [N, N m]")
-      .def_property_readonly("warnings", [](const PyStaticResult& r) { return r.context.source.warnings; })
-      .def(
-          "to_json",
-          [](const PyStaticResult& r) { return static_json(r.result, r.options, r.model(), r.context.source); },
-          "The JSON text that feran static --json writes (docs/output-format.md)")
-      .def("to_csv", [](const PyStaticResult& r) { return static_csv(r.result, r.model()); })
-      .def("report",
-           [](const PyStaticResult& r) { return static_report(r.result, r.options, r.model(), r.context.source); });
-
-  m.def(
-      "static",
-      [](const PyModel& model, std::optional<std::string> gravity, const py::object& g, const py::object& speed,
-         bool loads, bool stability) {
-        auto file = std::make_shared<const ModelFile>(model.built());
-        StaticRequest request;
-        request.gravity = std::move(gravity);
-        if (!g.is_none()) {
-          if (py::isinstance<py::str>(g))
-            request.g = parse_quantity(g.cast<std::string>(), Quantity::acceleration);
-          else
-            request.g = g.cast<double>();
-        }
-        request.speed = optional_speed(speed, "speed");
-        request.loads = loads;
-        request.stability = stability;
-        PyStaticResult out{{}, static_settings(file->spec.static_, request), {}};
-        out.context = result_context(file, out.options.speed, out.options.speed);
-        {
-          py::gil_scoped_release release;
-          out.result = run_static(file->model, out.options);
-        }
-        // One solve: a failure leaves nothing to keep.
-        if (!out.result.info.converged()) throw Error(out.result.info.message);
-        return out;
-      },
-      py::arg("model"), py::kw_only(), py::arg("gravity") = py::none(), py::arg("g") = py::none(),
-      py::arg("speed") = py::none(), py::arg("loads") = true, py::arg("stability") = true,
-      "Static analysis, as feran static: gravity '+x' … '-z' or 'none', g ('9.81 m/s^2' or a\n"
-      "number in m/s²), speed (of speed-dependent coefficients), loads=False as --no-loads,\n"
-      "stability=False as --no-stability (the result's stability is then unknown).\n"
-      "Unset options come from the model's [static] table. A singular or failed solve raises\n"
-      "feran.Error.");
+          [](const R& r) { return array_1d(dofs_per_node, [&](std::size_t d) { return r.result.total_load[d]; }); },
+          "sum of the applied forces and moments about the origin [N, N m]");
 }
 
 }  // namespace feran::python

@@ -1,0 +1,98 @@
+#pragma once
+// The sub-command of an analysis, made from its face (analyses/analysis.hpp): one
+// flag per key of its options' field table, with the field's description and the
+// analysis's default as help; the values given are set and checked by the generic
+// request step (spec/request.hpp), and the outcome written by the analysis's own
+// writers. No analysis has a command file of its own.
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include <feran/analyses/analysis.hpp>
+#include <feran/core/error.hpp>
+#include <feran/core/text.hpp>
+
+#include "commands.hpp"
+
+namespace feran::app {
+
+/// "--key-name" for a field key "key_name".
+std::string flag_name(std::string_view key);
+/// A field's description as a help line: Markdown's backquotes dropped, the default
+/// and the choices added.
+std::string flag_help(std::string_view doc, const std::string& default_text, std::span<const std::string_view> choices);
+/// Prints each warning once to standard error.
+void print_warnings(const std::vector<std::string>& warnings);
+
+template <AnalysisFace A>
+Runner add_analysis_command(CLI::App& app) {
+  using Spec = typename A::Spec;
+  struct Args {
+    ModelArgs model;
+    OutputOptions out;
+    // What was given, per field: (field, text); flags as "true" or "false".
+    std::vector<std::pair<const spec::Field<Spec>*, std::string>> given;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(std::string(A::name), std::string(A::summary));
+  cmd->footer("Example:\n  " + std::string(A::example) + " --json " + std::string(A::name) + ".json\n\n" +
+              std::string(A::footer));
+  add_model_argument(*cmd, args->model);
+  for (const spec::Field<Spec>& f : spec::fields_of<Spec>()) {
+    const spec::Field<Spec>* field = &f;
+    const std::string default_text = spec::value_text(A::defaults(), f);
+    std::string names = flag_name(f.key);
+    if (!f.short_name.empty()) names = "-" + std::string(f.short_name) + "," + names;
+    if (f.kind == spec::FieldKind::flag) {
+      // A flag on by default is turned off (--no-loads), one off by default on.
+      const bool on = default_text == "true";
+      const std::string flag = on ? "--no-" + flag_name(f.key).substr(2) : names;
+      cmd->add_flag_callback(
+          flag, [args, field, on] { args->given.emplace_back(field, on ? "false" : "true"); },
+          flag_help(std::string(f.key) + (on ? " = false: " : " = true: ") + std::string(f.doc), on ? "true" : "false",
+                    {}));
+      continue;
+    }
+    CLI::Option* option = cmd->add_option_function<std::string>(
+        names, [args, field](const std::string& text) { args->given.emplace_back(field, text); },
+        flag_help(f.doc, default_text, f.choices));
+    const bool list = f.kind == spec::FieldKind::node_list || f.kind == spec::FieldKind::text_list ||
+                      f.kind == spec::FieldKind::integer_list || f.kind == spec::FieldKind::choice_list;
+    if (list) repeatable(option);
+  }
+  add_output_options(*cmd, args->out);
+
+  return [args]() {
+    CommandOutputs outputs(args->model, args->out);
+    const auto file = std::make_shared<const ModelFile>(read_model(args->model));
+    Spec request;
+    for (const auto& [field, text] : args->given) {
+      if (field->kind == spec::FieldKind::flag)
+        spec::set_flag(request, *field, text == "true");
+      else
+        spec::set_text(request, *field, text, flag_name(field->key));
+    }
+    Outcome<A> outcome = run_analysis<A>(file, request, [](std::string_view key) { return flag_name(key); });
+    print_warnings(outcome.source.warnings);
+    outcome.source.speed_unit = args->out.speed_unit;
+    if (const auto stopped = stopped_single_solve()) return *stopped;
+    const SolverInfo& info = outcome.result.info;
+    if (!info.converged()) {
+      // One solve: nothing was computed before the failure, so nothing is written.
+      std::fprintf(stderr, "feran: error: %s\n", printable(info.message, true).c_str());
+      return static_cast<int>(numerical_failure);
+    }
+    outputs.set_json([&] { return A::json(outcome); });
+    outputs.set_csv([&] { return A::csv(outcome); });
+    outputs.files.commit();
+    if (!args->out.quiet) std::fputs(A::terminal(outcome).c_str(), stdout);
+    return static_cast<int>(ok);
+  };
+}
+
+}  // namespace feran::app

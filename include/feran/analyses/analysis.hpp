@@ -1,0 +1,122 @@
+#pragma once
+/// @file
+/// What an analysis is to its front ends: one folder, one face.
+///
+/// Each analysis lives in its own folder, `analyses/<name>/`, and shows its front ends
+/// (the command line, the Python module, the report, design studies) one face: a type
+/// A, listed once in analyses/list.hpp, with
+///
+///     static constexpr std::string_view name, summary, example, footer;
+///     using Spec;     // its options: its model-file table ([static]), with a field table
+///     using Options;  // what its solver takes
+///     using Result;   // what it gives, with its own warnings
+///     static const Spec& defaults();                 // the built-in defaults
+///     static const Spec& file_table(const ModelSpec&);  // its table in a model file
+///     static Options settings(const Model&, const Spec& asked, const Spec& resolved,
+///                             const OptionName&);   // checks across options
+///     static Result run(const Model&, const Options&, const StopToken&);
+///     static std::vector<std::string> warnings(const Model&, const Options&);
+///     static std::string json(const Outcome<A>&), csv(const Outcome<A>&),
+///                        terminal(const Outcome<A>&);
+///
+/// Every option is a key of Spec's field table (spec/fields.hpp): the command line's
+/// flags, the Python keywords, their help texts and defaults and the documentation's
+/// option tables are made from it, and each value is checked where its field is
+/// declared (spec/request.hpp). run_analysis() is the one path from a request to an
+/// outcome that every door takes.
+
+#include <concepts>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <feran/core/stop.hpp>
+#include <feran/io/model_reader.hpp>
+#include <feran/io/result_source.hpp>
+#include <feran/model/model.hpp>
+#include <feran/spec/model_spec.hpp>
+#include <feran/spec/request.hpp>
+
+namespace feran {
+
+/// How a door names an option in its messages: "--g" on the command line, "g" in
+/// Python, "static.g" in a model file.
+using OptionName = std::function<std::string(std::string_view key)>;
+
+/// An analysis run through a door: the model it ran on, its options, its result, and
+/// where it came from (with the warnings it should be read with).
+template <class A>
+struct Outcome {
+  std::shared_ptr<const ModelFile> file;
+  typename A::Options options;
+  typename A::Result result;
+  ResultSource source;
+  const Model& model() const { return file->model; }
+};
+
+/// The face of an analysis (see the file's comment).
+template <class A>
+concept AnalysisFace = requires(const Model& model, const ModelSpec& spec, const typename A::Spec& s,
+                                const typename A::Options& o, const Outcome<A>& outcome, const OptionName& name,
+                                const StopToken& stop) {
+  { A::name } -> std::convertible_to<std::string_view>;
+  { A::summary } -> std::convertible_to<std::string_view>;
+  { A::defaults() } -> std::same_as<const typename A::Spec&>;
+  { A::file_table(spec) } -> std::same_as<const typename A::Spec&>;
+  { A::settings(model, s, s, name) } -> std::same_as<typename A::Options>;
+  { A::run(model, o, stop) } -> std::same_as<typename A::Result>;
+  { A::warnings(model, o) } -> std::same_as<std::vector<std::string>>;
+  { A::json(outcome) } -> std::same_as<std::string>;
+  { A::csv(outcome) } -> std::same_as<std::string>;
+  { A::terminal(outcome) } -> std::same_as<std::string>;
+};
+
+/// Every unset field of @p s taken from @p defaults.
+template <class S>
+S with_defaults(S s, const S& defaults) {
+  for (const spec::Field<S>& f : spec::fields_of<S>())
+    if (!spec::has_value(s, f)) std::visit([&](auto member) { s.*member = defaults.*member; }, f.member);
+  return s;
+}
+
+/// The options of analysis A for @p request on @p file: the request laid over the
+/// file's table (spec::overlay) and that over A's defaults, checked by A::settings.
+/// Throws Error, naming options by @p name.
+template <AnalysisFace A>
+typename A::Options analysis_options(const ModelSpec& spec, const Model& model, const typename A::Spec& request,
+                                     const OptionName& name) {
+  // A request built in code is checked as one set from text is (the file's table was
+  // checked by build_model()).
+  for (const spec::Field<typename A::Spec>& f : spec::fields_of<typename A::Spec>())
+    spec::check_field(request, f, name(f.key));
+  const typename A::Spec asked = spec::overlay(request, A::file_table(spec));
+  return A::settings(model, asked, with_defaults(asked, A::defaults()), name);
+}
+template <AnalysisFace A>
+typename A::Options analysis_options(const ModelFile& file, const typename A::Spec& request, const OptionName& name) {
+  return analysis_options<A>(file.spec, file.model, request, name);
+}
+
+/// Options named as a model file's keys are ("static.g"), for analyses run with a
+/// file's own settings (design studies, the report).
+template <AnalysisFace A>
+OptionName file_key_name() {
+  return [](std::string_view key) { return std::string(A::name) + "." + std::string(key); };
+}
+
+/// Runs analysis A on @p file as @p request asks: its options, its solve and its
+/// warnings, as every door does. Numerical trouble is in the result (SolverInfo), not
+/// thrown.
+template <AnalysisFace A>
+Outcome<A> run_analysis(std::shared_ptr<const ModelFile> file, const typename A::Spec& request, const OptionName& name,
+                        const StopToken& stop = {}) {
+  Outcome<A> out{file, analysis_options<A>(*file, request, name), {}, {}};
+  out.source = ResultSource{file->path, file->title, A::warnings(file->model, out.options)};
+  out.result = A::run(file->model, out.options, stop);
+  return out;
+}
+
+}  // namespace feran
