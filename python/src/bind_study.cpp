@@ -143,7 +143,7 @@ std::shared_ptr<PyStudy> from_code(const std::string& toml_text, const PyModel& 
   auto s = std::make_shared<PyStudy>();
   s->file = read_study_string(toml_text, "<study>", code);
   for (auto& q : s->file.study.quantities) {
-    if (q.kind != QuantityKind::function) continue;
+    if (!row_of(q).code_only) continue;
     if (!functions.contains(q.name))
       throw Error(fmt::format("quantity '{}' of kind \"function\" has no function", q.name));
     const py::object f = functions[py::str(q.name)];

@@ -228,6 +228,7 @@ STUDY_REFUSALS = REFUSALS + [
     r"no spring|has no spring",
     r"the model has no unbalance|no \[\[unbalances\]\]",
     r"the model has no journal or rolling bearing",
+    r"the rotor does not stay at its static equilibrium",  # a static quantity of an unstable equilibrium
     r"failed",                                        # an analysis that did not converge, named
 ]
 
@@ -254,8 +255,9 @@ def quantity_toml(kind, low, high, rho, bearing_value):
     keys = {"separation_margin": operating, "required_margin": operating, "margin_surplus": operating,
             "min_margin_surplus": operating, "undamped_critical_speed": operating,
             "level1_q_zero": f'speed = "{high}"',
-            "min_bearing_value": f'value = "{bearing_value}"', "max_bearing_value": f'value = "{bearing_value}"',
             "parameter": f'path = "{rho}"'}
+    if kind.endswith("bearing_value"):  # min_/max_bearing_value, min_/max_static_bearing_value
+        keys[kind] = f'value = "{bearing_value}"'
     return f'[[quantities]]\nname = "{kind}"\nkind = "{kind}"\n{keys.get(kind, "")}\n'
 
 

@@ -87,7 +87,7 @@ std::string study_json(const StudySpec& study) {
     variables.push_back(j);
   }
   for (const auto& q : study.quantities)
-    quantities.push_back({{"name", q.name}, {"kind", to_string(q.kind)}, {"unit", si_unit_of(quantity_unit(q))}});
+    quantities.push_back({{"name", q.name}, {"kind", q.kind}, {"unit", si_unit_of(quantity_unit(q))}});
   json objectives = json::array(), constraints = json::array();
   for (const auto& o : study.objectives)
     objectives.push_back({{"quantity", study.quantities[static_cast<std::size_t>(o.quantity)].name},

@@ -237,10 +237,10 @@ class StudyReader {
         if (other.name == q.name) t.fail(*t.find("name"), fmt::format("another quantity is named '{}'", q.name));
       const auto& kind_node = t.require("kind", "what to compute");
       const auto kind_name = t.required_string("kind", "what to compute");
-      const auto kind = quantity_kind_named(kind_name);
-      if (!kind) {
-        const auto kinds = quantity_kind_names();
-        const std::vector<std::string> names(kinds.begin(), kinds.end());
+      const QuantityRow* row = quantity_row(kind_name);
+      if (row == nullptr) {
+        std::vector<std::string> names;
+        for (const QuantityRow& r : quantity_rows()) names.emplace_back(r.name);
         std::string message = fmt::format("unknown quantity kind '{}'", kind_name);
         std::vector<std::string> longer;  // kinds the name is the start of ("min_damping")
         for (const auto& n : names)
@@ -253,14 +253,12 @@ class StudyReader {
           message += fmt::format("; the kinds are {}", join_list(names, "and", '\''));
         t.fail(kind_node, message);
       }
-      q.kind = *kind;
-      if (q.kind == QuantityKind::function && code_ == nullptr)
+      q.kind = kind_name;
+      if (row->code_only && code_ == nullptr)
         t.fail(kind_node,
                "a quantity of kind \"function\" is computed by code: it belongs to studies built in code "
                "(the Python package's feran.Study), not to study files");
-      const bool damping = q.kind == QuantityKind::min_damping_ratio || q.kind == QuantityKind::min_log_decrement ||
-                           q.kind == QuantityKind::damping_ratio || q.kind == QuantityKind::log_decrement;
-      q.whirl = damping ? WhirlSelection::any : WhirlSelection::forward;
+      q.whirl = row->any_whirl ? WhirlSelection::any : WhirlSelection::forward;
       if (const auto w = t.string("whirl")) {
         if (*w == "forward")
           q.whirl = WhirlSelection::forward;
@@ -285,13 +283,12 @@ class StudyReader {
         q.operating_high = t.quantity_at(*op->get(1), "operating[1]", Quantity::speed).si;
         if (!(q.operating_low > 0 && q.operating_low <= q.operating_high))
           t.fail(*t.find("operating"), "'operating' must be [low, high] with 0 < low ≤ high");
-      } else if (q.kind == QuantityKind::separation_margin || q.kind == QuantityKind::required_margin ||
-                 q.kind == QuantityKind::margin_surplus || q.kind == QuantityKind::min_margin_surplus) {
-        t.fail_here(fmt::format("a {} needs 'operating' = [low, high], the operating speed range", to_string(q.kind)));
+      } else if (row->needs_operating) {
+        t.fail_here(fmt::format("a {} needs 'operating' = [low, high], the operating speed range", q.kind));
       }
       if (const auto s = t.quantity("speed", Quantity::speed)) q.speed = s->si;
-      if (q.kind == QuantityKind::level1_q_zero && !(q.speed && *q.speed > 0))
-        t.fail_here("a level1_q_zero needs 'speed' > 0, the maximum continuous speed");
+      if (row->needs_speed && !(q.speed && *q.speed > 0))
+        t.fail_here(fmt::format("a {} needs 'speed' > 0, the maximum continuous speed", q.kind));
       if (const auto* p = t.find("probe")) {
         if (p->is_string())
           q.probe = NodeRef(*p->value<std::string>());
@@ -302,7 +299,7 @@ class StudyReader {
       }
       if (const auto s = t.string("spring")) q.spring = *s;
       read_bearing_value(t, study, q);
-      if (q.kind == QuantityKind::parameter) {
+      if (row->parameter) {
         q.path = t.required_string("path", "the parameter path of the number");
         try {
           q.value_kind = get_parameter(study.base, q.path).quantity;
@@ -329,12 +326,14 @@ class StudyReader {
   // quantity, checked against the bearings of the base model (a model without bearings
   // leaves it to the evaluation, which fails the design with the reason); 'bearing'.
   void read_bearing_value(const TableReader& t, const StudySpec& study, QuantitySpec& q) {
-    const bool bearing_kind = q.kind == QuantityKind::min_bearing_value || q.kind == QuantityKind::max_bearing_value;
+    const bool bearing_kind = row_of(q).bearing_value;
     for (const char* key : {"value", "bearing"})
-      if (!bearing_kind && t.has(key))
-        t.fail(*t.find(key), fmt::format("'{}' belongs to quantities of kind \"min_bearing_value\" or "
-                                         "\"max_bearing_value\"",
-                                         key));
+      if (!bearing_kind && t.has(key)) {
+        std::vector<std::string> kinds;
+        for (const QuantityRow& r : quantity_rows())
+          if (r.bearing_value) kinds.push_back(fmt::format("\"{}\"", r.name));
+        t.fail(*t.find(key), fmt::format("'{}' belongs to quantities of kind {}", key, join_list(kinds)));
+      }
     if (!bearing_kind) return;
     q.value = t.required_string("value", "the bearing's operating quantity, e.g. \"min_film_thickness_m\"");
     if (const auto b = t.string("bearing")) q.bearing = *b;

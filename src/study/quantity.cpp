@@ -1,5 +1,8 @@
 #include <feran/study/quantity.hpp>
 
+#include <feran/analyses/list.hpp>
+#include <feran/study/design_analyses.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,40 +21,6 @@
 namespace feran {
 
 namespace {
-
-constexpr std::array<std::pair<QuantityKind, std::string_view>, 24> kind_names{{
-    {QuantityKind::critical_speed, "critical_speed"},
-    {QuantityKind::separation_margin, "separation_margin"},
-    {QuantityKind::min_damping_ratio, "min_damping_ratio"},
-    {QuantityKind::min_log_decrement, "min_log_decrement"},
-    {QuantityKind::stability_threshold, "stability_threshold"},
-    {QuantityKind::natural_frequency, "natural_frequency"},
-    {QuantityKind::damping_ratio, "damping_ratio"},
-    {QuantityKind::log_decrement, "log_decrement"},
-    {QuantityKind::peak_response, "peak_response"},
-    {QuantityKind::amplification_factor, "amplification_factor"},
-    {QuantityKind::required_margin, "required_margin"},
-    {QuantityKind::margin_surplus, "margin_surplus"},
-    {QuantityKind::min_margin_surplus, "min_margin_surplus"},
-    {QuantityKind::undamped_critical_speed, "undamped_critical_speed"},
-    {QuantityKind::level1_q_zero, "level1_q_zero"},
-    {QuantityKind::peak_spring_force, "peak_spring_force"},
-    {QuantityKind::peak_stress, "peak_stress"},
-    {QuantityKind::runup_peak, "runup_peak"},
-    {QuantityKind::runup_spring_force, "runup_spring_force"},
-    {QuantityKind::rotor_mass, "rotor_mass"},
-    {QuantityKind::min_bearing_value, "min_bearing_value"},
-    {QuantityKind::max_bearing_value, "max_bearing_value"},
-    {QuantityKind::parameter, "parameter"},
-    {QuantityKind::function, "function"},
-}};
-
-bool uses_response(QuantityKind k) {
-  return k == QuantityKind::peak_response || k == QuantityKind::peak_spring_force || k == QuantityKind::peak_stress ||
-         k == QuantityKind::amplification_factor || k == QuantityKind::required_margin ||
-         k == QuantityKind::margin_surplus || k == QuantityKind::min_margin_surplus;
-}
-bool uses_runup(QuantityKind k) { return k == QuantityKind::runup_peak || k == QuantityKind::runup_spring_force; }
 
 bool selected(Whirl w, WhirlSelection s) {
   switch (s) {
@@ -95,15 +64,17 @@ void check_solver(const SolverInfo& info, std::string_view analysis) {
 
 Index spring_index(const Model& model, const std::string& name) { return spring_element(model, name); }
 
-// The analyses of one design, each run when a quantity first needs it.
-class Analyses {
- public:
-  Analyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop)
+}  // namespace
+
+// The analyses not yet in folders of their own, each run when a quantity first needs it.
+struct DesignAnalyses::Legacy {
+  Legacy(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop)
       : spec_(spec), model_(model), stop_(stop) {
     for (const auto& q : quantities) {
-      if (q.probe && uses_response(q.kind)) add(response_probes_, node_index(model, *q.probe));
-      if (q.probe && uses_runup(q.kind)) add(runup_probes_, node_index(model, *q.probe));
-      if (q.kind == QuantityKind::runup_spring_force) {
+      const std::string_view analysis = row_of(q).analysis;
+      if (q.probe && analysis == "response") add(response_probes_, node_index(model, *q.probe));
+      if (q.probe && analysis == "runup") add(runup_probes_, node_index(model, *q.probe));
+      if (q.kind == "runup_spring_force") {
         if (q.spring)
           add(runup_springs_, spring_index(model, *q.spring));
         else
@@ -165,7 +136,6 @@ class Analyses {
   const ModelSpec& spec() const { return spec_; }
   const StopToken& stop() const { return stop_; }
 
- private:
   static void add(std::vector<Index>& list, Index i) {
     if (std::find(list.begin(), list.end(), i) == list.end()) list.push_back(i);
   }
@@ -180,6 +150,24 @@ class Analyses {
   bool all_runup_springs_ = false;
   std::vector<Index> runup_probe_nodes_, runup_spring_elements_;
 };
+
+DesignAnalyses::DesignAnalyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities,
+                               StopToken stop)
+    : spec_(spec), model_(model), stop_(stop), legacy_(std::make_unique<Legacy>(spec, model, quantities, stop)) {}
+DesignAnalyses::~DesignAnalyses() = default;
+const CampbellResult& DesignAnalyses::campbell() { return legacy_->campbell(); }
+const HarmonicResult& DesignAnalyses::response() { return legacy_->response(); }
+const TransientResult& DesignAnalyses::runup() { return legacy_->runup(); }
+const std::vector<Index>& DesignAnalyses::runup_probe_nodes() {
+  (void)legacy_->runup();
+  return legacy_->runup_probe_nodes();
+}
+const std::vector<Index>& DesignAnalyses::runup_spring_elements() {
+  (void)legacy_->runup();
+  return legacy_->runup_spring_elements();
+}
+
+namespace {
 
 // The critical speeds a quantity selects, in increasing order, within [low, high].
 std::vector<Real> selected_criticals(const CampbellResult& c, const QuantitySpec& q, Real low, Real high) {
@@ -214,7 +202,7 @@ struct Curve {
   std::vector<Real> speeds, amplitude;
 };
 
-Curve probe_curve(Analyses& a, const QuantitySpec& q) {
+Curve probe_curve(DesignAnalyses& a, const QuantitySpec& q) {
   const auto& r = a.response();
   if (r.probes.empty()) throw Error("the response has no probe: give the quantity a 'probe'");
   const Index node = q.probe ? node_index(a.model(), *q.probe) : r.probes.front().node;
@@ -231,247 +219,378 @@ Curve probe_curve(Analyses& a, const QuantitySpec& q) {
   throw Error("the response has no such probe");
 }
 
-Real evaluate_one(Analyses& a, const QuantitySpec& q, std::string& clipped) {
-  switch (q.kind) {
-    case QuantityKind::critical_speed: {
-      const auto& c = a.campbell();
-      const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
-      const auto criticals = selected_criticals(c, q, low, high);
-      if (static_cast<int>(criticals.size()) < q.n)
-        throw Error(fmt::format("no {} {}critical speed of order {} between {} and {} (found {})", ordinal(q.n),
-                                whirl_word(q.whirl), q.order, rpm(low), rpm(high), criticals.size()));
-      return criticals[static_cast<std::size_t>(q.n - 1)];
-    }
-    case QuantityKind::separation_margin: {
-      const auto& c = a.campbell();
-      const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
-      // Critical speeds beyond the analysed range are unknown but at least as far
-      // away as its ends: the margin of the ends bounds theirs.
-      Real margin = std::min(separation_margin(low, q.operating_low, q.operating_high),
-                             separation_margin(high, q.operating_low, q.operating_high));
-      if (low <= 0) margin = separation_margin(high, q.operating_low, q.operating_high);
-      Real nearest = std::numeric_limits<Real>::infinity();
-      for (const Real s : selected_criticals(c, q, low, high))
-        nearest = std::min(nearest, separation_margin(s, q.operating_low, q.operating_high));
-      if (!(nearest <= margin))
-        clipped = fmt::format(
-            "a lower bound: no {}critical speed of order {} between {} and {} lies nearer the "
-            "operating range than the range's {}; widen the Campbell range to find the margin",
-            whirl_word(q.whirl), q.order, rpm(low), rpm(high), low > 0 ? "ends" : "end");
-      return std::min(margin, nearest);
-    }
-    case QuantityKind::min_damping_ratio:
-    case QuantityKind::min_log_decrement: {
-      const auto& c = a.campbell();
-      return smallest_damping(c, q, q.low.value_or(c.speeds.front()), q.high.value_or(c.speeds.back()),
-                              q.kind == QuantityKind::min_log_decrement);
-    }
-    case QuantityKind::stability_threshold: {
-      const auto& c = a.campbell();
-      // None in the range: the threshold lies above it; its end is a lower bound.
-      if (c.stability_threshold) return c.stability_threshold->speed;
-      clipped = fmt::format(
-          "a lower bound: the rotor is stable up to the Campbell range's end, {}; widen the range to "
-          "find the threshold",
-          rpm(c.speeds.back()));
-      return c.speeds.back();
-    }
-    case QuantityKind::natural_frequency:
-    case QuantityKind::damping_ratio:
-    case QuantityKind::log_decrement: {
-      ModalRequest request;
-      request.speed = q.speed;
-      auto settings = modal_settings(a.spec().modal, request);
-      const auto result = run_modal(a.model(), settings.speed, settings.options);
-      check_solver(result.info, "modal analysis");
-      int seen = 0;
-      for (const auto& m : result.modes)
-        if (m.type == ModeType::lateral && m.oscillatory && selected(m.whirl, q.whirl) && ++seen == q.n)
-          return q.kind == QuantityKind::natural_frequency ? m.frequency_hz
-                 : q.kind == QuantityKind::damping_ratio   ? m.damping_ratio
-                                                           : m.log_decrement;
-      throw Error(fmt::format("no {} {}lateral mode at {} (found {})", ordinal(q.n), whirl_word(q.whirl),
-                              rpm(settings.speed), seen));
-    }
-    case QuantityKind::peak_response: {
-      const auto curve = probe_curve(a, q);
-      return curve.amplitude.empty() ? 0.0 : *std::max_element(curve.amplitude.begin(), curve.amplitude.end());
-    }
-    case QuantityKind::amplification_factor:
-    case QuantityKind::required_margin:
-    case QuantityKind::margin_surplus:
-    case QuantityKind::min_margin_surplus: {
-      const auto curve = probe_curve(a, q);
-      std::vector<ResponsePeak> resolved;
-      for (const auto& p : response_peaks(curve.speeds, curve.amplitude))
-        if (p.resolved()) resolved.push_back(p);
-      const int needed = q.kind == QuantityKind::min_margin_surplus ? 1 : q.n;
-      if (static_cast<int>(resolved.size()) < needed)
-        throw Error(
-            fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
-                        "the amplitude falls to 1/√2 of it on both sides within the sweep)",
-                        ordinal(needed),
-                        q.low || q.high ? fmt::format(" between {} and {}", rpm(q.low.value_or(0)),
-                                                      q.high ? rpm(*q.high) : std::string("the sweep's end"))
-                                        : std::string(),
-                        resolved.size()));
-      const auto required = [&](const ResponsePeak& peak) {
-        return required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
-      };
-      const auto surplus = [&](const ResponsePeak& peak) {
-        return separation_margin(peak.speed, q.operating_low, q.operating_high) - required(peak);
-      };
-      if (q.kind == QuantityKind::min_margin_surplus) {
-        Real least = surplus(resolved.front());
-        for (const auto& peak : resolved) least = std::min(least, surplus(peak));
-        return least;
-      }
-      const auto& peak = resolved[static_cast<std::size_t>(q.n - 1)];
-      if (q.kind == QuantityKind::amplification_factor) return peak.amplification_factor;
-      return q.kind == QuantityKind::required_margin ? required(peak) : surplus(peak);
-    }
-    case QuantityKind::undamped_critical_speed: {
-      // As API 684's: journal and rolling bearings by their direct stiffness about
-      // the equilibrium at each critical speed, the search starting from the
-      // operating range's top (or the Campbell range's end) on an oil film.
-      SolverInfo info;
-      const Model lin = has_supports(a.model()) ? linearised(a.model()) : Model();
-      const Model* rotor = &a.model();
-      Model direct;
-      if (has_supports(a.model())) {
-        direct = with_direct_bearing_stiffness(lin, bearing_elements(lin));
-        rotor = &direct;
-      }
-      const Real start = !needs_speed(a.model()) ? 0.0
-                         : q.operating_high > 0  ? q.operating_high
-                                                 : a.campbell().speeds.back();
-      const auto criticals = undamped_critical_speeds(*rotor, q.n, true, &info, start);
-      check_solver(info, "undamped critical speeds");
-      if (static_cast<int>(criticals.size()) < q.n)
-        throw Error(fmt::format("the rotor has {} forward undamped critical speeds, not {}", criticals.size(), q.n));
-      return criticals[static_cast<std::size_t>(q.n - 1)].speed;
-    }
-    case QuantityKind::level1_q_zero: {
-      StabilitySweepOptions s;
-      s.speed = *q.speed;  // the reader requires it
-      s.node = q.probe ? node_index(a.model(), *q.probe) : largest_forward_motion_node(a.model(), s.speed);
-      s.points = 2;
-      const StabilitySweepResult r = run_stability_sweep(a.model(), s);
-      if (!r.q_zero)
-        throw Error(
-            fmt::format("no Q₀: the first forward mode at {} is {}", rpm(s.speed),
-                        r.log_decrement.front() <= 0 ? "unstable without cross-coupling" : "stable up to 1e13 N/m"));
-      return *r.q_zero;
-    }
-    case QuantityKind::peak_spring_force: {
-      const auto& r = a.response();
-      const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
-      Real peak = 0;
-      for (const auto& s : r.springs) {
-        if (only >= 0 && s.element != only) continue;
-        for (std::size_t k = 0; k < s.peak_lateral.size(); ++k)
-          if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
-            peak = std::max(peak, s.peak_lateral[k]);
-      }
-      return peak;
-    }
-    case QuantityKind::peak_stress: {
-      const auto& r = a.response();
-      Real peak = 0;
-      for (std::size_t k = 0; k < r.station_peaks.size(); ++k)
-        if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
-          peak = std::max(peak, r.station_peaks[k].von_mises.value);
-      return peak;
-    }
-    case QuantityKind::runup_peak: {
-      const auto& r = a.runup();
-      const auto& nodes = a.runup_probe_nodes();
-      if (nodes.empty()) throw Error("the run-up records no probe: give the quantity a 'probe'");
-      const Index node = q.probe ? node_index(a.model(), *q.probe) : nodes.front();
-      const auto at = std::find(nodes.begin(), nodes.end(), node);
-      return r.envelopes[static_cast<std::size_t>(at - nodes.begin())].peak;
-    }
-    case QuantityKind::runup_spring_force: {
-      const auto& r = a.runup();
-      const auto& springs = a.runup_spring_elements();
-      const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
-      Real peak = 0;
-      for (const auto& sample : r.samples)
-        for (std::size_t i = 0; i < springs.size(); ++i)
-          if (only < 0 || springs[i] == only)
-            peak = std::max(peak, std::hypot(sample.springs[i][1], sample.springs[i][2]));
-      return peak;
-    }
-    case QuantityKind::rotor_mass:
-      return rotating_mass(a.model());
-    case QuantityKind::min_bearing_value:
-    case QuantityKind::max_bearing_value: {
-      // Over the Campbell diagram's speeds within the range: each bearing's state at
-      // the equilibrium about which the diagram linearises it.
-      const auto& c = a.campbell();
-      const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
-      const bool smallest = q.kind == QuantityKind::min_bearing_value;
-      const Real scale = q.value.ends_with("_deg") ? pi / 180 : 1.0;
-      Real best = std::numeric_limits<Real>::quiet_NaN();
-      bool named = false;
-      std::vector<std::string> bearings;
-      for (const OperatingSeries& s : c.operating) {
-        const std::string label = a.model().forces[static_cast<std::size_t>(s.force)].label();
-        bearings.push_back(label);
-        if (q.bearing && *q.bearing != label) continue;
-        named = true;
-        const std::vector<Real> values = s.series(q.value);
-        if (values.empty())
-          throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", label, q.value,
-                                  fmt::join(s.quantities, ", ")));
-        for (std::size_t k = 0; k < values.size(); ++k)
-          if (c.speeds[k] >= low && c.speeds[k] <= high && std::isfinite(values[k]))
-            if (std::isnan(best) || (smallest ? values[k] < best : values[k] > best)) best = values[k];
-      }
-      if (c.operating.empty()) throw Error("the model has no journal or rolling bearing");
-      if (!named)
-        throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(bearings, ", ")));
-      if (std::isnan(best))
-        throw Error(fmt::format("no value of '{}' between {} and {}", q.value, rpm(low), rpm(high)));
-      return best * scale;
-    }
-    case QuantityKind::parameter:
-      return get_parameter(a.spec(), q.path).value;
-    case QuantityKind::function:
-      if (!q.function || !*q.function)
-        throw Error(
-            "no function is given for it (a quantity of kind \"function\" is computed by code, e.g. feran.Study's "
-            "quantities)");
-      return (*q.function)(a.spec(), a.model());
+// ---- the rows of the analyses not yet in folders of their own -----------------------
+
+Real critical_speed(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto& c = a.campbell();
+  const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
+  const auto criticals = selected_criticals(c, q, low, high);
+  if (static_cast<int>(criticals.size()) < q.n)
+    throw Error(fmt::format("no {} {}critical speed of order {} between {} and {} (found {})", ordinal(q.n),
+                            whirl_word(q.whirl), q.order, rpm(low), rpm(high), criticals.size()));
+  return criticals[static_cast<std::size_t>(q.n - 1)];
+}
+
+Real campbell_separation_margin(DesignAnalyses& a, const QuantitySpec& q, std::string& clipped) {
+  const auto& c = a.campbell();
+  const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
+  // Critical speeds beyond the analysed range are unknown but at least as far
+  // away as its ends: the margin of the ends bounds theirs.
+  Real margin = std::min(separation_margin(low, q.operating_low, q.operating_high),
+                         separation_margin(high, q.operating_low, q.operating_high));
+  if (low <= 0) margin = separation_margin(high, q.operating_low, q.operating_high);
+  Real nearest = std::numeric_limits<Real>::infinity();
+  for (const Real s : selected_criticals(c, q, low, high))
+    nearest = std::min(nearest, separation_margin(s, q.operating_low, q.operating_high));
+  if (!(nearest <= margin))
+    clipped = fmt::format(
+        "a lower bound: no {}critical speed of order {} between {} and {} lies nearer the "
+        "operating range than the range's {}; widen the Campbell range to find the margin",
+        whirl_word(q.whirl), q.order, rpm(low), rpm(high), low > 0 ? "ends" : "end");
+  return std::min(margin, nearest);
+}
+
+template <bool log_decrement>
+Real min_damping(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto& c = a.campbell();
+  return smallest_damping(c, q, q.low.value_or(c.speeds.front()), q.high.value_or(c.speeds.back()), log_decrement);
+}
+
+Real stability_threshold(DesignAnalyses& a, const QuantitySpec&, std::string& clipped) {
+  const auto& c = a.campbell();
+  // None in the range: the threshold lies above it; its end is a lower bound.
+  if (c.stability_threshold) return c.stability_threshold->speed;
+  clipped = fmt::format(
+      "a lower bound: the rotor is stable up to the Campbell range's end, {}; widen the range to "
+      "find the threshold",
+      rpm(c.speeds.back()));
+  return c.speeds.back();
+}
+
+// The n-th lateral mode of the quantity's whirl at its speed: one of its numbers.
+template <Real Mode::*member>
+Real mode_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  ModalRequest request;
+  request.speed = q.speed;
+  auto settings = modal_settings(a.spec().modal, request);
+  const auto result = run_modal(a.model(), settings.speed, settings.options);
+  check_solver(result.info, "modal analysis");
+  int seen = 0;
+  for (const auto& m : result.modes)
+    if (m.type == ModeType::lateral && m.oscillatory && selected(m.whirl, q.whirl) && ++seen == q.n) return m.*member;
+  throw Error(fmt::format("no {} {}lateral mode at {} (found {})", ordinal(q.n), whirl_word(q.whirl),
+                          rpm(settings.speed), seen));
+}
+
+Real peak_response(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto curve = probe_curve(a, q);
+  return curve.amplitude.empty() ? 0.0 : *std::max_element(curve.amplitude.begin(), curve.amplitude.end());
+}
+
+// What a row reads off the resonance peaks at a probe.
+enum class PeakValue { amplification_factor, required_margin, margin_surplus, min_margin_surplus };
+
+template <PeakValue what>
+Real peak_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto curve = probe_curve(a, q);
+  std::vector<ResponsePeak> resolved;
+  for (const auto& p : response_peaks(curve.speeds, curve.amplitude))
+    if (p.resolved()) resolved.push_back(p);
+  const int needed = what == PeakValue::min_margin_surplus ? 1 : q.n;
+  if (static_cast<int>(resolved.size()) < needed)
+    throw Error(
+        fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
+                    "the amplitude falls to 1/√2 of it on both sides within the sweep)",
+                    ordinal(needed),
+                    q.low || q.high ? fmt::format(" between {} and {}", rpm(q.low.value_or(0)),
+                                                  q.high ? rpm(*q.high) : std::string("the sweep's end"))
+                                    : std::string(),
+                    resolved.size()));
+  const auto required = [&](const ResponsePeak& peak) {
+    return required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
+  };
+  const auto surplus = [&](const ResponsePeak& peak) {
+    return separation_margin(peak.speed, q.operating_low, q.operating_high) - required(peak);
+  };
+  if constexpr (what == PeakValue::min_margin_surplus) {
+    Real least = surplus(resolved.front());
+    for (const auto& peak : resolved) least = std::min(least, surplus(peak));
+    return least;
   }
-  throw Error("unknown quantity");
+  const auto& peak = resolved[static_cast<std::size_t>(q.n - 1)];
+  if constexpr (what == PeakValue::amplification_factor) return peak.amplification_factor;
+  return what == PeakValue::required_margin ? required(peak) : surplus(peak);
+}
+
+Real undamped_critical_speed(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  // As API 684's: journal and rolling bearings by their direct stiffness about
+  // the equilibrium at each critical speed, the search starting from the
+  // operating range's top (or the Campbell range's end) on an oil film.
+  SolverInfo info;
+  const Model lin = has_supports(a.model()) ? linearised(a.model()) : Model();
+  const Model* rotor = &a.model();
+  Model direct;
+  if (has_supports(a.model())) {
+    direct = with_direct_bearing_stiffness(lin, bearing_elements(lin));
+    rotor = &direct;
+  }
+  const Real start = !needs_speed(a.model()) ? 0.0
+                     : q.operating_high > 0  ? q.operating_high
+                                             : a.campbell().speeds.back();
+  const auto criticals = undamped_critical_speeds(*rotor, q.n, true, &info, start);
+  check_solver(info, "undamped critical speeds");
+  if (static_cast<int>(criticals.size()) < q.n)
+    throw Error(fmt::format("the rotor has {} forward undamped critical speeds, not {}", criticals.size(), q.n));
+  return criticals[static_cast<std::size_t>(q.n - 1)].speed;
+}
+
+Real level1_q_zero(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  StabilitySweepOptions s;
+  s.speed = *q.speed;  // the reader requires it
+  s.node = q.probe ? node_index(a.model(), *q.probe) : largest_forward_motion_node(a.model(), s.speed);
+  s.points = 2;
+  const StabilitySweepResult r = run_stability_sweep(a.model(), s);
+  if (!r.q_zero)
+    throw Error(
+        fmt::format("no Q₀: the first forward mode at {} is {}", rpm(s.speed),
+                    r.log_decrement.front() <= 0 ? "unstable without cross-coupling" : "stable up to 1e13 N/m"));
+  return *r.q_zero;
+}
+
+Real peak_spring_force(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto& r = a.response();
+  const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
+  Real peak = 0;
+  for (const auto& s : r.springs) {
+    if (only >= 0 && s.element != only) continue;
+    for (std::size_t k = 0; k < s.peak_lateral.size(); ++k)
+      if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
+        peak = std::max(peak, s.peak_lateral[k]);
+  }
+  return peak;
+}
+
+Real peak_stress(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto& r = a.response();
+  Real peak = 0;
+  for (std::size_t k = 0; k < r.station_peaks.size(); ++k)
+    if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
+      peak = std::max(peak, r.station_peaks[k].von_mises.value);
+  return peak;
+}
+
+Real runup_peak(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto& r = a.runup();
+  const auto& nodes = a.runup_probe_nodes();
+  if (nodes.empty()) throw Error("the run-up records no probe: give the quantity a 'probe'");
+  const Index node = q.probe ? node_index(a.model(), *q.probe) : nodes.front();
+  const auto at = std::find(nodes.begin(), nodes.end(), node);
+  return r.envelopes[static_cast<std::size_t>(at - nodes.begin())].peak;
+}
+
+Real runup_spring_force(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const auto& r = a.runup();
+  const auto& springs = a.runup_spring_elements();
+  const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
+  Real peak = 0;
+  for (const auto& sample : r.samples)
+    for (std::size_t i = 0; i < springs.size(); ++i)
+      if (only < 0 || springs[i] == only) peak = std::max(peak, std::hypot(sample.springs[i][1], sample.springs[i][2]));
+  return peak;
+}
+
+Real rotor_mass(DesignAnalyses& a, const QuantitySpec&, std::string&) { return rotating_mass(a.model()); }
+
+template <bool smallest>
+Real bearing_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  // Over the Campbell diagram's speeds within the range: each bearing's state at
+  // the equilibrium about which the diagram linearises it.
+  const auto& c = a.campbell();
+  const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
+  const Real scale = q.value.ends_with("_deg") ? pi / 180 : 1.0;
+  Real best = std::numeric_limits<Real>::quiet_NaN();
+  bool named = false;
+  std::vector<std::string> bearings;
+  for (const OperatingSeries& s : c.operating) {
+    const std::string label = a.model().forces[static_cast<std::size_t>(s.force)].label();
+    bearings.push_back(label);
+    if (q.bearing && *q.bearing != label) continue;
+    named = true;
+    const std::vector<Real> values = s.series(q.value);
+    if (values.empty())
+      throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", label, q.value,
+                              fmt::join(s.quantities, ", ")));
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (c.speeds[k] >= low && c.speeds[k] <= high && std::isfinite(values[k]))
+        if (std::isnan(best) || (smallest ? values[k] < best : values[k] > best)) best = values[k];
+  }
+  if (c.operating.empty()) throw Error("the model has no journal or rolling bearing");
+  if (!named)
+    throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(bearings, ", ")));
+  if (std::isnan(best)) throw Error(fmt::format("no value of '{}' between {} and {}", q.value, rpm(low), rpm(high)));
+  return best * scale;
+}
+
+Real parameter(DesignAnalyses& a, const QuantitySpec& q, std::string&) { return get_parameter(a.spec(), q.path).value; }
+
+Real function(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  if (!q.function || !*q.function)
+    throw Error(
+        "no function is given for it (a quantity of kind \"function\" is computed by code, e.g. feran.Study's "
+        "quantities)");
+  return (*q.function)(a.spec(), a.model());
+}
+
+using Q = Quantity;
+
+// The rows of the analyses not yet in folders of their own, and of no analysis.
+const std::vector<QuantityRow>& own_rows() {
+  static const std::vector<QuantityRow> rows = {
+      {.name = "critical_speed",
+       .doc = "the n-th critical speed of a whirl and order in a speed range",
+       .analysis = "campbell",
+       .unit = Q::speed,
+       .evaluate = critical_speed},
+      {.name = "separation_margin",
+       .doc = "smallest relative distance of the critical speeds from the operating range",
+       .analysis = "campbell",
+       .evaluate = campbell_separation_margin,
+       .needs_operating = true},
+      {.name = "min_damping_ratio",
+       .doc = "smallest damping ratio of the lateral modes over a speed range",
+       .analysis = "campbell",
+       .evaluate = min_damping<false>,
+       .any_whirl = true},
+      {.name = "min_log_decrement",
+       .doc = "smallest logarithmic decrement over a speed range",
+       .analysis = "campbell",
+       .evaluate = min_damping<true>,
+       .any_whirl = true},
+      {.name = "stability_threshold",
+       .doc = "lowest speed where a mode's damping turns negative",
+       .analysis = "campbell",
+       .unit = Q::speed,
+       .evaluate = stability_threshold},
+      {.name = "natural_frequency",
+       .doc = "the n-th natural frequency of a whirl at a speed",
+       .analysis = "modal",
+       .unit = Q::frequency,
+       .evaluate = mode_value<&Mode::frequency_hz>},
+      {.name = "damping_ratio",
+       .doc = "the damping ratio of that mode",
+       .analysis = "modal",
+       .evaluate = mode_value<&Mode::damping_ratio>,
+       .any_whirl = true},
+      {.name = "log_decrement",
+       .doc = "the logarithmic decrement of that mode",
+       .analysis = "modal",
+       .evaluate = mode_value<&Mode::log_decrement>,
+       .any_whirl = true},
+      {.name = "peak_response",
+       .doc = "largest orbit semi-axis at a probe over the unbalance response",
+       .analysis = "response",
+       .unit = Q::length,
+       .evaluate = peak_response},
+      {.name = "amplification_factor",
+       .doc = "API 684 amplification factor (half-power) of the n-th resonance peak at a probe",
+       .analysis = "response",
+       .evaluate = peak_value<PeakValue::amplification_factor>},
+      {.name = "required_margin",
+       .doc = "the separation margin API 617 requires of that peak from the operating range",
+       .analysis = "response",
+       .evaluate = peak_value<PeakValue::required_margin>,
+       .needs_operating = true},
+      {.name = "margin_surplus",
+       .doc = "that peak's separation margin less the required one: ≥ 0 passes",
+       .analysis = "response",
+       .evaluate = peak_value<PeakValue::margin_surplus>,
+       .needs_operating = true},
+      {.name = "min_margin_surplus",
+       .doc = "the smallest margin_surplus of every resonance peak at the probe: ≥ 0 all pass",
+       .analysis = "response",
+       .evaluate = peak_value<PeakValue::min_margin_surplus>,
+       .needs_operating = true},
+      {.name = "undamped_critical_speed",
+       .doc = "the n-th forward undamped critical speed with the bearings as given",
+       .analysis = "api684",
+       .unit = Q::speed,
+       .evaluate = undamped_critical_speed},
+      {.name = "level1_q_zero",
+       .doc = "API 617 level I: the cross-coupling Q at the probe where the first forward mode's log decrement is 0 "
+              "at the speed",
+       .analysis = "api684",
+       .unit = Q::stiffness,
+       .evaluate = level1_q_zero,
+       .needs_speed = true},
+      {.name = "peak_spring_force",
+       .doc = "largest lateral force of a spring (or of all) over the response",
+       .analysis = "response",
+       .unit = Q::force,
+       .evaluate = peak_spring_force},
+      {.name = "peak_stress",
+       .doc = "largest equivalent (von Mises) shaft stress over the response",
+       .analysis = "response",
+       .unit = Q::pressure,
+       .evaluate = peak_stress},
+      {.name = "runup_peak",
+       .doc = "largest |r| at a probe during the run-up",
+       .analysis = "runup",
+       .unit = Q::length,
+       .evaluate = runup_peak},
+      {.name = "runup_spring_force",
+       .doc = "largest lateral force of a spring (or of all) during the run-up",
+       .analysis = "runup",
+       .unit = Q::force,
+       .evaluate = runup_spring_force},
+      {.name = "rotor_mass", .doc = "mass of the rotating parts", .unit = Q::mass, .evaluate = rotor_mass},
+      {.name = "min_bearing_value",
+       .doc = "smallest value of a bearing's operating quantity over the Campbell speeds",
+       .analysis = "campbell",
+       .evaluate = bearing_value<true>,
+       .bearing_value = true},
+      {.name = "max_bearing_value",
+       .doc = "largest value of it",
+       .analysis = "campbell",
+       .evaluate = bearing_value<false>,
+       .bearing_value = true},
+      {.name = "parameter",
+       .doc = "a number of the design's model, by its parameter path",
+       .evaluate = parameter,
+       .parameter = true},
+      {.name = "function",
+       .doc = "a function given in code (the Python package's feran.Study)",
+       .evaluate = function,
+       .code_only = true},
+  };
+  return rows;
 }
 
 }  // namespace
 
-std::optional<Quantity> quantity_kind_unit(QuantityKind kind) {
-  switch (kind) {
-    case QuantityKind::critical_speed:
-    case QuantityKind::stability_threshold:
-    case QuantityKind::undamped_critical_speed:
-      return Quantity::speed;
-    case QuantityKind::level1_q_zero:
-      return Quantity::stiffness;
-    case QuantityKind::natural_frequency:
-      return Quantity::frequency;
-    case QuantityKind::peak_response:
-    case QuantityKind::runup_peak:
-      return Quantity::length;
-    case QuantityKind::peak_spring_force:
-    case QuantityKind::runup_spring_force:
-      return Quantity::force;
-    case QuantityKind::peak_stress:
-      return Quantity::pressure;
-    case QuantityKind::rotor_mass:
-      return Quantity::mass;
-    default:
-      return std::nullopt;
-  }
+const std::vector<QuantityRow>& quantity_rows() {
+  static const std::vector<QuantityRow> rows = [] {
+    std::vector<QuantityRow> all = own_rows();
+    // The rows of the analyses in their folders, before parameter and function.
+    std::vector<QuantityRow> rooms;
+    Analyses::for_each([&]<class A>() {
+      if constexpr (requires { A::quantities(); })
+        for (const QuantityRow& r : A::quantities()) rooms.push_back(r);
+    });
+    all.insert(all.end() - 2, rooms.begin(), rooms.end());
+    return all;
+  }();
+  return rows;
+}
+
+const QuantityRow* quantity_row(std::string_view name) {
+  for (const QuantityRow& r : quantity_rows())
+    if (r.name == name) return &r;
+  return nullptr;
+}
+
+const QuantityRow& row_of(const QuantitySpec& q) {
+  if (const QuantityRow* r = quantity_row(q.kind)) return *r;
+  throw Error(fmt::format("unknown quantity kind '{}'", q.kind));
 }
 
 std::optional<Quantity> operating_value_unit(std::string_view name) {
@@ -484,40 +603,22 @@ std::optional<Quantity> operating_value_unit(std::string_view name) {
 }
 
 std::optional<Quantity> quantity_unit(const QuantitySpec& q) {
-  if (q.kind == QuantityKind::min_bearing_value || q.kind == QuantityKind::max_bearing_value)
-    return operating_value_unit(q.value);
-  return q.kind == QuantityKind::parameter ? q.value_kind : quantity_kind_unit(q.kind);
-}
-
-std::string_view to_string(QuantityKind kind) {
-  for (const auto& [k, name] : kind_names)
-    if (k == kind) return name;
-  return "?";
-}
-
-std::optional<QuantityKind> quantity_kind_named(std::string_view name) {
-  for (const auto& [k, n] : kind_names)
-    if (n == name) return k;
-  return std::nullopt;
-}
-
-std::vector<std::string_view> quantity_kind_names() {
-  std::vector<std::string_view> out;
-  for (const auto& [k, n] : kind_names) out.push_back(n);
-  return out;
+  const QuantityRow& row = row_of(q);
+  if (row.bearing_value) return operating_value_unit(q.value);
+  return row.parameter ? q.value_kind : row.unit;
 }
 
 std::vector<Real> evaluate_quantities(const ModelSpec& spec, const Model& model,
                                       std::span<const QuantitySpec> quantities, const StopToken& stop,
                                       std::vector<std::string>* clipped) {
-  Analyses analyses(spec, model, quantities, stop);
+  DesignAnalyses analyses(spec, model, quantities, stop);
   std::vector<Real> values;
   values.reserve(quantities.size());
   if (clipped) clipped->assign(quantities.size(), std::string());
   for (const auto& q : quantities) {
     try {
       std::string note;
-      values.push_back(evaluate_one(analyses, q, note));
+      values.push_back(row_of(q).evaluate(analyses, q, note));
       if (clipped) (*clipped)[values.size() - 1] = std::move(note);
     } catch (const Error& e) {
       throw Error(fmt::format("quantity '{}': {}", q.name, e.what()));

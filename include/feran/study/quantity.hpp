@@ -23,34 +23,6 @@
 
 namespace feran {
 
-enum class QuantityKind {
-  critical_speed,           ///< the n-th critical speed of a whirl and order in a speed range [rad/s]
-  separation_margin,        ///< smallest relative distance of the critical speeds from the operating range [-]
-  min_damping_ratio,        ///< smallest damping ratio of the lateral modes over a speed range [-]
-  min_log_decrement,        ///< smallest logarithmic decrement over a speed range [-]
-  stability_threshold,      ///< lowest speed where a mode's damping turns negative [rad/s]
-  natural_frequency,        ///< the n-th natural frequency of a whirl at a speed [Hz]
-  damping_ratio,            ///< the damping ratio of that mode [-]
-  log_decrement,            ///< the logarithmic decrement of that mode [-]
-  peak_response,            ///< largest orbit semi-axis at a probe over the unbalance response [m]
-  amplification_factor,     ///< API 684 amplification factor (half-power) of the n-th resonance peak at a probe [-]
-  required_margin,          ///< the separation margin API 617 requires of that peak from the operating range [-]
-  margin_surplus,           ///< that peak's separation margin less the required one: ≥ 0 passes [-]
-  min_margin_surplus,       ///< the smallest margin_surplus of every resonance peak at the probe: ≥ 0 all pass [-]
-  undamped_critical_speed,  ///< the n-th forward undamped critical speed with the bearings as given [rad/s]
-  level1_q_zero,  ///< API 617 level I: the cross-coupling Q at the probe where the first forward mode's log decrement
-                  ///< is 0 at the speed [N/m]
-  peak_spring_force,   ///< largest lateral force of a spring (or of all) over the response [N]
-  peak_stress,         ///< largest equivalent (von Mises) shaft stress over the response [Pa]
-  runup_peak,          ///< largest |r| at a probe during the run-up [m]
-  runup_spring_force,  ///< largest lateral force of a spring (or of all) during the run-up [N]
-  rotor_mass,          ///< mass of the rotating parts [kg]
-  min_bearing_value,   ///< smallest value of a bearing's operating quantity over the Campbell speeds [its unit]
-  max_bearing_value,   ///< largest value of it [its unit]
-  parameter,           ///< a number of the design's model, by its parameter path (its SI unit)
-  function,            ///< a function given in code (the Python package's feran.Study) [its own unit]
-};
-
 /// A quantity computed by the caller's code from the design's model (its
 /// specification and the model built from it). Called on the study's worker threads,
 /// side by side: it must be safe to call concurrently. Throws for a design it cannot
@@ -62,7 +34,7 @@ enum class WhirlSelection { forward, backward, any };
 
 struct QuantitySpec {
   std::string name;
-  QuantityKind kind = QuantityKind::critical_speed;
+  std::string kind = "critical_speed";  ///< the name of its row of quantity_rows()
   WhirlSelection whirl = WhirlSelection::forward;
   int order = 1;                                   ///< excitation order of critical speeds
   int n = 1;                                       ///< which one (1: the lowest)
@@ -84,18 +56,40 @@ struct QuantitySpec {
 /// (ratios, counts, and the power loss, in W).
 std::optional<Quantity> operating_value_unit(std::string_view name);
 
-/// The kind of @p q's value: quantity_kind_unit(q.kind), for a parameter its kind, for
-/// a bearing value its quantity's.
-std::optional<Quantity> quantity_unit(const QuantitySpec& q);
+class DesignAnalyses;
 
-/// The kind a quantity's value has (for units), or nullopt for a pure number.
-std::optional<Quantity> quantity_kind_unit(QuantityKind kind);
-/// "critical_speed", … (as a study file names them).
-std::string_view to_string(QuantityKind kind);
-/// The kind named @p name; nullopt for an unknown name.
-std::optional<QuantityKind> quantity_kind_named(std::string_view name);
-/// Every kind's name, for messages.
-std::vector<std::string_view> quantity_kind_names();
+/// One kind of quantity a study can read off a design: a row of the table of
+/// quantities. Each analysis's folder gives the rows of its own results
+/// (StaticAnalysis::quantities()); quantity_rows() lists them all.
+struct QuantityRow {
+  std::string_view name = {};  ///< as a study file names it ("peak_response")
+  std::string_view doc = {};   ///< one line for the documentation
+  /// The analysis it reads ("campbell", "static"; empty for none), whose settings the
+  /// design's model tables give.
+  std::string_view analysis = {};
+  std::optional<Quantity> unit = {};  ///< the kind of its value; none: a pure number
+  /// Its value for the design, in SI units; sets @p clipped to why the value is only a
+  /// bound set by the range an analysis covered. Throws Error when there is none.
+  Real (*evaluate)(DesignAnalyses& a, const QuantitySpec& q, std::string& clipped) = nullptr;
+  // What a study file's entry of this kind needs or may hold:
+  bool any_whirl = false;        ///< 'whirl' defaults to "any" (damping), else "forward"
+  bool needs_operating = false;  ///< 'operating' = [low, high] is required
+  bool needs_speed = false;      ///< 'speed' > 0 is required
+  bool bearing_value = false;    ///< 'value' (a bearing's operating quantity) and 'bearing'
+  bool parameter = false;        ///< 'path' (its unit is the parameter's)
+  bool code_only = false;        ///< computed by code (feran.Study), not in study files
+};
+
+/// Every row, in the order the documentation lists them.
+const std::vector<QuantityRow>& quantity_rows();
+/// The row named @p name, or nullptr.
+const QuantityRow* quantity_row(std::string_view name);
+/// The row of @p q (Error for an unknown kind).
+const QuantityRow& row_of(const QuantitySpec& q);
+
+/// The kind of @p q's value: its row's, for a parameter its kind, for a bearing value
+/// its quantity's.
+std::optional<Quantity> quantity_unit(const QuantitySpec& q);
 
 /// The values of @p quantities for the built @p model of @p spec, in order, in SI
 /// units. Throws Error when an analysis cannot give one: a solve that failed, no n-th

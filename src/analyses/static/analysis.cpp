@@ -2,16 +2,20 @@
 // its JSON, CSV and terminal writers (analyses/static/analysis.hpp).
 #include <feran/analyses/static/analysis.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <feran/analyses/settings.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/error.hpp>
 #include <feran/spec/fields.hpp>
+#include <feran/study/design_analyses.hpp>
 
 #include "../../io/result_text.hpp"
 
@@ -278,6 +282,113 @@ std::string StaticAnalysis::terminal(const Outcome<StaticAnalysis>& o) {
     }
   }
   return out;
+}
+
+// ---- study quantities ----------------------------------------------------------------
+
+namespace {
+
+// The design's static result; none at an equilibrium the rotor does not stay at.
+const StaticResult& stable_result(DesignAnalyses& a) {
+  const StaticResult& r = a.result<StaticAnalysis>();
+  if (r.stability.known && r.stability.unstable)
+    throw Error(fmt::format("the rotor does not stay at its static equilibrium: {}", stability_phrase(r.stability)));
+  return r;
+}
+
+Real lateral(const StaticResult& r, Index node) {
+  return std::hypot(r.q(dofs_per_node * node + static_cast<Index>(Dof::v)),
+                    r.q(dofs_per_node * node + static_cast<Index>(Dof::w)));
+}
+
+Real static_deflection(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const StaticResult& r = stable_result(a);
+  if (q.probe) return lateral(r, node_index(a.model(), *q.probe));
+  Real largest = 0;
+  for (Index node = 0; node < a.model().n_nodes(); ++node) largest = std::max(largest, lateral(r, node));
+  return largest;
+}
+
+Real static_stress(DesignAnalyses& a, const QuantitySpec&, std::string&) {
+  const StaticResult& r = stable_result(a);
+  if (r.stresses.empty()) throw Error("the model has no shaft element");
+  Real largest = 0;
+  for (const SectionStress& s : r.stresses) largest = std::max(largest, s.von_mises);
+  return largest;
+}
+
+Real static_spring_force(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const StaticResult& r = stable_result(a);
+  const Index only = q.spring ? spring_element(a.model(), *q.spring) : -1;
+  Real largest = 0;
+  for (const auto& [e, f] : r.springs)
+    if (only < 0 || e == only)
+      largest = std::max(largest, std::hypot(f[static_cast<std::size_t>(Dof::v)], f[static_cast<std::size_t>(Dof::w)]));
+  return largest;
+}
+
+template <bool smallest>
+Real static_bearing_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
+  const StaticResult& r = stable_result(a);
+  if (r.supports.empty()) throw Error("the model has no journal or rolling bearing");
+  const Real scale = q.value.ends_with("_deg") ? pi / 180 : 1.0;
+  Real best = std::numeric_limits<Real>::quiet_NaN();
+  std::vector<std::string> bearings;
+  bool named = false;
+  for (std::size_t i = 0; i < r.supports.size(); ++i) {
+    const std::string& label = a.model().forces[static_cast<std::size_t>(r.supports[i].first)].label();
+    bearings.push_back(label);
+    if (q.bearing && *q.bearing != label) continue;
+    named = true;
+    const auto& data = r.support_data[i];
+    const auto it = std::find_if(data.begin(), data.end(), [&](const OperatingValue& v) { return v.name == q.value; });
+    if (it == data.end()) {
+      std::vector<std::string> names;
+      for (const OperatingValue& v : data) names.push_back(v.name);
+      throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", label, q.value,
+                              fmt::join(names, ", ")));
+    }
+    if (std::isfinite(it->value) && (std::isnan(best) || (smallest ? it->value < best : it->value > best)))
+      best = it->value;
+  }
+  if (!named)
+    throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(bearings, ", ")));
+  if (std::isnan(best)) throw Error(fmt::format("'{}' has no value at the equilibrium", q.value));
+  return best * scale;
+}
+
+}  // namespace
+
+const std::vector<QuantityRow>& StaticAnalysis::quantities() {
+  static const std::vector<QuantityRow> rows = {
+      {.name = "static_deflection",
+       .doc = "lateral static deflection √(v² + w²) at a probe, else the largest of every node",
+       .analysis = name,
+       .unit = Quantity::length,
+       .evaluate = static_deflection},
+      {.name = "static_stress",
+       .doc = "largest equivalent (von Mises) static shaft stress",
+       .analysis = name,
+       .unit = Quantity::pressure,
+       .evaluate = static_stress},
+      {.name = "static_spring_force",
+       .doc = "lateral static force of a spring (or the largest of all)",
+       .analysis = name,
+       .unit = Quantity::force,
+       .evaluate = static_spring_force},
+      {.name = "min_static_bearing_value",
+       .doc = "smallest value of a bearing's operating quantity at the static equilibrium (of all bearings, or of "
+              "the one named)",
+       .analysis = name,
+       .evaluate = static_bearing_value<true>,
+       .bearing_value = true},
+      {.name = "max_static_bearing_value",
+       .doc = "largest value of it",
+       .analysis = name,
+       .evaluate = static_bearing_value<false>,
+       .bearing_value = true},
+  };
+  return rows;
 }
 
 }  // namespace feran

@@ -9,6 +9,7 @@
 
 #include <feran/analyses/analysis.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
+#include <feran/study/quantity.hpp>
 
 namespace feran {
 
@@ -39,6 +40,10 @@ struct StaticAnalysis {
   static std::string json(const Outcome<StaticAnalysis>& o);
   static std::string csv(const Outcome<StaticAnalysis>& o);
   static std::string terminal(const Outcome<StaticAnalysis>& o);
+  /// Its study quantities: static_deflection, static_stress, static_spring_force,
+  /// min_static_bearing_value and max_static_bearing_value (docs/study-format.md). A
+  /// design whose equilibrium is unstable has none: the rotor does not stay there.
+  static const std::vector<QuantityRow>& quantities();
 };
 
 /// The static options of @p file as its own tables give them (no request): what an

@@ -1,0 +1,84 @@
+#pragma once
+/// @file
+/// The analyses of one design, each run at most once, when a quantity first needs it,
+/// with the settings of the design's own model tables, on one thread (studies run
+/// designs side by side). The quantities' rows (study/quantity.hpp) read their values
+/// off these results.
+
+#include <map>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include <feran/analyses/analysis.hpp>
+#include <feran/core/error.hpp>
+#include <feran/study/quantity.hpp>
+
+namespace feran {
+
+struct CampbellResult;
+struct HarmonicResult;
+struct TransientResult;
+
+class DesignAnalyses {
+ public:
+  /// The quantities tell which probes and springs the response and the run-up record.
+  DesignAnalyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop);
+  ~DesignAnalyses();
+  DesignAnalyses(const DesignAnalyses&) = delete;
+  DesignAnalyses& operator=(const DesignAnalyses&) = delete;
+
+  const ModelSpec& spec() const { return spec_; }
+  const Model& model() const { return model_; }
+  const StopToken& stop() const { return stop_; }
+
+  /// The options and result of analysis A for the design (its file's own table), run
+  /// once; throws Error when the solve failed.
+  template <AnalysisFace A>
+  const typename A::Options& options() {
+    return slot<A>().options;
+  }
+  template <AnalysisFace A>
+  const typename A::Result& result() {
+    return slot<A>().result;
+  }
+
+  // The analyses not yet in folders of their own.
+  const CampbellResult& campbell();
+  const HarmonicResult& response();
+  const TransientResult& runup();
+  const std::vector<Index>& runup_probe_nodes();
+  const std::vector<Index>& runup_spring_elements();
+
+ private:
+  template <AnalysisFace A>
+  struct Slot {
+    typename A::Options options;
+    typename A::Result result;
+  };
+  template <AnalysisFace A>
+  const Slot<A>& slot() {
+    std::shared_ptr<const void>& s = rooms_[A::name];
+    if (!s) {
+      auto made = std::make_shared<Slot<A>>();
+      made->options = analysis_options<A>(spec_, model_, {}, file_key_name<A>());
+      made->result = A::run(model_, made->options, stop_);
+      if (!made->result.info.converged())
+        throw Error(fmt::format("the {} analysis failed: {}", A::name, made->result.info.message));
+      s = std::move(made);
+    }
+    return *static_cast<const Slot<A>*>(s.get());
+  }
+
+  const ModelSpec& spec_;
+  const Model& model_;
+  StopToken stop_;
+  std::map<std::string_view, std::shared_ptr<const void>> rooms_;
+  struct Legacy;
+  std::unique_ptr<Legacy> legacy_;
+};
+
+}  // namespace feran
