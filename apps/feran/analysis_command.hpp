@@ -18,6 +18,7 @@
 #include <feran/core/text.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace feran::app {
 
@@ -45,7 +46,8 @@ Runner add_analysis_command(CLI::App& app) {
   add_model_argument(*cmd, args->model);
   for (const spec::Field<Spec>& f : spec::fields_of<Spec>()) {
     const spec::Field<Spec>* field = &f;
-    const std::string default_text = spec::value_text(A::defaults(), f);
+    const std::string default_text =
+        f.default_text.empty() ? spec::value_text(A::defaults(), f) : std::string(f.default_text);
     std::string names = flag_name(f.key);
     if (!f.short_name.empty()) names = "-" + std::string(f.short_name) + "," + names;
     if (f.kind == spec::FieldKind::flag) {
@@ -77,21 +79,25 @@ Runner add_analysis_command(CLI::App& app) {
       else
         spec::set_text(request, *field, text, flag_name(field->key));
     }
-    Outcome<A> outcome = run_analysis<A>(file, request, [](std::string_view key) { return flag_name(key); });
+    Outcome<A> outcome = run_analysis<A>(
+        file, request, [](std::string_view key) { return flag_name(key); }, interrupt_token());
     print_warnings(outcome.source.warnings);
     outcome.source.speed_unit = args->out.speed_unit;
-    if (const auto stopped = stopped_single_solve()) return *stopped;
     const SolverInfo& info = outcome.result.info;
-    if (!info.converged()) {
-      // One solve: nothing was computed before the failure, so nothing is written.
-      std::fprintf(stderr, "feran: error: %s\n", printable(info.message, true).c_str());
-      return static_cast<int>(numerical_failure);
+    if constexpr (!keeps_partial_results<A>()) {
+      if (const auto stopped = stopped_single_solve()) return *stopped;
+      if (!info.converged()) {
+        // One solve: nothing was computed before the failure, so nothing is written.
+        std::fprintf(stderr, "feran: error: %s\n", printable(info.message, true).c_str());
+        return static_cast<int>(numerical_failure);
+      }
     }
     outputs.set_json([&] { return A::json(outcome); });
     outputs.set_csv([&] { return A::csv(outcome); });
     outputs.files.commit();
     if (!args->out.quiet) std::fputs(A::terminal(outcome).c_str(), stdout);
-    return static_cast<int>(ok);
+    // The results so far were written; a failure or a stop is said and exits non-zero.
+    return finish(info);
   };
 }
 

@@ -28,50 +28,69 @@ void bind_result(py::class_<Outcome<A>>& result);
 /// Issues each warning as a Python UserWarning.
 void issue_warnings(const std::vector<std::string>& warnings);
 
+/// "str 'x'", "float 2.5": a value as a TypeError shows it (as the package's
+/// messages for the other functions do).
+std::string given(const py::handle& value);
+
 /// One keyword argument's value set on field @p f of @p request: None leaves it unset;
 /// a string is read as the command line reads it; a number is in SI units (speeds in
-/// rad/s); a list sets a list field.
+/// rad/s); a list sets a list field. A value of the wrong Python type is a TypeError
+/// naming the function @p function and the keyword; a value the field refuses an
+/// Error.
 template <class S>
-void set_keyword(S& request, const spec::Field<S>& f, const py::handle& value) {
+void set_keyword(S& request, const spec::Field<S>& f, const py::handle& value, std::string_view function) {
   using spec::FieldKind;
   const std::string key(f.key);
-  const auto text_of = [&](const py::handle& v) -> std::string {
-    if (py::isinstance<py::str>(v)) return v.cast<std::string>();
-    if (py::isinstance<py::int_>(v) && !py::isinstance<py::bool_>(v)) return std::to_string(v.cast<long long>());
-    throw Error(fmt::format("{}: expected text or an integer, got {}", key, py::repr(v).cast<std::string>()));
-  };
   if (value.is_none()) return;
+  const bool is_bool = py::isinstance<py::bool_>(value);
+  const bool is_int = py::isinstance<py::int_>(value) && !is_bool;
+  const bool is_number = is_int || (py::isinstance<py::float_>(value) && !is_bool);
+  const bool is_text = py::isinstance<py::str>(value);
+  const auto wrong = [&](std::string_view expected) {
+    throw py::type_error(fmt::format("{}(): '{}' must be {} or None, got {}", function, key, expected, given(value)));
+  };
   switch (f.kind) {
     case FieldKind::flag:
-      if (!py::isinstance<py::bool_>(value))
-        throw Error(fmt::format("{}: expected True or False, got {}", key, py::repr(value).cast<std::string>()));
+      if (!is_bool) wrong("True or False");
       spec::set_flag(request, f, value.cast<bool>());
+      return;
+    case FieldKind::integer:
+      if (!is_int) wrong("an integer");
+      spec::set_text(request, f, std::to_string(value.cast<long long>()), key);
+      return;
+    case FieldKind::quantity:
+    case FieldKind::number:
+      if (is_text) break;
+      if (!is_number) wrong(f.kind == FieldKind::quantity ? "text with its unit or a number in SI units" : "a number");
+      spec::set_number(request, f, value.cast<double>(), key);
+      return;
+    case FieldKind::node:
+      if (!is_text && !is_int) wrong("a node name (str) or number (int)");
+      spec::set_text(request, f, is_int ? std::to_string(value.cast<long long>()) : value.cast<std::string>(), key);
       return;
     case FieldKind::node_list:
     case FieldKind::text_list:
     case FieldKind::integer_list:
-    case FieldKind::choice_list:
-      if (py::isinstance<py::str>(value) || !py::isinstance<py::iterable>(value)) {
-        spec::set_text(request, f, text_of(value), key);
-      } else {
-        for (const py::handle& v : py::iter(value)) spec::set_text(request, f, text_of(v), key);
-      }
+    case FieldKind::choice_list: {
+      const auto one = [&](const py::handle& v) {
+        if (py::isinstance<py::int_>(v) && !py::isinstance<py::bool_>(v))
+          spec::set_text(request, f, std::to_string(v.cast<long long>()), key);
+        else if (py::isinstance<py::str>(v))
+          spec::set_text(request, f, v.cast<std::string>(), key);
+        else
+          wrong("a name or number, or a list of them");
+      };
+      if (is_text || is_int || !py::isinstance<py::iterable>(value))
+        one(value);
+      else
+        for (const py::handle& v : py::iter(value)) one(v);
       return;
-    case FieldKind::quantity:
-    case FieldKind::number:
-      if (!py::isinstance<py::str>(value)) {
-        if (py::isinstance<py::bool_>(value) ||
-            (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value)))
-          throw Error(fmt::format("{}: expected a number or text with its unit, got {}", key,
-                                  py::repr(value).cast<std::string>()));
-        spec::set_number(request, f, value.cast<double>(), key);
-        return;
-      }
-      break;
+    }
     default:
       break;
   }
-  spec::set_text(request, f, text_of(value), key);
+  if (!is_text) wrong("a string");
+  spec::set_text(request, f, value.cast<std::string>(), key);
 }
 
 /// The request of analysis A from Python's keyword arguments; an unknown keyword is
@@ -87,12 +106,12 @@ typename A::Spec request_from_keywords(const py::kwargs& keywords) {
     if (f == nullptr) {
       std::vector<std::string> known;
       for (const spec::Field<S>& field : spec::fields_of<S>()) known.emplace_back(field.key);
-      std::string message = fmt::format("{}() got an unexpected keyword argument '{}'", A::name, key);
+      std::string message = fmt::format("{}(): has no argument '{}'", A::name, key);
       if (const auto match = detail::closest_match(key, known, 2))
         message += fmt::format("; did you mean '{}'?", *match);
       throw py::type_error(message + fmt::format(" (its options are {})", detail::join_list(known, "and")));
     }
-    set_keyword(request, *f, v);
+    set_keyword(request, *f, v, A::name);
   }
   return request;
 }
@@ -144,8 +163,12 @@ void bind_analysis(py::module_& m, py::dict& descriptions) {
           out = run_analysis<A>(file, request, name);
         }
         issue_warnings(out.source.warnings);
-        // One solve: a failure leaves nothing to keep.
-        if (!out.result.info.converged()) throw Error(out.result.info.message);
+        if (!out.result.info.converged()) {
+          // One solve without partial results: a failure leaves nothing to keep; else
+          // the results so far are returned, and the failure said as a warning.
+          if constexpr (!keeps_partial_results<A>()) throw Error(out.result.info.message);
+          issue_warnings({fmt::format("{}: {} (the results so far are kept)", A::name, out.result.info.message)});
+        }
         return out;
       },
       py::arg("model"), std::string(A::summary).c_str());

@@ -86,6 +86,12 @@ std::vector<std::string> text_arguments(const py::handle& value, const char* nam
   return out;
 }
 
+std::string given(const py::handle& value) {
+  std::string text = py::repr(value).cast<std::string>();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return fmt::format("{} {}", py::type::of(value).attr("__name__").cast<std::string>(), text);
+}
+
 void issue_warnings(const std::vector<std::string>& warnings) {
   if (warnings.empty()) return;
   const py::object warn = py::module_::import("warnings").attr("warn");

@@ -270,15 +270,6 @@ Index bearing_element(const Model& model, const std::string& name) {
                   names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
 }
 
-ModalSettings modal_settings(const ModalSpec& file, const ModalRequest& request) {
-  ModalSettings s;
-  s.speed = checked<ModalSpec>(request.speed, "speed", "--speed").value_or(file.speed.value_or(0.0));
-  s.options.solver = request.solver;
-  s.options.n_modes = checked_count<ModalSpec>(request.modes, "modes", "--modes").value_or(file.modes.value_or(0));
-  s.options.shapes = request.shapes;
-  return s;
-}
-
 CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellRequest& request) {
   const Real start = checked<CampbellSpec>(request.start, "start", "--start").value_or(file.start.value_or(0.0));
   const std::optional<Real> stop = request.stop ? checked<CampbellSpec>(request.stop, "stop", "--stop") : file.stop;

@@ -14,7 +14,7 @@
 
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/modal/campbell.hpp>
-#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -329,8 +329,10 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
     section(
         modes.emplace_back(), "result",
         [&] {
-          const ModalResult r = run_modal(model, s, mo, file.assembler);
-          return json::parse(modal_json(r, model, source, true));
+          // The modal analysis's own JSON, of oscillatory modes with their shapes.
+          const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
+          const Outcome<ModalAnalysis> o{unowned, {s, mo}, run_modal(model, s, mo, file.assembler), source};
+          return json::parse(ModalAnalysis::json(o));
         },
         options.stop);
   }

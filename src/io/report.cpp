@@ -38,14 +38,6 @@ std::string stability_text(const HarmonicResult& result, const std::string& unit
   return out;
 }
 
-// The supports' state at an analysis' one speed (its first point): one row per support.
-std::string operating_at_one_speed(const std::vector<OperatingSeries>& series, const Model& model) {
-  std::vector<OperatingRow> rows;
-  for (const OperatingSeries& s : series)
-    if (!s.values.empty()) rows.push_back({force_name(model, s.force), &s.quantities, &s.values.front()});
-  return operating_block("Bearing operating data at the equilibrium", "", rows);
-}
-
 // The supports' state over the points of an analysis: per support, rows at (at most)
 // 11 evenly spread points, as the analyses' other tables; @p label names point k.
 template <class Label>
@@ -73,29 +65,6 @@ std::string point_text(const HarmonicResult& r, Index k, const std::string& unit
 }
 
 }  // namespace
-
-std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source) {
-  std::string out = source_line("modal", source);
-  out += fmt::format("speed {}, {} modes, solver {}\n\n", speed_text(result.speed, source.speed_unit),
-                     result.modes.size(), to_string(result.info.method));
-  const std::string& unit = source.speed_unit;
-  out += fmt::format("{:>4}  {:>14}  {:>12}  {:>10}  {:<9} {:>11}  {:<10} {:<12} {}\n", "mode",
-                     fmt::format("frequency [{}]", frequency_unit(unit)), "damping [%]", "log. decr.", "whirl",
-                     "directivity", "type", "shape", "note");
-  int index = 0;
-  for (const Mode& m : result.modes) {
-    const char* note = m.rigid_body ? "rigid body" : (!m.oscillatory ? "non-oscillatory" : "");
-    out += fmt::format(
-        "{:>4}  {}  {}  {}  {:<9} {}  {:<10} {:<12} {}\n", ++index,
-        cell(frequency_value(m.frequency_hz, unit), unit == "rpm" ? ".2f" : ".4f", 14, unit == "rpm" ? 2 : 4),
-        cell(100.0 * m.damping_ratio, ".3f", 12, 3), cell(m.log_decrement, ".4f", 10, 4), to_string(m.whirl),
-        cell(m.directivity, ".3f", 11, 3), to_string(m.type),
-        m.shape_kind == ModeShape::none ? "-" : to_string(m.shape_kind), note);
-  }
-  out += operating_at_one_speed(result.operating, model);
-  if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
-  return out;
-}
 
 std::string campbell_report(const CampbellResult& result, const CampbellOptions& options, const Model& model,
                             const ResultSource& source) {

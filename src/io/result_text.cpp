@@ -153,4 +153,12 @@ std::string force_name(const Model& model, Index force) {
   return label.empty() ? fmt::format("force {}", force + 1) : printable(label);
 }
 
+// The supports' state at an analysis' one speed (its first point): one row per support.
+std::string operating_at_one_speed(const std::vector<OperatingSeries>& series, const Model& model) {
+  std::vector<OperatingRow> rows;
+  for (const OperatingSeries& s : series)
+    if (!s.values.empty()) rows.push_back({force_name(model, s.force), &s.quantities, &s.values.front()});
+  return operating_block("Bearing operating data at the equilibrium", "", rows);
+}
+
 }  // namespace feran::detail

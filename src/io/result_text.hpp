@@ -86,4 +86,7 @@ struct OperatingRow {
 /// values); only the columns some row has.
 std::string operating_block(const std::string& title, const std::string& first, const std::vector<OperatingRow>& rows);
 
+/// The supports' state at an analysis' one speed (its first point): one row per support.
+std::string operating_at_one_speed(const std::vector<OperatingSeries>& series, const Model& model);
+
 }  // namespace feran::detail

@@ -293,68 +293,6 @@ std::string response_csv(const HarmonicResult& result, const Model& model) {
   return out.str();
 }
 
-std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source, bool shapes) {
-  json j = header("modal", source);
-  j["speed_hz"] = rad_to_hz(result.speed);
-  j["speed_rpm"] = rad_to_hz(result.speed) * 60.0;
-  j["solver"] = solver_json(result.info);
-  j["solver"]["complex_form"] = result.complex_form;
-  if (result.frequency_dependent) j["solver"]["frequency_iterations"] = result.frequency_iterations;
-  if (shapes) {
-    json nodes = json::array();
-    for (const Node& n : model.nodes)
-      nodes.push_back({{"number", n.number}, {"name", n.name}, {"x_m", n.x}, {"rotating", n.rotating}});
-    j["nodes"] = nodes;
-  }
-  json modes = json::array();
-  int index = 0;
-  for (const Mode& m : result.modes) {
-    json jm = {{"index", ++index},
-               {"frequency_hz", json_number(m.frequency_hz)},
-               {"damping_ratio", json_number(m.damping_ratio)},
-               {"log_decrement", json_number(m.log_decrement)},
-               {"eigenvalue", {{"real", m.eigenvalue.real()}, {"imag", m.eigenvalue.imag()}}},
-               {"whirl", to_string(m.whirl)},
-               {"directivity", json_number(m.directivity)},
-               {"type", to_string(m.type)},
-               {"shape", to_string(m.shape_kind)},
-               {"bending", json_number(m.bending)},
-               {"rigid_body", m.rigid_body},
-               {"oscillatory", m.oscillatory}};
-    if (shapes && m.shape.size() > 0) {
-      json shape;
-      for (int d = 0; d < dofs_per_node; ++d) {
-        json re = json::array(), im = json::array();
-        for (Index node = 0; node < model.n_nodes(); ++node) {
-          const Complex c = m.shape(global_dof(node, static_cast<Dof>(d)));
-          re.push_back(c.real());
-          im.push_back(c.imag());
-        }
-        shape[dof_name(static_cast<Dof>(d))] = {{"re", re}, {"im", im}};
-      }
-      jm["shape"] = shape;
-    }
-    modes.push_back(jm);
-  }
-  j["modes"] = modes;
-  j["supports"] = detail::operating_json(result.operating, model, true);
-  return detail::json_text(j, 2);
-}
-
-std::string modal_csv(const ModalResult& result) {
-  std::ostringstream out;
-  out << "mode,frequency_hz,damping_ratio,log_decrement,eigenvalue_real,eigenvalue_imag,whirl,"
-         "directivity,type,rigid_body,shape,bending\n";
-  int index = 0;
-  for (const Mode& m : result.modes)
-    out << ++index << ',' << csv_number(m.frequency_hz) << ',' << csv_number(m.damping_ratio) << ','
-        << csv_number(m.log_decrement) << ',' << csv_number(m.eigenvalue.real()) << ','
-        << csv_number(m.eigenvalue.imag()) << ',' << to_string(m.whirl) << ',' << csv_number(m.directivity) << ','
-        << to_string(m.type) << ',' << (m.rigid_body ? "true" : "false") << ',' << to_string(m.shape_kind) << ','
-        << csv_number(m.bending) << '\n';
-  return out.str();
-}
-
 std::string campbell_json(const CampbellResult& result, const CampbellOptions& options, const Model& model,
                           const ResultSource& source) {
   json j = header("campbell", source);

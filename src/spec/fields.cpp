@@ -736,22 +736,6 @@ const FieldTable<StaticLoadSpec>& fields_of<StaticLoadSpec>() {
 }
 
 template <>
-const FieldTable<ModalSpec>& fields_of<ModalSpec>() {
-  using S = ModalSpec;
-  static const FieldTable<S> table = {
-      {.key = "speed",
-       .kind = K::quantity,
-       .member = &S::speed,
-       .doc = "rotor speed of the modal analysis",
-       .quantity = Q::speed,
-       .bound = non_negative,
-       .unit = "Hz"},
-      {.key = "modes", .kind = K::integer, .member = &S::modes, .doc = "number of modes", .bound = at_least(1)},
-  };
-  return table;
-}
-
-template <>
 const FieldTable<CampbellSpec>& fields_of<CampbellSpec>() {
   using S = CampbellSpec;
   static const FieldTable<S> table = {

@@ -20,8 +20,6 @@
 
 namespace feran {
 
-namespace {
-
 bool selected(Whirl w, WhirlSelection s) {
   switch (s) {
     case WhirlSelection::forward:
@@ -57,6 +55,8 @@ std::string ordinal(int n) {
 }
 
 std::string rpm(Real speed) { return approximate_quantity(speed, Quantity::speed, "rpm"); }
+
+namespace {
 
 void check_solver(const SolverInfo& info, std::string_view analysis) {
   if (!info.converged()) throw Error(fmt::format("the {} failed: {}", analysis, info.message));
@@ -267,21 +267,6 @@ Real stability_threshold(DesignAnalyses& a, const QuantitySpec&, std::string& cl
   return c.speeds.back();
 }
 
-// The n-th lateral mode of the quantity's whirl at its speed: one of its numbers.
-template <Real Mode::*member>
-Real mode_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  ModalRequest request;
-  request.speed = q.speed;
-  auto settings = modal_settings(a.spec().modal, request);
-  const auto result = run_modal(a.model(), settings.speed, settings.options);
-  check_solver(result.info, "modal analysis");
-  int seen = 0;
-  for (const auto& m : result.modes)
-    if (m.type == ModeType::lateral && m.oscillatory && selected(m.whirl, q.whirl) && ++seen == q.n) return m.*member;
-  throw Error(fmt::format("no {} {}lateral mode at {} (found {})", ordinal(q.n), whirl_word(q.whirl),
-                          rpm(settings.speed), seen));
-}
-
 Real peak_response(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
   const auto curve = probe_curve(a, q);
   return curve.amplitude.empty() ? 0.0 : *std::max_element(curve.amplitude.begin(), curve.amplitude.end());
@@ -471,21 +456,6 @@ const std::vector<QuantityRow>& own_rows() {
        .analysis = "campbell",
        .unit = Q::speed,
        .evaluate = stability_threshold},
-      {.name = "natural_frequency",
-       .doc = "the n-th natural frequency of a whirl at a speed",
-       .analysis = "modal",
-       .unit = Q::frequency,
-       .evaluate = mode_value<&Mode::frequency_hz>},
-      {.name = "damping_ratio",
-       .doc = "the damping ratio of that mode",
-       .analysis = "modal",
-       .evaluate = mode_value<&Mode::damping_ratio>,
-       .any_whirl = true},
-      {.name = "log_decrement",
-       .doc = "the logarithmic decrement of that mode",
-       .analysis = "modal",
-       .evaluate = mode_value<&Mode::log_decrement>,
-       .any_whirl = true},
       {.name = "peak_response",
        .doc = "largest orbit semi-axis at a probe over the unbalance response",
        .analysis = "response",

@@ -10,7 +10,7 @@
 #include <memory>
 #include <string_view>
 
-#include <feran/analyses/modal/modal.hpp>
+#include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/core/error.hpp>
@@ -63,13 +63,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (file.model.n_dofs() > max_analysed_dofs || finite_film_cells(file.spec) > max_analysed_film_cells) return 0;
   const ResultSource source{file.path, file.title};
   try {
-    ModalRequest request;
-    request.solver = EigenSolver::dense;
-    const ModalSettings settings = modal_settings(file.spec.modal, request);
-    const ModalResult modal = run_modal(file.model, settings.speed, settings.options, file.assembler);
-    (void)modal_json(modal, file.model, source, true);
-    (void)modal_csv(modal);
-    (void)modal_report(modal, file.model, source);
+    const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
+    ModalSpec request;
+    request.solver = "dense";
+    request.shapes = true;
+    const Outcome<ModalAnalysis> o = run_analysis<ModalAnalysis>(unowned, request, file_key_name<ModalAnalysis>());
+    (void)ModalAnalysis::json(o);
+    (void)ModalAnalysis::csv(o);
+    (void)ModalAnalysis::terminal(o);
   } catch (const Error&) {
   }
   try {

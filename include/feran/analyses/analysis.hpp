@@ -14,10 +14,16 @@
 ///     static const Spec& file_table(const ModelSpec&);  // its table in a model file
 ///     static Options settings(const Model&, const Spec& asked, const Spec& resolved,
 ///                             const OptionName&);   // checks across options
-///     static Result run(const Model&, const Options&, const StopToken&);
-///     static std::vector<std::string> warnings(const Model&, const Options&);
+///     static Result run(const Model&, const Options&, const RunContext&);
+///     static std::vector<std::string> warnings(const Model&, const Options&, const Result&);
 ///     static std::string json(const Outcome<A>&), csv(const Outcome<A>&),
 ///                        terminal(const Outcome<A>&);
+///     static const std::vector<QuantityRow>& quantities();  // optional: study quantities
+///     static constexpr bool keeps_partial_results;           // optional, default false
+///
+/// An analysis that keeps partial results (the modes that converged, a sweep's points
+/// so far) is written by every door even when its solve failed, which the door then
+/// reports; one that does not (a static solve) writes nothing then.
 ///
 /// Every option is a key of Spec's field table (spec/fields.hpp): the command line's
 /// flags, the Python keywords, their help texts and defaults and the documentation's
@@ -33,6 +39,7 @@
 #include <utility>
 #include <vector>
 
+#include <feran/assembly/assembler.hpp>
 #include <feran/core/stop.hpp>
 #include <feran/io/model_reader.hpp>
 #include <feran/io/result_source.hpp>
@@ -41,6 +48,13 @@
 #include <feran/spec/request.hpp>
 
 namespace feran {
+
+/// What a solve may use besides its model and options: the stop request of a door
+/// (Ctrl-C) and the model's assembly when a door already has it (ModelFile::assembler).
+struct RunContext {
+  StopToken stop = {};
+  std::shared_ptr<const Assembler> assembler = {};
+};
 
 /// How a door names an option in its messages: "--g" on the command line, "g" in
 /// Python, "static.g" in a model file.
@@ -60,19 +74,28 @@ struct Outcome {
 /// The face of an analysis (see the file's comment).
 template <class A>
 concept AnalysisFace = requires(const Model& model, const ModelSpec& spec, const typename A::Spec& s,
-                                const typename A::Options& o, const Outcome<A>& outcome, const OptionName& name,
-                                const StopToken& stop) {
+                                const typename A::Options& o, const typename A::Result& r, const Outcome<A>& outcome,
+                                const OptionName& name, const RunContext& context) {
   { A::name } -> std::convertible_to<std::string_view>;
   { A::summary } -> std::convertible_to<std::string_view>;
   { A::defaults() } -> std::same_as<const typename A::Spec&>;
   { A::file_table(spec) } -> std::same_as<const typename A::Spec&>;
   { A::settings(model, s, s, name) } -> std::same_as<typename A::Options>;
-  { A::run(model, o, stop) } -> std::same_as<typename A::Result>;
-  { A::warnings(model, o) } -> std::same_as<std::vector<std::string>>;
+  { A::run(model, o, context) } -> std::same_as<typename A::Result>;
+  { A::warnings(model, o, r) } -> std::same_as<std::vector<std::string>>;
   { A::json(outcome) } -> std::same_as<std::string>;
   { A::csv(outcome) } -> std::same_as<std::string>;
   { A::terminal(outcome) } -> std::same_as<std::string>;
 };
+
+/// Whether analysis A's doors write its results when its solve failed.
+template <class A>
+constexpr bool keeps_partial_results() {
+  if constexpr (requires { A::keeps_partial_results; })
+    return A::keeps_partial_results;
+  else
+    return false;
+}
 
 /// Every unset field of @p s taken from @p defaults.
 template <class S>
@@ -114,8 +137,8 @@ template <AnalysisFace A>
 Outcome<A> run_analysis(std::shared_ptr<const ModelFile> file, const typename A::Spec& request, const OptionName& name,
                         const StopToken& stop = {}) {
   Outcome<A> out{file, analysis_options<A>(*file, request, name), {}, {}};
-  out.source = ResultSource{file->path, file->title, A::warnings(file->model, out.options)};
-  out.result = A::run(file->model, out.options, stop);
+  out.result = A::run(file->model, out.options, RunContext{stop, file->assembler});
+  out.source = ResultSource{file->path, file->title, A::warnings(file->model, out.options, out.result)};
   return out;
 }
 

@@ -5,6 +5,7 @@
 /// a folder under analyses/ and one entry in this list.
 
 #include <feran/analyses/analysis.hpp>
+#include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
 
 namespace feran {
@@ -20,6 +21,6 @@ struct AnalysisList {
 
 /// The analyses, in the order the command line's help lists them after the ones not
 /// yet moved into their folders.
-using Analyses = AnalysisList<StaticAnalysis>;
+using Analyses = AnalysisList<ModalAnalysis, StaticAnalysis>;
 
 }  // namespace feran

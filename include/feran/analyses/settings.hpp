@@ -56,19 +56,7 @@ Index node_index(const Model& model, const NodeRef& ref);
 
 // ---------------------------------------------------------------------------------
 
-struct ModalRequest {
-  std::optional<Real> speed;  ///< [rad/s]; default [modal] speed, else 0
-  std::optional<int> modes;   ///< default [modal] modes, else all (dense) or the solver's
-  EigenSolver solver = EigenSolver::automatic;
-  bool shapes = false;
-};
-
-struct ModalSettings {
-  Real speed = 0.0;  ///< [rad/s]
-  ModalOptions options;
-};
-
-ModalSettings modal_settings(const ModalSpec& file, const ModalRequest& request);
+// The modal analysis: analyses/modal/analysis.hpp.
 
 // ---------------------------------------------------------------------------------
 

@@ -14,8 +14,6 @@
 
 namespace feran {
 
-/// Table of the modes at one speed.
-std::string modal_report(const ModalResult& result, const Model& model, const ResultSource& source);
 /// Summary of a Campbell diagram: frequencies at selected speeds, critical speeds and
 /// the stability threshold.
 std::string campbell_report(const CampbellResult& result, const CampbellOptions& options, const Model& model,

@@ -16,11 +16,6 @@
 
 namespace feran {
 
-/// JSON text of a modal result. With @p shapes each mode carries its shape.
-std::string modal_json(const ModalResult& result, const Model& model, const ResultSource& source, bool shapes);
-/// CSV text of a modal result: one row per mode (the supports' state is in the JSON).
-std::string modal_csv(const ModalResult& result);
-
 /// JSON text of a Campbell result (with the supports' operating state over the speeds;
 /// @p model is the one analysed).
 std::string campbell_json(const CampbellResult& result, const CampbellOptions& options, const Model& model,

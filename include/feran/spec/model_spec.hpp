@@ -222,6 +222,8 @@ struct StaticLoadSpec {
 struct ModalSpec {
   std::optional<Real> speed;  ///< [rad/s]
   std::optional<int> modes;
+  std::optional<std::string> solver;  ///< "auto", "dense" or "sparse"
+  std::optional<bool> shapes;         ///< the mode shapes in the JSON
   bool operator==(const ModalSpec&) const = default;
 };
 

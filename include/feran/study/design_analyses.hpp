@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <feran/analyses/analysis.hpp>
+#include <feran/analyses/modal/modal.hpp>
 #include <feran/core/error.hpp>
 #include <feran/study/quantity.hpp>
 
@@ -65,7 +66,7 @@ class DesignAnalyses {
     if (!s) {
       auto made = std::make_shared<Slot<A>>();
       made->options = analysis_options<A>(spec_, model_, {}, file_key_name<A>());
-      made->result = A::run(model_, made->options, stop_);
+      made->result = A::run(model_, made->options, RunContext{stop_, {}});
       if (!made->result.info.converged())
         throw Error(fmt::format("the {} analysis failed: {}", A::name, made->result.info.message));
       s = std::move(made);
@@ -80,5 +81,15 @@ class DesignAnalyses {
   struct Legacy;
   std::unique_ptr<Legacy> legacy_;
 };
+
+// What the rows' messages and selections share.
+/// "1st", "2nd", "3rd", "4th", …
+std::string ordinal(int n);
+/// "forward ", "backward " or "" (any), before a noun.
+std::string_view whirl_word(WhirlSelection s);
+/// Whether a mode that whirls @p w is one a quantity selecting @p s looks at.
+bool selected(Whirl w, WhirlSelection s);
+/// A speed as messages give it, in rpm.
+std::string rpm(Real speed);
 
 }  // namespace feran

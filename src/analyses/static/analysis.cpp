@@ -92,11 +92,12 @@ StaticOptions StaticAnalysis::settings(const Model&, const StaticSpec& asked, co
   return options;
 }
 
-StaticResult StaticAnalysis::run(const Model& model, const StaticOptions& options, const StopToken&) {
+StaticResult StaticAnalysis::run(const Model& model, const StaticOptions& options, const RunContext&) {
   return run_static(model, options);
 }
 
-std::vector<std::string> StaticAnalysis::warnings(const Model& model, const StaticOptions& options) {
+std::vector<std::string> StaticAnalysis::warnings(const Model& model, const StaticOptions& options,
+                                                  const StaticResult&) {
   return range_warnings(model, options.speed, options.speed);
 }
 

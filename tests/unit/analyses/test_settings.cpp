@@ -3,6 +3,7 @@
 // a response at one speed needs no last speed.
 
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/io/model_reader.hpp>
 
@@ -34,13 +35,24 @@ TEST(Settings, RequestThenFileThenBuiltIn) {
   EXPECT_EQ(c.orders, std::vector<int>{2});
   EXPECT_THROW((void)campbell_settings(CampbellSpec{}, CampbellRequest{}), Error);  // no stop
 
-  ModalSpec modal;
-  modal.speed = 12.0;
-  EXPECT_EQ(modal_settings(modal, {}).speed, 12.0);
-  ModalRequest at_rest;
+  ModelSpec spec;
+  spec.modal.speed = 12.0;
+  const auto modal = [&](const ModalSpec& asked) {
+    return analysis_options<ModalAnalysis>(spec, Model{}, asked, [](std::string_view k) { return std::string(k); });
+  };
+  EXPECT_EQ(modal({}).speed, 12.0);
+  ModalSpec at_rest;
   at_rest.speed = 0.0;
-  EXPECT_EQ(modal_settings(modal, at_rest).speed, 0.0);
-  EXPECT_EQ(modal_settings(ModalSpec{}, {}).speed, 0.0);
+  EXPECT_EQ(modal(at_rest).speed, 0.0);
+  spec.modal = {};
+  EXPECT_EQ(modal({}).speed, 0.0);
+  EXPECT_EQ(modal({}).options.n_modes, 0);  // all (dense) or the sparse solver's
+  EXPECT_FALSE(modal({}).options.shapes);
+  ModalSpec sparse;
+  sparse.solver = "sparse";
+  EXPECT_EQ(modal(sparse).options.solver, EigenSolver::sparse);
+  sparse.solver = "fast";  // checked by its field's choices
+  EXPECT_THROW((void)modal(sparse), Error);
 }
 
 TEST(Settings, ProbesDefaultToTheUnbalancedNodes) {

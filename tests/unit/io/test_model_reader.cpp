@@ -18,6 +18,7 @@
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/io/model_reader.hpp>
 
@@ -416,7 +417,7 @@ TEST_F(EverythingModel, ConstraintsAndUnbalances) {
 }
 
 TEST_F(EverythingModel, AnalysisDefaults) {
-  const ModalSettings modal = modal_settings(file_->spec.modal, {});
+  const ModalSettings modal = analysis_options<ModalAnalysis>(*file_, {}, file_key_name<ModalAnalysis>());
   EXPECT_DOUBLE_EQ(modal.speed, 30.0 * hz);
   EXPECT_EQ(modal.options.n_modes, 8);
   const CampbellOptions c = campbell_settings(file_->spec.campbell, {});

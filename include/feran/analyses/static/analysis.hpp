@@ -31,9 +31,10 @@ struct StaticAnalysis {
   /// Throws Error for g given with gravity "none".
   static StaticOptions settings(const Model& model, const StaticSpec& asked, const StaticSpec& resolved,
                                 const OptionName& name);
-  static StaticResult run(const Model& model, const StaticOptions& options, const StopToken& stop);
+  static StaticResult run(const Model& model, const StaticOptions& options, const RunContext& context);
   /// Tables evaluated beyond their range at the analysis's speed.
-  static std::vector<std::string> warnings(const Model& model, const StaticOptions& options);
+  static std::vector<std::string> warnings(const Model& model, const StaticOptions& options,
+                                           const StaticResult& result);
   /// The documented JSON (docs/output-format.md), the CSV (one row per shaft station:
   /// the displacements of its node, the section forces and the stresses) and the
   /// terminal report (deflections, spring and support forces, shaft stresses).

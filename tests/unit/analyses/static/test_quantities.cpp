@@ -28,18 +28,15 @@ QuantitySpec quantity(const std::string& kind) {
   return q;
 }
 
-Real lateral(const StaticResult& r, Index node) {
-  return std::hypot(r.q(6 * node + 1), r.q(6 * node + 2));
-}
+Real lateral(const StaticResult& r, Index node) { return std::hypot(r.q(6 * node + 1), r.q(6 * node + 2)); }
 
 TEST(StaticQuantities, EqualTheStaticResult) {
   // The centrifuge on its foot springs, under gravity along its [static] table's.
   const ModelFile file = read_model_file(FERAN_SOURCE_DIR "/examples/02_centrifuge/model.toml");
   const StaticResult r = run_static(file.model, static_options(file));
   ASSERT_TRUE(r.info.converged());
-  std::vector<QuantitySpec> qs{quantity("static_deflection"), quantity("static_deflection"),
-                               quantity("static_stress"), quantity("static_spring_force"),
-                               quantity("static_spring_force")};
+  std::vector<QuantitySpec> qs{quantity("static_deflection"), quantity("static_deflection"), quantity("static_stress"),
+                               quantity("static_spring_force"), quantity("static_spring_force")};
   qs[1].probe = NodeRef(std::string("rotor"));
   qs[4].spring = "bearing k12";
   const std::vector<Real> v = evaluate_quantities(file.spec, file.model, qs);
