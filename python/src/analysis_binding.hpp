@@ -136,6 +136,18 @@ void bind_analysis(py::module_& m, py::dict& descriptions) {
   py::class_<Result> result(m, (class_name + "Result").c_str(), std::string(A::summary).c_str());
   bind_result<A>(result);
   result.def_property_readonly("warnings", [](const Result& r) { return r.source.warnings; })
+      .def_property_readonly("nodes",
+                             [](const Result& r) {
+                               return string_list(r.model().nodes.size(), [&](std::size_t i) {
+                                 return node_name(r.model(), static_cast<Index>(i));
+                               });
+                             })
+      .def_property_readonly(
+          "x",
+          [](const Result& r) {
+            return array_1d(r.model().nodes.size(), [&](std::size_t i) { return r.model().nodes[i].x; });
+          },
+          "axial position of each node [m]")
       .def(
           "to_json", [](const Result& r) { return A::json(r); },
           fmt::format("The JSON text that feran {} --json writes (docs/output-format.md)", A::name).c_str())

@@ -53,10 +53,7 @@ const FieldTable<ModalSpec>& fields_of<ModalSpec>() {
               "the one a cost model expects to be faster), `\"dense\"` (LAPACK QR) or `\"sparse\"` (the lowest "
               "modes by shift-invert Arnoldi)",
        .choices = solver_names},
-      {.key = "shapes",
-       .kind = K::flag,
-       .member = &S::shapes,
-       .doc = "whether the JSON holds the mode shapes"},
+      {.key = "shapes", .kind = K::flag, .member = &S::shapes, .doc = "whether the JSON holds the mode shapes"},
   };
   return table;
 }
@@ -196,8 +193,8 @@ template <Real Mode::*member>
 Real mode_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
   ModalSpec request;
   request.speed = q.speed;
-  const ModalSettings settings = analysis_options<ModalAnalysis>(a.spec(), a.model(), request,
-                                                                 file_key_name<ModalAnalysis>());
+  const ModalSettings settings =
+      analysis_options<ModalAnalysis>(a.spec(), a.model(), request, file_key_name<ModalAnalysis>());
   const ModalResult result = ModalAnalysis::run(a.model(), settings, RunContext{a.stop(), {}});
   if (!result.info.converged()) throw Error(fmt::format("the modal analysis failed: {}", result.info.message));
   int seen = 0;

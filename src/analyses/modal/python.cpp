@@ -33,8 +33,7 @@ void bind_result<ModalAnalysis>(py::class_<Outcome<ModalAnalysis>>& result) {
           "speed", [](const R& r) { return r.result.speed; }, "rotor speed [rad/s]")
       .def_property_readonly("speed_hz", [](const R& r) { return rad_to_hz(r.result.speed); })
       .def_property_readonly(
-          "complete", [](const R& r) { return r.result.info.converged(); },
-          "whether every mode asked for was computed")
+          "complete", [](const R& r) { return r.result.info.converged(); }, "whether every mode asked for was computed")
       .def_property_readonly("message", [](const R& r) { return r.result.info.message; })
       .def_property_readonly(
           "bearings", [](const R& r) { return bearing_labels(r.result.operating, r.model()); },
@@ -47,18 +46,14 @@ void bind_result<ModalAnalysis>(py::class_<Outcome<ModalAnalysis>>& result) {
           "frequency_iterations", [](const R& r) { return r.result.frequency_iterations; },
           "the most eigen solves one mode needed to settle on its own frequency (0 unless a coefficient "
           "depends on the frequency of the motion)")
-      .def_property_readonly(
-          "frequency_hz",
-          [](const R& r) { return per_mode(r, [](const Mode& x) { return x.frequency_hz; }); })
-      .def_property_readonly(
-          "damping_ratio",
-          [](const R& r) { return per_mode(r, [](const Mode& x) { return x.damping_ratio; }); })
-      .def_property_readonly(
-          "log_decrement",
-          [](const R& r) { return per_mode(r, [](const Mode& x) { return x.log_decrement; }); })
-      .def_property_readonly(
-          "directivity",
-          [](const R& r) { return per_mode(r, [](const Mode& x) { return x.directivity; }); })
+      .def_property_readonly("frequency_hz",
+                             [](const R& r) { return per_mode(r, [](const Mode& x) { return x.frequency_hz; }); })
+      .def_property_readonly("damping_ratio",
+                             [](const R& r) { return per_mode(r, [](const Mode& x) { return x.damping_ratio; }); })
+      .def_property_readonly("log_decrement",
+                             [](const R& r) { return per_mode(r, [](const Mode& x) { return x.log_decrement; }); })
+      .def_property_readonly("directivity",
+                             [](const R& r) { return per_mode(r, [](const Mode& x) { return x.directivity; }); })
       .def_property_readonly(
           "eigenvalues",
           [](const R& r) {
@@ -109,18 +104,6 @@ void bind_result<ModalAnalysis>(py::class_<Outcome<ModalAnalysis>>& result) {
           },
           "with shapes=True: complex u, v, w, rx, ry, rz of every node per mode, shape\n"
           "(modes, nodes, 6), scaled so that the largest component is 1")
-      .def_property_readonly("nodes",
-                             [](const R& r) {
-                               return string_list(r.model().nodes.size(), [&](std::size_t i) {
-                                 return node_name(r.model(), static_cast<Index>(i));
-                               });
-                             })
-      .def_property_readonly(
-          "x",
-          [](const R& r) {
-            return array_1d(r.model().nodes.size(), [&](std::size_t i) { return r.model().nodes[i].x; });
-          },
-          "axial position of each node [m]")
       .def("__len__", [](const R& r) { return r.result.modes.size(); });
 }
 

@@ -13,18 +13,6 @@ template <>
 void bind_result<StaticAnalysis>(py::class_<Outcome<StaticAnalysis>>& result) {
   using R = Outcome<StaticAnalysis>;
   result
-      .def_property_readonly("nodes",
-                             [](const R& r) {
-                               return string_list(r.model().nodes.size(), [&](std::size_t i) {
-                                 return node_name(r.model(), static_cast<Index>(i));
-                               });
-                             })
-      .def_property_readonly(
-          "x",
-          [](const R& r) {
-            return array_1d(r.model().nodes.size(), [&](std::size_t i) { return r.model().nodes[i].x; });
-          },
-          "axial position of each node [m]")
       .def_property_readonly(
           "displacement",
           [](const R& r) {
