@@ -36,6 +36,7 @@ Runner add_analysis_command(CLI::App& app) {
   struct Args {
     ModelArgs model;
     OutputOptions out;
+    int threads = 0;  // parallel analyses: all cores
     // What was given, per field: (field, text); flags as "true" or "false".
     std::vector<std::pair<const spec::Field<Spec>*, std::string>> given;
   };
@@ -60,13 +61,26 @@ Runner add_analysis_command(CLI::App& app) {
                     {}));
       continue;
     }
-    CLI::Option* option = cmd->add_option_function<std::string>(
-        names, [args, field](const std::string& text) { args->given.emplace_back(field, text); },
-        flag_help(f.doc, default_text, f.choices));
     const bool list = f.kind == spec::FieldKind::node_list || f.kind == spec::FieldKind::text_list ||
                       f.kind == spec::FieldKind::integer_list || f.kind == spec::FieldKind::choice_list;
-    if (list) repeatable(option);
+    if (list) {
+      // Each occurrence adds to the list ('--probe a --probe b'); counts also as
+      // '--orders 1,2'.
+      CLI::Option* option = cmd->add_option_function<std::vector<std::string>>(
+          names,
+          [args, field](const std::vector<std::string>& texts) {
+            for (const std::string& text : texts) args->given.emplace_back(field, text);
+          },
+          flag_help(f.doc, default_text, f.choices));
+      repeatable(option);
+      if (f.kind == spec::FieldKind::integer_list) option->delimiter(',');
+      continue;
+    }
+    cmd->add_option_function<std::string>(
+        names, [args, field](const std::string& text) { args->given.emplace_back(field, text); },
+        flag_help(f.doc, default_text, f.choices));
   }
+  if constexpr (parallel_analysis<A>()) add_threads_option(*cmd, args->threads);
   add_output_options(*cmd, args->out);
 
   return [args]() {

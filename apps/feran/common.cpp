@@ -89,13 +89,7 @@ ModelFile read_model(const ModelArgs& model) {
 }
 
 std::optional<std::pair<double, double>> frequency_span_hz(const std::vector<double>& frequencies_hz) {
-  std::optional<std::pair<double, double>> span;
-  for (const double f : frequencies_hz) {
-    if (!std::isfinite(f)) continue;
-    const double w = 2.0 * pi * std::abs(f);
-    span = span ? std::pair{std::min(span->first, w), std::max(span->second, w)} : std::pair{w, w};
-  }
-  return span;
+  return frequency_span(frequencies_hz);
 }
 
 std::vector<std::string> speed_range_warnings(const Model& model, double low, double high,

@@ -22,7 +22,7 @@
 // (spec/), the builder, and the analysis settings that resolve a request against
 // the built-in defaults (analyses/settings.hpp, also used by the command line).
 #include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/spec/build_model.hpp>
 #include <feran/spec/parameters.hpp>
@@ -97,16 +97,18 @@ ModelSpec jeffcott_rotor() {
 
 // @sect3{A Campbell diagram and its first forward critical speed}
 //
-// The request names what differs from the defaults; campbell_settings() fills in
-// the rest (the spec's [campbell] table, then the built-in defaults) exactly as it
-// does for `feran campbell`. Critical speeds carry the whirl of their mode, so the
-// first forward one is found without guessing from labels.
-Real first_forward_critical_speed(const Model& model) {
-  CampbellRequest request;
+// The request names what differs from the defaults; analysis_options() fills in
+// the rest (the spec's [campbell] table, then the built-in defaults) and checks it
+// exactly as it does for `feran campbell`. Critical speeds carry the whirl of their
+// mode, so the first forward one is found without guessing from labels.
+Real first_forward_critical_speed(const ModelSpec& spec, const Model& model) {
+  CampbellSpec request;
   request.stop = 2.0 * pi * 100.0;  // 0 to 100 Hz
   request.points = 51;
   request.modes = 4;
-  const CampbellResult campbell = run_campbell(model, campbell_settings(CampbellSpec{}, request));
+  const CampbellOptions options =
+      analysis_options<CampbellAnalysis>(spec, model, request, file_key_name<CampbellAnalysis>());
+  const CampbellResult campbell = run_campbell(model, options);
   for (const CriticalSpeed& c : campbell.critical_speeds)
     if (c.whirl == Whirl::forward && c.order == 1) return c.speed;
   return std::nan("");
@@ -124,7 +126,7 @@ int main() {
     std::printf("%s: %ld nodes, %zu elements, %zu forces\n", spec.title.c_str(), static_cast<long>(model.n_nodes()),
                 model.elements.size(), model.forces.size());
 
-    const Real before = first_forward_critical_speed(model);
+    const Real before = first_forward_critical_speed(spec, model);
     std::printf("first forward critical speed: %.4f Hz\n", rad_to_hz(before));
 
     // @sect4{A design change by parameter path}
@@ -135,7 +137,7 @@ int main() {
     set_parameter(spec, "shafts[shaft].sections[0].outer_diameter", "14 mm");
     set_parameter(spec, "shafts[shaft].sections[1].outer_diameter", "14 mm");
     model = build_model(spec);
-    const Real after = first_forward_critical_speed(model);
+    const Real after = first_forward_critical_speed(spec, model);
     std::printf("with 14 mm: first forward critical speed: %.4f Hz (ratio %.6f, (14/12)^2 = %.6f)\n", rad_to_hz(after),
                 after / before, (14.0 * 14.0) / (12.0 * 12.0));
 

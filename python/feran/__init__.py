@@ -22,8 +22,11 @@ from ._arguments import explained as _explained
 from ._feran import _analysis_options
 
 # Every compiled function and Model method names a wrong argument in its TypeError.
-api684, campbell, read_model, report, response, runup = (
-    _explained(f) for f in (api684, campbell, read_model, report, response, runup))
+api684, read_model, report, response, runup = (
+    _explained(f) for f in (api684, read_model, report, response, runup))
+
+
+_MISSING = object()
 
 
 def _analysis(compiled, options):
@@ -33,7 +36,9 @@ def _analysis(compiled, options):
     name = compiled.__name__
     summary = [line for line in (compiled.__doc__ or "").splitlines()[1:] if line.strip()]
 
-    def function(model, *positional, **keywords):
+    def function(model=_MISSING, *positional, **keywords):
+        if model is _MISSING:
+            raise TypeError(f"{name}(): needs the argument 'model' (a feran.Model: feran.read_model(path) reads one)")
         if positional:
             raise TypeError(f"{name}(): takes 1 positional argument (model); the others are given by name")
         if not isinstance(model, Model):
@@ -58,6 +63,7 @@ def _analysis(compiled, options):
 
 # The analyses made from their faces (analyses/list.hpp in the library).
 modal = _analysis(modal, _analysis_options["modal"])
+campbell = _analysis(campbell, _analysis_options["campbell"])
 static = _analysis(static, _analysis_options["static"])
 for _method in ("__init__", "__getitem__", "__setitem__", "geometry", "_add"):
     setattr(Model, _method, _explained(getattr(Model, _method), "Model"))

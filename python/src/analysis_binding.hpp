@@ -6,6 +6,7 @@
 // binds (analyses/<name>/python.cpp, bind_result<A>) and whose to_json, to_csv,
 // report and warnings every result shares.
 
+#include <atomic>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -68,9 +69,19 @@ void set_keyword(S& request, const spec::Field<S>& f, const py::handle& value, s
       if (!is_text && !is_int) wrong("a node name (str) or number (int)");
       spec::set_text(request, f, is_int ? std::to_string(value.cast<long long>()) : value.cast<std::string>(), key);
       return;
+    case FieldKind::integer_list:
+      if (is_text || is_bool || (!is_int && !py::isinstance<py::iterable>(value))) wrong("a list of integers");
+      if (is_int) {
+        spec::set_text(request, f, std::to_string(value.cast<long long>()), key);
+      } else {
+        for (const py::handle& v : py::iter(value)) {
+          if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v)) wrong("a list of integers");
+          spec::set_text(request, f, std::to_string(v.cast<long long>()), key);
+        }
+      }
+      return;
     case FieldKind::node_list:
     case FieldKind::text_list:
-    case FieldKind::integer_list:
     case FieldKind::choice_list: {
       const auto one = [&](const py::handle& v) {
         if (py::isinstance<py::int_>(v) && !py::isinstance<py::bool_>(v))
@@ -102,10 +113,12 @@ typename A::Spec request_from_keywords(const py::kwargs& keywords) {
   for (const auto& item : keywords) {
     const py::handle k = item.first, v = item.second;
     const std::string key = py::str(k);
+    if (parallel_analysis<A>() && key == "threads") continue;  // the door's, not the analysis's
     const spec::Field<S>* f = spec::find_field<S>(key);
     if (f == nullptr) {
       std::vector<std::string> known;
       for (const spec::Field<S>& field : spec::fields_of<S>()) known.emplace_back(field.key);
+      if (parallel_analysis<A>()) known.emplace_back("threads");
       std::string message = fmt::format("{}(): has no argument '{}'", A::name, key);
       if (const auto match = detail::closest_match(key, known, 2))
         message += fmt::format("; did you mean '{}'?", *match);
@@ -116,14 +129,23 @@ typename A::Spec request_from_keywords(const py::kwargs& keywords) {
   return request;
 }
 
+/// threads=: 0 (all cores, the default, as the command line) or a count.
+int threads_keyword(const py::kwargs& keywords, std::string_view function);
+
 /// A description of analysis A's options for the package, which gives feran.<name>
 /// its signature and help: per key (key, kind, description, default as text).
 template <AnalysisFace A>
 py::list option_descriptions() {
   py::list out;
   for (const spec::Field<typename A::Spec>& f : spec::fields_of<typename A::Spec>())
-    out.append(py::make_tuple(std::string(f.key), static_cast<int>(f.kind), std::string(f.doc),
-                              spec::value_text(A::defaults(), f)));
+    out.append(
+        py::make_tuple(std::string(f.key), static_cast<int>(f.kind), std::string(f.doc),
+                       f.default_text.empty() ? spec::value_text(A::defaults(), f) : std::string(f.default_text)));
+  if (parallel_analysis<A>())
+    out.append(py::make_tuple(std::string("threads"), -1,
+                              std::string("threads for the points: 0 all cores (as the command line), or 1 to run "
+                                          "Python threads side by side instead"),
+                              std::string("0")));
   return out;
 }
 
@@ -169,10 +191,21 @@ void bind_analysis(py::module_& m, py::dict& descriptions) {
           throw Error(fmt::format("{}: {}", A::name, e.what()));
         }
         const OptionName name = [](std::string_view key) { return std::string(key); };
+        const int threads = parallel_analysis<A>() ? threads_keyword(keywords, A::name) : 1;
         Result out;
-        {
+        if constexpr (keeps_partial_results<A>()) {
+          // Ctrl-C stops the solve at its next clean point; the results so far are
+          // attached to the feran.Interrupted raised.
+          std::atomic<bool> flag{false};
+          bool interrupted = false;
+          run_watched([&] { out = run_analysis<A>(file, request, name, StopToken(flag), threads); }, flag, interrupted);
+          if (interrupted) {
+            issue_warnings(out.source.warnings);
+            raise_interrupted(py::cast(std::move(out)));
+          }
+        } else {
           py::gil_scoped_release release;
-          out = run_analysis<A>(file, request, name);
+          out = run_analysis<A>(file, request, name, {}, threads);
         }
         issue_warnings(out.source.warnings);
         if (!out.result.info.converged()) {

@@ -86,6 +86,15 @@ std::vector<std::string> text_arguments(const py::handle& value, const char* nam
   return out;
 }
 
+int threads_keyword(const py::kwargs& keywords, std::string_view function) {
+  if (!keywords.contains("threads")) return 0;
+  const py::handle v = keywords["threads"];
+  if (v.is_none()) return 0;
+  if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v))
+    throw py::type_error(fmt::format("{}(): 'threads' must be an integer, got {}", function, given(v)));
+  return v.cast<int>();
+}
+
 std::string given(const py::handle& value) {
   std::string text = py::repr(value).cast<std::string>();
   if (text.size() > 40) text = text.substr(0, 37) + "...";

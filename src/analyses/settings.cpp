@@ -208,6 +208,16 @@ Api684Options api684_settings(const Model& model, const ModelSpec& file, const A
   return o;
 }
 
+std::optional<std::pair<Real, Real>> frequency_span(std::span<const Real> frequencies_hz) {
+  std::optional<std::pair<Real, Real>> span;
+  for (const Real f : frequencies_hz) {
+    if (!std::isfinite(f)) continue;
+    const Real w = 2.0 * pi * std::abs(f);
+    span = span ? std::pair{std::min(span->first, w), std::max(span->second, w)} : std::pair{w, w};
+  }
+  return span;
+}
+
 std::vector<std::string> range_warnings(const Model& model, Real low, Real high,
                                         std::optional<std::pair<Real, Real>> frequencies) {
   std::vector<std::string> out;
@@ -268,27 +278,6 @@ Index bearing_element(const Model& model, const std::string& name) {
   throw Error(
       fmt::format("no spring-damper, journal or rolling bearing is named '{}'{}", name,
                   names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
-}
-
-CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellRequest& request) {
-  const Real start = checked<CampbellSpec>(request.start, "start", "--start").value_or(file.start.value_or(0.0));
-  const std::optional<Real> stop = request.stop ? checked<CampbellSpec>(request.stop, "stop", "--stop") : file.stop;
-  if (!stop)
-    throw Error(
-        "campbell: give the last speed with --stop (e.g. --stop 80Hz) or in the model's "
-        "[campbell] table");
-  if (!(*stop > start)) throw Error("campbell: the last speed must be above the first");
-  const int points = checked_count<CampbellSpec>(request.points, "points", "--points")
-                         .value_or(file.points.value_or(defaults::campbell_points));
-  CampbellOptions options;
-  options.speeds = linspace(start, *stop, points);
-  options.n_modes = checked_count<CampbellSpec>(request.modes, "modes", "--modes")
-                        .value_or(file.modes.value_or(defaults::campbell_modes));
-  for (int k : request.orders) checked_count<CampbellSpec>(k, "orders", "--orders");
-  options.orders = !request.orders.empty() ? request.orders : !file.orders.empty() ? file.orders : std::vector<int>{1};
-  options.modal.solver = request.solver;
-  options.n_threads = request.n_threads;
-  return options;
 }
 
 StationOutput station_output(std::string_view name) {

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <feran/analyses/api684/api684_analysis.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/analysis.hpp>
@@ -298,13 +298,13 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
   data["model"] = model_summary(file, high.value_or(0.0));
 
   // Campbell diagram and damping.
-  CampbellRequest campbell = options.campbell;
-  campbell.n_threads = options.n_threads;
+  const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
+  CampbellSpec campbell = options.campbell;
   if (!campbell.stop && !spec.campbell.stop && high) campbell.stop = 1.5 * *high;
-  CampbellOptions co = campbell_settings(spec.campbell, campbell);
-  co.stop = options.stop;
-  const CampbellResult cr = run_campbell(model, co, file.assembler);
-  data["campbell"] = json::parse(campbell_json(cr, co, model, source));
+  const Outcome<CampbellAnalysis> campbell_outcome = run_analysis<CampbellAnalysis>(
+      unowned, campbell, file_key_name<CampbellAnalysis>(), options.stop, options.n_threads);
+  const CampbellOptions& co = campbell_outcome.options;
+  data["campbell"] = json::parse(CampbellAnalysis::json(campbell_outcome));
 
   // Mode shapes at the chosen speeds.
   std::vector<Real> speeds = options.mode_speeds;
@@ -330,7 +330,6 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
         modes.emplace_back(), "result",
         [&] {
           // The modal analysis's own JSON, of oscillatory modes with their shapes.
-          const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
           const Outcome<ModalAnalysis> o{unowned, {s, mo}, run_modal(model, s, mo, file.assembler), source};
           return json::parse(ModalAnalysis::json(o));
         },
@@ -401,7 +400,6 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
           // first speed above 0 the mode shapes use).
           StaticSpec request;
           if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
-          const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
           return json::parse(StaticAnalysis::json(
               run_analysis<StaticAnalysis>(unowned, request, file_key_name<StaticAnalysis>(), options.stop)));
         },

@@ -38,26 +38,6 @@ std::string stability_text(const HarmonicResult& result, const std::string& unit
   return out;
 }
 
-// The supports' state over the points of an analysis: per support, rows at (at most)
-// 11 evenly spread points, as the analyses' other tables; @p label names point k.
-template <class Label>
-std::string operating_tables(const std::vector<OperatingSeries>& series, const Model& model, const std::string& what,
-                             const std::string& first, Label label) {
-  std::string out;
-  for (const OperatingSeries& s : series) {
-    const std::size_t n = s.values.size();
-    if (n == 0 || s.quantities.empty()) continue;
-    const std::size_t count = std::min<std::size_t>(n, 11);
-    std::vector<OperatingRow> rows;
-    for (std::size_t r = 0; r < count; ++r) {
-      const std::size_t k = count == 1 ? 0 : r * (n - 1) / (count - 1);
-      rows.push_back({label(k), &s.quantities, &s.values[k]});
-    }
-    out += operating_block(fmt::format("Operating data of {} {}", force_name(model, s.force), what), first, rows);
-  }
-  return out;
-}
-
 std::string point_text(const HarmonicResult& r, Index k, const std::string& unit) {
   const auto i = static_cast<std::size_t>(k);
   if (r.frequency_sweep) return frequency_text(rad_to_hz(r.frequencies[i]), unit) + " excitation";
@@ -65,79 +45,6 @@ std::string point_text(const HarmonicResult& r, Index k, const std::string& unit
 }
 
 }  // namespace
-
-std::string campbell_report(const CampbellResult& result, const CampbellOptions& options, const Model& model,
-                            const ResultSource& source) {
-  std::string out = source_line("campbell", source);
-  const std::size_t n = result.speeds.size();
-  if (n == 0) return out + "no speed could be solved\n";
-  out += fmt::format("{} speeds from {} to {}, {} modes tracked, solver {}, {} eigen solves\n\n", n,
-                     speed_text(result.speeds.front(), source.speed_unit),
-                     speed_text(result.speeds.back(), source.speed_unit), result.modes.size(),
-                     to_string(result.info.method), result.n_solves);
-
-  // Frequencies at (at most) 11 evenly spread speeds of the grid.
-  const std::size_t rows = std::min<std::size_t>(n, 11);
-  auto row_index = [&](std::size_t r) { return rows == 1 ? 0 : r * (n - 1) / (rows - 1); };
-  auto table = [&](const char* title, auto value, const char* spec) {
-    out += fmt::format("{}\n{:>11}", title, speed_header(source.speed_unit));
-    // Each column as wide as its label ("backward cylindrical 1"), at least 12.
-    const auto width = [](const TrackedMode& m) {
-      return std::max<int>(12, static_cast<int>(printable(m.label).size()));
-    };
-    for (const TrackedMode& m : result.modes) out += fmt::format(" {:>{}}", printable(m.label), width(m));
-    out += '\n';
-    for (std::size_t r = 0; r < rows; ++r) {
-      const std::size_t i = row_index(r);
-      out += source.speed_unit == "rpm" ? cell(speed_value(result.speeds[i], "rpm"), ".1f", 11, 1)
-                                        : cell(rad_to_hz(result.speeds[i]), ".2f", 11, 2);
-      for (const TrackedMode& m : result.modes) {
-        out += ' ';
-        out += cell(value(m, i), spec, width(m), 3);
-      }
-      out += '\n';
-    }
-    out += '\n';
-  };
-  const std::string& unit = source.speed_unit;
-  table(
-      fmt::format("Natural frequencies [{}]", frequency_unit(unit)).c_str(),
-      [&](const TrackedMode& m, std::size_t i) { return frequency_value(m.frequency_hz[i], unit); },
-      unit == "rpm" ? ".1f" : ".3f");
-  table(
-      "Damping ratios [%]", [](const TrackedMode& m, std::size_t i) { return 100.0 * m.damping_ratio[i]; }, ".3f");
-
-  std::vector<std::string> orders;
-  for (int k : options.orders) orders.push_back(std::to_string(k));
-  out += fmt::format("Critical speeds (frequency = k x speed, k = {}):\n", fmt::join(orders, ", "));
-  if (result.critical_speeds.empty()) out += "  none in the speed range\n";
-  for (const CriticalSpeed& c : result.critical_speeds)
-    out += fmt::format("  {:<24} k = {}  at {}\n", result.modes[static_cast<std::size_t>(c.mode)].label, c.order,
-                       speed_text(c.speed, source.speed_unit));
-  out += "\nStability threshold: ";
-  if (!result.stability_threshold) {
-    out += fmt::format("none up to {} (every damping ratio stays >= 0)\n",
-                       speed_text(result.speeds.back(), source.speed_unit));
-  } else {
-    const StabilityThreshold& t = *result.stability_threshold;
-    const std::string label = threshold_label(result, t);
-    if (t.unstable_at_start)
-      out +=
-          fmt::format("{} is already unstable at the first speed, {}\n", label, speed_text(t.speed, source.speed_unit));
-    else if (t.divergence)
-      out += fmt::format(
-          "{}: a real eigenvalue turns positive (divergence: the stiffness loses its positivity, "
-          "a negative support stiffness or an axial load beyond buckling)\n",
-          speed_text(t.speed, source.speed_unit));
-    else
-      out += fmt::format("{}: {} becomes unstable (damping ratio < 0) at {} natural frequency\n",
-                         speed_text(t.speed, source.speed_unit), label, frequency_text(t.frequency_hz, unit));
-  }
-  out += operating_tables(result.operating, model, "at the equilibrium", speed_header(source.speed_unit),
-                          [&](std::size_t k) { return speed_number(result.speeds[k], source.speed_unit); });
-  if (!result.info.converged()) out += fmt::format("\nwarning: {}\n", result.info.message);
-  return out;
-}
 
 std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
                             const ResultSource& source) {

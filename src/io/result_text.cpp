@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/text.hpp>
 
 namespace feran::detail {

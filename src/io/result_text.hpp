@@ -3,10 +3,12 @@
 // node and station keys; the terminal reports' speeds, cells, names and the table of
 // the supports' operating state. Defined in result_text.cpp.
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <feran/analyses/common/shaft_sections.hpp>
@@ -88,5 +90,25 @@ std::string operating_block(const std::string& title, const std::string& first, 
 
 /// The supports' state at an analysis' one speed (its first point): one row per support.
 std::string operating_at_one_speed(const std::vector<OperatingSeries>& series, const Model& model);
+
+// The supports' state over the points of an analysis: per support, rows at (at most)
+// 11 evenly spread points, as the analyses' other tables; @p label names point k.
+template <class Label>
+std::string operating_tables(const std::vector<OperatingSeries>& series, const Model& model, const std::string& what,
+                             const std::string& first, Label label) {
+  std::string out;
+  for (const OperatingSeries& s : series) {
+    const std::size_t n = s.values.size();
+    if (n == 0 || s.quantities.empty()) continue;
+    const std::size_t count = std::min<std::size_t>(n, 11);
+    std::vector<OperatingRow> rows;
+    for (std::size_t r = 0; r < count; ++r) {
+      const std::size_t k = count == 1 ? 0 : r * (n - 1) / (count - 1);
+      rows.push_back({label(k), &s.quantities, &s.values[k]});
+    }
+    out += operating_block(fmt::format("Operating data of {} {}", force_name(model, s.force), what), first, rows);
+  }
+  return out;
+}
 
 }  // namespace feran::detail

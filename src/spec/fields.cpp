@@ -736,43 +736,6 @@ const FieldTable<StaticLoadSpec>& fields_of<StaticLoadSpec>() {
 }
 
 template <>
-const FieldTable<CampbellSpec>& fields_of<CampbellSpec>() {
-  using S = CampbellSpec;
-  static const FieldTable<S> table = {
-      {.key = "start",
-       .kind = K::quantity,
-       .member = &S::start,
-       .doc = "first speed",
-       .quantity = Q::speed,
-       .bound = non_negative,
-       .unit = "Hz"},
-      {.key = "stop",
-       .kind = K::quantity,
-       .member = &S::stop,
-       .doc = "last speed; > `start` when both are given",
-       .quantity = Q::speed,
-       .bound = non_negative,
-       .unit = "Hz"},
-      {.key = "points",
-       .kind = K::integer,
-       .member = &S::points,
-       .doc = "number of speeds",
-       .bound = at_least(2, max_sweep_points)},
-      {.key = "modes",
-       .kind = K::integer,
-       .member = &S::modes,
-       .doc = "number of modes to track",
-       .bound = at_least(1)},
-      {.key = "orders",
-       .kind = K::integer_list,
-       .member = &S::orders,
-       .doc = "each ≥ 1; excitation orders k of the lines f = k·Ω, kept as given",
-       .bound = at_least(1)},
-  };
-  return table;
-}
-
-template <>
 const FieldTable<ResponseSpec>& fields_of<ResponseSpec>() {
   using S = ResponseSpec;
   static const FieldTable<S> table = {

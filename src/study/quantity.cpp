@@ -83,18 +83,6 @@ struct DesignAnalyses::Legacy {
     }
   }
 
-  const CampbellResult& campbell() {
-    if (!campbell_) {
-      CampbellRequest request;
-      request.n_threads = 1;
-      options_ = campbell_settings(spec_.campbell, request);
-      options_.stop = stop_;
-      campbell_ = run_campbell(model_, options_);
-      check_solver(campbell_->info, "Campbell diagram");
-    }
-    return *campbell_;
-  }
-
   const HarmonicResult& response() {
     if (!response_) {
       ResponseRequest request;
@@ -128,8 +116,6 @@ struct DesignAnalyses::Legacy {
     return *runup_;
   }
 
-  Real campbell_low() { return campbell().speeds.front(); }
-  Real campbell_high() { return campbell().speeds.back(); }
   const std::vector<Index>& runup_probe_nodes() const { return runup_probe_nodes_; }
   const std::vector<Index>& runup_spring_elements() const { return runup_spring_elements_; }
   const Model& model() const { return model_; }
@@ -142,8 +128,6 @@ struct DesignAnalyses::Legacy {
   const ModelSpec& spec_;
   const Model& model_;
   StopToken stop_;
-  CampbellOptions options_;
-  std::optional<CampbellResult> campbell_;
   std::optional<HarmonicResult> response_;
   std::optional<TransientResult> runup_;
   std::vector<Index> response_probes_, runup_probes_, runup_springs_;
@@ -155,7 +139,6 @@ DesignAnalyses::DesignAnalyses(const ModelSpec& spec, const Model& model, std::s
                                StopToken stop)
     : spec_(spec), model_(model), stop_(stop), legacy_(std::make_unique<Legacy>(spec, model, quantities, stop)) {}
 DesignAnalyses::~DesignAnalyses() = default;
-const CampbellResult& DesignAnalyses::campbell() { return legacy_->campbell(); }
 const HarmonicResult& DesignAnalyses::response() { return legacy_->response(); }
 const TransientResult& DesignAnalyses::runup() { return legacy_->runup(); }
 const std::vector<Index>& DesignAnalyses::runup_probe_nodes() {
@@ -168,33 +151,6 @@ const std::vector<Index>& DesignAnalyses::runup_spring_elements() {
 }
 
 namespace {
-
-// The critical speeds a quantity selects, in increasing order, within [low, high].
-std::vector<Real> selected_criticals(const CampbellResult& c, const QuantitySpec& q, Real low, Real high) {
-  std::vector<Real> out;
-  for (const auto& x : c.critical_speeds) {
-    const auto& mode = c.modes[static_cast<std::size_t>(x.mode)];
-    if (mode.type != ModeType::lateral || x.order != q.order || !selected(x.whirl, q.whirl)) continue;
-    if (x.speed >= low && x.speed <= high) out.push_back(x.speed);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-Real smallest_damping(const CampbellResult& c, const QuantitySpec& q, Real low, Real high, bool log_decrement) {
-  Real smallest = std::numeric_limits<Real>::infinity();
-  for (const auto& mode : c.modes) {
-    if (mode.type != ModeType::lateral) continue;
-    for (std::size_t k = 0; k < c.speeds.size(); ++k) {
-      if (c.speeds[k] < low || c.speeds[k] > high || !selected(mode.whirl_at[k], q.whirl)) continue;
-      const Real d = log_decrement ? mode.log_decrement[k] : mode.damping_ratio[k];
-      if (std::isfinite(d)) smallest = std::min(smallest, d);
-    }
-  }
-  if (!std::isfinite(smallest))
-    throw Error(fmt::format("no {}lateral mode between {} and {}", whirl_word(q.whirl), rpm(low), rpm(high)));
-  return smallest;
-}
 
 // The amplitude (orbit semi-major axis) at a quantity's probe against speed, within
 // its range.
@@ -220,52 +176,6 @@ Curve probe_curve(DesignAnalyses& a, const QuantitySpec& q) {
 }
 
 // ---- the rows of the analyses not yet in folders of their own -----------------------
-
-Real critical_speed(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto& c = a.campbell();
-  const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
-  const auto criticals = selected_criticals(c, q, low, high);
-  if (static_cast<int>(criticals.size()) < q.n)
-    throw Error(fmt::format("no {} {}critical speed of order {} between {} and {} (found {})", ordinal(q.n),
-                            whirl_word(q.whirl), q.order, rpm(low), rpm(high), criticals.size()));
-  return criticals[static_cast<std::size_t>(q.n - 1)];
-}
-
-Real campbell_separation_margin(DesignAnalyses& a, const QuantitySpec& q, std::string& clipped) {
-  const auto& c = a.campbell();
-  const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
-  // Critical speeds beyond the analysed range are unknown but at least as far
-  // away as its ends: the margin of the ends bounds theirs.
-  Real margin = std::min(separation_margin(low, q.operating_low, q.operating_high),
-                         separation_margin(high, q.operating_low, q.operating_high));
-  if (low <= 0) margin = separation_margin(high, q.operating_low, q.operating_high);
-  Real nearest = std::numeric_limits<Real>::infinity();
-  for (const Real s : selected_criticals(c, q, low, high))
-    nearest = std::min(nearest, separation_margin(s, q.operating_low, q.operating_high));
-  if (!(nearest <= margin))
-    clipped = fmt::format(
-        "a lower bound: no {}critical speed of order {} between {} and {} lies nearer the "
-        "operating range than the range's {}; widen the Campbell range to find the margin",
-        whirl_word(q.whirl), q.order, rpm(low), rpm(high), low > 0 ? "ends" : "end");
-  return std::min(margin, nearest);
-}
-
-template <bool log_decrement>
-Real min_damping(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto& c = a.campbell();
-  return smallest_damping(c, q, q.low.value_or(c.speeds.front()), q.high.value_or(c.speeds.back()), log_decrement);
-}
-
-Real stability_threshold(DesignAnalyses& a, const QuantitySpec&, std::string& clipped) {
-  const auto& c = a.campbell();
-  // None in the range: the threshold lies above it; its end is a lower bound.
-  if (c.stability_threshold) return c.stability_threshold->speed;
-  clipped = fmt::format(
-      "a lower bound: the rotor is stable up to the Campbell range's end, {}; widen the range to "
-      "find the threshold",
-      rpm(c.speeds.back()));
-  return c.speeds.back();
-}
 
 Real peak_response(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
   const auto curve = probe_curve(a, q);
@@ -321,7 +231,7 @@ Real undamped_critical_speed(DesignAnalyses& a, const QuantitySpec& q, std::stri
   }
   const Real start = !needs_speed(a.model()) ? 0.0
                      : q.operating_high > 0  ? q.operating_high
-                                             : a.campbell().speeds.back();
+                                             : a.result<CampbellAnalysis>().speeds.back();
   const auto criticals = undamped_critical_speeds(*rotor, q.n, true, &info, start);
   check_solver(info, "undamped critical speeds");
   if (static_cast<int>(criticals.size()) < q.n)
@@ -386,36 +296,6 @@ Real runup_spring_force(DesignAnalyses& a, const QuantitySpec& q, std::string&) 
 
 Real rotor_mass(DesignAnalyses& a, const QuantitySpec&, std::string&) { return rotating_mass(a.model()); }
 
-template <bool smallest>
-Real bearing_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  // Over the Campbell diagram's speeds within the range: each bearing's state at
-  // the equilibrium about which the diagram linearises it.
-  const auto& c = a.campbell();
-  const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
-  const Real scale = q.value.ends_with("_deg") ? pi / 180 : 1.0;
-  Real best = std::numeric_limits<Real>::quiet_NaN();
-  bool named = false;
-  std::vector<std::string> bearings;
-  for (const OperatingSeries& s : c.operating) {
-    const std::string label = a.model().forces[static_cast<std::size_t>(s.force)].label();
-    bearings.push_back(label);
-    if (q.bearing && *q.bearing != label) continue;
-    named = true;
-    const std::vector<Real> values = s.series(q.value);
-    if (values.empty())
-      throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", label, q.value,
-                              fmt::join(s.quantities, ", ")));
-    for (std::size_t k = 0; k < values.size(); ++k)
-      if (c.speeds[k] >= low && c.speeds[k] <= high && std::isfinite(values[k]))
-        if (std::isnan(best) || (smallest ? values[k] < best : values[k] > best)) best = values[k];
-  }
-  if (c.operating.empty()) throw Error("the model has no journal or rolling bearing");
-  if (!named)
-    throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(bearings, ", ")));
-  if (std::isnan(best)) throw Error(fmt::format("no value of '{}' between {} and {}", q.value, rpm(low), rpm(high)));
-  return best * scale;
-}
-
 Real parameter(DesignAnalyses& a, const QuantitySpec& q, std::string&) { return get_parameter(a.spec(), q.path).value; }
 
 Real function(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
@@ -431,31 +311,6 @@ using Q = Quantity;
 // The rows of the analyses not yet in folders of their own, and of no analysis.
 const std::vector<QuantityRow>& own_rows() {
   static const std::vector<QuantityRow> rows = {
-      {.name = "critical_speed",
-       .doc = "the n-th critical speed of a whirl and order in a speed range",
-       .analysis = "campbell",
-       .unit = Q::speed,
-       .evaluate = critical_speed},
-      {.name = "separation_margin",
-       .doc = "smallest relative distance of the critical speeds from the operating range",
-       .analysis = "campbell",
-       .evaluate = campbell_separation_margin,
-       .needs_operating = true},
-      {.name = "min_damping_ratio",
-       .doc = "smallest damping ratio of the lateral modes over a speed range",
-       .analysis = "campbell",
-       .evaluate = min_damping<false>,
-       .any_whirl = true},
-      {.name = "min_log_decrement",
-       .doc = "smallest logarithmic decrement over a speed range",
-       .analysis = "campbell",
-       .evaluate = min_damping<true>,
-       .any_whirl = true},
-      {.name = "stability_threshold",
-       .doc = "lowest speed where a mode's damping turns negative",
-       .analysis = "campbell",
-       .unit = Q::speed,
-       .evaluate = stability_threshold},
       {.name = "peak_response",
        .doc = "largest orbit semi-axis at a probe over the unbalance response",
        .analysis = "response",
@@ -513,16 +368,6 @@ const std::vector<QuantityRow>& own_rows() {
        .unit = Q::force,
        .evaluate = runup_spring_force},
       {.name = "rotor_mass", .doc = "mass of the rotating parts", .unit = Q::mass, .evaluate = rotor_mass},
-      {.name = "min_bearing_value",
-       .doc = "smallest value of a bearing's operating quantity over the Campbell speeds",
-       .analysis = "campbell",
-       .evaluate = bearing_value<true>,
-       .bearing_value = true},
-      {.name = "max_bearing_value",
-       .doc = "largest value of it",
-       .analysis = "campbell",
-       .evaluate = bearing_value<false>,
-       .bearing_value = true},
       {.name = "parameter",
        .doc = "a number of the design's model, by its parameter path",
        .evaluate = parameter,

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 
 namespace feran::test {
 

@@ -17,7 +17,7 @@
 #include <cmath>
 #include <vector>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
 #include <feran/spec/build_model.hpp>

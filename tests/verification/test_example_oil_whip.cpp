@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -66,7 +66,8 @@ Whirl whirl(const TransientResult& r, Real t0, Real t1) {
 // unstable mode's frequency.
 void expect_whip_past_the_threshold(const ModelFile& file) {
   // The threshold of the linearised model, from its Campbell diagram.
-  const CampbellResult campbell = run_campbell(file.model, campbell_settings(file.spec.campbell, {}));
+  const CampbellResult campbell =
+      run_campbell(file.model, analysis_options<CampbellAnalysis>(file, {}, file_key_name<CampbellAnalysis>()));
   ASSERT_TRUE(campbell.stability_threshold.has_value());
   const Real threshold_hz = rad_to_hz(campbell.stability_threshold->speed);
   EXPECT_GT(threshold_hz, 80.0);  // well above the first critical (47.6 Hz) …

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/io/model_reader.hpp>

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 
 #include "test_models.hpp"

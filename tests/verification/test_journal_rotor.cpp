@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <feran/analyses/api684/api684_analysis.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -25,7 +25,7 @@ const std::string path = FERAN_TEST_MODELS "/valid/journal_rotor.toml";
 
 TEST(JournalRotor, ResponsePointsAreMarkedUnstableFromTheCampbellThresholdOn) {
   const ModelFile file = read_model_file(path);
-  CampbellOptions co = campbell_settings(file.spec.campbell, {});
+  CampbellOptions co = analysis_options<CampbellAnalysis>(file, {}, file_key_name<CampbellAnalysis>());
   const CampbellResult campbell = run_campbell(file.model, co);
   ASSERT_TRUE(campbell.stability_threshold.has_value());
   const Real threshold = campbell.stability_threshold->speed;
@@ -106,7 +106,7 @@ TEST(JournalRotor, BearingOperatingDataIsTheEquilibriumsInEveryAnalysis) {
   const ModelFile file = read_model_file(path);
   const Model& model = file.model;
   const Real weight = rotating_mass(model) * model.gravity.norm();
-  CampbellOptions co = campbell_settings(file.spec.campbell, {});
+  CampbellOptions co = analysis_options<CampbellAnalysis>(file, {}, file_key_name<CampbellAnalysis>());
   const CampbellResult campbell = run_campbell(model, co);
   ASSERT_EQ(campbell.operating.size(), 2u);
   const Real c = 0.06e-3, mu = 0.02, L = 0.03, D = 0.06, R = D / 2;

@@ -6,7 +6,7 @@
 // shaft, 8 elements, including its own gyroscopic effect.
 #include <gtest/gtest.h>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 
 #include "test_models.hpp"
 

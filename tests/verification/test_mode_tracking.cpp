@@ -11,7 +11,7 @@
 
 #include <algorithm>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 
 #include "test_models.hpp"
 

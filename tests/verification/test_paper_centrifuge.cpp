@@ -14,7 +14,7 @@
 #include <vector>
 
 #include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/io/model_reader.hpp>
 
 #include "campbell_lookup.hpp"

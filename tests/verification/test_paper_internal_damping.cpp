@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/io/model_reader.hpp>
 
 #include "campbell_lookup.hpp"

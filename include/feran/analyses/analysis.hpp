@@ -54,6 +54,9 @@ namespace feran {
 struct RunContext {
   StopToken stop = {};
   std::shared_ptr<const Assembler> assembler = {};
+  /// For an analysis whose points run side by side (A::parallel): how many threads,
+  /// 0 for all cores. A library caller's analyses run on one.
+  int threads = 1;
 };
 
 /// How a door names an option in its messages: "--g" on the command line, "g" in
@@ -87,6 +90,15 @@ concept AnalysisFace = requires(const Model& model, const ModelSpec& spec, const
   { A::csv(outcome) } -> std::same_as<std::string>;
   { A::terminal(outcome) } -> std::same_as<std::string>;
 };
+
+/// Whether analysis A solves its points side by side (its doors then offer threads).
+template <class A>
+constexpr bool parallel_analysis() {
+  if constexpr (requires { A::parallel; })
+    return A::parallel;
+  else
+    return false;
+}
 
 /// Whether analysis A's doors write its results when its solve failed.
 template <class A>
@@ -135,9 +147,9 @@ OptionName file_key_name() {
 /// thrown.
 template <AnalysisFace A>
 Outcome<A> run_analysis(std::shared_ptr<const ModelFile> file, const typename A::Spec& request, const OptionName& name,
-                        const StopToken& stop = {}) {
+                        const StopToken& stop = {}, int threads = 1) {
   Outcome<A> out{file, analysis_options<A>(*file, request, name), {}, {}};
-  out.result = A::run(file->model, out.options, RunContext{stop, file->assembler});
+  out.result = A::run(file->model, out.options, RunContext{stop, file->assembler, threads});
   out.source = ResultSource{file->path, file->title, A::warnings(file->model, out.options, out.result)};
   return out;
 }

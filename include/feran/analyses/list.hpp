@@ -5,6 +5,7 @@
 /// a folder under analyses/ and one entry in this list.
 
 #include <feran/analyses/analysis.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
 
@@ -21,6 +22,6 @@ struct AnalysisList {
 
 /// The analyses, in the order the command line's help lists them after the ones not
 /// yet moved into their folders.
-using Analyses = AnalysisList<ModalAnalysis, StaticAnalysis>;
+using Analyses = AnalysisList<ModalAnalysis, CampbellAnalysis, StaticAnalysis>;
 
 }  // namespace feran

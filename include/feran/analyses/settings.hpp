@@ -21,7 +21,7 @@
 
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -60,17 +60,7 @@ Index node_index(const Model& model, const NodeRef& ref);
 
 // ---------------------------------------------------------------------------------
 
-struct CampbellRequest {
-  std::optional<Real> start, stop;  ///< [rad/s]; default [campbell], else start 0, stop required
-  std::optional<int> points;        ///< default [campbell], else 101
-  std::optional<int> modes;         ///< default [campbell], else 8
-  std::vector<int> orders;          ///< empty: [campbell] orders, else {1}
-  EigenSolver solver = EigenSolver::automatic;
-  int n_threads = 1;  ///< 0: all cores
-};
-
-/// Throws Error when no last speed is given anywhere or it is not above the first.
-CampbellOptions campbell_settings(const CampbellSpec& file, const CampbellRequest& request);
+// The Campbell diagram: analyses/campbell/analysis.hpp.
 
 // ---------------------------------------------------------------------------------
 
@@ -180,6 +170,10 @@ void check_analysis_tables(const ModelSpec& spec);
 /// frequencies of the motion [@p frequencies] (rad/s; empty: synchronous, the speeds').
 std::vector<std::string> range_warnings(const Model& model, Real low, Real high,
                                         std::optional<std::pair<Real, Real>> frequencies = std::nullopt);
+
+/// The span [rad/s] of the motion's frequencies @p frequencies_hz [Hz] (their absolute
+/// values, the non-finite left out), for range_warnings(); empty when there are none.
+std::optional<std::pair<Real, Real>> frequency_span(std::span<const Real> frequencies_hz);
 
 /// The speeds a run-up visits: the lowest and highest of its profile up to its end; for
 /// a torque-driven run, from its first speed to its motor's free speed.

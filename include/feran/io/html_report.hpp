@@ -24,7 +24,7 @@ struct ReportOptions {
   std::string speed_unit = "rpm";  ///< "rpm" or "Hz": how speeds are shown
   std::string command;             ///< the command that made the report (its inputs table)
   std::string version;             ///< feran's version (its inputs table)
-  CampbellRequest campbell;        ///< stop default: [campbell], else 1.5 × the maximum operating speed
+  CampbellSpec campbell;           ///< stop default: [campbell], else 1.5 × the maximum operating speed
   /// Speeds of the mode shapes [rad/s]; empty: 0 (for a rotor on oil films, which
   /// carry it only while it turns: the minimum operating speed, else the Campbell
   /// diagram's first speed above 0) and the maximum operating speed (or the Campbell

@@ -5,7 +5,7 @@
 #include <string>
 
 #include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
@@ -13,11 +13,6 @@
 #include <feran/model/model.hpp>
 
 namespace feran {
-
-/// Summary of a Campbell diagram: frequencies at selected speeds, critical speeds and
-/// the stability threshold.
-std::string campbell_report(const CampbellResult& result, const CampbellOptions& options, const Model& model,
-                            const ResultSource& source);
 
 /// Summary of a steady-state response: orbit sizes at selected points and the peaks.
 std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,

@@ -7,7 +7,7 @@
 
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/model/model.hpp>
@@ -15,14 +15,6 @@
 #include <feran/spec/parameters.hpp>
 
 namespace feran {
-
-/// JSON text of a Campbell result (with the supports' operating state over the speeds;
-/// @p model is the one analysed).
-std::string campbell_json(const CampbellResult& result, const CampbellOptions& options, const Model& model,
-                          const ResultSource& source);
-/// CSV text of a Campbell result: one row per speed, frequency and damping ratio of
-/// every tracked mode, then the supports' operating state.
-std::string campbell_csv(const CampbellResult& result, const Model& model);
 
 /// JSON text of a steady-state response (speed or frequency sweep).
 std::string response_json(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,

@@ -232,6 +232,7 @@ struct CampbellSpec {
   std::optional<Real> start, stop;  ///< [rad/s]
   std::optional<int> points, modes;
   std::vector<int> orders;
+  std::optional<std::string> solver;  ///< "auto", "dense" or "sparse"
   bool operator==(const CampbellSpec&) const = default;
 };
 

@@ -20,7 +20,6 @@
 
 namespace feran {
 
-struct CampbellResult;
 struct HarmonicResult;
 struct TransientResult;
 
@@ -48,7 +47,6 @@ class DesignAnalyses {
   }
 
   // The analyses not yet in folders of their own.
-  const CampbellResult& campbell();
   const HarmonicResult& response();
   const TransientResult& runup();
   const std::vector<Index>& runup_probe_nodes();

@@ -22,10 +22,6 @@ using namespace detail;  // NOLINT(google-build-using-namespace): the writers' s
 
 namespace spec {
 
-namespace {
-constexpr std::string_view solver_names[] = {"auto", "dense", "sparse"};
-}  // namespace
-
 template <>
 const FieldTable<ModalSpec>& fields_of<ModalSpec>() {
   using S = ModalSpec;
@@ -52,7 +48,7 @@ const FieldTable<ModalSpec>& fields_of<ModalSpec>() {
        .doc = "eigen solver: `\"auto\"` (dense for all modes up to 400 DOF; with `modes`, for each decoupled block "
               "the one a cost model expects to be faster), `\"dense\"` (LAPACK QR) or `\"sparse\"` (the lowest "
               "modes by shift-invert Arnoldi)",
-       .choices = solver_names},
+       .choices = eigen_solver_names},
       {.key = "shapes", .kind = K::flag, .member = &S::shapes, .doc = "whether the JSON holds the mode shapes"},
   };
   return table;
@@ -81,12 +77,9 @@ ModalResult ModalAnalysis::run(const Model& model, const ModalSettings& options,
 std::vector<std::string> ModalAnalysis::warnings(const Model& model, const ModalSettings& options,
                                                  const ModalResult& result) {
   // Frequency tables are read at the modes' frequencies.
-  std::optional<std::pair<Real, Real>> span;
-  for (const Mode& m : result.modes) {
-    if (!std::isfinite(m.frequency_hz)) continue;
-    const Real w = 2.0 * pi * std::abs(m.frequency_hz);
-    span = span ? std::pair{std::min(span->first, w), std::max(span->second, w)} : std::pair{w, w};
-  }
+  std::vector<Real> frequencies;
+  for (const Mode& m : result.modes) frequencies.push_back(m.frequency_hz);
+  const auto span = frequency_span(frequencies);
   return range_warnings(model, options.speed, options.speed, span);
 }
 

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <feran/analyses/api684/critical_speed_map.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/core/error.hpp>
 
 #include "test_models.hpp"

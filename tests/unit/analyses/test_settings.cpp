@@ -3,6 +3,7 @@
 // a response at one speed needs no last speed.
 
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/io/model_reader.hpp>
@@ -16,12 +17,18 @@ namespace {
 
 const std::string examples = std::string(FERAN_SOURCE_DIR) + "/examples";
 
+// The options of analysis A from a file's table and a request (analysis_options()).
+template <class A>
+typename A::Options options_of(const ModelSpec& spec, const typename A::Spec& request) {
+  return analysis_options<A>(spec, Model{}, request, [](std::string_view k) { return std::string(k); });
+}
+
 TEST(Settings, RequestThenFileThenBuiltIn) {
-  CampbellSpec file;
-  file.stop = 100.0;
-  file.points = 11;
-  CampbellRequest request;
-  CampbellOptions c = campbell_settings(file, request);
+  ModelSpec file;
+  file.campbell.stop = 100.0;
+  file.campbell.points = 11;
+  CampbellSpec request;
+  CampbellOptions c = options_of<CampbellAnalysis>(file, request);
   EXPECT_EQ(c.speeds.size(), 11u);  // the file's
   EXPECT_EQ(c.speeds.back(), 100.0);
   EXPECT_EQ(c.n_modes, defaults::campbell_modes);  // built in
@@ -30,10 +37,15 @@ TEST(Settings, RequestThenFileThenBuiltIn) {
   request.points = 3;
   request.stop = 50.0;
   request.orders = {2};
-  c = campbell_settings(file, request);
+  c = options_of<CampbellAnalysis>(file, request);
   EXPECT_EQ(c.speeds, (std::vector<Real>{0.0, 25.0, 50.0}));  // the request's
   EXPECT_EQ(c.orders, std::vector<int>{2});
-  EXPECT_THROW((void)campbell_settings(CampbellSpec{}, CampbellRequest{}), Error);  // no stop
+  EXPECT_THROW((void)options_of<CampbellAnalysis>(ModelSpec{}, CampbellSpec{}), Error);  // no stop
+  request.start = 60.0;                                                                  // above the last
+  EXPECT_THROW((void)options_of<CampbellAnalysis>(file, request), Error);
+  request.start.reset();
+  request.orders = {0};  // each order checked by its field
+  EXPECT_THROW((void)options_of<CampbellAnalysis>(file, request), Error);
 
   ModelSpec spec;
   spec.modal.speed = 12.0;

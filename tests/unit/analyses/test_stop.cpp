@@ -5,7 +5,7 @@
 #include <atomic>
 
 #include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 
 #include "test_models.hpp"

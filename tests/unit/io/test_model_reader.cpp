@@ -18,6 +18,7 @@
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
 #include <feran/analyses/settings.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/io/model_reader.hpp>
@@ -420,7 +421,7 @@ TEST_F(EverythingModel, AnalysisDefaults) {
   const ModalSettings modal = analysis_options<ModalAnalysis>(*file_, {}, file_key_name<ModalAnalysis>());
   EXPECT_DOUBLE_EQ(modal.speed, 30.0 * hz);
   EXPECT_EQ(modal.options.n_modes, 8);
-  const CampbellOptions c = campbell_settings(file_->spec.campbell, {});
+  const CampbellOptions c = analysis_options<CampbellAnalysis>(*file_, {}, file_key_name<CampbellAnalysis>());
   ASSERT_EQ(c.speeds.size(), 51u);
   EXPECT_EQ(c.speeds.front(), 0.0);
   EXPECT_DOUBLE_EQ(c.speeds.back(), 200.0 * hz);

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <feran/assembly/assembler.hpp>
@@ -73,6 +74,8 @@ enum class EigenSolver {
   dense,      ///< all modes: Hessenberg-QR of the state matrix (LAPACK dgeev)
   sparse      ///< lowest modes: shift-invert Arnoldi (Spectra) on a sparse LU
 };
+/// The words that name the solvers in options ("auto", "dense", "sparse").
+inline constexpr std::string_view eigen_solver_names[] = {"auto", "dense", "sparse"};
 
 struct ModalOptions {
   /// Number of modes wanted, the lowest by |p|. 0: all (dense) or 12 (sparse).

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <limits>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/assembly/assembler.hpp>
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/modal/whirl.hpp>
 #include <feran/io/model_reader.hpp>

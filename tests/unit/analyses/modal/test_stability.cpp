@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/modal/stability.hpp>
 #include <feran/analyses/static/equilibrium.hpp>

@@ -1,4 +1,4 @@
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -17,7 +17,7 @@ namespace feran {
 
 namespace {
 
-constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+constexpr Real missing_value = std::numeric_limits<Real>::quiet_NaN();
 
 // The modes a Campbell diagram follows: the @p count oscillatory ones nearest the
 // origin (a rigid-body mode at p = 0 has no frequency line to follow; overdamped
@@ -114,12 +114,12 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
 
   std::vector<Track> tracks;
   auto record = [&](TrackedMode& tm, const Mode* m, Real corr) {
-    tm.frequency_hz.push_back(m ? m->frequency_hz : nan);
-    tm.damping_ratio.push_back(m ? m->damping_ratio : nan);
-    tm.log_decrement.push_back(m ? m->log_decrement : nan);
-    tm.directivity.push_back(m ? m->directivity : nan);
+    tm.frequency_hz.push_back(m ? m->frequency_hz : missing_value);
+    tm.damping_ratio.push_back(m ? m->damping_ratio : missing_value);
+    tm.log_decrement.push_back(m ? m->log_decrement : missing_value);
+    tm.directivity.push_back(m ? m->directivity : missing_value);
     tm.whirl_at.push_back(m ? m->whirl : Whirl::none);
-    tm.bending.push_back(m ? m->bending : nan);
+    tm.bending.push_back(m ? m->bending : missing_value);
     tm.shape_at.push_back(m ? m->shape_kind : ModeShape::none);
     tm.correlation.push_back(corr);
   };
@@ -206,7 +206,7 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
       const Index col = assigned[j];
       TrackedMode& tm = result.modes[j];
       if (col < 0 || col >= static_cast<Index>(cands.size())) {
-        record(tm, nullptr, nan);
+        record(tm, nullptr, missing_value);
         continue;
       }
       Mode& m = cands[static_cast<std::size_t>(col)];
@@ -256,7 +256,7 @@ CampbellResult run_campbell(const Model& model, const CampbellOptions& options,
     Real freq = br.frequency_hz;
     auto f = [&](Real s) {
       const std::optional<Mode> mm = match_between(br.a, br.b, s);
-      if (!mm) return nan;
+      if (!mm) return missing_value;
       w = whirl_sense(mm->whirl, mm->directivity);
       freq = mm->frequency_hz;
       return br.order > 0 ? mm->frequency_hz - br.order * rad_to_hz(s) : mm->damping_ratio + options.damping_tolerance;

@@ -1,6 +1,7 @@
-// Campbell diagrams: tracked modes over a speed range as 2D numpy arrays (mode ×
-// speed), critical speeds with look-ups by whirl, order and mode, the stability
-// threshold, and the JSON and table of feran campbell.
+// The Campbell diagram's Python result: tracked modes over a speed range as 2D numpy
+// arrays (mode × speed), critical speeds with look-ups by whirl, order and mode, the
+// stability threshold (analysis_binding.hpp binds feran.campbell and what every
+// result has).
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -9,29 +10,19 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include <feran/analyses/modal/campbell.hpp>
-#include <feran/analyses/settings.hpp>
+#include <feran/analyses/campbell/analysis.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
-#include <feran/io/option_text.hpp>
-#include <feran/io/report.hpp>
-#include <feran/io/result_writer.hpp>
 
-#include "bindings.hpp"
+#include "analysis_binding.hpp"
 
 namespace feran::python {
 
 namespace {
 
-struct PyCampbellResult {
-  ResultContext context;
-  CampbellOptions options;
-  CampbellResult result;
-};
-
 /// Per mode and speed: value(mode) [speed], NaN where a mode has no value.
 template <class F>
-py::array_t<double> per_mode_speed(const PyCampbellResult& r, F&& values) {
+py::array_t<double> per_mode_speed(const Outcome<CampbellAnalysis>& r, F&& values) {
   const auto& modes = r.result.modes;
   return array_2d(modes.size(), r.result.speeds.size(), [&](std::size_t i, std::size_t j) {
     const std::vector<Real>& v = values(modes[i]);
@@ -47,7 +38,7 @@ double in_unit(double speed, const std::string& unit) {
   throw Error(fmt::format("unit='{}': expected 'rad/s', 'Hz' or 'rpm'", unit));
 }
 
-py::dict critical_dict(const PyCampbellResult& r, const CriticalSpeed& c) {
+py::dict critical_dict(const Outcome<CampbellAnalysis>& r, const CriticalSpeed& c) {
   py::dict d;
   d["speed"] = c.speed;
   d["speed_hz"] = rad_to_hz(c.speed);
@@ -62,65 +53,65 @@ py::dict critical_dict(const PyCampbellResult& r, const CriticalSpeed& c) {
 
 }  // namespace
 
-void bind_campbell(py::module_& m) {
-  py::class_<PyCampbellResult>(m, "CampbellResult",
-                               "Tracked modes over a speed range, critical speeds and the stability threshold")
+template <>
+void bind_result<CampbellAnalysis>(py::class_<Outcome<CampbellAnalysis>>& result) {
+  using R = Outcome<CampbellAnalysis>;
+  result
       .def_property_readonly(
           "speeds",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return array_1d(r.result.speeds.size(), [&](std::size_t i) { return r.result.speeds[i]; });
           },
           "speeds solved [rad/s] (fewer than asked when a solve failed or it was interrupted)")
       .def_property_readonly("speeds_hz",
-                             [](const PyCampbellResult& r) {
+                             [](const R& r) {
                                return array_1d(r.result.speeds.size(),
                                                [&](std::size_t i) { return rad_to_hz(r.result.speeds[i]); });
                              })
       .def_property_readonly(
-          "bearings",
-          [](const PyCampbellResult& r) { return bearing_labels(r.result.operating, r.context.file->model); },
+          "bearings", [](const R& r) { return bearing_labels(r.result.operating, r.model()); },
           "the bearings (journal and rolling) by their names")
       .def_property_readonly(
-          "bearing_data", [](const PyCampbellResult& r) { return bearing_data(r.result.operating); },
+          "bearing_data", [](const R& r) { return bearing_data(r.result.operating); },
           "per bearing (as bearings), its operating state at the equilibrium at each speed: a dict\n"
           "of numpy arrays over speeds, named with their units as in static's bearing_data\n"
           "(eccentricity_ratio, attitude_angle_deg, min_film_thickness_m, sommerfeld_number,\n"
           "friction_torque_nm, power_loss_w, ...; max_element_load_n, ... for rolling bearings)")
       .def_property_readonly(
           "labels",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return string_list(r.result.modes.size(), [&](std::size_t i) { return r.result.modes[i].label; });
           },
           "per mode: 'forward bending 1', 'backward cylindrical 1', 'axial 1', …")
       .def_property_readonly(
           "shape",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return string_list(r.result.modes.size(),
                                [&](std::size_t i) { return to_string(r.result.modes[i].shape_kind); });
           },
           "per mode: its prevailing shape ('cylindrical', 'conical', 'bending'; 'none' without lateral motion)")
       .def_property_readonly(
           "bending",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.bending; });
           },
           "the rotor's bending fraction per mode and speed (0 rigid, towards 1 bending), shape (modes, speeds)")
       .def_property_readonly(
           "whirl",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return string_list(r.result.modes.size(),
                                [&](std::size_t i) { return to_string(r.result.modes[i].whirl); });
           },
           "per mode: its prevailing whirl ('forward', 'backward', 'planar', 'none')")
       .def_property_readonly(
           "type",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return string_list(r.result.modes.size(), [&](std::size_t i) { return to_string(r.result.modes[i].type); });
           },
           "per mode: 'lateral', 'axial' or 'torsional'")
       .def_property_readonly(
           "whirl_at",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             py::list out;
             for (const TrackedMode& mode : r.result.modes)
               out.append(string_list(mode.whirl_at.size(), [&](std::size_t j) { return to_string(mode.whirl_at[j]); }));
@@ -129,34 +120,34 @@ void bind_campbell(py::module_& m) {
           "per mode, per speed: the whirl there")
       .def_property_readonly(
           "frequency_hz",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.frequency_hz; });
           },
           "damped natural frequencies [Hz], shape (modes, speeds)")
       .def_property_readonly(
           "damping_ratio",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.damping_ratio; });
           },
           "shape (modes, speeds)")
       .def_property_readonly(
           "log_decrement",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.log_decrement; });
           },
           "shape (modes, speeds); NaN for a non-oscillatory mode")
       .def_property_readonly(
           "directivity",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             return per_mode_speed(r, [](const TrackedMode& x) -> const std::vector<Real>& { return x.directivity; });
           },
           "+1 forward circles … -1 backward circles, shape (modes, speeds)")
       .def_property_readonly(
-          "orders", [](const PyCampbellResult& r) { return r.options.orders; },
+          "orders", [](const R& r) { return r.options.orders; },
           "harmonic orders k of the excitation lines f = k × speed")
       .def_property_readonly(
           "criticals",
-          [](const PyCampbellResult& r) {
+          [](const R& r) {
             py::list out;
             for (const CriticalSpeed& c : r.result.critical_speeds) out.append(critical_dict(r, c));
             return out;
@@ -164,8 +155,8 @@ void bind_campbell(py::module_& m) {
           "every critical speed (crossing of a mode with an excitation line), sorted by speed, as dicts")
       .def(
           "critical_speeds",
-          [](const PyCampbellResult& r, std::optional<std::string> whirl, std::optional<int> order,
-             std::optional<std::string> label, const std::string& unit) {
+          [](const R& r, std::optional<std::string> whirl, std::optional<int> order, std::optional<std::string> label,
+             const std::string& unit) {
             if (whirl && *whirl != "forward" && *whirl != "backward" && *whirl != "planar" && *whirl != "none")
               throw Error(fmt::format("whirl='{}': expected 'forward', 'backward', 'planar' or 'none'", *whirl));
             std::vector<double> speeds;
@@ -185,7 +176,7 @@ void bind_campbell(py::module_& m) {
           "critical speed itself, not a label's word.")
       .def_property_readonly(
           "stability_threshold",
-          [](const PyCampbellResult& r) -> py::object {
+          [](const R& r) -> py::object {
             if (!r.result.stability_threshold) return py::none();
             const StabilityThreshold& t = *r.result.stability_threshold;
             py::dict d;
@@ -201,56 +192,9 @@ void bind_campbell(py::module_& m) {
           "the lowest speed at which a mode's damping turns negative (kind 'flutter') or a real\n"
           "eigenvalue turns positive (kind 'divergence', mode -1), a dict; or None")
       .def_property_readonly(
-          "complete", [](const PyCampbellResult& r) { return r.result.info.converged(); },
-          "whether every speed was solved")
-      .def_property_readonly("message", [](const PyCampbellResult& r) { return r.result.info.message; })
-      .def_property_readonly("n_solves", [](const PyCampbellResult& r) { return r.result.n_solves; })
-      .def_property_readonly("warnings", [](const PyCampbellResult& r) { return r.context.source.warnings; })
-      .def(
-          "to_json",
-          [](const PyCampbellResult& r) {
-            return campbell_json(r.result, r.options, r.context.file->model, r.context.source);
-          },
-          "The JSON text that feran campbell --json writes (docs/output-format.md)")
-      .def(
-          "to_csv", [](const PyCampbellResult& r) { return campbell_csv(r.result, r.context.file->model); },
-          "The CSV text that feran campbell --csv writes")
-      .def(
-          "report",
-          [](const PyCampbellResult& r) {
-            return campbell_report(r.result, r.options, r.context.file->model, r.context.source);
-          },
-          "The table that feran campbell prints");
-
-  m.def(
-      "campbell",
-      [](const PyModel& model, const py::object& start, const py::object& stop, std::optional<int> points,
-         std::optional<int> modes, std::vector<int> orders, const std::string& solver, int threads) {
-        CampbellRequest request;
-        request.start = optional_speed(start, "start");
-        request.stop = optional_speed(stop, "stop");
-        request.points = points;
-        request.modes = modes;
-        request.orders = std::move(orders);
-        request.solver = parse_solver_name(solver, "solver");
-        request.n_threads = threads;
-        auto file = std::make_shared<const ModelFile>(model.built());
-        PyCampbellResult out{{}, campbell_settings(file->spec.campbell, request), {}};
-        out.context = result_context(file, out.options.speeds.front(), out.options.speeds.back());
-        std::atomic<bool> flag{false};
-        out.options.stop = StopToken(flag);
-        bool interrupted = false;
-        run_watched([&] { out.result = run_campbell(file->model, out.options, file->assembler); }, flag, interrupted);
-        if (interrupted) raise_interrupted(py::cast(std::move(out)));
-        return out;
-      },
-      py::arg("model"), py::kw_only(), py::arg("start") = py::none(), py::arg("stop") = py::none(),
-      py::arg("points") = py::none(), py::arg("modes") = py::none(), py::arg("orders") = std::vector<int>{},
-      py::arg("solver") = "auto", py::arg("threads") = 0,
-      "A Campbell diagram, as feran campbell: start, stop (speeds as '80 Hz' or rad/s), points,\n"
-      "modes, orders, solver as the CLI's options, each defaulting to the model's [campbell]\n"
-      "table and then to feran's defaults. threads: 0 (default, as the CLI) all cores, or 1 to\n"
-      "run Python threads side by side instead. Ctrl-C raises feran.Interrupted with the speeds so far.");
+          "complete", [](const R& r) { return r.result.info.converged(); }, "whether every speed was solved")
+      .def_property_readonly("message", [](const R& r) { return r.result.info.message; })
+      .def_property_readonly("n_solves", [](const R& r) { return r.result.n_solves; });
 }
 
 }  // namespace feran::python

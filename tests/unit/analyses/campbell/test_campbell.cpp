@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include <feran/analyses/modal/campbell.hpp>
+#include <feran/analyses/campbell/campbell.hpp>
 
 #include <cmath>
 
