@@ -49,8 +49,9 @@ Runner add_analysis_command(CLI::App& app) {
     const spec::Field<Spec>* field = &f;
     const std::string default_text =
         f.default_text.empty() ? spec::value_text(A::defaults(), f) : std::string(f.default_text);
-    std::string names = flag_name(f.key);
-    if (!f.short_name.empty()) names = "-" + std::string(f.short_name) + "," + names;
+    std::string names;
+    if (!f.short_name.empty()) names.append("-").append(f.short_name).append(",");
+    names += flag_name(f.key);
     if (f.kind == spec::FieldKind::flag) {
       // A flag on by default is turned off (--no-loads), one off by default on.
       const bool on = default_text == "true";

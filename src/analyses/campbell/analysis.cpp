@@ -88,10 +88,10 @@ const CampbellSpec& CampbellAnalysis::defaults() {
 }
 
 CampbellOptions CampbellAnalysis::settings(const Model&, const CampbellSpec&, const CampbellSpec& resolved,
-                                           const OptionName& name) {
+                                           const OptionName& named) {
   if (!resolved.stop)
     throw Error(fmt::format("campbell: give the last speed with {0} (e.g. {0} 80Hz) or in the model's [campbell] table",
-                            name("stop")));
+                            named("stop")));
   if (!(*resolved.stop > *resolved.start)) throw Error("campbell: the last speed must be above the first");
   CampbellOptions options;
   const int n = *resolved.points;

@@ -76,10 +76,10 @@ const StaticSpec& StaticAnalysis::defaults() {
 }
 
 StaticOptions StaticAnalysis::settings(const Model&, const StaticSpec& asked, const StaticSpec& resolved,
-                                       const OptionName& name) {
+                                       const OptionName& named) {
   if (asked.g && resolved.gravity == "none")
     throw Error(fmt::format("{0} cannot be given with {1} none; give a direction such as {1} -z, or leave {0} out",
-                            name("g"), name("gravity")));
+                            named("g"), named("gravity")));
   StaticOptions options;
   const std::string& direction = *resolved.gravity;
   if (direction != "none") {

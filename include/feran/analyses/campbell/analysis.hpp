@@ -35,7 +35,7 @@ struct CampbellAnalysis {
   static const CampbellSpec& file_table(const ModelSpec& spec) { return spec.campbell; }
   /// Throws Error without a last speed or with one not above the first.
   static CampbellOptions settings(const Model& model, const CampbellSpec& asked, const CampbellSpec& resolved,
-                                  const OptionName& name);
+                                  const OptionName& named);
   static CampbellResult run(const Model& model, const CampbellOptions& options, const RunContext& context);
   /// Tables evaluated beyond their range over the speeds and the modes' frequencies.
   static std::vector<std::string> warnings(const Model& model, const CampbellOptions& options,

@@ -36,7 +36,7 @@ struct ModalAnalysis {
   static const ModalSpec& defaults();
   static const ModalSpec& file_table(const ModelSpec& spec) { return spec.modal; }
   static ModalSettings settings(const Model& model, const ModalSpec& asked, const ModalSpec& resolved,
-                                const OptionName& name);
+                                const OptionName& named);
   static ModalResult run(const Model& model, const ModalSettings& options, const RunContext& context);
   /// Tables evaluated beyond their range at the speed and at the modes' frequencies.
   static std::vector<std::string> warnings(const Model& model, const ModalSettings& options, const ModalResult& result);

@@ -30,7 +30,7 @@ struct StaticAnalysis {
   static const StaticSpec& file_table(const ModelSpec& spec) { return spec.static_; }
   /// Throws Error for g given with gravity "none".
   static StaticOptions settings(const Model& model, const StaticSpec& asked, const StaticSpec& resolved,
-                                const OptionName& name);
+                                const OptionName& named);
   static StaticResult run(const Model& model, const StaticOptions& options, const RunContext& context);
   /// Tables evaluated beyond their range at the analysis's speed.
   static std::vector<std::string> warnings(const Model& model, const StaticOptions& options,
