@@ -8,7 +8,9 @@
 #     ./build, a tree configured by scripts/build.sh; its compile_commands.json);
 #  3. flake8 (.flake8: pyflakes' errors and pycodestyle's layout) over every Python file;
 #  4. ESLint (eslint.config.mjs: its recommended rules) over the JavaScript of the report
-#     and of the browser tests, from the project's npm packages (scripts/setup.sh).
+#     and of the browser tests, from the project's npm packages (scripts/setup.sh);
+#  5. abilities, not casts: no Element::target<> or Force::target<> in the library, the
+#     program or the Python module (docs/architecture.md); tests may inspect types.
 # docs/contributing.md says what each checks and how to run one alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -73,4 +75,12 @@ mapfile -t py < <(git ls-files '*.py')
 check "flake8, ${#py[@]} files" flake8 "${py[@]}"
 
 check "eslint, the report's script and the browser tests" node_modules/.bin/eslint src/io/report tests/browser
+
+no_casts() {  # the casts outside tests, other than target<>'s own definitions
+  local found
+  found=$(git grep -n -E '(\.|->)target<' -- src apps python/src include \
+    ':!include/feran/model/element.hpp' ':!include/feran/model/force.hpp' || true)
+  [ -z "$found" ] || { echo "$found"; echo "lint: ask the element or force for an ability instead" >&2; return 1; }
+}
+check "abilities, not casts: no target<> outside tests" no_casts
 exit $status

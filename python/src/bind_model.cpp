@@ -119,9 +119,9 @@ py::dict geometry(const PyModel& self) {
   for (const Element& e : model.elements) {
     if (e.shaft_segment())
       segments.push_back(&e);
-    else if (e.kind() == "rigid_body")
+    else if (e.mass_properties())
       bodies.push_back(&e);
-    else if (e.kind() == "spring_damper")
+    else if (e.connection())
       springs.push_back(&e);
   }
   const auto x = [&](Index node) { return model.nodes[static_cast<std::size_t>(node)].x; };

@@ -79,7 +79,7 @@ void check_distinct(const std::vector<Index>& items, std::string_view option, st
 std::vector<Index> default_probes(const Model& model, std::span<const HarmonicForce> extra) {
   std::vector<Index> probes;
   for (const Force& f : model.forces)
-    if (f.kind() == "unbalance")
+    if (f.synchronous_inertia())  // an unbalance
       for (const Index node : f.nodes()) add_once(probes, node);
   for (const HarmonicForce& f : extra) add_once(probes, f.node);
   return probes;
@@ -256,15 +256,17 @@ std::pair<Real, Real> speed_span(const Model& model, const TransientOptions& opt
   return {low, high};
 }
 
+// The model's connecting elements (connection(), model/element.hpp) are its
+// spring–dampers: the bearings its analyses name.
 Index spring_element(const Model& model, const std::string& name) {
   for (std::size_t e = 0; e < model.elements.size(); ++e)
-    if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name) return static_cast<Index>(e);
+    if (model.elements[e].connection() && model.elements[e].label() == name) return static_cast<Index>(e);
   throw Error(fmt::format("no spring-damper is named '{}'", name));
 }
 
 Index bearing_element(const Model& model, const std::string& name) {
   for (std::size_t e = 0; e < model.elements.size(); ++e)
-    if (model.elements[e].kind() == "spring_damper" && model.elements[e].label() == name) return static_cast<Index>(e);
+    if (model.elements[e].connection() && model.elements[e].label() == name) return static_cast<Index>(e);
   Index k = static_cast<Index>(model.elements.size());
   std::vector<std::string> names;
   for (const Force& f : model.forces) {
@@ -274,7 +276,7 @@ Index bearing_element(const Model& model, const std::string& name) {
     if (!f.label().empty()) names.push_back(fmt::format("'{}'", f.label()));
   }
   for (const Element& e : model.elements)
-    if (e.kind() == "spring_damper" && !e.label().empty()) names.push_back(fmt::format("'{}'", e.label()));
+    if (e.connection() && !e.label().empty()) names.push_back(fmt::format("'{}'", e.label()));
   throw Error(
       fmt::format("no spring-damper, journal or rolling bearing is named '{}'{}", name,
                   names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
@@ -307,7 +309,7 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, 
   options.extra_forces = request.extra_forces;
   // Forces that excite at the swept frequency (all harmonic ones but unbalances).
   const bool any_force = std::any_of(model.forces.begin(), model.forces.end(),
-                                     [](const Force& f) { return f.has_harmonic() && f.kind() != "unbalance"; }) ||
+                                     [](const Force& f) { return f.has_harmonic() && !f.synchronous_inertia(); }) ||
                          !options.extra_forces.empty();
 
   if (request.freq_start || request.freq_stop) {

@@ -100,4 +100,13 @@ LocalMatrices SpringDamper::local_matrices(const OperatingPoint& op) const {
   return out;
 }
 
+SpringDamper SpringDamper::with_lateral_stiffness(Real k) const {
+  SpringDamperCoefficients c = coeffs_;
+  c.k[static_cast<std::size_t>(Dof::v)] = k;
+  c.k[static_cast<std::size_t>(Dof::w)] = k;
+  c.kyz = 0.0;
+  c.kzy = 0.0;
+  return {node_a_, node_b_, c};
+}
+
 }  // namespace feran

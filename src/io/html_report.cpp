@@ -19,7 +19,6 @@
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/core/error.hpp>
-#include <feran/elements/rigid_body.hpp>
 #include <feran/io/model_writer.hpp>
 #include <feran/io/result_writer.hpp>
 #include <feran/io/runup_writer.hpp>
@@ -97,18 +96,17 @@ json model_summary(const ModelFile& file, Real speed) {
                         {"inner_diameter_b_m", seg->section_b.inner_diameter},
                         {"rotating", model.nodes[static_cast<std::size_t>(seg->node_a)].rotating},
                         {"label", el.label()}});
-    } else if (const RigidBody* b = el.target<RigidBody>()) {
-      const RigidBodyProperties& p = b->properties();
+    } else if (const auto p = el.mass_properties()) {
       // A solid cylinder: J_P = m r²/2, J_A = m(3r² + w²)/12.
-      const Real r = p.mass > 0 ? std::sqrt(2 * p.polar_inertia / p.mass) : 0.0;
-      const Real w2 = p.mass > 0 ? 12 * p.transverse_inertia / p.mass - 3 * r * r : 0.0;
+      const Real r = p->mass > 0 ? std::sqrt(2 * p->polar_inertia / p->mass) : 0.0;
+      const Real w2 = p->mass > 0 ? 12 * p->transverse_inertia / p->mass - 3 * r * r : 0.0;
       bodies.push_back({{"label", el.label()},
-                        {"node", b->node()},
-                        {"x_m", model.nodes[static_cast<std::size_t>(b->node())].x + p.offset},
-                        {"mass_kg", p.mass},
-                        {"transverse_inertia_kg_m2", p.transverse_inertia},
-                        {"polar_inertia_kg_m2", p.polar_inertia},
-                        {"rotating", b->rotating()},
+                        {"node", p->node},
+                        {"x_m", model.nodes[static_cast<std::size_t>(p->node)].x + p->offset},
+                        {"mass_kg", p->mass},
+                        {"transverse_inertia_kg_m2", p->transverse_inertia},
+                        {"polar_inertia_kg_m2", p->polar_inertia},
+                        {"rotating", p->rotating},
                         {"drawn_radius_m", r},
                         {"drawn_width_m", w2 > 0 ? std::sqrt(w2) : 0.0}});
     } else if (const auto t = el.transmission(speed)) {

@@ -102,7 +102,7 @@ struct DesignAnalyses::Legacy {
       request.probes = runup_probes_;
       if (all_runup_springs_) {
         for (Index e = 0; e < static_cast<Index>(model_.elements.size()); ++e)
-          if (model_.elements[static_cast<std::size_t>(e)].kind() == "spring_damper") add(runup_springs_, e);
+          if (model_.elements[static_cast<std::size_t>(e)].connection()) add(runup_springs_, e);  // spring–dampers
       }
       request.springs = runup_springs_;
       auto options = runup_settings(model_, spec_.runup, request);

@@ -34,6 +34,10 @@ class RigidBody {
   Index node() const { return node_; }
   const RigidBodyProperties& properties() const { return props_; }
   bool rotating() const { return rotating_; }
+  /// Ability (model/element.hpp): its mass and inertias at its node.
+  MassProperties mass_properties() const {
+    return {node_, props_.mass, props_.transverse_inertia, props_.polar_inertia, props_.offset, rotating_};
+  }
 
  private:
   Index node_;

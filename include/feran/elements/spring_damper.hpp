@@ -42,6 +42,9 @@ class SpringDamper {
   const std::optional<Index>& node_b() const { return node_b_; }
   Connection connection() const { return {node_a_, node_b_}; }
   const SpringDamperCoefficients& coefficients() const { return coeffs_; }
+  /// Ability (model/element.hpp): the same spring–damper with k_yy = k_zz = @p k [N/m]
+  /// and no cross-coupled stiffness, its other coefficients kept.
+  SpringDamper with_lateral_stiffness(Real k) const;
   /// 6×6 stiffness and damping of the relative motion at speed @p speed for motion at
   /// @p frequency [rad/s] (empty: synchronous, frequency = speed).
   Matrix stiffness_6x6(Real speed, std::optional<Real> frequency = std::nullopt) const;

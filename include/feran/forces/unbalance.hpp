@@ -26,6 +26,8 @@ struct Unbalance {
   /// Synchronous only: in a frequency sweep an unbalance acts at Ω, not at ω.
   void add_harmonic(const HarmonicExcitation& e, ComplexVector& f) const;
   void add_transient(const MotionState& s, Vector& f) const;
+  /// m·e²: the inertia of the eccentric mass about the axis (ability, model/force.hpp).
+  Real synchronous_inertia() const { return mass * radius * radius; }
 };
 
 }  // namespace feran

@@ -30,6 +30,14 @@
 ///   operating_data(Real speed)                 the operating state at @p speed of the
 ///     -> std::vector<OperatingValue>           support it stands for (a bearing
 ///                                              linearised about its equilibrium)
+///   with_lateral_stiffness(Real k) -> E        it is a bearing whose lateral direct
+///                                              stiffness can be set, the rest kept: the
+///                                              same element with k_yy = k_zz = k and no
+///                                              cross-coupled stiffness (the critical
+///                                              speed map's sweep of bearing stiffness)
+///   mass_properties() -> MassProperties        it is a lumped rigid mass at a node:
+///                                              its mass and inertias (drawings,
+///                                              summaries)
 ///
 /// To add an element: a header and a source in elements/, its spec type and field
 /// table (spec/), its build step, a test, and its matrices in docs/theory/.
@@ -102,6 +110,16 @@ struct SpeedRange {
   Real high = 0.0;   ///< [rad/s]
 };
 
+/// A lumped rigid mass at a node, as drawings and summaries show it.
+struct MassProperties {
+  Index node = 0;
+  Real mass = 0.0;                ///< [kg]
+  Real transverse_inertia = 0.0;  ///< about a transverse axis through the node [kg m²]
+  Real polar_inertia = 0.0;       ///< about the x axis [kg m²]
+  Real offset = 0.0;              ///< axial position of the centre of mass from the node [m]
+  bool rotating = false;
+};
+
 /// What an element type must provide.
 template <class E>
 concept ElementType = std::copyable<E> && requires(const E& e, const OperatingPoint& op) {
@@ -140,6 +158,14 @@ concept HasConnection = requires(const E& e) {
 template <class E>
 concept HasOperatingState = requires(const E& e, Real speed) {
   { e.operating_data(speed) } -> std::same_as<std::vector<OperatingValue>>;
+};
+template <class E>
+concept HasLateralStiffness = requires(const E& e, Real k) {
+  { e.with_lateral_stiffness(k) } -> std::same_as<E>;
+};
+template <class E>
+concept HasMassProperties = requires(const E& e) {
+  { e.mass_properties() } -> std::same_as<MassProperties>;
 };
 template <class E>
 concept HasDofs = requires(const E& e) {
@@ -195,6 +221,15 @@ class Element {
   /// The operating state at @p speed [rad/s] of the support it stands for, if it
   /// stands for one (a bearing linearised about its equilibrium).
   std::optional<std::vector<OperatingValue>> operating_data(Real speed) const { return self_->operating_data(speed); }
+  /// The same bearing with lateral direct stiffness @p k [N/m] and no cross-coupled
+  /// stiffness, its other coefficients kept; empty without the ability.
+  std::optional<Element> with_lateral_stiffness(Real k) const {
+    std::unique_ptr<Concept> changed = self_->with_lateral_stiffness(k);
+    if (!changed) return std::nullopt;
+    return Element(std::move(changed), label_);
+  }
+  /// Its mass and inertias, if it is a lumped rigid mass.
+  std::optional<MassProperties> mass_properties() const { return self_->mass_properties(); }
 
   /// The wrapped element if it is an E, else nullptr (for inspection: analyses and
   /// writers ask for abilities instead).
@@ -205,6 +240,9 @@ class Element {
   }
 
  private:
+  struct Concept;
+  Element(std::unique_ptr<Concept> self, std::string label) : self_(std::move(self)), label_(std::move(label)) {}
+
   struct Concept {
     virtual ~Concept() = default;
     virtual std::unique_ptr<Concept> clone() const = 0;
@@ -219,6 +257,8 @@ class Element {
     virtual std::optional<Connection> connection() const = 0;
     virtual std::vector<SpeedRange> speed_ranges() const = 0;
     virtual std::optional<std::vector<OperatingValue>> operating_data(Real speed) const = 0;
+    virtual std::optional<MassProperties> mass_properties() const = 0;
+    virtual std::unique_ptr<Concept> with_lateral_stiffness(Real k) const = 0;
     virtual const std::type_info& type() const = 0;
     virtual const void* data() const = 0;
   };
@@ -281,6 +321,18 @@ class Element {
         return value.operating_data(speed);
       else
         return std::nullopt;
+    }
+    std::optional<MassProperties> mass_properties() const override {
+      if constexpr (HasMassProperties<E>)
+        return value.mass_properties();
+      else
+        return std::nullopt;
+    }
+    std::unique_ptr<Concept> with_lateral_stiffness(Real k) const override {
+      if constexpr (HasLateralStiffness<E>)
+        return std::make_unique<Holder<E>>(value.with_lateral_stiffness(k));
+      else
+        return nullptr;
     }
     const std::type_info& type() const override { return typeid(E); }
     const void* data() const override { return &value; }

@@ -39,6 +39,13 @@
 ///                                                              journal moves in: responses
 ///                                                              give each orbit as a fraction
 ///                                                              of it
+///   synchronous_inertia()                                      a mass turning with the rotor
+///                                                              at an eccentricity (an
+///                                                              unbalance): its m·e² [kg m²],
+///                                                              which a torque-driven drive
+///                                                              also accelerates; its load is
+///                                                              the rotor speed's (default
+///                                                              probes, API 684's placement)
 ///
 /// Vectors are over all unconstrained DOFs (global_dof order); add_* add into them.
 /// To add a force: a type in forces/ with kind(), nodes() and its abilities, its
@@ -144,6 +151,12 @@ concept HasClearance = requires(const F& f) {
   { f.clearance() } -> std::convertible_to<Real>;
 };
 
+/// A mass turning with the rotor at an eccentricity (an unbalance).
+template <class F>
+concept HasSynchronousInertia = requires(const F& f) {
+  { f.synchronous_inertia() } -> std::convertible_to<Real>;
+};
+
 /// A type-erased force with value semantics (copies are deep).
 class Force {
  public:
@@ -197,6 +210,8 @@ class Force {
   }
   /// The radial clearance its journal moves in [m]; empty without the ability.
   std::optional<Real> clearance() const { return self_->clearance(); }
+  /// The m·e² [kg m²] of a mass turning with the rotor (an unbalance); empty for others.
+  std::optional<Real> synchronous_inertia() const { return self_->synchronous_inertia(); }
   /// The global DOFs of a nonlinear force (empty for others).
   std::vector<Index> dofs() const { return self_->dofs(); }
   /// Force and Jacobian of a nonlinear force at local displacements @p x and
@@ -232,6 +247,7 @@ class Force {
     virtual Real drag_torque(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual std::vector<OperatingValue> operating_data(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual std::optional<Real> clearance() const = 0;
+    virtual std::optional<Real> synchronous_inertia() const = 0;
     virtual std::vector<Index> dofs() const = 0;
     virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual const std::type_info& type() const = 0;
@@ -284,6 +300,12 @@ class Force {
     std::optional<Real> clearance() const override {
       if constexpr (HasClearance<F>)
         return static_cast<Real>(value.clearance());
+      else
+        return std::nullopt;
+    }
+    std::optional<Real> synchronous_inertia() const override {
+      if constexpr (HasSynchronousInertia<F>)
+        return static_cast<Real>(value.synchronous_inertia());
       else
         return std::nullopt;
     }

@@ -215,7 +215,7 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
 
   // The unbalance cases.
   Model base = model;
-  std::erase_if(base.forces, [](const Force& f) { return f.kind() == "unbalance"; });
+  std::erase_if(base.forces, [](const Force& f) { return f.synchronous_inertia().has_value(); });  // unbalances
   const auto respond = [&](Api684Case c, const Model& m) {
     HarmonicOptions h;
     h.speeds = speeds;

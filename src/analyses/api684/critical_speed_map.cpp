@@ -255,12 +255,15 @@ Model with_bearing_stiffness(const Model& model, const std::vector<Index>& sprin
   for (const Index e : springs) {
     const Connection connection = bearing_at(model, e);
     const Element& element = model.elements[static_cast<std::size_t>(e)];
+    if (std::optional<Element> changed = element.with_lateral_stiffness(k)) {
+      out.elements[static_cast<std::size_t>(e)] = std::move(*changed);
+      continue;
+    }
+    // A bearing without the ability (the linearised journal and rolling bearings):
+    // the lateral stiffness alone.
     SpringDamperCoefficients c;
-    if (const SpringDamper* s = element.target<SpringDamper>()) c = s->coefficients();
     c.k[static_cast<std::size_t>(Dof::v)] = k;
     c.k[static_cast<std::size_t>(Dof::w)] = k;
-    c.kyz = 0.0;
-    c.kzy = 0.0;
     out.elements[static_cast<std::size_t>(e)] =
         Element(SpringDamper(connection.node_a, connection.node_b, c), element.label());
   }

@@ -103,11 +103,10 @@ void RotorSystem::set_up_drive(const Drive& drive) {
   const auto unbalance_part = [&](Real speed, Real acceleration, Real angle) {
     Vector f = Vector::Zero(model_.n_dofs());
     for (const Force& force : model_.forces)
-      if (const Unbalance* u = force.target<Unbalance>()) u->add_transient({0.0, speed, acceleration, angle}, f);
+      if (force.synchronous_inertia()) force.add_transient({0.0, speed, acceleration, angle}, f);
     return Vector(Tt * f);
   };
-  for (const Force& force : model_.forces)
-    if (const Unbalance* u = force.target<Unbalance>()) unbalance_inertia += u->mass * u->radius * u->radius;
+  for (const Force& force : model_.forces) unbalance_inertia += force.synchronous_inertia().value_or(0.0);
   S0_ = unbalance_part(0.0, 1.0, 0.0);
   S90_ = unbalance_part(0.0, 1.0, pi / 2);
   C0_ = unbalance_part(1.0, 0.0, 0.0);
