@@ -79,7 +79,7 @@ void check_distinct(const std::vector<Index>& items, std::string_view option, st
 std::vector<Index> default_probes(const Model& model, std::span<const HarmonicForce> extra) {
   std::vector<Index> probes;
   for (const Force& f : model.forces)
-    if (f.synchronous_inertia())  // an unbalance
+    if (is_unbalance(f))
       for (const Index node : f.nodes()) add_once(probes, node);
   for (const HarmonicForce& f : extra) add_once(probes, f.node);
   return probes;
@@ -308,9 +308,8 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, 
                                       : StationOutput::summary;
   options.extra_forces = request.extra_forces;
   // Forces that excite at the swept frequency (all harmonic ones but unbalances).
-  const bool any_force = std::any_of(model.forces.begin(), model.forces.end(),
-                                     [](const Force& f) { return f.has_harmonic() && !f.synchronous_inertia(); }) ||
-                         !options.extra_forces.empty();
+  const bool any_force =
+      std::any_of(model.forces.begin(), model.forces.end(), is_harmonic_force) || !options.extra_forces.empty();
 
   if (request.freq_start || request.freq_stop) {
     if (!request.freq_start || !request.freq_stop)
@@ -340,7 +339,7 @@ HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, 
       options.speeds = linspace(start, *stop, points);
     }
   }
-  if (options.frequencies.empty() && (model.n_forces("unbalance") == 0 || !options.unbalance) && !any_force)
+  if (options.frequencies.empty() && (model.count_forces(is_unbalance) == 0 || !options.unbalance) && !any_force)
     throw Error(
         "response: nothing excites the rotor: the model has no [[unbalances]] or "
         "[[forces]] and no --force was given");

@@ -336,7 +336,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
   data["modes"] = modes;
 
   // Unbalance response and the deflected shape.
-  if (model.n_forces("unbalance") > 0 || model.n_forces("harmonic_force") > 0 ||
+  if (model.count_forces(is_unbalance) > 0 || model.count_forces(is_harmonic_force) > 0 ||
       !options.response.extra_forces.empty()) {
     section(
         data, "response",

@@ -63,8 +63,8 @@ std::string response_report(const HarmonicResult& result, const HarmonicOptions&
                        speed_text(result.speeds.front(), source.speed_unit),
                        speed_text(result.speeds.back(), source.speed_unit), n);
   out += fmt::format(", {} unbalance(s), {} force(s), loss factor {}\n\n",
-                     (!result.frequency_sweep && options.unbalance) ? model.n_forces("unbalance") : std::size_t{0},
-                     model.n_forces("harmonic_force") + options.extra_forces.size(), options.loss_factor);
+                     (!result.frequency_sweep && options.unbalance) ? model.count_forces(is_unbalance) : std::size_t{0},
+                     model.count_forces(is_harmonic_force) + options.extra_forces.size(), options.loss_factor);
 
   if (!result.probes.empty()) {
     const std::size_t rows = std::min<std::size_t>(n, 11);

@@ -86,8 +86,7 @@ std::string response_json(const HarmonicResult& result, const HarmonicOptions& o
   j["frequencies_hz"] = numbers(freqs);
   j["loss_factor"] = options.loss_factor;
   j["unbalance"] = options.unbalance && !result.frequency_sweep &&
-                   std::any_of(model.forces.begin(), model.forces.end(),
-                               [](const Force& f) { return f.synchronous_inertia().has_value(); });
+                   std::any_of(model.forces.begin(), model.forces.end(), is_unbalance);
   j["solver"] = solver_json(result.info);
   j["stability"] = point_stability_json(result.stability);
 

@@ -330,4 +330,10 @@ class Force {
   std::string label_;
 };
 
+/// An unbalance: a mass turning with the rotor (the synchronous_inertia() ability).
+inline bool is_unbalance(const Force& f) { return f.synchronous_inertia().has_value(); }
+/// A harmonic load that is not an unbalance: it excites at its own or the swept
+/// frequency (harmonic forces and moments).
+inline bool is_harmonic_force(const Force& f) { return f.has_harmonic() && !is_unbalance(f); }
+
 }  // namespace feran

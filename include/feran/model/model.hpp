@@ -71,6 +71,14 @@ struct Model {
   Index n_dofs() const { return dofs_per_node * n_nodes(); }
   /// Number of forces of kind @p kind ("unbalance", "harmonic_force", …).
   std::size_t n_forces(std::string_view kind) const;
+  /// Number of forces with the ability @p has asks of them (a predicate on a Force,
+  /// e.g. [](const Force& f) { return f.has_static(); }): what analyses count.
+  template <class Has>
+  std::size_t count_forces(Has&& has) const {
+    std::size_t n = 0;
+    for (const Force& f : forces) n += has(f) ? 1 : 0;
+    return n;
+  }
   /// Index of the node with user number @p number, or -1.
   Index find_node(int number) const;
   /// Index of the node named @p name, or -1.

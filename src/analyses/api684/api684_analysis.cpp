@@ -215,7 +215,7 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
 
   // The unbalance cases.
   Model base = model;
-  std::erase_if(base.forces, [](const Force& f) { return f.synchronous_inertia().has_value(); });  // unbalances
+  std::erase_if(base.forces, is_unbalance);
   const auto respond = [&](Api684Case c, const Model& m) {
     HarmonicOptions h;
     h.speeds = speeds;
@@ -236,7 +236,7 @@ Api684Result run_api684(const Model& model, const Api684Options& options) {
     result.cases.push_back(std::move(c));
   };
   if (options.model_unbalance) {
-    if (model.n_forces("unbalance") == 0)
+    if (model.count_forces(is_unbalance) == 0)
       throw Error("the model has no [[unbalances]]: give some, or use the analytical unbalance (4W/N)");
     Api684Case c;
     c.name = "model unbalance";

@@ -230,7 +230,8 @@ std::string StaticAnalysis::terminal(const Outcome<StaticAnalysis>& o) {
   std::string out = source_line("static", source);
   out += fmt::format("gravity ({:.4g}, {:.4g}, {:.4g}) m/s^2, {} static load(s), coefficients at {}\n\n",
                      options.gravity(0), options.gravity(1), options.gravity(2),
-                     options.loads ? model.n_forces("static_load") : 0, speed_text(options.speed, source.speed_unit));
+                     options.loads ? model.count_forces([](const Force& f) { return f.has_static(); }) : 0,
+                     speed_text(options.speed, source.speed_unit));
   if (result.stability.known && result.stability.unstable)
     out +=
         fmt::format("warning: the rotor does not stay at this equilibrium: {}\n\n", stability_phrase(result.stability));
