@@ -1,14 +1,17 @@
 #pragma once
 /// @file
-/// Analysis settings: what a caller asks for, the model file's analysis tables and
-/// the built-in defaults, resolved into each analysis's options in one place.
+/// Analysis settings of the analyses not yet in rooms of their own (response, run-up,
+/// API 684): what a caller asks for, the model file's analysis tables and the built-in
+/// defaults, resolved into each analysis's options in one place; and what all analyses
+/// share (default probes, range warnings, bearings by name). The analyses in rooms take
+/// their options through analyses/analysis.hpp's generic request step instead.
 ///
 /// Every caller — the command line, a C++ program, the Python module, a design study —
 /// fills a request with what it wants to set and leaves the rest empty; the function
-/// of the analysis takes each empty member from the model file's table ([modal],
-/// [campbell], [response], [static], [runup]) and then from the built-in default,
-/// and checks what the combination must satisfy. Requests hold SI values (speeds in
-/// rad/s). Library requests run on one thread unless they say otherwise.
+/// of the analysis takes each empty member from the model file's table ([response],
+/// [runup], [api684]) and then from the built-in default, and checks what the
+/// combination must satisfy. Requests hold SI values (speeds in rad/s). Library
+/// requests run on one thread unless they say otherwise.
 
 #include <optional>
 #include <span>
