@@ -95,7 +95,7 @@ Runner add_analysis_command(CLI::App& app) {
         spec::set_text(request, *field, text, flag_name(field->key));
     }
     Outcome<A> outcome = run_analysis<A>(
-        file, request, [](std::string_view key) { return flag_name(key); }, interrupt_token());
+        file, request, [](std::string_view key) { return flag_name(key); }, interrupt_token(), args->threads);
     print_warnings(outcome.source.warnings);
     outcome.source.speed_unit = args->out.speed_unit;
     const SolverInfo& info = outcome.result.info;
