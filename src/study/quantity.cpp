@@ -10,6 +10,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/harmonic/api684.hpp>
@@ -55,6 +56,29 @@ std::string ordinal(int n) {
 }
 
 std::string rpm(Real speed) { return approximate_quantity(speed, Quantity::speed, "rpm"); }
+
+Real extreme_bearing_value(const QuantitySpec& q, bool smallest, const std::vector<BearingValues>& bearings,
+                           const std::string& where) {
+  if (bearings.empty()) throw Error("the model has no journal or rolling bearing");
+  Real best = std::numeric_limits<Real>::quiet_NaN();
+  bool named = false;
+  for (const BearingValues& b : bearings) {
+    if (q.bearing && *q.bearing != b.label) continue;
+    named = true;
+    if (std::find(b.quantities.begin(), b.quantities.end(), q.value) == b.quantities.end())
+      throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", b.label, q.value,
+                              fmt::join(b.quantities, ", ")));
+    for (const Real v : b.values)
+      if (std::isfinite(v) && (std::isnan(best) || (smallest ? v < best : v > best))) best = v;
+  }
+  if (!named) {
+    std::vector<std::string> labels;
+    for (const BearingValues& b : bearings) labels.push_back(b.label);
+    throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(labels, ", ")));
+  }
+  if (std::isnan(best)) throw Error(fmt::format("no value of '{}'{}", q.value, where));
+  return best * (q.value.ends_with("_deg") ? pi / 180 : 1.0);
+}
 
 namespace {
 

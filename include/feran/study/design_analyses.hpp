@@ -90,4 +90,19 @@ bool selected(Whirl w, WhirlSelection s);
 /// A speed as messages give it, in rpm.
 std::string rpm(Real speed);
 
+/// One bearing's state as a bearing-value quantity reads it: its label, the operating
+/// quantities it has, and its values of the quantity's `value` at the points counted.
+struct BearingValues {
+  std::string label;
+  std::vector<std::string> quantities;
+  std::vector<Real> values;
+};
+/// The smallest (@p smallest) or largest finite value of @p q's `value` over the
+/// bearings @p q selects (all, or the one named `bearing`), angles in rad. Throws Error
+/// for a model without bearings, a bearing not named so, a quantity a bearing does not
+/// have, or no value at all (@p where says where the analysis looked: " at the
+/// equilibrium", " between 0 and 3000 rpm").
+Real extreme_bearing_value(const QuantitySpec& q, bool smallest, const std::vector<BearingValues>& bearings,
+                           const std::string& where);
+
 }  // namespace feran

@@ -351,28 +351,16 @@ Real bearing_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
   // the equilibrium about which the diagram linearises it.
   const CampbellResult& c = a.result<CampbellAnalysis>();
   const Real low = q.low.value_or(c.speeds.front()), high = q.high.value_or(c.speeds.back());
-  const Real scale = q.value.ends_with("_deg") ? pi / 180 : 1.0;
-  Real best = std::numeric_limits<Real>::quiet_NaN();
-  bool named = false;
-  std::vector<std::string> bearings;
+  std::vector<BearingValues> bearings;
   for (const OperatingSeries& s : c.operating) {
-    const std::string label = a.model().forces[static_cast<std::size_t>(s.force)].label();
-    bearings.push_back(label);
-    if (q.bearing && *q.bearing != label) continue;
-    named = true;
+    BearingValues& b = bearings.emplace_back();
+    b.label = a.model().forces[static_cast<std::size_t>(s.force)].label();
+    b.quantities = s.quantities;
     const std::vector<Real> values = s.series(q.value);
-    if (values.empty())
-      throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", label, q.value,
-                              fmt::join(s.quantities, ", ")));
     for (std::size_t k = 0; k < values.size(); ++k)
-      if (c.speeds[k] >= low && c.speeds[k] <= high && std::isfinite(values[k]))
-        if (std::isnan(best) || (smallest ? values[k] < best : values[k] > best)) best = values[k];
+      if (c.speeds[k] >= low && c.speeds[k] <= high) b.values.push_back(values[k]);
   }
-  if (c.operating.empty()) throw Error("the model has no journal or rolling bearing");
-  if (!named)
-    throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(bearings, ", ")));
-  if (std::isnan(best)) throw Error(fmt::format("no value of '{}' between {} and {}", q.value, rpm(low), rpm(high)));
-  return best * scale;
+  return extreme_bearing_value(q, smallest, bearings, fmt::format(" between {} and {}", rpm(low), rpm(high)));
 }
 
 }  // namespace

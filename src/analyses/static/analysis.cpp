@@ -332,31 +332,16 @@ Real static_spring_force(DesignAnalyses& a, const QuantitySpec& q, std::string&)
 template <bool smallest>
 Real static_bearing_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
   const StaticResult& r = stable_result(a);
-  if (r.supports.empty()) throw Error("the model has no journal or rolling bearing");
-  const Real scale = q.value.ends_with("_deg") ? pi / 180 : 1.0;
-  Real best = std::numeric_limits<Real>::quiet_NaN();
-  std::vector<std::string> bearings;
-  bool named = false;
+  std::vector<BearingValues> bearings;
   for (std::size_t i = 0; i < r.supports.size(); ++i) {
-    const std::string& label = a.model().forces[static_cast<std::size_t>(r.supports[i].first)].label();
-    bearings.push_back(label);
-    if (q.bearing && *q.bearing != label) continue;
-    named = true;
-    const auto& data = r.support_data[i];
-    const auto it = std::find_if(data.begin(), data.end(), [&](const OperatingValue& v) { return v.name == q.value; });
-    if (it == data.end()) {
-      std::vector<std::string> names;
-      for (const OperatingValue& v : data) names.push_back(v.name);
-      throw Error(fmt::format("bearing '{}' has no operating quantity '{}'; it has {}", label, q.value,
-                              fmt::join(names, ", ")));
+    BearingValues& b = bearings.emplace_back();
+    b.label = a.model().forces[static_cast<std::size_t>(r.supports[i].first)].label();
+    for (const OperatingValue& v : r.support_data[i]) {
+      b.quantities.push_back(v.name);
+      if (v.name == q.value) b.values.push_back(v.value);
     }
-    if (std::isfinite(it->value) && (std::isnan(best) || (smallest ? it->value < best : it->value > best)))
-      best = it->value;
   }
-  if (!named)
-    throw Error(fmt::format("no bearing named '{}'; the bearings are {}", *q.bearing, fmt::join(bearings, ", ")));
-  if (std::isnan(best)) throw Error(fmt::format("'{}' has no value at the equilibrium", q.value));
-  return best * scale;
+  return extreme_bearing_value(q, smallest, bearings, " at the equilibrium");
 }
 
 }  // namespace
