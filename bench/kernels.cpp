@@ -9,7 +9,7 @@
 #include <string>
 
 #include <feran/core/parallel.hpp>
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/transient/integrator.hpp>
 #include <feran/analyses/transient/rotor_system.hpp>

@@ -51,11 +51,11 @@ Runner add_analysis_command(CLI::App& app) {
         f.default_text.empty() ? spec::value_text(A::defaults(), f) : std::string(f.default_text);
     std::string names;
     if (!f.short_name.empty()) names.append("-").append(f.short_name).append(",");
-    names += flag_name(f.key);
+    names += flag_name(spec::option_name(f));
     if (f.kind == spec::FieldKind::flag) {
       // A flag on by default is turned off (--no-loads), one off by default on.
       const bool on = default_text == "true";
-      const std::string flag = on ? "--no-" + flag_name(f.key).substr(2) : names;
+      const std::string flag = on ? "--no-" + flag_name(spec::option_name(f)).substr(2) : names;
       cmd->add_flag_callback(
           flag, [args, field, on] { args->given.emplace_back(field, on ? "false" : "true"); },
           flag_help(std::string(f.key) + (on ? " = false: " : " = true: ") + std::string(f.doc), on ? "true" : "false",
@@ -92,10 +92,11 @@ Runner add_analysis_command(CLI::App& app) {
       if (field->kind == spec::FieldKind::flag)
         spec::set_flag(request, *field, text == "true");
       else
-        spec::set_text(request, *field, text, flag_name(field->key));
+        spec::set_text(request, *field, text, flag_name(spec::option_name(*field)));
     }
     Outcome<A> outcome = run_analysis<A>(
-        file, request, [](std::string_view key) { return flag_name(key); }, interrupt_token(), args->threads);
+        file, request, [](std::string_view key) { return flag_name(spec::option_name<Spec>(key)); }, interrupt_token(),
+        args->threads);
     print_warnings(outcome.source.warnings);
     outcome.source.speed_unit = args->out.speed_unit;
     const SolverInfo& info = outcome.result.info;

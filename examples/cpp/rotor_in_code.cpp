@@ -21,7 +21,7 @@
 // One header per part of the library: the specification and its parameter paths
 // (spec/), the builder, and the analysis settings that resolve a request against
 // the built-in defaults (analyses/settings.hpp, also used by the command line).
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/spec/build_model.hpp>
@@ -144,11 +144,12 @@ int main() {
     // @sect4{The unbalance response}
     //
     // At the critical speed the unbalance force m_u·e·Ω² is resisted by the damper
-    // alone: the orbit radius is m_u·e·Ω/c. response_settings() takes the probes from
-    // the unbalanced nodes by default.
-    ResponseRequest request;
+    // alone: the orbit radius is m_u·e·Ω/c. The response's options take the probes
+    // from the unbalanced nodes by default.
+    ResponseSpec request;
     request.speed = after;  // the response at one speed
-    const HarmonicOptions options = response_settings(model, spec.response, request);
+    const HarmonicOptions options =
+        analysis_options<ResponseAnalysis>(spec, model, request, [](std::string_view key) { return std::string(key); });
     const HarmonicResult response = run_harmonic_response(model, options);
     if (!response.info.converged()) {
       std::fprintf(stderr, "response failed: %s\n", response.info.message.c_str());

@@ -41,7 +41,7 @@ std::string given(const py::handle& value);
 template <class S>
 void set_keyword(S& request, const spec::Field<S>& f, const py::handle& value, std::string_view function) {
   using spec::FieldKind;
-  const std::string key(f.key);
+  const std::string key(spec::option_name(f));
   if (value.is_none()) return;
   const bool is_bool = py::isinstance<py::bool_>(value);
   const bool is_int = py::isinstance<py::int_>(value) && !is_bool;
@@ -60,9 +60,12 @@ void set_keyword(S& request, const spec::Field<S>& f, const py::handle& value, s
       spec::set_text(request, f, std::to_string(value.cast<long long>()), key);
       return;
     case FieldKind::quantity:
-    case FieldKind::number:
       if (is_text) break;
-      if (!is_number) wrong(f.kind == FieldKind::quantity ? "text with its unit or a number in SI units" : "a number");
+      if (!is_number) wrong("text with its unit or a number in SI units");
+      spec::set_number(request, f, value.cast<double>(), key);
+      return;
+    case FieldKind::number:
+      if (!is_number) wrong("a number");
       spec::set_number(request, f, value.cast<double>(), key);
       return;
     case FieldKind::node:
@@ -114,10 +117,10 @@ typename A::Spec request_from_keywords(const py::kwargs& keywords) {
     const py::handle k = item.first, v = item.second;
     const std::string key = py::str(k);
     if (parallel_analysis<A>() && key == "threads") continue;  // the door's, not the analysis's
-    const spec::Field<S>* f = spec::find_field<S>(key);
+    const spec::Field<S>* f = spec::find_option<S>(key);
     if (f == nullptr) {
       std::vector<std::string> known;
-      for (const spec::Field<S>& field : spec::fields_of<S>()) known.emplace_back(field.key);
+      for (const spec::Field<S>& field : spec::fields_of<S>()) known.emplace_back(spec::option_name(field));
       if (parallel_analysis<A>()) known.emplace_back("threads");
       std::string message = fmt::format("{}(): has no argument '{}'", A::name, key);
       if (const auto match = detail::closest_match(key, known, 2))
@@ -139,7 +142,7 @@ py::list option_descriptions() {
   py::list out;
   for (const spec::Field<typename A::Spec>& f : spec::fields_of<typename A::Spec>())
     out.append(
-        py::make_tuple(std::string(f.key), static_cast<int>(f.kind), std::string(f.doc),
+        py::make_tuple(std::string(spec::option_name(f)), static_cast<int>(f.kind), std::string(f.doc),
                        f.default_text.empty() ? spec::value_text(A::defaults(), f) : std::string(f.default_text)));
   if (parallel_analysis<A>())
     out.append(py::make_tuple(std::string("threads"), -1,
@@ -190,7 +193,9 @@ void bind_analysis(py::module_& m, py::dict& descriptions) {
         } catch (const Error& e) {
           throw Error(fmt::format("{}: {}", A::name, e.what()));
         }
-        const OptionName name = [](std::string_view key) { return std::string(key); };
+        const OptionName name = [](std::string_view key) {
+          return std::string(spec::option_name<typename A::Spec>(key));
+        };
         const int threads = parallel_analysis<A>() ? threads_keyword(keywords, A::name) : 1;
         Result out;
         if constexpr (keeps_partial_results<A>()) {

@@ -229,6 +229,7 @@ STUDY_REFUSALS = REFUSALS + [
     r"the model has no unbalance|no \[\[unbalances\]\]",
     r"the model has no journal or rolling bearing",
     r"the rotor does not stay at its static equilibrium",  # a static quantity of an unstable equilibrium
+    r"the rotor is unstable at .* where the response is no steady state",  # a response quantity there
     r"failed",                                        # an analysis that did not converge, named
 ]
 

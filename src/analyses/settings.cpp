@@ -21,13 +21,6 @@ namespace feran {
 
 namespace {
 
-std::vector<Real> linspace(Real a, Real b, int n) {
-  if (n == 1) return {a};
-  std::vector<Real> out(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = a + (b - a) * i / (n - 1);
-  return out;
-}
-
 void add_once(std::vector<Index>& nodes, Index node) {
   if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
 }
@@ -75,6 +68,13 @@ void check_distinct(const std::vector<Index>& items, std::string_view option, st
 }
 
 }  // namespace
+
+std::vector<Real> evenly_spaced(Real a, Real b, int n) {
+  if (n == 1) return {a};
+  std::vector<Real> out(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = a + (b - a) * i / (n - 1);
+  return out;
+}
 
 std::vector<Index> default_probes(const Model& model, std::span<const HarmonicForce> extra) {
   std::vector<Index> probes;
@@ -280,74 +280,6 @@ Index bearing_element(const Model& model, const std::string& name) {
   throw Error(
       fmt::format("no spring-damper, journal or rolling bearing is named '{}'{}", name,
                   names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
-}
-
-StationOutput station_output(std::string_view name) {
-  for (StationOutput o : {StationOutput::all, StationOutput::summary, StationOutput::none})
-    if (name == to_string(o)) return o;
-  throw Error(fmt::format("stations must be all, summary or none, got '{}'", name));
-}
-
-HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, const ResponseRequest& request) {
-  HarmonicOptions options;
-  options.unbalance = request.unbalance;
-  options.stability = request.stability;
-  options.n_threads = request.n_threads;
-  options.loss_factor = checked<ResponseSpec>(request.loss_factor, "loss_factor", "--loss-factor")
-                            .value_or(file.loss_factor.value_or(0.0));
-  checked<ResponseSpec>(request.freq_start, "start", "--freq-start");
-  checked<ResponseSpec>(request.freq_stop, "stop", "--freq-stop");
-  checked<ResponseSpec>(request.speed, "start", "--speed");
-  checked<ResponseSpec>(request.start, "start", "--start");
-  checked<ResponseSpec>(request.stop, "stop", "--stop");
-  checked_count<ResponseSpec>(request.points, "points", "--points");
-  checked_count<ResponseSpec>(request.freq_points, "points", "--freq-points");
-  check_distinct(request.probes, "--probe", "node", [&](Index n) { return model.node_label(n); });
-  options.stations = request.stations ? *request.stations
-                     : file.stations  ? station_output(*file.stations)
-                                      : StationOutput::summary;
-  options.extra_forces = request.extra_forces;
-  // Forces that excite at the swept frequency (all harmonic ones but unbalances).
-  const bool any_force =
-      std::any_of(model.forces.begin(), model.forces.end(), is_harmonic_force) || !options.extra_forces.empty();
-
-  if (request.freq_start || request.freq_stop) {
-    if (!request.freq_start || !request.freq_stop)
-      throw Error("response: a frequency sweep needs both --freq-start and --freq-stop");
-    if (!(*request.freq_stop > *request.freq_start)) throw Error("response: --freq-stop must be above --freq-start");
-    options.frequencies =
-        linspace(*request.freq_start, *request.freq_stop, request.freq_points.value_or(defaults::frequency_points));
-    options.speed = request.speed.value_or(0.0);
-    if (!any_force)
-      throw Error(
-          "response: a frequency sweep needs a harmonic force: add --force "
-          "NODE:DIRECTION:AMPLITUDE or [[forces]] in the model");
-  } else if (request.speed && !request.start && !request.stop) {
-    options.speeds = {*request.speed};  // the response at one speed
-  } else {
-    const Real start = request.start.value_or(file.start.value_or(0.0));
-    const int points = request.points.value_or(file.points.value_or(defaults::response_points));
-    const std::optional<Real> stop = request.stop ? request.stop : file.stop;
-    if (points == 1) {
-      options.speeds = {start};
-    } else {
-      if (!stop)
-        throw Error(
-            "response: give the last speed with --stop (e.g. --stop 80Hz) or in the "
-            "model's [response] table (or one point: --points 1 or --speed)");
-      if (!(*stop > start)) throw Error("response: the last speed must be above the first");
-      options.speeds = linspace(start, *stop, points);
-    }
-  }
-  if (options.frequencies.empty() && (model.count_forces(is_unbalance) == 0 || !options.unbalance) && !any_force)
-    throw Error(
-        "response: nothing excites the rotor: the model has no [[unbalances]] or "
-        "[[forces]] and no --force was given");
-
-  options.probes = !request.probes.empty() ? request.probes
-                   : !file.probes.empty()  ? node_indices(model, file.probes)
-                                           : default_probes(model, options.extra_forces);
-  return options;
 }
 
 TransientOptions runup_settings(const Model& model, const RunupSpec& file, const RunupRequest& request) {

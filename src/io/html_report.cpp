@@ -15,6 +15,7 @@
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
+#include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -264,6 +265,28 @@ std::vector<std::string> report_study_files(const ReportOptions& options) {
   return out;
 }
 
+namespace {
+
+// Each resonance peak of a response's probes with its amplification factor and its
+// margins from the operating range [@p low, @p high] (API 684).
+json separation_json(const HarmonicResult& hr, Real low, Real high) {
+  json peaks = json::array();
+  for (std::size_t p = 0; p < hr.probes.size(); ++p) {
+    for (const SeparationCheck& c : separation_checks(hr, p, low, high))
+      peaks.push_back({{"probe", p},
+                       {"speed_rpm", rad_to_hz(c.peak.speed) * 60},
+                       {"amplitude_m", c.peak.amplitude},
+                       {"amplification_factor", c.peak.resolved() ? json(c.peak.amplification_factor) : json(nullptr)},
+                       {"actual_margin", c.actual_margin},
+                       {"required_margin", c.required_margin ? json(*c.required_margin) : json(nullptr)},
+                       {"passes", c.passes ? json(*c.passes) : json(nullptr)},
+                       {"unstable", c.unstable}});
+  }
+  return peaks;
+}
+
+}  // namespace
+
 std::string html_report(const ModelFile& file, const ReportOptions& options, std::string* summary) {
   if (!report_available())
     throw Error(
@@ -337,35 +360,19 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
 
   // Unbalance response and the deflected shape.
   if (model.count_forces(is_unbalance) > 0 || model.count_forces(is_harmonic_force) > 0 ||
-      !options.response.extra_forces.empty()) {
+      !options.response.forces.empty()) {
     section(
         data, "response",
         [&] {
-          ResponseRequest request = options.response;
-          request.n_threads = options.n_threads;
-          if (!request.stations) request.stations = StationOutput::summary;
+          ResponseSpec request = options.response;
+          if (!request.stations) request.stations = "summary";
           if (!request.stop && !spec.response.stop) request.stop = co.speeds.back();
-          HarmonicOptions ho = response_settings(model, spec.response, request);
-          ho.stop = options.stop;
-          const HarmonicResult hr = run_harmonic_response(model, ho);
-          json j = json::parse(response_json(hr, ho, model, source));
+          const Outcome<ResponseAnalysis> response = run_analysis<ResponseAnalysis>(
+              unowned, request, file_key_name<ResponseAnalysis>(), options.stop, options.n_threads);
+          const HarmonicResult& hr = response.result;
+          json j = json::parse(ResponseAnalysis::json(response));
           // With an operating range, each peak's amplification factor and margins (API 684).
-          if (low && high) {
-            json peaks = json::array();
-            for (std::size_t p = 0; p < hr.probes.size(); ++p) {
-              for (const SeparationCheck& c : separation_checks(hr, p, *low, *high))
-                peaks.push_back(
-                    {{"probe", p},
-                     {"speed_rpm", rad_to_hz(c.peak.speed) * 60},
-                     {"amplitude_m", c.peak.amplitude},
-                     {"amplification_factor", c.peak.resolved() ? json(c.peak.amplification_factor) : json(nullptr)},
-                     {"actual_margin", c.actual_margin},
-                     {"required_margin", c.required_margin ? json(*c.required_margin) : json(nullptr)},
-                     {"passes", c.passes ? json(*c.passes) : json(nullptr)},
-                     {"unstable", c.unstable}});
-            }
-            j["peaks"] = peaks;
-          }
+          if (low && high) j["peaks"] = separation_json(hr, *low, *high);
           // The deflected shape at one speed: every node's orbit, from a response there.
           Real at = options.deflection_speed.value_or(0.0);
           if (!options.deflection_speed) {
@@ -374,16 +381,16 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
               for (std::size_t k = 0; k < p.orbit.size(); ++k)
                 if (p.orbit[k].major > best) best = p.orbit[k].major, at = hr.speeds[k];
           }
-          ResponseRequest shape = options.response;
+          ResponseSpec shape = options.response;
           shape.speed = at;
           shape.start.reset();
           shape.stop.reset();
-          shape.points = 1;
+          shape.points.reset();
           shape.probes.clear();
-          for (Index n = 0; n < model.n_nodes(); ++n) shape.probes.push_back(n);
-          shape.stations = StationOutput::none;
-          HarmonicOptions so = response_settings(model, spec.response, shape);
-          j["deflected_shape"] = json::parse(response_json(run_harmonic_response(model, so), so, model, source));
+          for (const Node& n : model.nodes) shape.probes.emplace_back(std::int64_t{n.number});
+          shape.stations = "none";
+          j["deflected_shape"] = json::parse(ResponseAnalysis::json(
+              run_analysis<ResponseAnalysis>(unowned, shape, file_key_name<ResponseAnalysis>(), options.stop)));
           return j;
         },
         options.stop);

@@ -1,4 +1,5 @@
 #include <feran/io/model_reader.hpp>
+#include <feran/io/option_text.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -620,6 +621,14 @@ void build(ModelFile& file, const std::vector<std::pair<std::string, std::string
     check_analysis_tables(file.spec);
     BuildInfo info;
     file.model = build_model(file.spec, &file.source, &info);
+    // The response's forces are text the model's nodes give meaning to.
+    for (std::size_t i = 0; i < file.spec.response.forces.size(); ++i) {
+      try {
+        (void)parse_force_text(file.model, file.spec.response.forces[i], "force");
+      } catch (const Error& e) {
+        throw SpecError(fmt::format("response.forces[{}]", i), e.what());
+      }
+    }
     file.assembler = std::move(info.assembler);
     for (const std::string& path : info.node_paths) file.node_locations.push_back(file.source.locate(path));
   } catch (const SpecError& e) {

@@ -93,7 +93,8 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
     options.response.start = speed(t, "start");
     options.response.stop = speed(t, "stop");
     options.response.points = t.integer("points", 2, 100000);
-    options.response.probes = nodes(t, "probes", model);
+    for (const Index n : nodes(t, "probes", model))
+      options.response.probes.emplace_back(std::int64_t{model.nodes[static_cast<std::size_t>(n)].number});
     options.deflection_speed = speed(t, "deflection_speed");
   }
   for (const char* name : {"static", "runup"})

@@ -48,6 +48,33 @@ json stability_point_json(const StabilityPoint& p) {
           {"message", stability_phrase(p)}};
 }
 
+json point_stability_json(const std::vector<StabilityPoint>& points) {
+  if (points.empty()) return nullptr;
+  json unstable = json::array(), growth = json::array(), frequency = json::array(), kind = json::array();
+  Index first = -1, count = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const StabilityPoint& p = points[k];
+    unstable.push_back(p.known ? json(p.unstable) : json(nullptr));
+    growth.push_back(json_number(p.growth_rate));
+    frequency.push_back(p.unstable ? json_number(p.frequency_hz) : json(nullptr));
+    kind.push_back(stability_kind(p));
+    if (p.unstable) {
+      ++count;
+      if (first < 0) first = static_cast<Index>(k);
+    }
+  }
+  json j = {{"unstable", unstable},
+            {"growth_rate_per_s", growth},
+            {"unstable_mode_frequency_hz", frequency},
+            {"kind", kind},
+            {"unstable_points", count}};
+  j["first_unstable_speed_hz"] =
+      first < 0 ? json(nullptr) : json(rad_to_hz(points[static_cast<std::size_t>(first)].speed));
+  j["note"] = count == 0 ? "stable at every point"
+                         : "where unstable the response is no steady state the rotor reaches: any disturbance grows";
+  return j;
+}
+
 json station_json(const Model& model, const ShaftStation& st) {
   json j = node_json(model, st.node);
   j["element"] = element_label(model, st.element);

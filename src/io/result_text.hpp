@@ -39,6 +39,10 @@ nlohmann::json node_json(const Model& model, Index node);
 nlohmann::json station_json(const Model& model, const ShaftStation& st);
 /// One point's stability (the static equilibrium's).
 nlohmann::json stability_point_json(const StabilityPoint& p);
+/// The rotor's stability at each point of a steady-state result (modal/stability.hpp):
+/// per point whether it is unstable (null: unknown), the largest growth rate where
+/// eigenvalues were computed, and the first unstable speed; null when not judged.
+nlohmann::json point_stability_json(const std::vector<StabilityPoint>& points);
 
 /// Masks of a node's DOFs: all six, the lateral pair (v, w).
 inline constexpr std::array<bool, dofs_per_node> all_dofs{true, true, true, true, true, true};

@@ -128,6 +128,7 @@ class Builder {
   std::vector<Index> distinct_nodes(const std::vector<NodeRef>& refs, const std::string& path,
                                     std::string_view key) const;
   void check_analysis_tables() const;
+  void check_response() const;
   void check_static() const;
   void check_runup() const;
   void build_gravity();
@@ -1113,11 +1114,31 @@ void Builder::check_analysis_tables() const {
   check_bounds(spec_.campbell, "campbell");
   check_sweep(spec_.campbell.start, spec_.campbell.stop, "campbell");
   check_bounds(spec_.response, "response");
-  check_sweep(spec_.response.start, spec_.response.stop, "response");
-  distinct_nodes(spec_.response.probes, "response.probes", "probes");
+  check_response();
   check_static();
   check_runup();
   check_api684();
+}
+
+void Builder::check_response() const {
+  const ResponseSpec& r = spec_.response;
+  check_sweep(r.start, r.stop, "response");
+  distinct_nodes(r.probes, "response.probes", "probes");
+  // A speed sweep, or a fixed speed (alone, or with a frequency sweep): not both.
+  const bool frequencies = r.freq_start || r.freq_stop || r.freq_points;
+  if ((r.start || r.stop || r.points) && (r.speed || frequencies))
+    fail(r.speed ? "response.speed" : "response.freq_start",
+         "give either a speed sweep ('start', 'stop', 'points') or a fixed speed ('speed', with 'freq_start', "
+         "'freq_stop' and 'freq_points' for a frequency sweep), not both");
+  if (frequencies && !(r.freq_start && r.freq_stop))
+    fail(r.freq_start  ? "response.freq_start"
+         : r.freq_stop ? "response.freq_stop"
+                       : "response.freq_points",
+         "a frequency sweep needs both 'freq_start' and 'freq_stop'");
+  if (r.freq_start && r.freq_stop && !(*r.freq_stop > *r.freq_start))
+    fail("response.freq_stop", fmt::format("'freq_stop' ({}) must be greater than 'freq_start' ({})",
+                                           shown("response.freq_stop", *r.freq_stop, Quantity::speed, "Hz"),
+                                           shown("response.freq_start", *r.freq_start, Quantity::speed, "Hz")));
 }
 
 void Builder::check_static() const {

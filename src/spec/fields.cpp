@@ -23,7 +23,6 @@ constexpr std::string_view force_kinds[] = {"fixed", "rotating_force", "rotating
 constexpr std::string_view force_directions[] = {"x", "y", "z", "rx", "ry", "rz"};
 constexpr std::string_view runup_starts[] = {"rest", "equilibrium", "steady"};
 constexpr std::string_view motor_kinds[] = {"dc", "induction", "table"};
-constexpr std::string_view station_outputs[] = {"all", "summary", "none"};
 constexpr std::string_view film_theories[] = {"short", "long", "finite"};
 constexpr std::string_view cavitation_conditions[] = {"reynolds", "gumbel"};
 constexpr std::string_view film_evaluations[] = {"auto", "table", "exact"};
@@ -731,51 +730,6 @@ const FieldTable<StaticLoadSpec>& fields_of<StaticLoadSpec>() {
        .member = &S::mz,
        .doc = "moment about z (any sign, right-hand rule)",
        .quantity = Q::moment},
-  };
-  return table;
-}
-
-template <>
-const FieldTable<ResponseSpec>& fields_of<ResponseSpec>() {
-  using S = ResponseSpec;
-  static const FieldTable<S> table = {
-      {.key = "start",
-       .kind = K::quantity,
-       .member = &S::start,
-       .doc = "first point of the sweep (rotor speed, or excitation frequency in a frequency sweep)",
-       .quantity = Q::speed,
-       .bound = non_negative,
-       .unit = "Hz"},
-      {.key = "stop",
-       .kind = K::quantity,
-       .member = &S::stop,
-       .doc = "last point; > `start` when both are given",
-       .quantity = Q::speed,
-       .bound = non_negative,
-       .unit = "Hz"},
-      {.key = "points",
-       .kind = K::integer,
-       .member = &S::points,
-       .doc = "number of points; 1: the response at `start` alone",
-       .bound = at_least(1, max_sweep_points)},
-      {.key = "probes",
-       .kind = K::node_list,
-       .member = &S::probes,
-       .doc = "non-empty, no node twice: the nodes whose response is reported",
-       .if_empty = default_hint},
-      {.key = "loss_factor",
-       .kind = K::number,
-       .member = &S::loss_factor,
-       .doc =
-           "global hysteretic loss factor η: adds j·η·K_e for every element, on top of the elements' own loss factors",
-       .bound = non_negative},
-      {.key = "stations",
-       .kind = K::choice,
-       .member = &S::stations,
-       .doc = "what is kept of the section forces and stresses at both ends of every shaft element: `\"all\"` (every "
-              "station at every point), `\"summary\"` (per point the largest values and their place) or `\"none\"`",
-       .choices = station_outputs,
-       .default_text = "`\"summary\"`"},
   };
   return table;
 }

@@ -96,7 +96,6 @@ struct DesignAnalyses::Legacy {
       : spec_(spec), model_(model), stop_(stop) {
     for (const auto& q : quantities) {
       const std::string_view analysis = row_of(q).analysis;
-      if (q.probe && analysis == "response") add(response_probes_, node_index(model, *q.probe));
       if (q.probe && analysis == "runup") add(runup_probes_, node_index(model, *q.probe));
       if (q.kind == "runup_spring_force") {
         if (q.spring)
@@ -105,19 +104,6 @@ struct DesignAnalyses::Legacy {
           all_runup_springs_ = true;
       }
     }
-  }
-
-  const HarmonicResult& response() {
-    if (!response_) {
-      ResponseRequest request;
-      request.n_threads = 1;
-      request.probes = response_probes_;
-      auto options = response_settings(model_, spec_.response, request);
-      options.stop = stop_;
-      response_ = run_harmonic_response(model_, options);
-      check_solver(response_->info, "unbalance response");
-    }
-    return *response_;
   }
 
   const TransientResult& runup() {
@@ -152,18 +138,20 @@ struct DesignAnalyses::Legacy {
   const ModelSpec& spec_;
   const Model& model_;
   StopToken stop_;
-  std::optional<HarmonicResult> response_;
   std::optional<TransientResult> runup_;
-  std::vector<Index> response_probes_, runup_probes_, runup_springs_;
+  std::vector<Index> runup_probes_, runup_springs_;
   bool all_runup_springs_ = false;
   std::vector<Index> runup_probe_nodes_, runup_spring_elements_;
 };
 
 DesignAnalyses::DesignAnalyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities,
                                StopToken stop)
-    : spec_(spec), model_(model), stop_(stop), legacy_(std::make_unique<Legacy>(spec, model, quantities, stop)) {}
+    : spec_(spec),
+      model_(model),
+      stop_(stop),
+      quantities_(quantities),
+      legacy_(std::make_unique<Legacy>(spec, model, quantities, stop)) {}
 DesignAnalyses::~DesignAnalyses() = default;
-const HarmonicResult& DesignAnalyses::response() { return legacy_->response(); }
 const TransientResult& DesignAnalyses::runup() { return legacy_->runup(); }
 const std::vector<Index>& DesignAnalyses::runup_probe_nodes() {
   (void)legacy_->runup();
@@ -176,70 +164,7 @@ const std::vector<Index>& DesignAnalyses::runup_spring_elements() {
 
 namespace {
 
-// The amplitude (orbit semi-major axis) at a quantity's probe against speed, within
-// its range.
-struct Curve {
-  std::vector<Real> speeds, amplitude;
-};
-
-Curve probe_curve(DesignAnalyses& a, const QuantitySpec& q) {
-  const auto& r = a.response();
-  if (r.probes.empty()) throw Error("the response has no probe: give the quantity a 'probe'");
-  const Index node = q.probe ? node_index(a.model(), *q.probe) : r.probes.front().node;
-  for (const auto& p : r.probes) {
-    if (p.node != node) continue;
-    Curve c;
-    for (std::size_t k = 0; k < p.orbit.size(); ++k) {
-      if ((q.low && r.speeds[k] < *q.low) || (q.high && r.speeds[k] > *q.high)) continue;
-      c.speeds.push_back(r.speeds[k]);
-      c.amplitude.push_back(p.orbit[k].major);
-    }
-    return c;
-  }
-  throw Error("the response has no such probe");
-}
-
 // ---- the rows of the analyses not yet in folders of their own -----------------------
-
-Real peak_response(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto curve = probe_curve(a, q);
-  return curve.amplitude.empty() ? 0.0 : *std::max_element(curve.amplitude.begin(), curve.amplitude.end());
-}
-
-// What a row reads off the resonance peaks at a probe.
-enum class PeakValue { amplification_factor, required_margin, margin_surplus, min_margin_surplus };
-
-template <PeakValue what>
-Real peak_value(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto curve = probe_curve(a, q);
-  std::vector<ResponsePeak> resolved;
-  for (const auto& p : response_peaks(curve.speeds, curve.amplitude))
-    if (p.resolved()) resolved.push_back(p);
-  const int needed = what == PeakValue::min_margin_surplus ? 1 : q.n;
-  if (static_cast<int>(resolved.size()) < needed)
-    throw Error(
-        fmt::format("no {} resonance peak in the response at the probe{} (found {}; a peak counts when "
-                    "the amplitude falls to 1/√2 of it on both sides within the sweep)",
-                    ordinal(needed),
-                    q.low || q.high ? fmt::format(" between {} and {}", rpm(q.low.value_or(0)),
-                                                  q.high ? rpm(*q.high) : std::string("the sweep's end"))
-                                    : std::string(),
-                    resolved.size()));
-  const auto required = [&](const ResponsePeak& peak) {
-    return required_separation_margin(peak.amplification_factor, peak.speed, q.operating_low, q.operating_high);
-  };
-  const auto surplus = [&](const ResponsePeak& peak) {
-    return separation_margin(peak.speed, q.operating_low, q.operating_high) - required(peak);
-  };
-  if constexpr (what == PeakValue::min_margin_surplus) {
-    Real least = surplus(resolved.front());
-    for (const auto& peak : resolved) least = std::min(least, surplus(peak));
-    return least;
-  }
-  const auto& peak = resolved[static_cast<std::size_t>(q.n - 1)];
-  if constexpr (what == PeakValue::amplification_factor) return peak.amplification_factor;
-  return what == PeakValue::required_margin ? required(peak) : surplus(peak);
-}
 
 Real undamped_critical_speed(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
   // As API 684's: journal and rolling bearings by their direct stiffness about
@@ -274,28 +199,6 @@ Real level1_q_zero(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
         fmt::format("no Q₀: the first forward mode at {} is {}", rpm(s.speed),
                     r.log_decrement.front() <= 0 ? "unstable without cross-coupling" : "stable up to 1e13 N/m"));
   return *r.q_zero;
-}
-
-Real peak_spring_force(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto& r = a.response();
-  const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
-  Real peak = 0;
-  for (const auto& s : r.springs) {
-    if (only >= 0 && s.element != only) continue;
-    for (std::size_t k = 0; k < s.peak_lateral.size(); ++k)
-      if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
-        peak = std::max(peak, s.peak_lateral[k]);
-  }
-  return peak;
-}
-
-Real peak_stress(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto& r = a.response();
-  Real peak = 0;
-  for (std::size_t k = 0; k < r.station_peaks.size(); ++k)
-    if (!(q.low && r.speeds[k] < *q.low) && !(q.high && r.speeds[k] > *q.high))
-      peak = std::max(peak, r.station_peaks[k].von_mises.value);
-  return peak;
 }
 
 Real runup_peak(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
@@ -335,30 +238,6 @@ using Q = Quantity;
 // The rows of the analyses not yet in folders of their own, and of no analysis.
 const std::vector<QuantityRow>& own_rows() {
   static const std::vector<QuantityRow> rows = {
-      {.name = "peak_response",
-       .doc = "largest orbit semi-axis at a probe over the unbalance response",
-       .analysis = "response",
-       .unit = Q::length,
-       .evaluate = peak_response},
-      {.name = "amplification_factor",
-       .doc = "API 684 amplification factor (half-power) of the n-th resonance peak at a probe",
-       .analysis = "response",
-       .evaluate = peak_value<PeakValue::amplification_factor>},
-      {.name = "required_margin",
-       .doc = "the separation margin API 617 requires of that peak from the operating range",
-       .analysis = "response",
-       .evaluate = peak_value<PeakValue::required_margin>,
-       .needs_operating = true},
-      {.name = "margin_surplus",
-       .doc = "that peak's separation margin less the required one: ≥ 0 passes",
-       .analysis = "response",
-       .evaluate = peak_value<PeakValue::margin_surplus>,
-       .needs_operating = true},
-      {.name = "min_margin_surplus",
-       .doc = "the smallest margin_surplus of every resonance peak at the probe: ≥ 0 all pass",
-       .analysis = "response",
-       .evaluate = peak_value<PeakValue::min_margin_surplus>,
-       .needs_operating = true},
       {.name = "undamped_critical_speed",
        .doc = "the n-th forward undamped critical speed with the bearings as given",
        .analysis = "api684",
@@ -371,16 +250,6 @@ const std::vector<QuantityRow>& own_rows() {
        .unit = Q::stiffness,
        .evaluate = level1_q_zero,
        .needs_speed = true},
-      {.name = "peak_spring_force",
-       .doc = "largest lateral force of a spring (or of all) over the response",
-       .analysis = "response",
-       .unit = Q::force,
-       .evaluate = peak_spring_force},
-      {.name = "peak_stress",
-       .doc = "largest equivalent (von Mises) shaft stress over the response",
-       .analysis = "response",
-       .unit = Q::pressure,
-       .evaluate = peak_stress},
       {.name = "runup_peak",
        .doc = "largest |r| at a probe during the run-up",
        .analysis = "runup",

@@ -17,7 +17,7 @@
 #include <cmath>
 #include <vector>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/static/static_analysis.hpp>

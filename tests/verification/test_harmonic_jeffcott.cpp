@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 
 #include "test_models.hpp"
 

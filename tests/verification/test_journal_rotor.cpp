@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/settings.hpp>
@@ -32,7 +33,7 @@ TEST(JournalRotor, ResponsePointsAreMarkedUnstableFromTheCampbellThresholdOn) {
   EXPECT_GT(threshold * 30 / pi, 4000.0);
   EXPECT_LT(threshold * 30 / pi, 7000.0);
 
-  const HarmonicOptions ho = response_settings(file.model, file.spec.response, {});
+  const HarmonicOptions ho = response_options(file);
   const HarmonicResult r = run_harmonic_response(file.model, ho);
   ASSERT_TRUE(r.info.converged()) << r.info.message;
   ASSERT_EQ(r.stability.size(), r.speeds.size());
@@ -52,7 +53,7 @@ TEST(JournalRotor, TheJournalOrbitIsGivenAgainstTheClearanceAndWarnedBeyondIt) {
   // 150 mm keeps every orbit inside the clearance (no warning); a thousand times that
   // throws the linearised orbit far beyond it, and the warning names the bearing.
   const ModelFile file = read_model_file(path);
-  HarmonicOptions ho = response_settings(file.model, file.spec.response, {});
+  HarmonicOptions ho = response_options(file);
   ho.stability = false;
   const HarmonicResult r = run_harmonic_response(file.model, ho);
   ASSERT_TRUE(r.info.converged()) << r.info.message;
@@ -132,7 +133,7 @@ TEST(JournalRotor, BearingOperatingDataIsTheEquilibriumsInEveryAnalysis) {
     }
   }
   const ModalResult modal = run_modal(model, 9000 * pi / 30);
-  const HarmonicOptions ho = response_settings(model, file.spec.response, {});
+  const HarmonicOptions ho = response_options(file);
   const HarmonicResult response = run_harmonic_response(model, ho);
   const auto at_9000 = static_state(model, 9000 * pi / 30);
   ASSERT_EQ(modal.operating.size(), 2u);

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/campbell/campbell.hpp>
 #include <feran/io/model_reader.hpp>
 

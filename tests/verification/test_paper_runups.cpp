@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/analyses/settings.hpp>

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/transient/rotor_system.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Analysis settings of the analyses not yet in rooms of their own (response, run-up,
+/// Analysis settings of the analyses not yet in rooms of their own (run-up,
 /// API 684): what a caller asks for, the model file's analysis tables and the built-in
 /// defaults, resolved into each analysis's options in one place; and what all analyses
 /// share (default probes, range warnings, bearings by name). The analyses in rooms take
@@ -8,8 +8,8 @@
 ///
 /// Every caller — the command line, a C++ program, the Python module, a design study —
 /// fills a request with what it wants to set and leaves the rest empty; the function
-/// of the analysis takes each empty member from the model file's table ([response],
-/// [runup], [api684]) and then from the built-in default, and checks what the
+/// of the analysis takes each empty member from the model file's table ([runup],
+/// [api684]) and then from the built-in default, and checks what the
 /// combination must satisfy. Requests hold SI values (speeds in rad/s). Library
 /// requests run on one thread unless they say otherwise.
 
@@ -23,7 +23,7 @@
 #include <Eigen/Core>
 
 #include <feran/analyses/api684/api684_analysis.hpp>
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
@@ -49,6 +49,9 @@ inline constexpr Real max_runup_steps = 1e9;
 inline constexpr Real max_runup_samples = 1e7;
 }  // namespace defaults
 
+/// @p n values from @p a to @p b evenly spaced (@p a alone for n = 1).
+std::vector<Real> evenly_spaced(Real a, Real b, int n);
+
 /// The nodes a response or a run-up reports when neither the request nor the file
 /// names any: every node carrying an unbalance, then every node of @p extra forces,
 /// in order, each once.
@@ -67,33 +70,7 @@ Index node_index(const Model& model, const NodeRef& ref);
 
 // ---------------------------------------------------------------------------------
 
-struct ResponseRequest {
-  /// Speed sweep: first and last speed [rad/s] and the number of points; default
-  /// [response], else start 0, stop required unless there is one point, 201 points.
-  std::optional<Real> start, stop;
-  std::optional<int> points;
-  /// Frequency sweep (when either bound is given): excitation frequencies [rad/s], at
-  /// the constant rotor speed @p speed (default 0), 201 points by default. Without a
-  /// frequency sweep, @p speed alone asks for the response at that one speed.
-  std::optional<Real> freq_start, freq_stop;
-  std::optional<int> freq_points;
-  std::optional<Real> speed;
-  std::vector<Index> probes;                ///< empty: [response] probes, else default_probes()
-  std::vector<HarmonicForce> extra_forces;  ///< added to the model's [[forces]]
-  std::optional<Real> loss_factor;          ///< default [response] loss_factor, else 0
-  std::optional<StationOutput> stations;    ///< default [response] stations, else summary
-  bool unbalance = true;                    ///< include the model's unbalances
-  /// Judge the rotor's stability at each point (HarmonicOptions::stability).
-  bool stability = true;
-  int n_threads = 1;  ///< 0: all cores
-};
-
-/// Throws Error for a sweep without a last point, a last point not above the first,
-/// a frequency sweep without a force, or nothing that excites the rotor.
-/// The StationOutput named @p name ("all", "summary", "none"); throws Error otherwise.
-StationOutput station_output(std::string_view name);
-
-HarmonicOptions response_settings(const Model& model, const ResponseSpec& file, const ResponseRequest& request);
+// The steady-state response: analyses/response/analysis.hpp.
 
 // ---------------------------------------------------------------------------------
 

@@ -31,7 +31,7 @@ struct ReportOptions {
   /// diagram's last speed).
   std::vector<Real> mode_speeds;
   int mode_count = 6;                    ///< lateral modes drawn at each speed
-  ResponseRequest response;              ///< the unbalance response (when the model has unbalances or forces)
+  ResponseSpec response;                 ///< the unbalance response (when the model has unbalances or forces)
   std::optional<Real> deflection_speed;  ///< [rad/s]; default: the largest response peak's speed
   bool static_analysis = true;           ///< the static deflection under [static] gravity
   bool runup = true;                     ///< the run-up of [runup], when the model has one

@@ -4,7 +4,6 @@
 
 #include <string>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -14,9 +13,6 @@
 
 namespace feran {
 
-/// Summary of a steady-state response: orbit sizes at selected points and the peaks.
-std::string response_report(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
-                            const ResultSource& source);
 /// Summary of a run-up: the integrator's work, the peak |r| of each probe and any
 /// warning; @p wall_seconds is the time it took (negative: not shown).
 std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include <feran/analyses/api684/api684_analysis.hpp>
-#include <feran/analyses/harmonic/harmonic_response.hpp>
 #include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
@@ -15,14 +14,6 @@
 #include <feran/spec/parameters.hpp>
 
 namespace feran {
-
-/// JSON text of a steady-state response (speed or frequency sweep).
-std::string response_json(const HarmonicResult& result, const HarmonicOptions& options, const Model& model,
-                          const ResultSource& source);
-/// CSV text of a steady-state response: one row per point with, per probe, the orbit
-/// size and the amplitude and phase of v and w; per spring–damper the peak lateral
-/// force; and the largest equivalent stress along the shaft.
-std::string response_csv(const HarmonicResult& result, const Model& model);
 
 /// JSON text of the API 617 / API 684 analyses (feran api684).
 std::string api684_json(const Api684Result& result, const Model& model, const ResultSource& source);

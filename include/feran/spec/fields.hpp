@@ -90,6 +90,13 @@ struct Field {
   std::string_view follows = {};
   /// Analysis options: a one-letter name on the command line ("s" for -s,--speed).
   std::string_view short_name = {};
+  /// Analysis options: the name the doors give it when not its key ("probe" for the
+  /// key probes: --probe on the command line, probe= in Python, one node each).
+  std::string_view option = {};
+  /// Analysis options: the set of options this one belongs to when a table holds
+  /// alternatives (a response's speed sweep, or its fixed speed): a request that sets
+  /// an option of one alternative takes none of the others from the file.
+  std::string_view alternative = {};
 };
 
 template <class S>

@@ -238,11 +238,21 @@ struct CampbellSpec {
 
 /// [response]: defaults of a steady-state response.
 struct ResponseSpec {
-  std::optional<Real> start, stop;  ///< [rad/s]
+  /// A speed sweep: first and last rotor speed [rad/s] and the number of points.
+  std::optional<Real> start, stop;
   std::optional<int> points;
+  /// The rotor speed [rad/s] of a frequency sweep, or alone the response at one speed.
+  std::optional<Real> speed;
+  /// A frequency sweep: first and last excitation frequency [rad/s] and their number.
+  std::optional<Real> freq_start, freq_stop;
+  std::optional<int> freq_points;
   std::vector<NodeRef> probes;
+  /// Harmonic forces added for the analysis, "NODE:DIRECTION:AMPLITUDE[:PHASE]".
+  std::vector<std::string> forces;
   std::optional<Real> loss_factor;
   std::optional<std::string> stations;  ///< "all", "summary" or "none"
+  std::optional<bool> unbalance;        ///< include the model's unbalances
+  std::optional<bool> stability;        ///< judge the rotor's stability at each point
   bool operator==(const ResponseSpec&) const = default;
 };
 

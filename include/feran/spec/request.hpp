@@ -14,7 +14,9 @@
 /// Fields that belong together are taken together: setting a field of a group (a
 /// run-up's speed profile) takes every field of that group from the request alone, and
 /// a field that follows a group (the magnitude g follows the direction of gravity) is
-/// taken from the request alone when the request sets a field of that group.
+/// taken from the request alone when the request sets a field of that group. Where a
+/// table holds alternatives (Field::alternative: a response's speed sweep or its fixed
+/// speed), a request that sets an option of one takes none of the others from below.
 
 #include <cmath>
 #include <optional>
@@ -54,15 +56,26 @@ bool sets_group(const S& s, std::string_view group) {
   return false;
 }
 
+/// True when @p s sets a field of an alternative other than @p alternative.
+template <class S>
+bool sets_other_alternative(const S& s, std::string_view alternative) {
+  for (const Field<S>& f : fields_of<S>())
+    if (!f.alternative.empty() && f.alternative != alternative && has_value(s, f)) return true;
+  return false;
+}
+
 /// @p top laid over @p bottom, field by field: a field @p top gives a value wins; any
 /// other is @p bottom's, except that a field of a group (Field::group) or one that
-/// follows it (Field::follows) is @p top's whenever @p top sets a field of that group.
+/// follows it (Field::follows) is @p top's whenever @p top sets a field of that group,
+/// and a field of an alternative (Field::alternative) is @p top's whenever @p top sets a
+/// field of another alternative.
 template <class S>
 S overlay(const S& top, const S& bottom) {
   S out = bottom;
   for (const Field<S>& f : fields_of<S>()) {
     const std::string_view group = !f.group.empty() ? f.group : f.follows;
-    const bool from_top = has_value(top, f) || (!group.empty() && sets_group(top, group));
+    const bool from_top = has_value(top, f) || (!group.empty() && sets_group(top, group)) ||
+                          (!f.alternative.empty() && sets_other_alternative(top, f.alternative));
     if (from_top) std::visit([&](auto member) { out.*member = top.*member; }, f.member);
   }
   return out;
@@ -73,6 +86,27 @@ template <class S>
 const Field<S>* find_field(std::string_view key) {
   for (const Field<S>& f : fields_of<S>())
     if (f.key == key) return &f;
+  return nullptr;
+}
+
+/// The name the doors give field @p f: its option name (Field::option), else its key.
+template <class S>
+std::string_view option_name(const Field<S>& f) {
+  return f.option.empty() ? f.key : f.option;
+}
+
+/// The name the doors give the field of S keyed @p key (the key when S has none).
+template <class S>
+std::string_view option_name(std::string_view key) {
+  const Field<S>* f = find_field<S>(key);
+  return f != nullptr ? option_name(*f) : key;
+}
+
+/// The field of S the doors name @p name (option_name()), or nullptr.
+template <class S>
+const Field<S>* find_option(std::string_view name) {
+  for (const Field<S>& f : fields_of<S>())
+    if (option_name(f) == name) return &f;
   return nullptr;
 }
 

@@ -20,12 +20,12 @@
 
 namespace feran {
 
-struct HarmonicResult;
 struct TransientResult;
 
 class DesignAnalyses {
  public:
-  /// The quantities tell which probes and springs the response and the run-up record.
+  /// The quantities tell which probes and springs the response and the run-up record;
+  /// they must outlive the object.
   DesignAnalyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop);
   ~DesignAnalyses();
   DesignAnalyses(const DesignAnalyses&) = delete;
@@ -35,8 +35,9 @@ class DesignAnalyses {
   const Model& model() const { return model_; }
   const StopToken& stop() const { return stop_; }
 
-  /// The options and result of analysis A for the design (its file's own table), run
-  /// once; throws Error when the solve failed.
+  /// The options and result of analysis A for the design (its file's own table, and
+  /// what A::study_request() asks for the quantities, if A has it), run once; throws
+  /// Error when the solve failed.
   template <AnalysisFace A>
   const typename A::Options& options() {
     return slot<A>().options;
@@ -47,7 +48,6 @@ class DesignAnalyses {
   }
 
   // The analyses not yet in folders of their own.
-  const HarmonicResult& response();
   const TransientResult& runup();
   const std::vector<Index>& runup_probe_nodes();
   const std::vector<Index>& runup_spring_elements();
@@ -63,7 +63,10 @@ class DesignAnalyses {
     std::shared_ptr<const void>& s = rooms_[A::name];
     if (!s) {
       auto made = std::make_shared<Slot<A>>();
-      made->options = analysis_options<A>(spec_, model_, {}, file_key_name<A>());
+      typename A::Spec request;
+      if constexpr (requires { A::study_request(model_, quantities_); })
+        request = A::study_request(model_, quantities_);
+      made->options = analysis_options<A>(spec_, model_, request, file_key_name<A>());
       made->result = A::run(model_, made->options, RunContext{stop_, {}});
       if (!made->result.info.converged())
         throw Error(fmt::format("the {} analysis failed: {}", A::name, made->result.info.message));
@@ -75,6 +78,7 @@ class DesignAnalyses {
   const ModelSpec& spec_;
   const Model& model_;
   StopToken stop_;
+  std::span<const QuantitySpec> quantities_;
   std::map<std::string_view, std::shared_ptr<const void>> rooms_;
   struct Legacy;
   std::unique_ptr<Legacy> legacy_;

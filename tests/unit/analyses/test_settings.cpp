@@ -2,6 +2,7 @@
 // analysis table, then the built-in default; probes default to the unbalanced nodes;
 // a response at one speed needs no last speed.
 
+#include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
@@ -67,14 +68,23 @@ TEST(Settings, RequestThenFileThenBuiltIn) {
   EXPECT_THROW((void)modal(sparse), Error);
 }
 
+// The response options of @p table as a file's [response] and a request
+// (analysis_options()), options named by their keys.
+HarmonicOptions response_of(const ModelFile& file, const ResponseSpec& table, const ResponseSpec& request) {
+  ModelSpec spec = file.spec;
+  spec.response = table;
+  return analysis_options<ResponseAnalysis>(spec, file.model, request,
+                                            [](std::string_view k) { return std::string(k); });
+}
+
 TEST(Settings, ProbesDefaultToTheUnbalancedNodes) {
   const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
   // Without probes in [response]: the rotor, where the unbalance is.
   ResponseSpec without_probes = file.spec.response;
   without_probes.probes.clear();
-  ResponseRequest request;
+  ResponseSpec request;
   request.stop = 100.0;
-  const HarmonicOptions r = response_settings(file.model, without_probes, request);
+  const HarmonicOptions r = response_of(file, without_probes, request);
   EXPECT_EQ(r.probes, default_probes(file.model));
   ASSERT_EQ(r.probes.size(), 1u);
   EXPECT_EQ(r.probes[0], file.model.find_node("rotor"));
@@ -83,20 +93,71 @@ TEST(Settings, ProbesDefaultToTheUnbalancedNodes) {
   f.node = 0;
   const std::vector<HarmonicForce> forces{f, f};
   EXPECT_EQ(default_probes(file.model, forces), (std::vector<Index>{r.probes[0], 0}));
+  // A probe asked for twice, by name and by number, is refused.
+  ResponseSpec twice = request;
+  twice.probes = {NodeRef{std::string("rotor")},
+                  NodeRef{std::int64_t{file.model.nodes[static_cast<std::size_t>(r.probes[0])].number}}};
+  EXPECT_THROW((void)response_of(file, without_probes, twice), Error);
 }
 
 TEST(Settings, ResponseAtOneSpeed) {
   const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
-  ResponseRequest one;
+  ResponseSpec one;
   one.start = 30.0;
   one.points = 1;
-  EXPECT_EQ(response_settings(file.model, ResponseSpec{}, one).speeds, std::vector<Real>{30.0});
-  ResponseRequest at;
+  EXPECT_EQ(response_of(file, ResponseSpec{}, one).speeds, std::vector<Real>{30.0});
+  ResponseSpec at;
   at.speed = 40.0;
-  EXPECT_EQ(response_settings(file.model, ResponseSpec{}, at).speeds, std::vector<Real>{40.0});
-  ResponseRequest sweep;
+  EXPECT_EQ(response_of(file, ResponseSpec{}, at).speeds, std::vector<Real>{40.0});
+  ResponseSpec sweep;
   sweep.start = 30.0;  // more than one point needs a last speed
-  EXPECT_THROW((void)response_settings(file.model, ResponseSpec{}, sweep), Error);
+  EXPECT_THROW((void)response_of(file, ResponseSpec{}, sweep), Error);
+}
+
+// A response's speed sweep and its fixed speed are alternatives: a request that asks
+// for one takes none of the other from the file; one that asks for both is refused.
+TEST(Settings, ResponseSweepsAreAlternatives) {
+  const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
+  ResponseSpec speeds;  // the file's speed sweep
+  speeds.start = 10.0;
+  speeds.stop = 50.0;
+  speeds.points = 5;
+  ResponseSpec at;
+  at.speed = 40.0;
+  EXPECT_EQ(response_of(file, speeds, at).speeds, std::vector<Real>{40.0});
+  ResponseSpec last;  // the file's start and points stay
+  last.stop = 90.0;
+  EXPECT_EQ(response_of(file, speeds, last).speeds, (std::vector<Real>{10.0, 30.0, 50.0, 70.0, 90.0}));
+
+  ResponseSpec frequencies;  // the file's frequency sweep at 20 rad/s
+  frequencies.speed = 20.0;
+  frequencies.freq_start = 1.0;
+  frequencies.freq_stop = 3.0;
+  frequencies.freq_points = 3;
+  frequencies.forces = {"rotor:y:1N"};
+  const HarmonicOptions f = response_of(file, frequencies, {});
+  EXPECT_EQ(f.frequencies, (std::vector<Real>{1.0, 2.0, 3.0}));
+  EXPECT_EQ(f.speed, 20.0);
+  ASSERT_EQ(f.extra_forces.size(), 1u);
+  EXPECT_EQ(f.extra_forces[0].node, file.model.find_node("rotor"));
+  EXPECT_EQ(response_of(file, frequencies, at).speed, 40.0);  // the same sweep at another speed
+  const HarmonicOptions s = response_of(file, frequencies, last);
+  EXPECT_TRUE(s.frequencies.empty());  // a speed sweep instead, from the default start
+  EXPECT_EQ(s.speeds.front(), 0.0);
+  EXPECT_EQ(s.speeds.back(), 90.0);
+
+  ResponseSpec both = last;
+  both.speed = 40.0;
+  EXPECT_THROW((void)response_of(file, ResponseSpec{}, both), Error);
+  ResponseSpec half;
+  half.freq_start = 1.0;  // a frequency sweep needs its last frequency
+  EXPECT_THROW((void)response_of(file, ResponseSpec{}, half), Error);
+  half.freq_start = 5.0;  // the file's last frequency, 3 rad/s, is below it
+  EXPECT_THROW((void)response_of(file, frequencies, half), Error);
+  ResponseSpec wrong;
+  wrong.stop = 90.0;
+  wrong.forces = {"rotor:q:1N"};  // no direction q
+  EXPECT_THROW((void)response_of(file, ResponseSpec{}, wrong), Error);
 }
 
 // The static options of a file's [static] table and a request (analysis_options()).

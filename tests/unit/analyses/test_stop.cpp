@@ -4,7 +4,7 @@
 
 #include <atomic>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/campbell/campbell.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 

@@ -21,6 +21,7 @@
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
+#include <feran/analyses/response/analysis.hpp>
 #include <feran/io/model_reader.hpp>
 
 #include <gtest/gtest.h>
@@ -83,8 +84,8 @@ Index index_of(const Model& m, const std::string& name) {
 
 // The analysis defaults a file states reach an analysis through the settings
 // functions (analyses/settings.hpp), as for every other caller.
-HarmonicOptions response_of(const ModelFile& f, ResponseRequest request = {}) {
-  return response_settings(f.model, f.spec.response, request);
+HarmonicOptions response_of(const ModelFile& f, const ResponseSpec& request = {}) {
+  return response_options(f, request);
 }
 TransientOptions runup_of(const ModelFile& f) { return runup_settings(f.model, f.spec.runup, {}); }
 StaticOptions static_of(const ModelFile& f) { return static_options(f); }
@@ -742,7 +743,7 @@ radius = 0.01
   EXPECT_TRUE(file.spec.response == ResponseSpec{});
   EXPECT_TRUE(file.spec.static_ == StaticSpec{});
   // So the analyses take the built-in defaults: probes at the unbalances, gravity −y.
-  ResponseRequest one_point;
+  ResponseSpec one_point;
   one_point.points = 1;
   EXPECT_EQ(response_of(file, one_point).probes, (std::vector<Index>{2}));
   EXPECT_EQ(static_of(file).gravity, Eigen::Vector3d(0.0, -9.81, 0.0));
@@ -788,9 +789,9 @@ TEST(ModelReaderResponse, ProbesByNumberAndNameInTheOrderGiven) {
 probes = [3, 1]
 points = 2
 )");
-  ResponseRequest request;
+  ResponseSpec request;
   request.stop = 10.0;
-  request.extra_forces = {HarmonicForce{1, HarmonicForce::Kind::fixed, Dof::v, 1.0, 0.0, std::nullopt, {}}};
+  request.forces = {"2:y:1N"};  // node index 1
   const HarmonicOptions r = response_of(file, request);
   EXPECT_EQ(r.probes, (std::vector<Index>{2, 0}));
   EXPECT_EQ(r.speeds, (std::vector<Real>{0.0, 10.0}));  // 2 points from 0
@@ -1098,7 +1099,7 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
       if (i == 3) {  // the loads example, as its text describes it
         EXPECT_EQ(file.model.n_forces("harmonic_force"), 2u);
         EXPECT_EQ(file.model.n_forces("static_load"), 1u);
-        ResponseRequest one_point;
+        ResponseSpec one_point;
         one_point.points = 1;
         EXPECT_EQ(response_of(file, one_point).probes, (std::vector<Index>{2, 0}));
         EXPECT_EQ(static_of(file).gravity, Eigen::Vector3d(0.0, 0.0, -9.81));

@@ -2,7 +2,7 @@
 // model/force.hpp). A type defined here, unknown to the library, takes part in the
 // analyses through its abilities alone: the seam a new bearing or force plugs into.
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/model/force.hpp>
 

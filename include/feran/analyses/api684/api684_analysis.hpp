@@ -15,7 +15,7 @@
 #include <feran/analyses/api684/level1_stability.hpp>
 #include <feran/analyses/common/solver_info.hpp>
 #include <feran/analyses/harmonic/api684.hpp>
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/static/static_analysis.hpp>
 #include <feran/core/stop.hpp>
 #include <feran/model/model.hpp>

@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran {

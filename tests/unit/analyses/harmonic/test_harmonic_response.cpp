@@ -2,7 +2,7 @@
 // them in parallel; each point must still equal a solve of that point alone.
 #include <gtest/gtest.h>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/banded_lu.hpp>
 

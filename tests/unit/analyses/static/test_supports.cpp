@@ -9,7 +9,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/static_analysis.hpp>

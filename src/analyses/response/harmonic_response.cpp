@@ -1,4 +1,4 @@
-#include <feran/analyses/harmonic/harmonic_response.hpp>
+#include <feran/analyses/response/harmonic_response.hpp>
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,8 @@
-// Steady-state (harmonic) response: speed and frequency sweeps, with complex
-// amplitudes of probes, spring forces and support reactions as numpy arrays
-// (item × point × DOF), orbits, and shaft stresses.
+// The steady-state response's Python result: speed and frequency sweeps, with complex
+// amplitudes of probes, spring forces and support reactions as numpy arrays (item ×
+// point × DOF), orbits, and shaft stresses (analysis_binding.hpp binds feran.response
+// and what every result has).
+#include <cmath>
 #include <complex>
 #include <optional>
 #include <string>
@@ -9,32 +11,24 @@
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
 
-#include <feran/analyses/harmonic/harmonic_response.hpp>
-#include <feran/analyses/settings.hpp>
+#include <feran/analyses/response/analysis.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
-#include <feran/io/option_text.hpp>
-#include <feran/io/report.hpp>
-#include <feran/io/result_writer.hpp>
 
-#include "bindings.hpp"
+#include "analysis_binding.hpp"
 
 namespace feran::python {
 
 namespace {
 
-struct PyResponseResult {
-  ResultContext context;
-  HarmonicOptions options;
-  HarmonicResult result;
-  const Model& model() const { return context.file->model; }
-  std::size_t points() const { return result.speeds.size(); }
-};
+using PyResponseResult = Outcome<ResponseAnalysis>;
+
+std::size_t points(const PyResponseResult& r) { return r.result.speeds.size(); }
 
 /// Items × points × 6 complex amplitudes.
 template <class Items, class Get>
 py::array_t<std::complex<double>> amplitudes(const PyResponseResult& r, const Items& items, Get&& get) {
-  return array_3d<std::complex<double>>(items.size(), r.points(), dofs_per_node,
+  return array_3d<std::complex<double>>(items.size(), points(r), dofs_per_node,
                                         [&](std::size_t i, std::size_t k, std::size_t d) {
                                           const std::vector<NodeAmplitudes>& v = get(items[i]);
                                           return k < v.size() ? v[k][d] : std::complex<double>(NAN, NAN);
@@ -43,7 +37,7 @@ py::array_t<std::complex<double>> amplitudes(const PyResponseResult& r, const It
 
 template <class F>
 py::array_t<double> orbit_values(const PyResponseResult& r, F&& value) {
-  return array_2d(r.result.probes.size(), r.points(), [&](std::size_t i, std::size_t k) {
+  return array_2d(r.result.probes.size(), points(r), [&](std::size_t i, std::size_t k) {
     const auto& orbit = r.result.probes[i].orbit;
     return k < orbit.size() ? value(orbit[k]) : NAN;
   });
@@ -64,13 +58,13 @@ py::array_t<double> peak_places(const PyResponseResult& r, F&& peak) {
 
 }  // namespace
 
-void bind_response(py::module_& m) {
-  py::class_<PyResponseResult>(m, "ResponseResult", "Steady-state response over a speed or frequency sweep")
-      .def_property_readonly("frequency_sweep", [](const PyResponseResult& r) { return r.result.frequency_sweep; })
+template <>
+void bind_result<ResponseAnalysis>(py::class_<Outcome<ResponseAnalysis>>& result) {
+  result.def_property_readonly("frequency_sweep", [](const PyResponseResult& r) { return r.result.frequency_sweep; })
       .def_property_readonly(
           "speeds",
           [](const PyResponseResult& r) {
-            return array_1d(r.points(), [&](std::size_t k) { return r.result.speeds[k]; });
+            return array_1d(points(r), [&](std::size_t k) { return r.result.speeds[k]; });
           },
           "rotor speed per point [rad/s]")
       .def_property_readonly(
@@ -162,7 +156,7 @@ void bind_response(py::module_& m) {
       .def_property_readonly(
           "spring_peak",
           [](const PyResponseResult& r) {
-            return array_2d(r.result.springs.size(), r.points(),
+            return array_2d(r.result.springs.size(), points(r),
                             [&](std::size_t i, std::size_t k) { return r.result.springs[i].peak_lateral[k]; });
           },
           "largest lateral spring force over a period [N], shape (springs, points)")
@@ -191,21 +185,21 @@ void bind_response(py::module_& m) {
       .def_property_readonly(
           "bearing_peak",
           [](const PyResponseResult& r) {
-            return array_2d(r.result.supports.size(), r.points(),
+            return array_2d(r.result.supports.size(), points(r),
                             [&](std::size_t i, std::size_t k) { return r.result.supports[i].peak_lateral[k]; });
           },
           "largest lateral journal-bearing force over a period [N], shape (bearings, points)")
       .def_property_readonly(
           "bearing_orbit",
           [](const PyResponseResult& r) {
-            return array_2d(r.result.supports.size(), r.points(),
+            return array_2d(r.result.supports.size(), points(r),
                             [&](std::size_t i, std::size_t k) { return r.result.supports[i].orbit[k]; });
           },
           "major semi-axis of each journal's orbit relative to its housing [m], shape (bearings, points)")
       .def_property_readonly(
           "bearing_orbit_ratio",
           [](const PyResponseResult& r) {
-            return array_2d(r.result.supports.size(), r.points(), [&](std::size_t i, std::size_t k) {
+            return array_2d(r.result.supports.size(), points(r), [&](std::size_t i, std::size_t k) {
               return r.result.supports[i].orbit_clearance_ratio[k];
             });
           },
@@ -227,9 +221,9 @@ void bind_response(py::module_& m) {
           "complex support reactions [N, N m], shape (reactions, points, 6)")
       .def_property_readonly("reaction_peak",
                              [](const PyResponseResult& r) {
-                               return array_2d(
-                                   r.result.reactions.size(), r.points(),
-                                   [&](std::size_t i, std::size_t k) { return r.result.reactions[i].peak_lateral[k]; });
+                               return array_2d(r.result.reactions.size(), points(r), [&](std::size_t i, std::size_t k) {
+                                 return r.result.reactions[i].peak_lateral[k];
+                               });
                              })
       .def_property_readonly(
           "peak_von_mises",
@@ -255,14 +249,14 @@ void bind_response(py::module_& m) {
       .def_property_readonly(
           "station_von_mises",
           [](const PyResponseResult& r) {
-            return array_2d(r.result.stations.size(), r.points(),
+            return array_2d(r.result.stations.size(), points(r),
                             [&](std::size_t s, std::size_t k) { return r.result.stations[s].stress[k].von_mises; });
           },
           "with stations='all': equivalent stress [Pa], shape (stations, points)")
       .def_property_readonly(
           "section_forces",
           [](const PyResponseResult& r) {
-            return array_3d<std::complex<double>>(r.result.stations.size(), r.points(), 6,
+            return array_3d<std::complex<double>>(r.result.stations.size(), points(r), 6,
                                                   [&](std::size_t s, std::size_t k, std::size_t c) {
                                                     const SectionForces& f = r.result.stations[s].forces[k];
                                                     const Complex v[6] = {f.N, f.Vy, f.Vz, f.T, f.My, f.Mz};
@@ -280,69 +274,7 @@ void bind_response(py::module_& m) {
           },
           py::arg("node"), "The index in probes of a node (name or number)")
       .def_property_readonly("complete", [](const PyResponseResult& r) { return r.result.info.converged(); })
-      .def_property_readonly("message", [](const PyResponseResult& r) { return r.result.info.message; })
-      .def_property_readonly("warnings", [](const PyResponseResult& r) { return r.context.source.warnings; })
-      .def(
-          "to_json",
-          [](const PyResponseResult& r) { return response_json(r.result, r.options, r.model(), r.context.source); },
-          "The JSON text that feran response --json writes (docs/output-format.md)")
-      .def("to_csv", [](const PyResponseResult& r) { return response_csv(r.result, r.model()); })
-      .def("report",
-           [](const PyResponseResult& r) { return response_report(r.result, r.options, r.model(), r.context.source); });
-
-  m.def(
-      "response",
-      [](const PyModel& model, const py::object& start, const py::object& stop, std::optional<int> points,
-         const py::object& speed, const py::object& freq_start, const py::object& freq_stop,
-         std::optional<int> freq_points, const py::object& probes, const py::object& forces,
-         std::optional<double> loss_factor, bool unbalance, std::optional<std::string> stations, int threads,
-         bool stability) {
-        auto file = std::make_shared<const ModelFile>(model.built());
-        const Model& built = file->model;
-        ResponseRequest request;
-        request.start = optional_speed(start, "start");
-        request.stop = optional_speed(stop, "stop");
-        request.points = points;
-        request.speed = optional_speed(speed, "speed");
-        request.freq_start = optional_speed(freq_start, "freq_start");
-        request.freq_stop = optional_speed(freq_stop, "freq_stop");
-        request.freq_points = freq_points;
-        request.probes = node_arguments(built, probes, "probe");
-        for (const std::string& f : text_arguments(forces, "force"))
-          request.extra_forces.push_back(parse_force_text(built, f, "force"));
-        request.loss_factor = loss_factor;
-        request.unbalance = unbalance;
-        request.stability = stability;
-        if (stations) request.stations = station_output(*stations);
-        request.n_threads = threads;
-        PyResponseResult out{{}, response_settings(built, file->spec.response, request), {}};
-        const bool fsweep = !out.options.frequencies.empty();
-        out.context = result_context(file, fsweep ? out.options.speed : out.options.speeds.front(),
-                                     fsweep ? out.options.speed : out.options.speeds.back());
-        std::atomic<bool> flag{false};
-        out.options.stop = StopToken(flag);
-        bool interrupted = false;
-        run_watched([&] { out.result = run_harmonic_response(built, out.options); }, flag, interrupted);
-        // Journals whose orbit leaves the clearance: a warning, kept with the result.
-        for (const std::string& w : clearance_warnings(out.result, built)) {
-          py::module_::import("warnings").attr("warn")(w, py::handle(PyExc_UserWarning), 2);
-          out.context.source.warnings.push_back(w);
-        }
-        if (interrupted) raise_interrupted(py::cast(std::move(out)));
-        return out;
-      },
-      py::arg("model"), py::kw_only(), py::arg("start") = py::none(), py::arg("stop") = py::none(),
-      py::arg("points") = py::none(), py::arg("speed") = py::none(), py::arg("freq_start") = py::none(),
-      py::arg("freq_stop") = py::none(), py::arg("freq_points") = py::none(), py::arg("probe") = py::none(),
-      py::arg("force") = py::none(), py::arg("loss_factor") = py::none(), py::arg("unbalance") = true,
-      py::arg("stations") = py::none(), py::arg("threads") = 0, py::arg("stability") = true,
-      "Steady-state response, as feran response. A speed sweep (start, stop, points) excites at\n"
-      "the rotor speed; a frequency sweep (freq_start, freq_stop, freq_points) holds the rotor at\n"
-      "speed and excites at each frequency; speed alone gives one point. probe: node name(s) or\n"
-      "number(s); force: 'NODE:DIRECTION:AMPLITUDE[:PHASE]' text(s) as --force; unbalance=False\n"
-      "as --no-unbalance; stations 'all', 'summary' or 'none'; stability=False as --no-stability\n"
-      "(no per-point stability). Unset options come from the model's [response] table. threads: 0\n"
-      "(all cores, as the CLI) or 1.");
+      .def_property_readonly("message", [](const PyResponseResult& r) { return r.result.info.message; });
 }
 
 }  // namespace feran::python
