@@ -5,6 +5,7 @@
 // request step (spec/request.hpp), and the outcome written by the analysis's own
 // writers. No analysis has a command file of its own.
 
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -29,6 +30,20 @@ std::string flag_name(std::string_view key);
 std::string flag_help(std::string_view doc, const std::string& default_text, std::span<const std::string_view> choices);
 /// Prints each warning once to standard error.
 void print_warnings(const std::vector<std::string>& warnings);
+
+/// A long analysis's progress on standard error, rewritten in place: first after a
+/// second, then at most twice a second; end() finishes the line if one was shown.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string_view analysis);
+  void show(double done, const std::string& state);
+  void end();
+
+ private:
+  std::string analysis_;
+  std::chrono::steady_clock::time_point start_, last_;
+  bool shown_ = false;
+};
 
 template <AnalysisFace A>
 Runner add_analysis_command(CLI::App& app) {
@@ -85,7 +100,7 @@ Runner add_analysis_command(CLI::App& app) {
   add_output_options(*cmd, args->out);
 
   return [args]() {
-    CommandOutputs outputs(args->model, args->out);
+    CommandOutputs outputs(args->model, args->out, streams_csv<A>());
     const auto file = std::make_shared<const ModelFile>(read_model(args->model));
     Spec request;
     for (const auto& [field, text] : args->given) {
@@ -94,9 +109,15 @@ Runner add_analysis_command(CLI::App& app) {
       else
         spec::set_text(request, *field, text, flag_name(spec::option_name(*field)));
     }
+    RunContext context{.stop = interrupt_token(), .threads = args->threads};
+    if (streams_csv<A>() && outputs.files.wanted(outputs.csv))
+      context.csv = [&outputs](std::string_view text) { outputs.files.append(outputs.csv, text); };
+    ProgressLine progress(A::name);
+    if (!args->out.quiet)
+      context.progress = [&progress](double done, const std::string& state) { progress.show(done, state); };
     Outcome<A> outcome = run_analysis<A>(
-        file, request, [](std::string_view key) { return flag_name(spec::option_name<Spec>(key)); }, interrupt_token(),
-        args->threads);
+        file, request, [](std::string_view key) { return flag_name(spec::option_name<Spec>(key)); }, context);
+    progress.end();
     print_warnings(outcome.source.warnings);
     outcome.source.speed_unit = args->out.speed_unit;
     const SolverInfo& info = outcome.result.info;
@@ -109,7 +130,7 @@ Runner add_analysis_command(CLI::App& app) {
       }
     }
     outputs.set_json([&] { return A::json(outcome); });
-    outputs.set_csv([&] { return A::csv(outcome); });
+    if constexpr (!streams_csv<A>()) outputs.set_csv([&] { return A::csv(outcome); });
     outputs.files.commit();
     if (!args->out.quiet) std::fputs(A::terminal(outcome).c_str(), stdout);
     // The results so far were written; a failure or a stop is said and exits non-zero.

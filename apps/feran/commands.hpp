@@ -28,7 +28,6 @@ enum ExitCode : int {
 
 using Runner = std::function<int()>;
 
-Runner add_runup_command(CLI::App& app);
 Runner add_params_command(CLI::App& app);
 Runner add_study_command(CLI::App& app);
 Runner add_api684_command(CLI::App& app);

@@ -211,12 +211,33 @@ std::string flag_help(std::string_view doc, const std::string& default_text,
     std::vector<std::string> words(choices.begin(), choices.end());
     out += "; one of " + detail::join_list(words);
   }
-  if (!default_text.empty()) out += " (default " + default_text + ")";
+  if (!default_text.empty()) {
+    std::string shown;  // as the documentation's default, without its Markdown
+    for (const char c : default_text)
+      if (c != '`') shown += c;
+    out += shown.starts_with("— ") ? " " + shown.substr(std::string_view("— ").size()) : " (default " + shown + ")";
+  }
   return out;
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) std::fprintf(stderr, "feran: warning: %s\n", printable(w, true).c_str());
+}
+
+ProgressLine::ProgressLine(std::string_view analysis)
+    : analysis_(analysis), start_(std::chrono::steady_clock::now()), last_(start_) {}
+
+void ProgressLine::show(double done, const std::string& state) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(500)) return;
+  last_ = now;
+  shown_ = true;
+  std::fprintf(stderr, "\r  %s: %s (%3.0f %%)   ", analysis_.c_str(), state.c_str(), 100 * done);
+}
+
+void ProgressLine::end() {
+  if (shown_) std::fputs("\n", stderr);
+  shown_ = false;
 }
 
 }  // namespace feran::app

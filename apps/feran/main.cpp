@@ -96,7 +96,6 @@ int main(int argc, char** argv) try {
   // anything else (help, a mistyped command) all of them, for the help and the error.
   using Adder = feran::app::Runner (*)(CLI::App&, int, char**);
   static constexpr std::pair<const char*, Adder> commands[] = {
-      {"runup", [](CLI::App& a, int, char**) { return feran::app::add_runup_command(a); }},
       {"params", [](CLI::App& a, int, char**) { return feran::app::add_params_command(a); }},
       {"study", [](CLI::App& a, int, char**) { return feran::app::add_study_command(a); }},
       {"api684", [](CLI::App& a, int, char**) { return feran::app::add_api684_command(a); }},

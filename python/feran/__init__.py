@@ -22,8 +22,8 @@ from ._arguments import explained as _explained
 from ._feran import _analysis_options
 
 # Every compiled function and Model method names a wrong argument in its TypeError.
-api684, read_model, report, runup = (
-    _explained(f) for f in (api684, read_model, report, runup))
+api684, read_model, report = (
+    _explained(f) for f in (api684, read_model, report))
 
 
 _MISSING = object()
@@ -66,6 +66,7 @@ modal = _analysis(modal, _analysis_options["modal"])
 campbell = _analysis(campbell, _analysis_options["campbell"])
 static = _analysis(static, _analysis_options["static"])
 response = _analysis(response, _analysis_options["response"])
+runup = _analysis(runup, _analysis_options["runup"])
 for _method in ("__init__", "__getitem__", "__setitem__", "geometry", "_add"):
     setattr(Model, _method, _explained(getattr(Model, _method), "Model"))
 

@@ -33,6 +33,15 @@ void issue_warnings(const std::vector<std::string>& warnings);
 /// messages for the other functions do).
 std::string given(const py::handle& value);
 
+/// The keyword of an option in Python: its name, with '_' after a word Python keeps
+/// for itself ("from_").
+std::string python_name(std::string_view option);
+
+/// Time points given in Python as a list of (time, value) pairs, each a number (s, and
+/// SI units) or text with its unit, written as the command line writes them
+/// ("0s:0Hz,…"); TypeError naming @p function and @p key otherwise.
+std::string time_table_keyword(const py::handle& value, Quantity kind, std::string_view function, std::string_view key);
+
 /// One keyword argument's value set on field @p f of @p request: None leaves it unset;
 /// a string is read as the command line reads it; a number is in SI units (speeds in
 /// rad/s); a list sets a list field. A value of the wrong Python type is a TypeError
@@ -41,7 +50,7 @@ std::string given(const py::handle& value);
 template <class S>
 void set_keyword(S& request, const spec::Field<S>& f, const py::handle& value, std::string_view function) {
   using spec::FieldKind;
-  const std::string key(spec::option_name(f));
+  const std::string key = python_name(spec::option_name(f));
   if (value.is_none()) return;
   const bool is_bool = py::isinstance<py::bool_>(value);
   const bool is_int = py::isinstance<py::int_>(value) && !is_bool;
@@ -100,6 +109,10 @@ void set_keyword(S& request, const spec::Field<S>& f, const py::handle& value, s
         for (const py::handle& v : py::iter(value)) one(v);
       return;
     }
+    case FieldKind::time_table:
+      if (is_text) break;
+      spec::set_text(request, f, time_table_keyword(value, f.quantity, function, key), key);
+      return;
     default:
       break;
   }
@@ -118,9 +131,13 @@ typename A::Spec request_from_keywords(const py::kwargs& keywords) {
     const std::string key = py::str(k);
     if (parallel_analysis<A>() && key == "threads") continue;  // the door's, not the analysis's
     const spec::Field<S>* f = spec::find_option<S>(key);
+    if (f != nullptr && python_name(key) != key) f = nullptr;  // "from" is spelt from_
+    if (f == nullptr && key.ends_with('_') && python_name(key.substr(0, key.size() - 1)) == key)
+      f = spec::find_option<S>(key.substr(0, key.size() - 1));
     if (f == nullptr) {
       std::vector<std::string> known;
-      for (const spec::Field<S>& field : spec::fields_of<S>()) known.emplace_back(spec::option_name(field));
+      for (const spec::Field<S>& field : spec::fields_of<S>())
+        known.emplace_back(python_name(spec::option_name(field)));
       if (parallel_analysis<A>()) known.emplace_back("threads");
       std::string message = fmt::format("{}(): has no argument '{}'", A::name, key);
       if (const auto match = detail::closest_match(key, known, 2))
@@ -142,7 +159,7 @@ py::list option_descriptions() {
   py::list out;
   for (const spec::Field<typename A::Spec>& f : spec::fields_of<typename A::Spec>())
     out.append(
-        py::make_tuple(std::string(spec::option_name(f)), static_cast<int>(f.kind), std::string(f.doc),
+        py::make_tuple(python_name(spec::option_name(f)), static_cast<int>(f.kind), std::string(f.doc),
                        f.default_text.empty() ? spec::value_text(A::defaults(), f) : std::string(f.default_text)));
   if (parallel_analysis<A>())
     out.append(py::make_tuple(std::string("threads"), -1,
@@ -203,14 +220,18 @@ void bind_analysis(py::module_& m, py::dict& descriptions) {
           // attached to the feran.Interrupted raised.
           std::atomic<bool> flag{false};
           bool interrupted = false;
-          run_watched([&] { out = run_analysis<A>(file, request, name, StopToken(flag), threads); }, flag, interrupted);
+          run_watched(
+              [&] {
+                out = run_analysis<A>(file, request, name, RunContext{.stop = StopToken(flag), .threads = threads});
+              },
+              flag, interrupted);
           if (interrupted) {
             issue_warnings(out.source.warnings);
             raise_interrupted(py::cast(std::move(out)));
           }
         } else {
           py::gil_scoped_release release;
-          out = run_analysis<A>(file, request, name, {}, threads);
+          out = run_analysis<A>(file, request, name, RunContext{.threads = threads});
         }
         issue_warnings(out.source.warnings);
         if (!out.result.info.converged()) {

@@ -1,5 +1,6 @@
 // Keyword arguments as the analyses take them (speeds, times, nodes, names), the
 // context every result keeps, and solves that Ctrl-C can stop.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -93,6 +94,42 @@ int threads_keyword(const py::kwargs& keywords, std::string_view function) {
   if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v))
     throw py::type_error(fmt::format("{}(): 'threads' must be an integer, got {}", function, given(v)));
   return v.cast<int>();
+}
+
+std::string python_name(std::string_view option) {
+  static const std::vector<std::string_view> reserved = {
+      "False", "None",     "True",  "and",    "as",   "assert", "async",  "await",    "break",
+      "class", "continue", "def",   "del",    "elif", "else",   "except", "finally",  "for",
+      "from",  "global",   "if",    "import", "in",   "is",     "lambda", "nonlocal", "not",
+      "or",    "pass",     "raise", "return", "try",  "while",  "with",   "yield"};
+  std::string name(option);
+  if (std::find(reserved.begin(), reserved.end(), option) != reserved.end()) name += '_';
+  return name;
+}
+
+std::string time_table_keyword(const py::handle& value, Quantity kind, std::string_view function,
+                               std::string_view key) {
+  const auto wrong = [&] {
+    throw py::type_error(
+        fmt::format("{}(): '{}' must be text such as '0s:0Hz,5s:80Hz' or a list of (time, value) pairs or None, got {}",
+                    function, key, given(value)));
+  };
+  if (!py::isinstance<py::iterable>(value)) wrong();
+  const auto part = [&](const py::handle& v, std::string_view unit) {
+    if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+    if ((py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)) && !py::isinstance<py::bool_>(v))
+      return fmt::format("{:.17g}{}", v.cast<double>(), unit);
+    wrong();
+    return std::string();
+  };
+  std::string text;
+  for (const py::handle& point : py::iter(value)) {
+    if (!py::isinstance<py::sequence>(point) || py::isinstance<py::str>(point) || py::len(point) != 2) wrong();
+    const py::sequence pair = py::reinterpret_borrow<py::sequence>(point);
+    if (!text.empty()) text += ',';
+    text += part(pair[0], "s") + ":" + part(pair[1], si_unit(kind));
+  }
+  return text;
 }
 
 std::string given(const py::handle& value) {

@@ -67,7 +67,6 @@ class PyModel {
 };
 
 void bind_model(py::module_& m);
-void bind_runup(py::module_& m);
 void bind_study(py::module_& m);
 void bind_api684(py::module_& m);
 void bind_report(py::module_& m);

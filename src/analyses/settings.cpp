@@ -6,6 +6,9 @@
 #include <numbers>
 
 #include <fmt/format.h>
+
+#include <feran/io/node_reference.hpp>
+#include <feran/spec/request.hpp>
 #include <fmt/ranges.h>
 
 #include <feran/analyses/static/analysis.hpp>
@@ -23,17 +26,6 @@ namespace {
 
 void add_once(std::vector<Index>& nodes, Index node) {
   if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
-}
-
-std::vector<Index> node_indices(const Model& model, const std::vector<NodeRef>& refs) {
-  std::vector<Index> out;
-  for (const NodeRef& ref : refs) out.push_back(node_index(model, ref));
-  return out;
-}
-
-Real positive_time(Real t, const char* what) {
-  if (!(t > 0.0)) throw Error(fmt::format("runup: {} must be positive, got {} s", what, t));
-  return t;
 }
 
 // A value asked for (an option of the command line, named @p option in the message)
@@ -58,16 +50,18 @@ std::optional<int> checked_count(std::optional<int> value, std::string_view key,
   return value;
 }
 
-// Nodes or elements asked for, each once (a node twice made two equal CSV columns).
-void check_distinct(const std::vector<Index>& items, std::string_view option, std::string_view what,
-                    const std::function<std::string(Index)>& name) {
-  for (std::size_t i = 0; i < items.size(); ++i)
-    if (std::find(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(i), items[i]) !=
-        items.begin() + static_cast<std::ptrdiff_t>(i))
-      throw Error(fmt::format("{}: {} {} is given twice", option, what, name(items[i])));
-}
-
 }  // namespace
+
+std::vector<Index> distinct_nodes(const Model& model, const std::vector<NodeRef>& refs, const std::string& option) {
+  std::vector<Index> nodes;
+  for (const NodeRef& ref : refs) {
+    const Index node = find_node_reference(model, spec::detail::node_text(ref), option);
+    if (std::find(nodes.begin(), nodes.end(), node) != nodes.end())
+      throw Error(fmt::format("{}: node {} is given twice", option, model.node_label(node)));
+    nodes.push_back(node);
+  }
+  return nodes;
+}
 
 std::vector<Real> evenly_spaced(Real a, Real b, int n) {
   if (n == 1) return {a};
@@ -94,16 +88,6 @@ Index node_index(const Model& model, const NodeRef& ref) {
                     ? fmt::format("node {} does not exist", std::get<std::int64_t>(ref))
                     : fmt::format("node '{}' does not exist", std::get<std::string>(ref)));
   return found;
-}
-
-void check_analysis_tables(const ModelSpec& spec) {
-  if (!spec.runup.integrator) return;
-  const std::string& name = *spec.runup.integrator;
-  const std::vector<std::string> names = integrator_names();
-  if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  std::string message = fmt::format("'integrator' must be {}, got \"{}\"", detail::join_list(names, "or", '"'), name);
-  if (const auto m = detail::closest_match(name, names, 2)) message += fmt::format("; did you mean \"{}\"?", *m);
-  throw SpecError("runup.integrator", message);
 }
 
 Api684Options api684_settings(const Model& model, const ModelSpec& file, const Api684Request& request) {
@@ -280,131 +264,6 @@ Index bearing_element(const Model& model, const std::string& name) {
   throw Error(
       fmt::format("no spring-damper, journal or rolling bearing is named '{}'{}", name,
                   names.empty() ? std::string() : fmt::format(" (the named ones: {})", fmt::join(names, ", "))));
-}
-
-TransientOptions runup_settings(const Model& model, const RunupSpec& file, const RunupRequest& request) {
-  TransientOptions options;
-  checked<RunupSpec>(request.speed, "speed", "--speed");
-  checked<RunupSpec>(request.from, "from", "--from");
-  checked<RunupSpec>(request.to, "to", "--to");
-  checked<RunupSpec>(request.ramp_time, "ramp_time", "--ramp-time");
-  checked<RunupSpec>(request.duration, "duration", "--duration");
-  checked<RunupSpec>(request.dt, "dt", "--dt");
-  checked<RunupSpec>(request.output_interval, "output_interval", "--output-interval");
-  checked<RunupSpec>(request.rel_tol, "rel_tol", "--rtol");
-  checked<RunupSpec>(request.abs_tol, "abs_tol", "--atol");
-  checked_count<RunupSpec>(request.modes, "modes", "--modes");
-  // The table by the file's rule: from time 0, strictly increasing times, speeds ≥ 0.
-  for (std::size_t i = 0; i < request.table.size(); ++i) {
-    const auto [time, speed] = request.table[i];
-    checked<RunupSpec>(speed, "speed", fmt::format("--table point {}", i + 1));
-    if (!std::isfinite(time) || std::abs(time) > physical_range(Quantity::time).largest)
-      throw Error(fmt::format("--table point {}: the time must be a finite time", i + 1));
-    if (i == 0 && time != 0.0)
-      throw Error(fmt::format("--table must start at time 0, where the run-up starts, but its first time is {}",
-                              format_quantity(time, Quantity::time)));
-    if (i > 0 && !(time > request.table[i - 1].first))
-      throw Error(
-          fmt::format("--table: the times must be strictly increasing, but point {} ({}) does not come "
-                      "after point {} ({})",
-                      i + 1, format_quantity(time, Quantity::time), i,
-                      format_quantity(request.table[i - 1].first, Quantity::time)));
-  }
-  check_distinct(request.probes, "--probe", "node", [&](Index n) { return model.node_label(n); });
-  check_distinct(request.springs, "--spring", "spring",
-                 [&](Index e) { return fmt::format("'{}'", model.elements[static_cast<std::size_t>(e)].label()); });
-  const bool ramp = request.from || request.to || request.ramp_time;
-  const int forms =
-      static_cast<int>(request.speed.has_value()) + static_cast<int>(ramp) + static_cast<int>(!request.table.empty());
-  if (forms > 1) throw Error("runup: give one speed profile: --speed, --from/--to/--ramp-time, or --table");
-  std::optional<Real> natural_duration;
-  if (request.speed) {
-    options.profile = SpeedProfile::constant(*request.speed);
-  } else if (ramp) {
-    if (!request.to || !request.ramp_time) throw Error("runup: a ramp needs --to and --ramp-time");
-    const Real time = positive_time(*request.ramp_time, "the ramp time");
-    options.profile = SpeedProfile::ramp(request.from.value_or(0.0), *request.to, time);
-    natural_duration = time;
-  } else if (!request.table.empty()) {
-    options.profile = SpeedProfile(request.table);
-    natural_duration = request.table.back().first;
-  } else if (file.speed) {
-    options.profile = SpeedProfile::constant(*file.speed);
-  } else if (file.to) {
-    options.profile = SpeedProfile::ramp(file.from.value_or(0.0), *file.to, *file.ramp_time);
-    natural_duration = *file.ramp_time;
-  } else if (!file.table.empty()) {
-    options.profile = SpeedProfile(file.table);
-    natural_duration = file.table.back().first;
-  } else {
-    throw Error(
-        "runup: give a speed profile (--speed, --from/--to/--ramp-time or --table) or a "
-        "[runup] table");
-  }
-  if (request.duration)
-    options.duration = positive_time(*request.duration, "the duration");
-  else if (forms == 0 && file.duration)
-    options.duration = *file.duration;
-  else if (natural_duration && *natural_duration > 0)
-    options.duration = *natural_duration;
-  else
-    throw Error("runup: give the simulated time with --duration (e.g. --duration 2s)");
-
-  options.integrator = request.integrator.value_or(file.integrator.value_or("trapezoidal"));
-  IntegratorSettings& s = options.settings;
-  s.dt = positive_time(request.dt.value_or(file.dt.value_or(defaults::runup_dt)), "the time step");
-  if (const auto v = request.rel_tol ? request.rel_tol : file.rel_tol) s.rel_tol = *v;
-  if (const auto v = request.abs_tol ? request.abs_tol : file.abs_tol) s.abs_tol = *v;
-  if (request.newton_tol) s.newton_tol = *request.newton_tol;
-  if (request.newton_max_iterations) s.newton_max_iterations = *request.newton_max_iterations;
-  s.allow_unstable_step = request.allow_unstable_step;
-  s.exact_jacobian = request.exact_jacobian;
-  if (request.jacobian_interval) s.jacobian_interval = *request.jacobian_interval;
-  options.reduced_modes = request.modes.value_or(file.modes.value_or(0));
-  options.output_interval =
-      positive_time(request.output_interval.value_or(file.output_interval.value_or(defaults::output_interval)),
-                    "the output interval");
-  const Real samples = options.duration / options.output_interval;
-  if (samples > defaults::max_runup_samples)
-    throw Error(
-        fmt::format("runup: a duration of {:g} s sampled every {:g} s is {:.3g} samples; at most {:g} are "
-                    "recorded (a longer output interval or a shorter duration)",
-                    options.duration, options.output_interval, samples, defaults::max_runup_samples));
-  const Real steps = options.duration / s.dt;
-  const auto known = integrator_names();
-  if (std::find(known.begin(), known.end(), options.integrator) != known.end() && steps > defaults::max_runup_steps &&
-      !make_integrator(options.integrator, s)->adaptive())
-    throw Error(
-        fmt::format("runup: a duration of {:g} s at a step of {:g} s is {:.3g} steps; at most {:g} are "
-                    "taken (a longer step or a shorter duration)",
-                    options.duration, s.dt, steps, defaults::max_runup_steps));
-  if (request.blowup_limit) {
-    if (!(*request.blowup_limit > 0)) throw Error("--blowup must be positive");
-    options.blowup_limit = *request.blowup_limit;
-  }
-  options.static_loads = request.static_loads || file.static_loads.value_or(false);
-  if (request.gravity || file.gravity.value_or(false)) options.gravity = model.gravity;
-  const std::string start = request.start.value_or(file.start.value_or("rest"));
-  if (start == "rest")
-    options.start = RunupStart::rest;
-  else if (start == "equilibrium")
-    options.start = RunupStart::equilibrium;
-  else if (start == "steady")
-    options.start = RunupStart::steady_state;
-  else
-    throw Error(fmt::format("--start must be rest, equilibrium or steady, got '{}'", start));
-  options.driven = request.drive.value_or(file.drive.value_or(false));
-  if (options.driven && !model.drive)
-    throw Error("runup: a torque-driven run needs a [drive] table in the model (its motor and load torques)");
-  options.probes = !request.probes.empty() ? request.probes
-                   : !file.probes.empty()  ? node_indices(model, file.probes)
-                                           : default_probes(model);
-  if (!request.springs.empty()) {
-    options.springs = request.springs;
-  } else {
-    for (const std::string& name : file.springs) options.springs.push_back(spring_element(model, name));
-  }
-  return options;
 }
 
 }  // namespace feran

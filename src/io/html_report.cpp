@@ -16,13 +16,13 @@
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
+#include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/core/error.hpp>
 #include <feran/io/model_writer.hpp>
 #include <feran/io/result_writer.hpp>
-#include <feran/io/runup_writer.hpp>
 #include <feran/io/study_log.hpp>
 
 #include "json_text.hpp"
@@ -322,8 +322,9 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
   const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
   CampbellSpec campbell = options.campbell;
   if (!campbell.stop && !spec.campbell.stop && high) campbell.stop = 1.5 * *high;
-  const Outcome<CampbellAnalysis> campbell_outcome = run_analysis<CampbellAnalysis>(
-      unowned, campbell, file_key_name<CampbellAnalysis>(), options.stop, options.n_threads);
+  const Outcome<CampbellAnalysis> campbell_outcome =
+      run_analysis<CampbellAnalysis>(unowned, campbell, file_key_name<CampbellAnalysis>(),
+                                     RunContext{.stop = options.stop, .threads = options.n_threads});
   const CampbellOptions& co = campbell_outcome.options;
   data["campbell"] = json::parse(CampbellAnalysis::json(campbell_outcome));
 
@@ -367,8 +368,9 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
           ResponseSpec request = options.response;
           if (!request.stations) request.stations = "summary";
           if (!request.stop && !spec.response.stop) request.stop = co.speeds.back();
-          const Outcome<ResponseAnalysis> response = run_analysis<ResponseAnalysis>(
-              unowned, request, file_key_name<ResponseAnalysis>(), options.stop, options.n_threads);
+          const Outcome<ResponseAnalysis> response =
+              run_analysis<ResponseAnalysis>(unowned, request, file_key_name<ResponseAnalysis>(),
+                                             RunContext{.stop = options.stop, .threads = options.n_threads});
           const HarmonicResult& hr = response.result;
           json j = json::parse(ResponseAnalysis::json(response));
           // With an operating range, each peak's amplification factor and margins (API 684).
@@ -389,8 +391,8 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
           shape.probes.clear();
           for (const Node& n : model.nodes) shape.probes.emplace_back(std::int64_t{n.number});
           shape.stations = "none";
-          j["deflected_shape"] = json::parse(ResponseAnalysis::json(
-              run_analysis<ResponseAnalysis>(unowned, shape, file_key_name<ResponseAnalysis>(), options.stop)));
+          j["deflected_shape"] = json::parse(ResponseAnalysis::json(run_analysis<ResponseAnalysis>(
+              unowned, shape, file_key_name<ResponseAnalysis>(), RunContext{.stop = options.stop})));
           return j;
         },
         options.stop);
@@ -405,8 +407,8 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
           // first speed above 0 the mode shapes use).
           StaticSpec request;
           if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
-          return json::parse(StaticAnalysis::json(
-              run_analysis<StaticAnalysis>(unowned, request, file_key_name<StaticAnalysis>(), options.stop)));
+          return json::parse(StaticAnalysis::json(run_analysis<StaticAnalysis>(
+              unowned, request, file_key_name<StaticAnalysis>(), RunContext{.stop = options.stop})));
         },
         options.stop);
 
@@ -427,11 +429,8 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
     section(
         data, "runup",
         [&] {
-          TransientOptions to = runup_settings(model, r, {});
-          to.stop = options.stop;
-          to.assembled = file.assembler;
-          const TransientResult tr = run_transient(model, to);
-          return json::parse(runup_json(tr, to, model, source));
+          return json::parse(RunupAnalysis::json(run_analysis<RunupAnalysis>(
+              unowned, {}, file_key_name<RunupAnalysis>(), RunContext{.stop = options.stop})));
         },
         options.stop);
 

@@ -618,7 +618,6 @@ bool overlaps(std::string_view a, std::string_view b) {
 /// and the canonical paths they set.
 void build(ModelFile& file, const std::vector<std::pair<std::string, std::string>>& set) {
   try {
-    check_analysis_tables(file.spec);
     BuildInfo info;
     file.model = build_model(file.spec, &file.source, &info);
     // The response's forces are text the model's nodes give meaning to.

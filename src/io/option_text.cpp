@@ -27,22 +27,6 @@ Real parse_time_text(const std::string& text, const std::string& what) {
   }
 }
 
-std::vector<std::pair<Real, Real>> parse_speed_table_text(const std::string& text, const std::string& what) {
-  std::vector<std::pair<Real, Real>> points;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t end = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, end - start);
-    const std::size_t colon = item.find(':');
-    if (colon == std::string::npos)
-      throw Error(fmt::format("{} '{}': each point is TIME:SPEED, e.g. 0s:0Hz,5s:80Hz", what, text));
-    const Real t = parse_quantity(item.substr(0, colon), Quantity::time);
-    points.emplace_back(t, parse_speed_text(item.substr(colon + 1), what));
-    start = end + 1;
-  }
-  return points;
-}
-
 HarmonicForce parse_force_text(const Model& model, const std::string& text, const std::string& what) {
   std::vector<std::string> parts;
   std::size_t start = 0;

@@ -18,39 +18,6 @@ using namespace detail;  // NOLINT(google-build-using-namespace): the reports' s
 
 }  // namespace
 
-std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,
-                         const ResultSource& source, double wall_seconds) {
-  std::string out = source_line("runup", source);
-  const auto number = [&](Real speed) {  // in the chosen unit, without it
-    return source.speed_unit == "rpm" ? fmt::format("{:.0f}", speed_value(speed, "rpm"))
-                                      : fmt::format("{:.4g}", rad_to_hz(speed));
-  };
-  out += fmt::format(
-      "{} from {:.4g} to {:.4g} s, speed {} -> {} {}{}; {} steps ({} rejected), {} "
-      "factorizations, {} Newton iterations",
-      options.integrator, 0.0, result.t_end, number(options.profile.speed(0.0)), number(result.speed_end),
-      source.speed_unit == "rpm" ? "rpm" : "Hz", options.driven ? " (torque-driven)" : "", result.steps,
-      result.rejected, result.factorizations, result.newton_iterations);
-  out += wall_seconds >= 0 ? fmt::format("; {:.3g} s wall\n", wall_seconds) : std::string("\n");
-  if (result.basis_size > 0)
-    out += fmt::format("modal reduction: {} modes at {} speeds, a basis of {} vectors\n", options.reduced_modes,
-                       modal_basis_speeds, result.basis_size);
-  for (std::size_t p = 0; p < options.probes.size() && p < result.envelopes.size(); ++p) {
-    const Envelope& e = result.envelopes[p];
-    out += fmt::format("  node {:<16} peak |r| = {:.5g} mm at t = {:.4g} s, speed {}\n",
-                       printable(model.node_label(options.probes[p])), 1e3 * e.peak, e.peak_time,
-                       speed_short(e.peak_speed, source.speed_unit));
-  }
-  for (const ClearanceUse& u : result.clearance_use)
-    out += fmt::format("  {:<21} largest journal excursion {:.4g} x its clearance at t = {:.4g} s, speed {}\n",
-                       force_name(model, u.force), u.largest, u.time, speed_short(u.speed, source.speed_unit));
-  if (!result.samples.empty())
-    out += operating_tables(result.operating, model, "in the motion", "time [s]",
-                            [&](std::size_t k) { return fmt::format("{:.4g}", result.samples[k].t); });
-  if (!result.warning.empty()) out += "warning: " + printable(result.warning, true) + "\n";
-  return out;
-}
-
 std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source) {
   std::size_t path_width = 4, value_width = 5;
   for (const Parameter& p : parameters) {

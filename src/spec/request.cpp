@@ -52,6 +52,23 @@ Real quantity_text(std::string_view text, Quantity kind, std::string_view option
   }
 }
 
+std::vector<std::pair<Real, Real>> time_table_text(std::string_view text, Quantity kind, std::string_view option) {
+  std::vector<std::pair<Real, Real>> points;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string_view item = text.substr(start, end - start);
+    const std::size_t colon = item.find(':');
+    if (colon == std::string_view::npos)
+      throw Error(fmt::format("{} '{}': each point is TIME:VALUE, e.g. 0s:0Hz,5s:80Hz", option, text));
+    const Real t = quantity_text(item.substr(0, colon), Quantity::time, option);
+    if (!std::isfinite(t)) throw Error(fmt::format("{} '{}': a time must be finite", option, text));
+    points.emplace_back(t, quantity_text(item.substr(colon + 1), kind, option));
+    start = end + 1;
+  }
+  return points;
+}
+
 bool flag_text(std::string_view text, std::string_view option) {
   if (text == "true") return true;
   if (text == "false") return false;

@@ -55,6 +55,20 @@ std::string ordinal(int n) {
   return fmt::format("{}{}", n, suffix);
 }
 
+std::vector<NodeRef> quantity_probes(const Model& model, std::span<const QuantitySpec> quantities,
+                                     std::string_view analysis) {
+  std::vector<NodeRef> probes;
+  std::vector<Index> nodes;
+  for (const QuantitySpec& q : quantities) {
+    if (!q.probe || row_of(q).analysis != analysis) continue;
+    const Index node = node_index(model, *q.probe);
+    if (std::find(nodes.begin(), nodes.end(), node) != nodes.end()) continue;
+    nodes.push_back(node);
+    probes.push_back(*q.probe);
+  }
+  return probes;
+}
+
 std::string rpm(Real speed) { return approximate_quantity(speed, Quantity::speed, "rpm"); }
 
 Real extreme_bearing_value(const QuantitySpec& q, bool smallest, const std::vector<BearingValues>& bearings,
@@ -86,81 +100,11 @@ void check_solver(const SolverInfo& info, std::string_view analysis) {
   if (!info.converged()) throw Error(fmt::format("the {} failed: {}", analysis, info.message));
 }
 
-Index spring_index(const Model& model, const std::string& name) { return spring_element(model, name); }
-
 }  // namespace
-
-// The analyses not yet in folders of their own, each run when a quantity first needs it.
-struct DesignAnalyses::Legacy {
-  Legacy(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop)
-      : spec_(spec), model_(model), stop_(stop) {
-    for (const auto& q : quantities) {
-      const std::string_view analysis = row_of(q).analysis;
-      if (q.probe && analysis == "runup") add(runup_probes_, node_index(model, *q.probe));
-      if (q.kind == "runup_spring_force") {
-        if (q.spring)
-          add(runup_springs_, spring_index(model, *q.spring));
-        else
-          all_runup_springs_ = true;
-      }
-    }
-  }
-
-  const TransientResult& runup() {
-    if (!runup_) {
-      RunupRequest request;
-      request.probes = runup_probes_;
-      if (all_runup_springs_) {
-        for (Index e = 0; e < static_cast<Index>(model_.elements.size()); ++e)
-          if (model_.elements[static_cast<std::size_t>(e)].connection()) add(runup_springs_, e);  // spring–dampers
-      }
-      request.springs = runup_springs_;
-      auto options = runup_settings(model_, spec_.runup, request);
-      options.keep_samples = !runup_springs_.empty();
-      options.stop = stop_;
-      runup_ = run_transient(model_, options);
-      check_solver(runup_->info, "run-up");
-      runup_probe_nodes_ = options.probes;
-      runup_spring_elements_ = options.springs;
-    }
-    return *runup_;
-  }
-
-  const std::vector<Index>& runup_probe_nodes() const { return runup_probe_nodes_; }
-  const std::vector<Index>& runup_spring_elements() const { return runup_spring_elements_; }
-  const Model& model() const { return model_; }
-  const ModelSpec& spec() const { return spec_; }
-  const StopToken& stop() const { return stop_; }
-
-  static void add(std::vector<Index>& list, Index i) {
-    if (std::find(list.begin(), list.end(), i) == list.end()) list.push_back(i);
-  }
-  const ModelSpec& spec_;
-  const Model& model_;
-  StopToken stop_;
-  std::optional<TransientResult> runup_;
-  std::vector<Index> runup_probes_, runup_springs_;
-  bool all_runup_springs_ = false;
-  std::vector<Index> runup_probe_nodes_, runup_spring_elements_;
-};
 
 DesignAnalyses::DesignAnalyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities,
                                StopToken stop)
-    : spec_(spec),
-      model_(model),
-      stop_(stop),
-      quantities_(quantities),
-      legacy_(std::make_unique<Legacy>(spec, model, quantities, stop)) {}
-DesignAnalyses::~DesignAnalyses() = default;
-const TransientResult& DesignAnalyses::runup() { return legacy_->runup(); }
-const std::vector<Index>& DesignAnalyses::runup_probe_nodes() {
-  (void)legacy_->runup();
-  return legacy_->runup_probe_nodes();
-}
-const std::vector<Index>& DesignAnalyses::runup_spring_elements() {
-  (void)legacy_->runup();
-  return legacy_->runup_spring_elements();
-}
+    : spec_(spec), model_(model), stop_(stop), quantities_(quantities) {}
 
 namespace {
 
@@ -201,26 +145,6 @@ Real level1_q_zero(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
   return *r.q_zero;
 }
 
-Real runup_peak(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto& r = a.runup();
-  const auto& nodes = a.runup_probe_nodes();
-  if (nodes.empty()) throw Error("the run-up records no probe: give the quantity a 'probe'");
-  const Index node = q.probe ? node_index(a.model(), *q.probe) : nodes.front();
-  const auto at = std::find(nodes.begin(), nodes.end(), node);
-  return r.envelopes[static_cast<std::size_t>(at - nodes.begin())].peak;
-}
-
-Real runup_spring_force(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  const auto& r = a.runup();
-  const auto& springs = a.runup_spring_elements();
-  const Index only = q.spring ? spring_index(a.model(), *q.spring) : -1;
-  Real peak = 0;
-  for (const auto& sample : r.samples)
-    for (std::size_t i = 0; i < springs.size(); ++i)
-      if (only < 0 || springs[i] == only) peak = std::max(peak, std::hypot(sample.springs[i][1], sample.springs[i][2]));
-  return peak;
-}
-
 Real rotor_mass(DesignAnalyses& a, const QuantitySpec&, std::string&) { return rotating_mass(a.model()); }
 
 Real parameter(DesignAnalyses& a, const QuantitySpec& q, std::string&) { return get_parameter(a.spec(), q.path).value; }
@@ -250,16 +174,6 @@ const std::vector<QuantityRow>& own_rows() {
        .unit = Q::stiffness,
        .evaluate = level1_q_zero,
        .needs_speed = true},
-      {.name = "runup_peak",
-       .doc = "largest |r| at a probe during the run-up",
-       .analysis = "runup",
-       .unit = Q::length,
-       .evaluate = runup_peak},
-      {.name = "runup_spring_force",
-       .doc = "largest lateral force of a spring (or of all) during the run-up",
-       .analysis = "runup",
-       .unit = Q::force,
-       .evaluate = runup_spring_force},
       {.name = "rotor_mass", .doc = "mass of the rotating parts", .unit = Q::mass, .evaluate = rotor_mass},
       {.name = "parameter",
        .doc = "a number of the design's model, by its parameter path",

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/settings.hpp>
@@ -73,8 +74,8 @@ void expect_whip_past_the_threshold(const ModelFile& file) {
   EXPECT_GT(threshold_hz, 80.0);  // well above the first critical (47.6 Hz) …
   EXPECT_LT(threshold_hz, 95.0);  // … and below twice it, as for oil whip
 
-  RunupRequest request;
-  const TransientOptions options = runup_settings(file.model, file.spec.runup, request);
+  RunupSpec request;
+  const TransientOptions options = runup_options(file, request);
   const TransientResult r = run_transient(file.model, options);
   ASSERT_TRUE(r.info.converged()) << r.info.message;
 
@@ -133,11 +134,10 @@ TEST(ExampleOilWhip, OnFiniteBearingsTheTabulatedRunupFollowsTheSolversAndWhips)
     at = exact_text.insert(at + 18, "evaluation = \"exact\"\n").find('\n', at + 18) + 1;
   const ModelFile tabulated = read_model_string(text.str(), finite_path);
   const ModelFile exact = read_model_string(exact_text, finite_path);
-  RunupRequest quarter;
+  RunupSpec quarter;
   quarter.duration = 0.25;
-  const TransientResult a =
-      run_transient(tabulated.model, runup_settings(tabulated.model, tabulated.spec.runup, quarter));
-  const TransientResult b = run_transient(exact.model, runup_settings(exact.model, exact.spec.runup, quarter));
+  const TransientResult a = run_transient(tabulated.model, runup_options(tabulated, quarter));
+  const TransientResult b = run_transient(exact.model, runup_options(exact, quarter));
   ASSERT_TRUE(a.info.converged() && b.info.converged());
   ASSERT_EQ(a.samples.size(), b.samples.size());
   Real largest = 0, difference = 0;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -34,11 +35,11 @@ struct RunUp {
 // sampled every 1 ms; `duration` > 0 cuts it short.
 RunUp runup(const std::string& path, Real duration = 0) {
   const ModelFile file = read_model_file(example(path));
-  RunupRequest request;
+  RunupSpec request;
   if (duration > 0) request.duration = duration;
   request.output_interval = 1e-3;
-  request.probes = {file.model.find_node("rotor")};
-  const TransientOptions t = runup_settings(file.model, file.spec.runup, request);
+  request.probes = {NodeRef{std::string("rotor")}};
+  const TransientOptions t = runup_options(file, request);
   return {file.model, run_transient(file.model, t)};
 }
 

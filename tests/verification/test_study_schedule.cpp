@@ -9,6 +9,7 @@
 // Two whole run-ups of 50 000 steps: this executable carries the label long_runup.
 #include <gtest/gtest.h>
 
+#include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
 #include <feran/io/model_reader.hpp>
@@ -31,9 +32,9 @@ TEST(StudySchedule, TheUnchangedFractionIsTheConstantMountingAndThePapersLawLowe
   EXPECT_EQ(unchanged.values[2], 1.0);
 
   const ModelFile constant = read_model_file(FERAN_SOURCE_DIR "/examples/02_centrifuge/model.toml");
-  RunupRequest request;
-  request.probes = {constant.model.find_node("rotor")};
-  const auto result = run_transient(constant.model, runup_settings(constant.model, constant.spec.runup, request));
+  RunupSpec request;
+  request.probes = {NodeRef{std::string("rotor")}};
+  const auto result = run_transient(constant.model, runup_options(constant, request));
   ASSERT_EQ(result.envelopes.size(), 1u);
   // The same run-up to rounding: s = c0 − (c1/π)·arctan(…) = 1 − 0 exactly, but a
   // speed-dependent stiffness is assembled again at every step, in another order of

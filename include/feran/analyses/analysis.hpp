@@ -20,6 +20,9 @@
 ///                        terminal(const Outcome<A>&);
 ///     static const std::vector<QuantityRow>& quantities();  // optional: study quantities
 ///     static constexpr bool keeps_partial_results;           // optional, default false
+///     static constexpr bool parallel;                        // optional: points side by side
+///     static constexpr bool streams_csv;                     // optional: CSV written as it goes
+///     static Spec study_request(const Model&, std::span<const QuantitySpec>);  // optional
 ///
 /// An analysis that keeps partial results (the modes that converged, a sweep's points
 /// so far) is written by every door even when its solve failed, which the door then
@@ -57,6 +60,13 @@ struct RunContext {
   /// For an analysis whose points run side by side (A::parallel): how many threads,
   /// 0 for all cores. A library caller's analyses run on one.
   int threads = 1;
+  /// For an analysis that writes its CSV as it goes (A::streams_csv: a run-up's
+  /// samples): receives the text, the header first, then whole rows; unset when no CSV
+  /// is wanted.
+  std::function<void(std::string_view)> csv = {};
+  /// For a long analysis: receives how far it is (0 to 1) and its state in a few words
+  /// ("t = 0.5 s, speed 40 Hz"), as often as it likes; unset when nobody watches.
+  std::function<void(double, const std::string&)> progress = {};
 };
 
 /// How a door names an option in its messages: "--g" on the command line, "g" in
@@ -96,6 +106,15 @@ template <class A>
 constexpr bool parallel_analysis() {
   if constexpr (requires { A::parallel; })
     return A::parallel;
+  else
+    return false;
+}
+
+/// Whether analysis A writes its CSV as it goes (RunContext::csv), not from its result.
+template <class A>
+constexpr bool streams_csv() {
+  if constexpr (requires { A::streams_csv; })
+    return A::streams_csv;
   else
     return false;
 }
@@ -147,9 +166,10 @@ OptionName file_key_name() {
 /// thrown.
 template <AnalysisFace A>
 Outcome<A> run_analysis(std::shared_ptr<const ModelFile> file, const typename A::Spec& request, const OptionName& name,
-                        const StopToken& stop = {}, int threads = 1) {
+                        RunContext context = {}) {
   Outcome<A> out{file, analysis_options<A>(*file, request, name), {}, {}};
-  out.result = A::run(file->model, out.options, RunContext{stop, file->assembler, threads});
+  context.assembler = file->assembler;
+  out.result = A::run(file->model, out.options, context);
   out.source = ResultSource{file->path, file->title, A::warnings(file->model, out.options, out.result)};
   return out;
 }

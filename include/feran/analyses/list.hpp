@@ -8,6 +8,7 @@
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
+#include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
 
 namespace feran {
@@ -23,6 +24,6 @@ struct AnalysisList {
 
 /// The analyses, in the order the command line's help lists them after the ones not
 /// yet moved into their folders.
-using Analyses = AnalysisList<ModalAnalysis, CampbellAnalysis, ResponseAnalysis, StaticAnalysis>;
+using Analyses = AnalysisList<ModalAnalysis, CampbellAnalysis, ResponseAnalysis, StaticAnalysis, RunupAnalysis>;
 
 }  // namespace feran

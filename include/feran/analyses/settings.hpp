@@ -1,15 +1,14 @@
 #pragma once
 /// @file
-/// Analysis settings of the analyses not yet in rooms of their own (run-up,
-/// API 684): what a caller asks for, the model file's analysis tables and the built-in
-/// defaults, resolved into each analysis's options in one place; and what all analyses
+/// Analysis settings of the analysis not yet in a room of its own (API 684): what a caller asks for, the model file's
+/// analysis tables and the built-in defaults, resolved into each analysis's options in one place; and what all analyses
 /// share (default probes, range warnings, bearings by name). The analyses in rooms take
 /// their options through analyses/analysis.hpp's generic request step instead.
 ///
 /// Every caller — the command line, a C++ program, the Python module, a design study —
 /// fills a request with what it wants to set and leaves the rest empty; the function
-/// of the analysis takes each empty member from the model file's table ([runup],
-/// [api684]) and then from the built-in default, and checks what the
+/// of the analysis takes each empty member from the model file's table ([api684])
+/// and then from the built-in default, and checks what the
 /// combination must satisfy. Requests hold SI values (speeds in rad/s). Library
 /// requests run on one thread unless they say otherwise.
 
@@ -57,6 +56,10 @@ std::vector<Real> evenly_spaced(Real a, Real b, int n);
 /// in order, each once.
 std::vector<Index> default_probes(const Model& model, std::span<const HarmonicForce> extra = {});
 
+/// The nodes @p refs denote (names or numbers), as an option named @p option gives
+/// them; throws Error for an unknown node (with a suggestion) or a node given twice.
+std::vector<Index> distinct_nodes(const Model& model, const std::vector<NodeRef>& refs, const std::string& option);
+
 /// The node a (validated) reference of a spec denotes; throws Error when there is none.
 Index node_index(const Model& model, const NodeRef& ref);
 
@@ -78,38 +81,7 @@ Index node_index(const Model& model, const NodeRef& ref);
 
 // ---------------------------------------------------------------------------------
 
-struct RunupRequest {
-  /// The speed profile, one form at most: a constant speed, a ramp (from, to,
-  /// ramp_time) or a table of (time [s], speed [rad/s]). None: the file's [runup].
-  std::optional<Real> speed;
-  std::optional<Real> from, to, ramp_time;
-  std::vector<std::pair<Real, Real>> table;
-  /// Default: [runup] duration (with the file's profile), else the profile's length.
-  std::optional<Real> duration;
-  std::optional<std::string> integrator;  ///< default [runup], else "trapezoidal"
-  std::optional<Real> dt;                 ///< default [runup], else 1e-4 s
-  std::optional<Real> rel_tol, abs_tol;   ///< default [runup], else the integrator's
-  std::optional<Real> output_interval;    ///< default [runup], else 1 ms
-  std::optional<int> modes;               ///< default [runup] modes, else the full model
-  std::vector<Index> probes;              ///< empty: [runup] probes, else default_probes()
-  std::vector<Index> springs;             ///< elements; empty: [runup] springs
-  std::optional<Real> newton_tol;
-  std::optional<int> newton_max_iterations;
-  bool allow_unstable_step = false;
-  bool exact_jacobian = true;
-  std::optional<int> jacobian_interval;
-  std::optional<Real> blowup_limit;  ///< [m]; default 1 m
-  bool static_loads = false;         ///< true, or else [runup] static_loads
-  bool gravity = false;              ///< true (Model::gravity), or else [runup] gravity
-  /// "rest", "equilibrium" or "steady"; default [runup] start, else "rest".
-  std::optional<std::string> start;
-  /// Torque-driven by the model's [drive]; default [runup] drive, else false.
-  std::optional<bool> drive;
-};
-
-/// Throws Error for two profile forms, an incomplete ramp, no profile anywhere, no
-/// duration, or a non-positive time.
-TransientOptions runup_settings(const Model& model, const RunupSpec& file, const RunupRequest& request);
+// The run-up: analyses/runup/analysis.hpp.
 
 // ---------------------------------------------------------------------------------
 
@@ -136,12 +108,6 @@ struct Api684Request {
 /// tables (gravity for the journal loads) and the defaults. Throws Error without an
 /// operating range or with a maximum below the minimum.
 Api684Options api684_settings(const Model& model, const ModelSpec& file, const Api684Request& request);
-
-/// Checks what only the analyses know about a spec's analysis tables — today that
-/// [runup] integrator names an integrator of the registry (make_integrator()) —
-/// and throws SpecError at the path ("runup.integrator") with a suggestion.
-/// build_model() has checked everything else; readers call both.
-void check_analysis_tables(const ModelSpec& spec);
 
 /// Warnings for the tabulated data of @p model that an analysis over the speeds
 /// [@p low, @p high] (rad/s) evaluates beyond its range, one per table: "spring

@@ -23,11 +23,6 @@ Real parse_speed_text(const std::string& text, const std::string& what);
 /// A positive time with its unit ("5s", "0.1ms") in s; throws Error naming @p what.
 Real parse_time_text(const std::string& text, const std::string& what);
 
-/// A piecewise-linear speed profile "TIME:SPEED,…" ("0s:0Hz,2s:50Hz,5s:50Hz") as
-/// (time [s], speed [rad/s]) points; the points' order is checked by the run-up's
-/// settings, not here.
-std::vector<std::pair<Real, Real>> parse_speed_table_text(const std::string& text, const std::string& what);
-
 /// A harmonic force "NODE:DIRECTION:AMPLITUDE[:PHASE]" ("rotor:y:10N",
 /// "3:rotating:2N:90deg"): DIRECTION x, y, z, rx, ry, rz (fixed in space), rotating
 /// or rotating_moment (turning with the shaft); the amplitude positive, a force or a

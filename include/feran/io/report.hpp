@@ -13,11 +13,6 @@
 
 namespace feran {
 
-/// Summary of a run-up: the integrator's work, the peak |r| of each probe and any
-/// warning; @p wall_seconds is the time it took (negative: not shown).
-std::string runup_report(const TransientResult& result, const TransientOptions& options, const Model& model,
-                         const ResultSource& source, double wall_seconds = -1);
-
 /// The API 617 / API 684 analyses: journal loads, per unbalance case the peaks with
 /// their amplification factors and margins, the map's intersections, level I stability.
 std::string api684_report(const Api684Result& result, const Model& model, const ResultSource& source);

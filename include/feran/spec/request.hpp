@@ -119,6 +119,9 @@ std::int64_t integer_text(std::string_view text, std::string_view option);
 /// "1800rpm"), any other may be a bare number in its SI unit. Throws Error naming
 /// @p option.
 Real quantity_text(std::string_view text, Quantity kind, std::string_view option);
+/// Time and value points "TIME:VALUE,TIME:VALUE,…" ("0s:0Hz,2s:50Hz"), the values of
+/// kind @p kind; throws Error naming @p option.
+std::vector<std::pair<Real, Real>> time_table_text(std::string_view text, Quantity kind, std::string_view option);
 /// true or false as written ("true", "false").
 bool flag_text(std::string_view text, std::string_view option);
 /// Checks a number asked for against bound @p bound and, for a quantity (@p kind not
@@ -184,6 +187,8 @@ void set_text(S& s, const Field<S>& f, std::string_view text, std::string_view o
           v = std::string(text);
         } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
           v.emplace_back(text);
+        } else if constexpr (std::is_same_v<T, std::vector<std::pair<Real, Real>>>) {
+          v = detail::time_table_text(text, f.quantity, option);
         } else if constexpr (std::is_same_v<T, std::optional<NodeRef>> || std::is_same_v<T, std::vector<NodeRef>>) {
           NodeRef ref = std::string(text);
           if (!text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos)

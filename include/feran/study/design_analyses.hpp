@@ -20,14 +20,12 @@
 
 namespace feran {
 
-struct TransientResult;
-
 class DesignAnalyses {
  public:
   /// The quantities tell which probes and springs the response and the run-up record;
   /// they must outlive the object.
   DesignAnalyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities, StopToken stop);
-  ~DesignAnalyses();
+  ~DesignAnalyses() = default;
   DesignAnalyses(const DesignAnalyses&) = delete;
   DesignAnalyses& operator=(const DesignAnalyses&) = delete;
 
@@ -47,11 +45,6 @@ class DesignAnalyses {
     return slot<A>().result;
   }
 
-  // The analyses not yet in folders of their own.
-  const TransientResult& runup();
-  const std::vector<Index>& runup_probe_nodes();
-  const std::vector<Index>& runup_spring_elements();
-
  private:
   template <AnalysisFace A>
   struct Slot {
@@ -67,7 +60,7 @@ class DesignAnalyses {
       if constexpr (requires { A::study_request(model_, quantities_); })
         request = A::study_request(model_, quantities_);
       made->options = analysis_options<A>(spec_, model_, request, file_key_name<A>());
-      made->result = A::run(model_, made->options, RunContext{stop_, {}});
+      made->result = A::run(model_, made->options, RunContext{.stop = stop_});
       if (!made->result.info.converged())
         throw Error(fmt::format("the {} analysis failed: {}", A::name, made->result.info.message));
       s = std::move(made);
@@ -80,8 +73,6 @@ class DesignAnalyses {
   StopToken stop_;
   std::span<const QuantitySpec> quantities_;
   std::map<std::string_view, std::shared_ptr<const void>> rooms_;
-  struct Legacy;
-  std::unique_ptr<Legacy> legacy_;
 };
 
 // What the rows' messages and selections share.
@@ -91,6 +82,10 @@ std::string ordinal(int n);
 std::string_view whirl_word(WhirlSelection s);
 /// Whether a mode that whirls @p w is one a quantity selecting @p s looks at.
 bool selected(Whirl w, WhirlSelection s);
+/// The probes the quantities of analysis @p analysis name, each node once, as their
+/// analysis's request takes them (study_request()).
+std::vector<NodeRef> quantity_probes(const Model& model, std::span<const QuantitySpec> quantities,
+                                     std::string_view analysis);
 /// A speed as messages give it, in rpm.
 std::string rpm(Real speed);
 

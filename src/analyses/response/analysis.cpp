@@ -193,13 +193,7 @@ void set_points(HarmonicOptions& options, const ResponseSpec& asked, const Respo
 // The nodes reported: those asked for, each once, else the default probes.
 std::vector<Index> probe_nodes(const Model& model, const ResponseSpec& resolved, const HarmonicOptions& options,
                                const OptionName& named) {
-  std::vector<Index> probes;
-  for (const NodeRef& ref : resolved.probes) {
-    const Index node = find_node_reference(model, spec::detail::node_text(ref), named("probes"));
-    if (std::find(probes.begin(), probes.end(), node) != probes.end())
-      throw Error(fmt::format("{}: node {} is given twice", named("probes"), model.node_label(node)));
-    probes.push_back(node);
-  }
+  const std::vector<Index> probes = distinct_nodes(model, resolved.probes, named("probes"));
   return probes.empty() ? default_probes(model, options.extra_forces) : probes;
 }
 

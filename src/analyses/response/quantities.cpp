@@ -160,14 +160,7 @@ const std::vector<QuantityRow>& ResponseAnalysis::quantities() {
 ResponseSpec ResponseAnalysis::study_request(const Model& model, std::span<const QuantitySpec> quantities) {
   // The probes the quantities name, each node once; none: the file's, else the defaults.
   ResponseSpec request;
-  std::vector<Index> nodes;
-  for (const QuantitySpec& q : quantities) {
-    if (!q.probe || row_of(q).analysis != name) continue;
-    const Index node = node_index(model, *q.probe);
-    if (std::find(nodes.begin(), nodes.end(), node) != nodes.end()) continue;
-    nodes.push_back(node);
-    request.probes.push_back(*q.probe);
-  }
+  request.probes = quantity_probes(model, quantities, name);
   return request;
 }
 

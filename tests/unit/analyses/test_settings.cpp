@@ -2,6 +2,7 @@
 // analysis table, then the built-in default; probes default to the unbalanced nodes;
 // a response at one speed needs no last speed.
 
+#include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/settings.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
@@ -202,20 +203,20 @@ TEST(Settings, StaticGravity) {
 TEST(Settings, RunupProfileForms) {
   const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
   // The file's ramp (0 → 80 Hz in 5 s) with its duration.
-  const TransientOptions from_file = runup_settings(file.model, file.spec.runup, {});
+  const TransientOptions from_file = runup_options(file);
   EXPECT_EQ(from_file.profile.points().size(), 2u);
   EXPECT_EQ(from_file.duration, 5.0);
   // A request's profile replaces the file's, and its own length is the duration.
-  RunupRequest ramp;
+  RunupSpec ramp;
   ramp.to = 100.0;
   ramp.ramp_time = 2.0;
-  EXPECT_EQ(runup_settings(file.model, file.spec.runup, ramp).duration, 2.0);
-  RunupRequest two = ramp;
+  EXPECT_EQ(runup_options(file, ramp).duration, 2.0);
+  RunupSpec two = ramp;
   two.speed = 10.0;
-  EXPECT_THROW((void)runup_settings(file.model, file.spec.runup, two), Error);
-  RunupRequest half;
+  EXPECT_THROW((void)runup_options(file, two), Error);
+  RunupSpec half;
   half.to = 10.0;  // a ramp needs its time
-  EXPECT_THROW((void)runup_settings(file.model, file.spec.runup, half), Error);
+  EXPECT_THROW((void)runup_options(file, half), Error);
   EXPECT_THROW((void)spring_element(file.model, "no such spring"), Error);
 }
 

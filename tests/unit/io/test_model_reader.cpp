@@ -8,6 +8,7 @@
 // about ten ulp of the 0.1 m positions. Element matrices are compared with exact
 // equality because reader and test build the same elements from the same doubles.
 
+#include <feran/analyses/runup/analysis.hpp>
 #include <feran/elements/rigid_body.hpp>
 #include <feran/elements/rotating_damper.hpp>
 #include <feran/elements/spring_damper.hpp>
@@ -87,7 +88,7 @@ Index index_of(const Model& m, const std::string& name) {
 HarmonicOptions response_of(const ModelFile& f, const ResponseSpec& request = {}) {
   return response_options(f, request);
 }
-TransientOptions runup_of(const ModelFile& f) { return runup_settings(f.model, f.spec.runup, {}); }
+TransientOptions runup_of(const ModelFile& f) { return runup_options(f); }
 StaticOptions static_of(const ModelFile& f) { return static_options(f); }
 
 constexpr Real hz = 2.0 * pi;          // rad/s per Hz
@@ -872,10 +873,10 @@ TEST(ModelReaderRunup, EveryIntegratorNameIsAccepted) {
     SCOPED_TRACE(name);
     const ModelFile file = read_with(std::string("[runup]\nintegrator = \"") + name + "\"\n");
     EXPECT_EQ(file.spec.runup.integrator, name);
-    RunupRequest constant;  // the profile may be left to the analysis
+    RunupSpec constant;  // the profile may be left to the analysis
     constant.speed = 10.0;
     constant.duration = 1.0;
-    EXPECT_EQ(runup_settings(file.model, file.spec.runup, constant).integrator, name);
+    EXPECT_EQ(runup_options(file, constant).integrator, name);
   }
 }
 
@@ -887,10 +888,10 @@ abs_tol = 2e-9
 output_interval = "0.5 ms"
 modes = 12
 )");
-  RunupRequest constant;
+  RunupSpec constant;
   constant.speed = 10.0;
   constant.duration = 1.0;
-  const TransientOptions t = runup_settings(file.model, file.spec.runup, constant);
+  const TransientOptions t = runup_options(file, constant);
   EXPECT_EQ(t.settings.dt, 1e-4);
   EXPECT_EQ(t.reduced_modes, 12);
   EXPECT_EQ(t.settings.rel_tol, 1e-6);
@@ -923,10 +924,10 @@ probes = [2, 1]
 springs = ["right", "left"]
 )");
   const Model& m = file.model;
-  RunupRequest constant;
+  RunupSpec constant;
   constant.speed = 10.0;
   constant.duration = 1.0;
-  const TransientOptions t = runup_settings(m, file.spec.runup, constant);
+  const TransientOptions t = runup_options(file, constant);
   EXPECT_EQ(t.probes, (std::vector<Index>{1, 0}));
   EXPECT_EQ(t.springs, (std::vector<Index>{element_index(m, "right"), element_index(m, "left")}));
   EXPECT_EQ(element_as<SpringDamper>(m, "left").node_a(), 0);
@@ -1119,7 +1120,7 @@ TEST(ModelFormatDocs, CompleteExamplesRead) {
     SCOPED_TRACE(snippet);
     try {
       const ModelFile file = read_model_string(examples[0].text + "\n" + snippet, "docs/model-format.md snippet");
-      // A complete run-up: profile and duration (runup_settings throws otherwise).
+      // A complete run-up: profile and duration (the run-up's options are refused otherwise).
       EXPECT_GT(runup_of(file).duration, 0.0);
     } catch (const ModelError& e) {
       ADD_FAILURE() << e.what();

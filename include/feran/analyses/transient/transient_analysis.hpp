@@ -107,9 +107,10 @@ struct TransientResult {
   /// converged() is false when the run stopped early (integrator failure, blow-up,
   /// non-finite values); message says when and where. Results up to then are kept.
   SolverInfo info;
-  std::string warning;  ///< e.g. rk3 run above its stability limit on request
-  Real t_end = 0;       ///< time reached [s]
-  Real speed_end = 0;   ///< speed at t_end [rad/s] (the profile's, or a torque-driven run's result)
+  std::string warning;     ///< e.g. rk3 run above its stability limit on request
+  Real t_end = 0;          ///< time reached [s]
+  Real speed_end = 0;      ///< speed at t_end [rad/s] (the profile's, or a torque-driven run's result)
+  Real wall_seconds = -1;  ///< the run's wall-clock time, when its door measured it (negative: not)
   Index steps = 0, rejected = 0, factorizations = 0, newton_iterations = 0;
   Index basis_size = 0;  ///< columns of the modal basis of a reduced run (0: full model)
 };
