@@ -98,6 +98,7 @@ Runner add_analysis_command(CLI::App& app) {
   }
   if constexpr (parallel_analysis<A>()) add_threads_option(*cmd, args->threads);
   add_output_options(*cmd, args->out);
+  if constexpr (requires { A::speed_unit; }) args->out.speed_unit = A::speed_unit;
 
   return [args]() {
     CommandOutputs outputs(args->model, args->out, streams_csv<A>());

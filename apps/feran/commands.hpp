@@ -30,7 +30,6 @@ using Runner = std::function<int()>;
 
 Runner add_params_command(CLI::App& app);
 Runner add_study_command(CLI::App& app);
-Runner add_api684_command(CLI::App& app);
 /// @p argc, @p argv: the command line, which the report lists among its inputs.
 Runner add_report_command(CLI::App& app, int argc, char** argv);
 

@@ -98,7 +98,6 @@ int main(int argc, char** argv) try {
   static constexpr std::pair<const char*, Adder> commands[] = {
       {"params", [](CLI::App& a, int, char**) { return feran::app::add_params_command(a); }},
       {"study", [](CLI::App& a, int, char**) { return feran::app::add_study_command(a); }},
-      {"api684", [](CLI::App& a, int, char**) { return feran::app::add_api684_command(a); }},
       {"report", [](CLI::App& a, int argc_, char** argv_) { return feran::app::add_report_command(a, argc_, argv_); }},
   };
   std::vector<std::string> names;

@@ -22,8 +22,7 @@ from ._arguments import explained as _explained
 from ._feran import _analysis_options
 
 # Every compiled function and Model method names a wrong argument in its TypeError.
-api684, read_model, report = (
-    _explained(f) for f in (api684, read_model, report))
+read_model, report = (_explained(f) for f in (read_model, report))
 
 
 _MISSING = object()
@@ -67,6 +66,7 @@ campbell = _analysis(campbell, _analysis_options["campbell"])
 static = _analysis(static, _analysis_options["static"])
 response = _analysis(response, _analysis_options["response"])
 runup = _analysis(runup, _analysis_options["runup"])
+api684 = _analysis(api684, _analysis_options["api684"])
 for _method in ("__init__", "__getitem__", "__setitem__", "geometry", "_add"):
     setattr(Model, _method, _explained(getattr(Model, _method), "Model"))
 

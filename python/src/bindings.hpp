@@ -68,7 +68,6 @@ class PyModel {
 
 void bind_model(py::module_& m);
 void bind_study(py::module_& m);
-void bind_api684(py::module_& m);
 void bind_report(py::module_& m);
 
 /// A speed given as text with its unit ("30 Hz", "1800 rpm") or as a number in rad/s.

@@ -14,7 +14,6 @@ PYBIND11_MODULE(_feran, m) {
   // As the command line does (and for Python threads running analyses side by side).
   feran::single_threaded_blas();
   feran::python::bind_model(m);
-  feran::python::bind_api684(m);
   feran::python::bind_study(m);
   feran::python::bind_report(m);
   // The analyses of analyses/list.hpp, each from its face; the package gives each

@@ -238,7 +238,7 @@ def test_api684_reads_its_table_and_reports_bad_arguments():
     r = feran.api684(model, points=51, map=False, stability=False)
     assert r.map is None and r.stability is None
     assert r.max_speed == pytest.approx(80 * math.pi)
-    with pytest.raises(feran.Error, match="unbalance: must be '4W/N' or 'model'"):
+    with pytest.raises(feran.Error, match="unbalance must be 4W/N or model, got '5W/N'"):
         feran.api684(model, unbalance="5W/N")
     with pytest.raises(feran.Error, match="operating speed range"):
         feran.api684(feran.read_model(EXAMPLE))  # a model without [api684]

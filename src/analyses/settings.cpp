@@ -6,9 +6,6 @@
 #include <numbers>
 
 #include <fmt/format.h>
-
-#include <feran/io/node_reference.hpp>
-#include <feran/spec/request.hpp>
 #include <fmt/ranges.h>
 
 #include <feran/analyses/static/analysis.hpp>
@@ -17,6 +14,7 @@
 #include <feran/core/error.hpp>
 #include <feran/core/suggestions.hpp>
 #include <feran/core/units.hpp>
+#include <feran/io/node_reference.hpp>
 #include <feran/spec/fields.hpp>
 #include <feran/spec/request.hpp>
 
@@ -26,28 +24,6 @@ namespace {
 
 void add_once(std::vector<Index>& nodes, Index node) {
   if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
-}
-
-// A value asked for (an option of the command line, named @p option in the message)
-// checked by the rule of the model file's key @p key of table S: its bound and, for
-// a quantity, the physical range of that quantity; so "-3 Hz" or "1e308 Hz" is
-// refused wherever it is given.
-template <class S>
-std::optional<Real> checked(std::optional<Real> value, std::string_view key, std::string_view option) {
-  if (!value) return value;
-  const spec::Field<S>& f = spec::field_of<S>(key);
-  spec::detail::check_number(*value, f.bound,
-                             f.kind == spec::FieldKind::quantity ? std::optional<Quantity>(f.quantity) : std::nullopt,
-                             f.unit, option);
-  return value;
-}
-
-// A count asked for, checked by the bound of the model file's key @p key of table S.
-template <class S>
-std::optional<int> checked_count(std::optional<int> value, std::string_view key, std::string_view option) {
-  if (!value) return value;
-  spec::detail::check_integer(*value, spec::field_of<S>(key).bound, option);
-  return value;
 }
 
 }  // namespace
@@ -88,108 +64,6 @@ Index node_index(const Model& model, const NodeRef& ref) {
                     ? fmt::format("node {} does not exist", std::get<std::int64_t>(ref))
                     : fmt::format("node '{}' does not exist", std::get<std::string>(ref)));
   return found;
-}
-
-Api684Options api684_settings(const Model& model, const ModelSpec& file, const Api684Request& request) {
-  const Api684Spec& f = file.api684;
-  const std::optional<Real> low = request.min_speed ? request.min_speed : f.min_speed;
-  const std::optional<Real> high = request.max_speed ? request.max_speed : f.max_speed;
-  if (!low || !high)
-    throw Error(
-        "the API 684 analyses need the operating speed range: give [api684] min_speed and max_speed, or "
-        "--min-speed and --max-speed");
-  checked<Api684Spec>(request.min_speed, "min_speed", "--min-speed");
-  checked<Api684Spec>(request.max_speed, "max_speed", "--max-speed");
-  checked<Api684Spec>(request.stop, "stop", "--stop");
-  checked<Api684Spec>(request.map_low, "map_low", "--map-low");
-  checked<Api684Spec>(request.map_high, "map_high", "--map-high");
-  checked<Api684Spec>(request.anticipated_q, "anticipated_q", "--anticipated-q");
-  checked_count<Api684Spec>(request.points, "points", "--points");
-  checked_count<Api684Spec>(request.modes, "modes", "--modes");
-  checked_count<Api684Spec>(request.map_points, "map_points", "--map-points");
-  checked_count<Api684Spec>(request.map_criticals, "map_criticals", "--map-criticals");
-  if (*high < *low)
-    throw Error(
-        fmt::format("the maximum continuous speed ({:.6g} rpm) is below the minimum operating speed "
-                    "({:.6g} rpm)",
-                    *high * 30 / std::numbers::pi, *low * 30 / std::numbers::pi));
-  Api684Options o;
-  o.low = *low;
-  o.high = *high;
-  const Real stop = request.stop.value_or(f.stop.value_or(2 * *high));
-  const int points = request.points.value_or(f.points.value_or(401));
-  for (int i = 0; i < points; ++i) o.speeds.push_back(stop * i / (points - 1));
-  o.modes = request.modes.value_or(f.modes.value_or(2));
-  o.model_unbalance = request.model_unbalance.value_or(f.unbalance.value_or("4W/N") == "model");
-  // Each count within its bounds, the work they multiply into bounded too: one
-  // unbalance response (each point a solve and a stability decision) per mode.
-  constexpr long long max_response_points = 200000;
-  const long long cases = o.model_unbalance ? 1 : o.modes;
-  if (cases * points > max_response_points)
-    throw Error(
-        fmt::format("[api684] the unbalance responses would take {} × {} = {} points (modes × points, "
-                    "from --modes/modes and --points/points): at most {}; ask for fewer",
-                    cases, points, cases * points, max_response_points));
-  o.unbalance_multiple = request.unbalance_multiple.value_or(f.unbalance_multiple.value_or(1.0));
-  checked<Api684Spec>(request.unbalance_multiple, "unbalance_multiple", "--unbalance-multiple");
-  o.probes = request.probes;
-  if (o.probes.empty())
-    for (const NodeRef& p : f.probes) o.probes.push_back(node_index(model, p));
-  o.bearings = request.bearings;
-  if (o.bearings.empty())
-    for (const std::string& name : f.bearings) o.bearings.push_back(bearing_element(model, name));
-  // The bearings as the analysis numbers them: journal and rolling bearings after
-  // the model's own elements (linearised(), analyses/static/equilibrium.hpp).
-  const Model lin = linearised(model);
-  if (o.bearings.empty()) o.bearings = bearing_elements(lin);
-  // Gravity (for the journal loads) as the file's [static] table gives it.
-  o.gravity = static_options(file, model);
-  o.n_threads = request.n_threads;
-
-  if (request.map) {
-    CriticalSpeedMapOptions map;
-    map.springs = o.bearings;
-    // Two decades either side of the bearings' mean lateral stiffness at the
-    // maximum continuous speed (geometric mean over bearings and directions).
-    Real log_sum = 0;
-    int count = 0;
-    for (const Index e : o.bearings) {
-      std::optional<Transmission> t;
-      try {
-        t = lin.elements[static_cast<std::size_t>(e)].transmission(*high);
-      } catch (const Error&) {  // no journal equilibrium there: the analysis itself will say why
-      }
-      if (t)
-        for (const Dof d : {Dof::v, Dof::w})
-          if (const Real k = (*t).K(static_cast<Index>(d), static_cast<Index>(d)); k > 0)
-            log_sum += std::log(k), ++count;
-    }
-    const Real centre = count > 0 ? std::exp(log_sum / count) : 1e7;
-    map.k_low = request.map_low.value_or(f.map_low.value_or(centre / 100));
-    map.k_high = request.map_high.value_or(f.map_high.value_or(centre * 100));
-    map.points = request.map_points.value_or(f.map_points.value_or(41));
-    map.criticals = request.map_criticals.value_or(f.map_criticals.value_or(4));
-    constexpr long long max_map_work = 100000;
-    if (static_cast<long long>(map.points) * map.criticals > max_map_work)
-      throw Error(
-          fmt::format("[api684] the critical speed map would take {} × {} = {} critical speeds "
-                      "(map_points × map_criticals, from --map-points/map_points and "
-                      "--map-criticals/map_criticals): at most {}; ask for fewer",
-                      map.points, map.criticals, static_cast<long long>(map.points) * map.criticals, max_map_work));
-    map.curve_stop = stop;
-    map.n_threads = request.n_threads;
-    o.map = map;
-  }
-  if (request.stability) {
-    StabilitySweepOptions s;
-    s.speed = *high;
-    s.node = request.stability_node ? *request.stability_node
-             : f.stability_node     ? node_index(model, *f.stability_node)
-                                    : largest_forward_motion_node(model, *high);
-    s.anticipated = request.anticipated_q ? request.anticipated_q : f.anticipated_q;
-    o.stability = s;
-  }
-  return o;
 }
 
 std::optional<std::pair<Real, Real>> frequency_span(std::span<const Real> frequencies_hz) {

@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <feran/analyses/api684/api684_analysis.hpp>
+#include <feran/analyses/api684/analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
@@ -416,11 +416,9 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
     section(
         data, "api684",
         [&] {
-          Api684Request request = options.api684_request;
-          request.n_threads = options.n_threads;
-          Api684Options ao = api684_settings(model, spec, request);
-          ao.stop = options.stop;
-          return json::parse(api684_json(run_api684(model, ao), model, source));
+          return json::parse(Api684Analysis::json(
+              run_analysis<Api684Analysis>(unowned, options.api684_request, file_key_name<Api684Analysis>(),
+                                           RunContext{.stop = options.stop, .threads = options.n_threads})));
         },
         options.stop);
 

@@ -733,10 +733,6 @@ const FieldTable<StaticLoadSpec>& fields_of<StaticLoadSpec>() {
   return table;
 }
 
-namespace {
-constexpr std::string_view unbalance_sources[] = {"4W/N", "model"};
-}  // namespace
-
 template <>
 const FieldTable<DriveSpec>& fields_of<DriveSpec>() {
   using S = DriveSpec;
@@ -812,114 +808,6 @@ const FieldTable<DriveSpec>& fields_of<DriveSpec>() {
        .member = &S::quadratic_torque,
        .doc = "c₂ [N m s²/rad²]: a resisting torque c₂Ω² (fan, pump)",
        .bound = non_negative},
-  };
-  return table;
-}
-
-template <>
-const FieldTable<Api684Spec>& fields_of<Api684Spec>() {
-  using S = Api684Spec;
-  static const FieldTable<S> table = {
-      {.key = "min_speed",
-       .kind = K::quantity,
-       .member = &S::min_speed,
-       .doc = "minimum operating speed",
-       .quantity = Q::speed,
-       .bound = positive,
-       .unit = "rpm",
-       .default_text = "required by `feran api684`"},
-      {.key = "max_speed",
-       .kind = K::quantity,
-       .member = &S::max_speed,
-       .doc = "maximum continuous speed (N of 4W/N, the speed of the stability analysis); ≥ `min_speed`",
-       .quantity = Q::speed,
-       .bound = positive,
-       .unit = "rpm",
-       .default_text = "required by `feran api684`"},
-      {.key = "stop",
-       .kind = K::quantity,
-       .member = &S::stop,
-       .doc = "last speed of the unbalance responses (they start at 0)",
-       .quantity = Q::speed,
-       .bound = positive,
-       .unit = "rpm",
-       .default_text = "2 × `max_speed`"},
-      {.key = "points",
-       .kind = K::integer,
-       .member = &S::points,
-       .doc = "speeds of the unbalance responses; `modes` × `points` at most 200000 (one response per mode)",
-       .bound = at_least(3, max_sweep_points),
-       .default_text = "`401`"},
-      {.key = "modes",
-       .kind = K::integer,
-       .member = &S::modes,
-       .doc = "forward modes excited in turn by the analytical unbalance, the lowest at `max_speed`",
-       .bound = at_least(1),
-       .default_text = "`2`"},
-      {.key = "unbalance",
-       .kind = K::choice,
-       .member = &S::unbalance,
-       .doc = "`\"4W/N\"`: the analytical unbalance of API 617 placed for each mode (docs/theory/api684.md); "
-              "`\"model\"`: the model's own `[[unbalances]]` in one response",
-       .choices = unbalance_sources,
-       .default_text = "`\"4W/N\"`"},
-      {.key = "unbalance_multiple",
-       .kind = K::number,
-       .member = &S::unbalance_multiple,
-       .doc = "the analytical unbalance is this many times 4W/N",
-       .bound = positive,
-       .default_text = "`1`"},
-      {.key = "probes",
-       .kind = K::node_list,
-       .member = &S::probes,
-       .doc = "non-empty, no node twice: the nodes whose responses are judged",
-       .default_text = "the bearings' nodes and the unbalances' nodes",
-       .if_empty = default_hint},
-      {.key = "bearings",
-       .kind = K::text_list,
-       .member = &S::bearings,
-       .doc = "non-empty, no spring twice: the bearings (each the `name` of a `[[springs]]` entry)",
-       .default_text = "every spring holding a rotating node to the ground or a non-rotating node",
-       .if_empty = default_hint},
-      {.key = "map_low",
-       .kind = K::quantity,
-       .member = &S::map_low,
-       .doc = "lowest bearing stiffness of the critical speed map",
-       .quantity = Q::stiffness,
-       .bound = positive,
-       .default_text = "the bearings' stiffness at `max_speed` / 100"},
-      {.key = "map_high",
-       .kind = K::quantity,
-       .member = &S::map_high,
-       .doc = "highest bearing stiffness of the map; > `map_low`",
-       .quantity = Q::stiffness,
-       .bound = positive,
-       .default_text = "the bearings' stiffness at `max_speed` × 100"},
-      {.key = "map_points",
-       .kind = K::integer,
-       .member = &S::map_points,
-       .doc = "stiffness values of the map, evenly spaced in log k; `map_points` × `map_criticals` at most 100000",
-       .bound = at_least(2, max_sweep_points),
-       .default_text = "`41`"},
-      {.key = "map_criticals",
-       .kind = K::integer,
-       .member = &S::map_criticals,
-       .doc = "critical speeds on the map",
-       .bound = at_least(1),
-       .default_text = "`4`"},
-      {.key = "stability_node",
-       .kind = K::node,
-       .member = &S::stability_node,
-       .doc = "where the cross-coupled stiffness Q of the level I stability analysis acts (a rotating node)",
-       .default_text = "the node where the first forward mode at `max_speed` moves most"},
-      {.key = "anticipated_q",
-       .kind = K::quantity,
-       .member = &S::anticipated_q,
-       .doc = "the anticipated cross-coupling q_A of the stages (API 617; docs/theory/api684.md), for the level I "
-              "screening",
-       .quantity = Q::stiffness,
-       .bound = positive,
-       .default_text = "— (no screening)"},
   };
   return table;
 }

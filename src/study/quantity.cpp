@@ -94,56 +94,13 @@ Real extreme_bearing_value(const QuantitySpec& q, bool smallest, const std::vect
   return best * (q.value.ends_with("_deg") ? pi / 180 : 1.0);
 }
 
-namespace {
-
-void check_solver(const SolverInfo& info, std::string_view analysis) {
-  if (!info.converged()) throw Error(fmt::format("the {} failed: {}", analysis, info.message));
-}
-
-}  // namespace
-
 DesignAnalyses::DesignAnalyses(const ModelSpec& spec, const Model& model, std::span<const QuantitySpec> quantities,
                                StopToken stop)
     : spec_(spec), model_(model), stop_(stop), quantities_(quantities) {}
 
 namespace {
 
-// ---- the rows of the analyses not yet in folders of their own -----------------------
-
-Real undamped_critical_speed(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  // As API 684's: journal and rolling bearings by their direct stiffness about
-  // the equilibrium at each critical speed, the search starting from the
-  // operating range's top (or the Campbell range's end) on an oil film.
-  SolverInfo info;
-  const Model lin = has_supports(a.model()) ? linearised(a.model()) : Model();
-  const Model* rotor = &a.model();
-  Model direct;
-  if (has_supports(a.model())) {
-    direct = with_direct_bearing_stiffness(lin, bearing_elements(lin));
-    rotor = &direct;
-  }
-  const Real start = !needs_speed(a.model()) ? 0.0
-                     : q.operating_high > 0  ? q.operating_high
-                                             : a.result<CampbellAnalysis>().speeds.back();
-  const auto criticals = undamped_critical_speeds(*rotor, q.n, true, &info, start);
-  check_solver(info, "undamped critical speeds");
-  if (static_cast<int>(criticals.size()) < q.n)
-    throw Error(fmt::format("the rotor has {} forward undamped critical speeds, not {}", criticals.size(), q.n));
-  return criticals[static_cast<std::size_t>(q.n - 1)].speed;
-}
-
-Real level1_q_zero(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
-  StabilitySweepOptions s;
-  s.speed = *q.speed;  // the reader requires it
-  s.node = q.probe ? node_index(a.model(), *q.probe) : largest_forward_motion_node(a.model(), s.speed);
-  s.points = 2;
-  const StabilitySweepResult r = run_stability_sweep(a.model(), s);
-  if (!r.q_zero)
-    throw Error(
-        fmt::format("no Q₀: the first forward mode at {} is {}", rpm(s.speed),
-                    r.log_decrement.front() <= 0 ? "unstable without cross-coupling" : "stable up to 1e13 N/m"));
-  return *r.q_zero;
-}
+// ---- the rows of no analysis -----------------------------------------------------------
 
 Real rotor_mass(DesignAnalyses& a, const QuantitySpec&, std::string&) { return rotating_mass(a.model()); }
 
@@ -159,21 +116,9 @@ Real function(DesignAnalyses& a, const QuantitySpec& q, std::string&) {
 
 using Q = Quantity;
 
-// The rows of the analyses not yet in folders of their own, and of no analysis.
+// The rows of no analysis.
 const std::vector<QuantityRow>& own_rows() {
   static const std::vector<QuantityRow> rows = {
-      {.name = "undamped_critical_speed",
-       .doc = "the n-th forward undamped critical speed with the bearings as given",
-       .analysis = "api684",
-       .unit = Q::speed,
-       .evaluate = undamped_critical_speed},
-      {.name = "level1_q_zero",
-       .doc = "API 617 level I: the cross-coupling Q at the probe where the first forward mode's log decrement is 0 "
-              "at the speed",
-       .analysis = "api684",
-       .unit = Q::stiffness,
-       .evaluate = level1_q_zero,
-       .needs_speed = true},
       {.name = "rotor_mass", .doc = "mass of the rotating parts", .unit = Q::mass, .evaluate = rotor_mass},
       {.name = "parameter",
        .doc = "a number of the design's model, by its parameter path",

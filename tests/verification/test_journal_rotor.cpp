@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <feran/analyses/api684/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/api684/api684_analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
@@ -182,11 +183,11 @@ TEST(JournalRotor, RunupBearingDataStartsAtTheEquilibriumAndWatchesTheClearance)
 
 TEST(JournalRotor, Api684TakesTheJournalBearingsAndFailsTheStabilityVerdict) {
   const ModelFile file = read_model_file(path);
-  Api684Request request;
+  Api684Spec request;
   request.points = 41;
   request.map_points = 9;
   request.stability = false;
-  const Api684Options options = api684_settings(file.model, file.spec, request);
+  const Api684Options options = analysis_options<Api684Analysis>(file, request, file_key_name<Api684Analysis>());
   const Api684Result r = run_api684(file.model, options);
   ASSERT_EQ(r.bearings.size(), 2u);
   // The journal loads carry the weight: their sum is the rotor's mass times g.

@@ -13,7 +13,8 @@
 ///     static const Spec& defaults();                 // the built-in defaults
 ///     static const Spec& file_table(const ModelSpec&);  // its table in a model file
 ///     static Options settings(const Model&, const Spec& asked, const Spec& resolved,
-///                             const OptionName&);   // checks across options
+///                             const OptionName&);   // checks across options (or with
+///                                                   // the ModelSpec after the Model)
 ///     static Result run(const Model&, const Options&, const RunContext&);
 ///     static std::vector<std::string> warnings(const Model&, const Options&, const Result&);
 ///     static std::string json(const Outcome<A>&), csv(const Outcome<A>&),
@@ -23,6 +24,7 @@
 ///     static constexpr bool parallel;                        // optional: points side by side
 ///     static constexpr bool streams_csv;                     // optional: CSV written as it goes
 ///     static Spec study_request(const Model&, std::span<const QuantitySpec>);  // optional
+///     static constexpr std::string_view speed_unit;          // optional: the terminal's
 ///
 /// An analysis that keeps partial results (the modes that converged, a sweep's points
 /// so far) is written by every door even when its solve failed, which the door then
@@ -84,6 +86,14 @@ struct Outcome {
   const Model& model() const { return file->model; }
 };
 
+/// An analysis whose settings read another table of the model file besides its own
+/// (API 684's journal loads take the gravity of [static]): settings(model, spec, …).
+template <class A>
+concept SettingsReadTheFile = requires(const Model& model, const ModelSpec& spec, const typename A::Spec& s,
+                                       const OptionName& name) {
+  { A::settings(model, spec, s, s, name) } -> std::same_as<typename A::Options>;
+};
+
 /// The face of an analysis (see the file's comment).
 template <class A>
 concept AnalysisFace = requires(const Model& model, const ModelSpec& spec, const typename A::Spec& s,
@@ -93,7 +103,9 @@ concept AnalysisFace = requires(const Model& model, const ModelSpec& spec, const
   { A::summary } -> std::convertible_to<std::string_view>;
   { A::defaults() } -> std::same_as<const typename A::Spec&>;
   { A::file_table(spec) } -> std::same_as<const typename A::Spec&>;
-  { A::settings(model, s, s, name) } -> std::same_as<typename A::Options>;
+  requires SettingsReadTheFile<A> || requires {
+    { A::settings(model, s, s, name) } -> std::same_as<typename A::Options>;
+  };
   { A::run(model, o, context) } -> std::same_as<typename A::Result>;
   { A::warnings(model, o, r) } -> std::same_as<std::vector<std::string>>;
   { A::json(outcome) } -> std::same_as<std::string>;
@@ -147,7 +159,10 @@ typename A::Options analysis_options(const ModelSpec& spec, const Model& model, 
   for (const spec::Field<typename A::Spec>& f : spec::fields_of<typename A::Spec>())
     spec::check_field(request, f, name(f.key));
   const typename A::Spec asked = spec::overlay(request, A::file_table(spec));
-  return A::settings(model, asked, with_defaults(asked, A::defaults()), name);
+  if constexpr (SettingsReadTheFile<A>)
+    return A::settings(model, spec, asked, with_defaults(asked, A::defaults()), name);
+  else
+    return A::settings(model, asked, with_defaults(asked, A::defaults()), name);
 }
 template <AnalysisFace A>
 typename A::Options analysis_options(const ModelFile& file, const typename A::Spec& request, const OptionName& name) {

@@ -5,6 +5,7 @@
 /// a folder under analyses/ and one entry in this list.
 
 #include <feran/analyses/analysis.hpp>
+#include <feran/analyses/api684/analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
@@ -24,6 +25,7 @@ struct AnalysisList {
 
 /// The analyses, in the order the command line's help lists them after the ones not
 /// yet moved into their folders.
-using Analyses = AnalysisList<ModalAnalysis, CampbellAnalysis, ResponseAnalysis, StaticAnalysis, RunupAnalysis>;
+using Analyses =
+    AnalysisList<ModalAnalysis, CampbellAnalysis, ResponseAnalysis, StaticAnalysis, RunupAnalysis, Api684Analysis>;
 
 }  // namespace feran

@@ -1,16 +1,9 @@
 #pragma once
 /// @file
-/// Analysis settings of the analysis not yet in a room of its own (API 684): what a caller asks for, the model file's
-/// analysis tables and the built-in defaults, resolved into each analysis's options in one place; and what all analyses
-/// share (default probes, range warnings, bearings by name). The analyses in rooms take
-/// their options through analyses/analysis.hpp's generic request step instead.
-///
-/// Every caller — the command line, a C++ program, the Python module, a design study —
-/// fills a request with what it wants to set and leaves the rest empty; the function
-/// of the analysis takes each empty member from the model file's table ([api684])
-/// and then from the built-in default, and checks what the
-/// combination must satisfy. Requests hold SI values (speeds in rad/s). Library
-/// requests run on one thread unless they say otherwise.
+/// What the analyses share: their built-in defaults used by more than one, the probes
+/// they report by default, evenly spaced sweeps, node options, range warnings and
+/// bearings by name. Each analysis's own options are its room's (analyses/<name>/),
+/// taken through analyses/analysis.hpp's generic request step.
 
 #include <optional>
 #include <span>
@@ -62,52 +55,6 @@ std::vector<Index> distinct_nodes(const Model& model, const std::vector<NodeRef>
 
 /// The node a (validated) reference of a spec denotes; throws Error when there is none.
 Index node_index(const Model& model, const NodeRef& ref);
-
-// ---------------------------------------------------------------------------------
-
-// The modal analysis: analyses/modal/analysis.hpp.
-
-// ---------------------------------------------------------------------------------
-
-// The Campbell diagram: analyses/campbell/analysis.hpp.
-
-// ---------------------------------------------------------------------------------
-
-// The steady-state response: analyses/response/analysis.hpp.
-
-// ---------------------------------------------------------------------------------
-
-// The static analysis: analyses/static/analysis.hpp.
-
-// ---------------------------------------------------------------------------------
-
-// The run-up: analyses/runup/analysis.hpp.
-
-// ---------------------------------------------------------------------------------
-
-struct Api684Request {
-  std::optional<Real> min_speed, max_speed;  ///< [rad/s]; default [api684], required
-  std::optional<Real> stop;                  ///< [rad/s]; default [api684], else 2·max_speed
-  std::optional<int> points;                 ///< default [api684], else 401
-  std::optional<int> modes;                  ///< default [api684], else 2
-  std::optional<bool> model_unbalance;       ///< default [api684] unbalance = "model", else 4W/N
-  std::optional<Real> unbalance_multiple;    ///< default [api684], else 1
-  std::vector<Index> probes;                 ///< empty: [api684] probes, else the default
-  std::vector<Index> bearings;  ///< elements; empty: [api684] bearings, else bearing_elements(linearised(model))
-  bool map = true;              ///< the critical speed map
-  std::optional<Real> map_low, map_high;  ///< [N/m]; default [api684], else the bearings' k/100 and ×100
-  std::optional<int> map_points;          ///< default [api684], else 41
-  std::optional<int> map_criticals;       ///< default [api684], else 4
-  bool stability = true;                  ///< the level I stability sweep
-  std::optional<Index> stability_node;    ///< default [api684], else where the first forward mode moves most
-  std::optional<Real> anticipated_q;      ///< [N/m]; default [api684]
-  int n_threads = 1;                      ///< 0: all cores
-};
-
-/// The options of run_api684() from @p request, the file's [api684] and [static]
-/// tables (gravity for the journal loads) and the defaults. Throws Error without an
-/// operating range or with a maximum below the minimum.
-Api684Options api684_settings(const Model& model, const ModelSpec& file, const Api684Request& request);
 
 /// Warnings for the tabulated data of @p model that an analysis over the speeds
 /// [@p low, @p high] (rad/s) evaluates beyond its range, one per table: "spring

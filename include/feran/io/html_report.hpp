@@ -36,8 +36,8 @@ struct ReportOptions {
   bool static_analysis = true;           ///< the static deflection under [static] gravity
   bool runup = true;                     ///< the run-up of [runup], when the model has one
   bool api684 = true;                    ///< the API 617 / 684 analyses, when an operating range is known
-  Api684Request api684_request;
-  std::string study_directory;  ///< a design study's output directory (evaluations.jsonl, summary.json)
+  Api684Spec api684_request;             ///< over the model's [api684]
+  std::string study_directory;           ///< a design study's output directory (evaluations.jsonl, summary.json)
   int n_threads = 0;
   StopToken stop;
 };

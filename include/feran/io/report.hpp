@@ -13,10 +13,6 @@
 
 namespace feran {
 
-/// The API 617 / API 684 analyses: journal loads, per unbalance case the peaks with
-/// their amplification factors and margins, the map's intersections, level I stability.
-std::string api684_report(const Api684Result& result, const Model& model, const ResultSource& source);
-
 /// Table of a model's settable parameters: path, value with unit, meaning.
 std::string parameters_report(const std::vector<Parameter>& parameters, const ResultSource& source);
 

@@ -15,9 +15,6 @@
 
 namespace feran {
 
-/// JSON text of the API 617 / API 684 analyses (feran api684).
-std::string api684_json(const Api684Result& result, const Model& model, const ResultSource& source);
-
 /// JSON text of a model's settable parameters (feran params).
 std::string parameters_json(const std::vector<Parameter>& parameters, const ResultSource& source);
 

@@ -304,6 +304,8 @@ struct Api684Spec {
   std::optional<int> map_points, map_criticals;
   std::optional<NodeRef> stability_node;
   std::optional<Real> anticipated_q;  ///< [N/m]
+  std::optional<bool> map;            ///< the undamped critical speed map
+  std::optional<bool> stability;      ///< the level I stability analysis
   bool operator==(const Api684Spec&) const = default;
 };
 

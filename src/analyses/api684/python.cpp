@@ -1,32 +1,25 @@
-// The API 617 / API 684 lateral analyses: unbalance responses to the analytical
-// unbalance with amplification factors and separation margins, the undamped critical
-// speed map and the level I stability sweep, as feran api684 computes them.
+// The API 617 / API 684 analyses' Python result: the cases' unbalance responses with
+// their amplification factors and separation margins, the undamped critical speed map
+// and the level I stability sweep (analysis_binding.hpp binds feran.api684 and what
+// every result has).
 #include <atomic>
 #include <optional>
 #include <string>
 
 #include <pybind11/stl.h>
 
-#include <feran/analyses/api684/api684_analysis.hpp>
-#include <feran/analyses/settings.hpp>
+#include <feran/analyses/api684/analysis.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
-#include <feran/io/report.hpp>
-#include <feran/io/result_writer.hpp>
 
-#include "bindings.hpp"
+#include "analysis_binding.hpp"
 
 namespace feran::python {
 
 namespace {
 
-struct PyApi684Result {
-  ResultContext context;
-  Api684Options options;
-  Api684Result result;
-  const Model& model() const { return context.file->model; }
-};
+using PyApi684Result = Outcome<Api684Analysis>;
 
 py::object optional_value(const std::optional<Real>& x) { return x ? py::cast(*x) : py::none(); }
 
@@ -121,20 +114,11 @@ py::object stability_dict(const std::optional<StabilitySweepResult>& s, const Mo
   return d;
 }
 
-std::optional<double> optional_stiffness(const py::object& value, const char* name) {
-  if (value.is_none()) return std::nullopt;
-  if (py::isinstance<py::str>(value)) return parse_quantity(value.cast<std::string>(), Quantity::stiffness);
-  try {
-    return value.cast<double>();
-  } catch (const py::cast_error&) {
-    throw Error(std::string(name) + ": give a stiffness as a number in N/m or as text with its unit ('2 MN/m')");
-  }
-}
-
 }  // namespace
 
-void bind_api684(py::module_& m) {
-  py::class_<PyApi684Result>(m, "Api684Result", "The API 617 / API 684 lateral analyses (feran api684)")
+template <>
+void bind_result<Api684Analysis>(py::class_<Outcome<Api684Analysis>>& result) {
+  result
       .def_property_readonly(
           "min_speed", [](const PyApi684Result& r) { return r.result.low; }, "[rad/s]")
       .def_property_readonly(
@@ -202,65 +186,7 @@ void bind_api684(py::module_& m) {
       .def_property_readonly(
           "stability", [](const PyApi684Result& r) { return stability_dict(r.result.stability, r.model()); },
           "level I stability: q [N/m], log_decrement, q_zero, anticipated,\n"
-          "screening_passes; None without it")
-      .def_property_readonly("warnings", [](const PyApi684Result& r) { return r.context.source.warnings; })
-      .def(
-          "to_json", [](const PyApi684Result& r) { return api684_json(r.result, r.model(), r.context.source); },
-          "The JSON text that feran api684 --json writes (docs/output-format.md)")
-      .def("report", [](const PyApi684Result& r) { return api684_report(r.result, r.model(), r.context.source); });
-
-  m.def(
-      "api684",
-      [](const PyModel& model, const py::object& min_speed, const py::object& max_speed, const py::object& stop,
-         std::optional<int> points, std::optional<int> modes, std::optional<std::string> unbalance,
-         std::optional<double> unbalance_multiple, const py::object& probes, const py::object& bearings, bool map,
-         const py::object& map_low, const py::object& map_high, std::optional<int> map_points, bool stability,
-         const py::object& stability_node, const py::object& anticipated_q, int threads) {
-        auto file = std::make_shared<const ModelFile>(model.built());
-        Api684Request request;
-        request.min_speed = optional_speed(min_speed, "min_speed");
-        request.max_speed = optional_speed(max_speed, "max_speed");
-        request.stop = optional_speed(stop, "stop");
-        request.points = points;
-        request.modes = modes;
-        if (unbalance) {
-          if (*unbalance != "4W/N" && *unbalance != "model")
-            throw Error("unbalance: must be '4W/N' or 'model', got '" + *unbalance + "'");
-          request.model_unbalance = *unbalance == "model";
-        }
-        request.unbalance_multiple = unbalance_multiple;
-        request.probes = node_arguments(file->model, probes, "probes");
-        for (const std::string& b : text_arguments(bearings, "bearings"))
-          request.bearings.push_back(bearing_element(file->model, b));
-        request.map = map;
-        request.map_low = optional_stiffness(map_low, "map_low");
-        request.map_high = optional_stiffness(map_high, "map_high");
-        request.map_points = map_points;
-        request.stability = stability;
-        const auto nodes = node_arguments(file->model, stability_node, "stability_node");
-        if (nodes.size() > 1) throw Error("stability_node: give one node");
-        if (!nodes.empty()) request.stability_node = nodes.front();
-        request.anticipated_q = optional_stiffness(anticipated_q, "anticipated_q");
-        request.n_threads = threads;
-        PyApi684Result out{{}, api684_settings(file->model, file->spec, request), {}};
-        out.context = result_context(file, out.options.speeds.front(), out.options.speeds.back());
-        std::atomic<bool> flag{false};
-        out.options.stop = StopToken(flag);
-        bool interrupted = false;
-        run_watched([&] { out.result = run_api684(file->model, out.options); }, flag, interrupted);
-        if (interrupted) raise_interrupted(py::cast(std::move(out)));
-        return out;
-      },
-      py::arg("model"), py::kw_only(), py::arg("min_speed") = py::none(), py::arg("max_speed") = py::none(),
-      py::arg("stop") = py::none(), py::arg("points") = py::none(), py::arg("modes") = py::none(),
-      py::arg("unbalance") = py::none(), py::arg("unbalance_multiple") = py::none(), py::arg("probes") = py::none(),
-      py::arg("bearings") = py::none(), py::arg("map") = true, py::arg("map_low") = py::none(),
-      py::arg("map_high") = py::none(), py::arg("map_points") = py::none(), py::arg("stability") = true,
-      py::arg("stability_node") = py::none(), py::arg("anticipated_q") = py::none(), py::arg("threads") = 0,
-      "The API 617 / API 684 lateral analyses, as feran api684: min_speed and max_speed (the\n"
-      "operating range; '9000 rpm' or rad/s), unbalance '4W/N' (default) or 'model', the map's\n"
-      "stiffness range, the level I stability node and anticipated_q ('2 MN/m' or N/m).\n"
-      "Unset options come from the model's [api684] table (docs/model-format.md).");
+          "screening_passes; None without it");
 }
 
 }  // namespace feran::python
