@@ -179,102 +179,123 @@ struct Workspace {
 
 }  // namespace
 
-HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& options) {
-  HarmonicResult result;
-  result.frequency_sweep = !options.frequencies.empty();
-  result.info.method = SolverMethod::sparse_lu;
-  // Supports (fluid-film bearings) as their tangent about the equilibrium at each
-  // speed: elements after the model's own, which keep their indices.
-  // (A copy only when there are supports to replace.)
-  const bool supported = has_supports(model);
-  const Model linear_copy = supported ? linearised(model) : Model{};
-  const Model& linear = supported ? linear_copy : model;
-  if (result.frequency_sweep) require_running(model.forces, options.speed);
-  for (const Real speed : options.speeds) require_running(model.forces, speed);
-  const Assembler assembler(linear);
-  const DofMap& dofs = assembler.dof_map();
-  const ComplexSparse T = dofs.transformation().cast<Complex>();
-  const ComplexSparse Tt = T.transpose();
+namespace {
 
-  std::vector<SegmentData> beams;
-  std::vector<Index> springs;  // the connecting elements, whose transmitted force is reported
-  for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const Element& el = model.elements[e];
-    if (const auto segment = el.shaft_segment())
-      beams.push_back({static_cast<Index>(e), *segment, el.local_matrices({})});
-    if (el.transmission(0.0)) springs.push_back(static_cast<Index>(e));
-  }
-  // Elements touching a fixed DOF: their end forces give the support reactions.
-  std::vector<bool> fixed_dof(static_cast<std::size_t>(model.n_dofs()), false);
-  for (const FixedDofs& f : model.fixed)
-    for (int d = 0; d < dofs_per_node; ++d)
-      if (f.dofs[static_cast<std::size_t>(d)]) fixed_dof[static_cast<std::size_t>(dofs_per_node * f.node + d)] = true;
-  std::vector<Index> reaction_elements;
-  for (std::size_t e = 0; e < linear.elements.size(); ++e) {
-    const std::vector<Index> lm_dofs = linear.elements[e].dofs();
-    if (std::any_of(lm_dofs.begin(), lm_dofs.end(), [&](Index d) { return fixed_dof[static_cast<std::size_t>(d)]; }))
-      reaction_elements.push_back(static_cast<Index>(e));
-  }
-  for (const FixedDofs& f : model.fixed) {
-    auto it = std::find_if(result.reactions.begin(), result.reactions.end(),
-                           [&](const ReactionResponse& r) { return r.node == f.node; });
-    if (it == result.reactions.end()) {
-      result.reactions.push_back({f.node, {}, {}, {}});
-      it = result.reactions.end() - 1;
-    }
-    for (int d = 0; d < dofs_per_node; ++d)
-      it->fixed[static_cast<std::size_t>(d)] |= f.dofs[static_cast<std::size_t>(d)];
+// A sweep of the response in named steps: what it reports (items()), each point's
+// dynamic stiffness (factorize()), load and solve (solve_point()) and the forces derived
+// from its motion (transmitted_forces(), reactions(), stations()), then the points in
+// sweep order (gather()) and the supports' state (operating()).
+class HarmonicSweep {
+ public:
+  HarmonicSweep(const Model& model, const HarmonicOptions& options)
+      : model_(model),
+        options_(options),
+        supported_(has_supports(model)),
+        linear_copy_(supported_ ? linearised(model) : Model{}),
+        linear_(supported_ ? linear_copy_ : model),
+        assembler_(linear_),
+        T_(assembler_.dof_map().transformation().cast<Complex>()),
+        Tt_(T_.transpose()),
+        stiffness_(assembler_.constant()) {
+    result_.frequency_sweep = !options.frequencies.empty();
+    result_.info.method = SolverMethod::sparse_lu;
+    if (result_.frequency_sweep) require_running(model.forces, options.speed);
+    for (const Real speed : options.speeds) require_running(model.forces, speed);
   }
 
-  for (Index node : options.probes) result.probes.push_back({node, {}, {}});
-  for (const Index e : springs) result.springs.push_back({e, {}, {}});
-  // The supports' tangents: the elements linearised() appended, in the order of the
-  // supporting forces.
-  std::vector<Index> support_elements;
-  for (std::size_t i = 0, e = model.elements.size(); i < model.forces.size(); ++i)
-    if (model.forces[i].supports()) {
-      result.supports.push_back({static_cast<Index>(i), {}, {}, {}, {}});
-      support_elements.push_back(static_cast<Index>(e++));
+  HarmonicResult run() {
+    items();
+    const std::size_t n_points = result_.frequency_sweep ? options_.frequencies.size() : options_.speeds.size();
+    points_.resize(n_points);
+    // The stability of the linearised model itself (its supports' equilibrium solved
+    // once per speed for both), with what no speed changes judged once; a frequency
+    // sweep turns at one speed: its stability once.
+    if (options_.stability) scan_.emplace(linear_, needs_speed(model_));
+    if (options_.stability && result_.frequency_sweep && n_points > 0)
+      fixed_speed_stability_ = scan_->at(options_.speed);
+    std::vector<Workspace> workspaces(static_cast<std::size_t>(resolve_threads(options_.n_threads)));
+    parallel_for(static_cast<Index>(n_points), options_.n_threads, [&](Index k, int worker) {
+      solve_point(static_cast<std::size_t>(k), workspaces[static_cast<std::size_t>(worker)]);
+    });
+    if (n_points > 0 &&
+        std::none_of(workspaces.begin(), workspaces.end(), [](const Workspace& w) { return w.used_sparse; }) &&
+        std::any_of(workspaces.begin(), workspaces.end(), [](const Workspace& w) { return w.banded; }))
+      result_.info.method = SolverMethod::banded_lu;
+    // Results in sweep order, up to the first point that could not be solved.
+    for (std::size_t k = 0; k < n_points && gather(k); ++k) {
     }
-  if (options.stations != StationOutput::none) result.shaft_stations = shaft_stations(model);
-  if (options.stations == StationOutput::all)
-    for (const ShaftStation& st : result.shaft_stations) result.stations.push_back({st, {}, {}});
+    operating();
+    return std::move(result_);
+  }
 
-  const std::size_t n_points = result.frequency_sweep ? options.frequencies.size() : options.speeds.size();
-  DynamicStiffness stiffness(assembler.constant());
-  Index generation = 0;  // changes when a speed-dependent coefficient widens the pattern
-  std::mutex pattern_mutex;
-  std::vector<Workspace> workspaces(static_cast<std::size_t>(resolve_threads(options.n_threads)));
-  std::vector<PointResult> points(n_points);
-  // A frequency sweep turns at one speed: its stability once.
-  // The stability of the linearised model itself (its supports' equilibrium solved
-  // once per speed for both), with what no speed changes judged once.
-  std::optional<StabilityScan> scan;
-  if (options.stability) scan.emplace(linear, needs_speed(model));
-  std::optional<StabilityPoint> fixed_speed_stability;
-  if (options.stability && result.frequency_sweep && n_points > 0) fixed_speed_stability = scan->at(options.speed);
+ private:
+  Real speed_of(std::size_t k) const { return result_.frequency_sweep ? options_.speed : options_.speeds[k]; }
+  Real omega_of(std::size_t k) const { return result_.frequency_sweep ? options_.frequencies[k] : options_.speeds[k]; }
 
-  auto solve_point = [&](std::size_t k, Workspace& ws) {
-    if (options.stop.requested()) {
-      points[k].skipped = true;
-      return;
+  // What the sweep reports: probes, spring–dampers, supports, reactions, stations.
+  void items() {
+    for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+      const Element& el = model_.elements[e];
+      if (const auto segment = el.shaft_segment())
+        beams_.push_back({static_cast<Index>(e), *segment, el.local_matrices({})});
+      if (el.transmission(0.0)) springs_.push_back(static_cast<Index>(e));
     }
-    const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
-    const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
+    reaction_items();
+    for (Index node : options_.probes) result_.probes.push_back({node, {}, {}});
+    for (const Index e : springs_) result_.springs.push_back({e, {}, {}});
+    // The supports' tangents: the elements linearised() appended, in the order of the
+    // supporting forces.
+    for (std::size_t i = 0, e = model_.elements.size(); i < model_.forces.size(); ++i)
+      if (model_.forces[i].supports()) {
+        result_.supports.push_back({static_cast<Index>(i), {}, {}, {}, {}});
+        support_elements_.push_back(static_cast<Index>(e++));
+      }
+    if (options_.stations != StationOutput::none) result_.shaft_stations = shaft_stations(model_);
+    if (options_.stations == StationOutput::all)
+      for (const ShaftStation& st : result_.shaft_stations) result_.stations.push_back({st, {}, {}});
+  }
+
+  // The nodes with fixed DOFs and the elements touching one: their end forces give
+  // the support reactions.
+  void reaction_items() {
+    std::vector<bool> fixed_dof(static_cast<std::size_t>(model_.n_dofs()), false);
+    for (const FixedDofs& f : model_.fixed)
+      for (int d = 0; d < dofs_per_node; ++d)
+        if (f.dofs[static_cast<std::size_t>(d)]) fixed_dof[static_cast<std::size_t>(dofs_per_node * f.node + d)] = true;
+    for (std::size_t e = 0; e < linear_.elements.size(); ++e) {
+      const std::vector<Index> lm_dofs = linear_.elements[e].dofs();
+      if (std::any_of(lm_dofs.begin(), lm_dofs.end(), [&](Index d) { return fixed_dof[static_cast<std::size_t>(d)]; }))
+        reaction_elements_.push_back(static_cast<Index>(e));
+    }
+    for (const FixedDofs& f : model_.fixed) {
+      auto it = std::find_if(result_.reactions.begin(), result_.reactions.end(),
+                             [&](const ReactionResponse& r) { return r.node == f.node; });
+      if (it == result_.reactions.end()) {
+        result_.reactions.push_back({f.node, {}, {}, {}});
+        it = result_.reactions.end() - 1;
+      }
+      for (int d = 0; d < dofs_per_node; ++d)
+        it->fixed[static_cast<std::size_t>(d)] |= f.dofs[static_cast<std::size_t>(d)];
+    }
+  }
+
+  // The dynamic stiffness at (speed, ω) in @p ws, its LU analysed for the pattern the
+  // sweep has reached (a speed-dependent coefficient may widen it).
+  void assemble(Real speed, Real omega, Workspace& ws) {
     std::optional<SystemMatrices> variable;
     // Frequency-dependent coefficients at the excitation frequency itself.
-    if (assembler.speed_dependent()) variable = assembler.variable_at(speed, omega);
+    if (assembler_.speed_dependent()) variable = assembler_.variable_at(speed, omega);
     const SystemMatrices* var = variable ? &*variable : nullptr;
     for (;;) {
       Index gen = 0;
       bool filled = false;
       {
-        const std::lock_guard<std::mutex> lock(pattern_mutex);
-        gen = generation;
-        filled = stiffness.assemble(var, speed, omega, options.loss_factor, ws.A);
+        const std::lock_guard<std::mutex> lock(pattern_mutex_);
+        gen = generation_;
+        filled = stiffness_.assemble(var, speed, omega, options_.loss_factor, ws.A);
         if (!filled) {
-          stiffness.widen(*var);
-          ++generation;
+          stiffness_.widen(*var);
+          ++generation_;
         }
       }
       if (!filled) continue;
@@ -283,42 +304,62 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
         if (!ws.banded) ws.lu.analyzePattern(ws.A);
         ws.analysed_for = gen;
       }
-      break;
+      return;
     }
+  }
 
-    ComplexVector f_full = ComplexVector::Zero(model.n_dofs());
-    const HarmonicExcitation excitation{speed, omega, !result.frequency_sweep, options.unbalance};
-    for (const Force& force : model.forces) force.add_harmonic(excitation, f_full);
-    for (const HarmonicForce& force : options.extra_forces) force.add_harmonic(excitation, f_full);
+  // The motion under @p f_reduced, or nothing where the dynamic stiffness is singular.
+  static std::optional<ComplexVector> solve(const ComplexVector& f_reduced, Workspace& ws) {
+    if (ws.banded) {
+      if (!ws.band.factorize(ws.A)) return std::nullopt;
+      ComplexVector y = f_reduced;
+      ws.band.solve_in_place(y);
+      return y;
+    }
+    ws.lu.factorize(ws.A);
+    if (ws.lu.info() != Eigen::Success) return std::nullopt;
+    ws.used_sparse = true;
+    return ComplexVector(ws.lu.solve(f_reduced));
+  }
 
-    PointResult& out = points[k];
-    const ComplexVector f_reduced = Tt * f_full;
+  void solve_point(std::size_t k, Workspace& ws) {
+    PointResult& out = points_[k];
+    if (options_.stop.requested()) {
+      out.skipped = true;
+      return;
+    }
+    const Real speed = speed_of(k), omega = omega_of(k);
+    assemble(speed, omega, ws);
+    ComplexVector f_full = ComplexVector::Zero(model_.n_dofs());
+    const HarmonicExcitation excitation{speed, omega, !result_.frequency_sweep, options_.unbalance};
+    for (const Force& force : model_.forces) force.add_harmonic(excitation, f_full);
+    for (const HarmonicForce& force : options_.extra_forces) force.add_harmonic(excitation, f_full);
+    const ComplexVector f_reduced = Tt_ * f_full;
     ComplexVector q_full;
     if (f_reduced.isZero(0.0)) {
       // Nothing acts (an unbalance at rest): the response is zero, even where the
       // dynamic stiffness is singular (free axial or torsional motion at ω = 0).
-      q_full = ComplexVector::Zero(model.n_dofs());
+      q_full = ComplexVector::Zero(model_.n_dofs());
     } else {
-      if (ws.banded) {
-        if (!ws.band.factorize(ws.A)) return;
-        ComplexVector y = f_reduced;
-        ws.band.solve_in_place(y);
-        q_full = T * y;
-      } else {
-        ws.lu.factorize(ws.A);
-        if (ws.lu.info() != Eigen::Success) return;
-        q_full = T * ComplexVector(ws.lu.solve(f_reduced));
-        ws.used_sparse = true;
-      }
+      const std::optional<ComplexVector> y = solve(f_reduced, ws);
+      if (!y) return;
+      q_full = T_ * *y;
     }
     out.solved = true;
-    if (options.stability) out.stability = fixed_speed_stability ? *fixed_speed_stability : scan->at(speed);
+    if (options_.stability) out.stability = fixed_speed_stability_ ? *fixed_speed_stability_ : scan_->at(speed);
     if (!q_full.allFinite()) {
       out.finite = false;
       return;
     }
+    for (const ProbeResponse& p : result_.probes) out.probes.push_back(node_values(q_full, p.node));
+    transmitted_forces(q_full, speed, omega, out);
+    if (!result_.reactions.empty()) reactions(q_full, f_full, speed, omega, out);
+    stations(q_full, speed, omega, out);
+  }
 
-    for (const ProbeResponse& p : result.probes) out.probes.push_back(node_values(q_full, p.node));
+  // What each spring–damper and support transmits: (K(1 + jη) + jωC)·(q_a − q_b), and
+  // each journal's orbit relative to its housing.
+  void transmitted_forces(const ComplexVector& q_full, Real speed, Real omega, PointResult& out) const {
     // The motion of a connecting element's first node relative to its second.
     auto relative = [&](const Transmission& link) {
       NodeAmplitudes dq = node_values(q_full, link.node_a);
@@ -328,60 +369,65 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
       }
       return dq;
     };
-    // What a connecting element transmits: (K(1 + jη) + jωC)·(q_a − q_b).
     auto transmitted = [&](const Element& element) {
       const Transmission link = *element.transmission(speed, omega);
       const NodeAmplitudes dq = relative(link);
       const Eigen::Map<const Eigen::Matrix<Complex, dofs_per_node, 1>> delta(dq.data());
       const Eigen::Matrix<Complex, dofs_per_node, 1> force =
-          (Complex(1.0, link.loss_factor + options.loss_factor) * link.K.cast<Complex>() +
+          (Complex(1.0, link.loss_factor + options_.loss_factor) * link.K.cast<Complex>() +
            I * omega * link.C.cast<Complex>()) *
           delta;
       NodeAmplitudes f;
       for (int d = 0; d < dofs_per_node; ++d) f[static_cast<std::size_t>(d)] = force(d);
       return f;
     };
-    for (const Index e : springs) out.springs.push_back(transmitted(model.elements[static_cast<std::size_t>(e)]));
-    for (const Index e : support_elements) {
-      const Element& element = linear.elements[static_cast<std::size_t>(e)];
+    for (const Index e : springs_) out.springs.push_back(transmitted(model_.elements[static_cast<std::size_t>(e)]));
+    for (const Index e : support_elements_) {
+      const Element& element = linear_.elements[static_cast<std::size_t>(e)];
       out.supports.push_back(transmitted(element));
       const NodeAmplitudes dq = relative(*element.transmission(speed, omega));
       out.support_orbits.push_back(
           orbit(dq[static_cast<std::size_t>(Dof::v)], dq[static_cast<std::size_t>(Dof::w)]).major);
     }
-    if (!result.reactions.empty()) {
-      // The force the structure puts on its supports at the fixed DOFs: the applied
-      // load there minus the element forces (dynamic stiffness times motion).
-      ComplexVector r = f_full;
-      for (Index e : reaction_elements) {
-        const LocalMatrices lm = linear.elements[static_cast<std::size_t>(e)].local_matrices({speed});
-        const auto n = static_cast<Index>(lm.dofs.size());
-        ComplexVector q(n);
-        for (Index i = 0; i < n; ++i) q(i) = q_full(lm.dofs[static_cast<std::size_t>(i)]);
-        const ComplexVector fe = element_forces(lm, speed, omega, options.loss_factor, q);
-        for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) -= fe(i);
-      }
-      for (const ReactionResponse& rr : result.reactions) {
-        NodeAmplitudes f{};
-        for (int d = 0; d < dofs_per_node; ++d)
-          if (rr.fixed[static_cast<std::size_t>(d)]) f[static_cast<std::size_t>(d)] = r(dofs_per_node * rr.node + d);
-        out.reactions.push_back(f);
-      }
+  }
+
+  // The force the structure puts on its supports at the fixed DOFs: the applied load
+  // there minus the element forces (dynamic stiffness times motion).
+  void reactions(const ComplexVector& q_full, const ComplexVector& f_full, Real speed, Real omega,
+                 PointResult& out) const {
+    ComplexVector r = f_full;
+    for (Index e : reaction_elements_) {
+      const LocalMatrices lm = linear_.elements[static_cast<std::size_t>(e)].local_matrices({speed});
+      const auto n = static_cast<Index>(lm.dofs.size());
+      ComplexVector q(n);
+      for (Index i = 0; i < n; ++i) q(i) = q_full(lm.dofs[static_cast<std::size_t>(i)]);
+      const ComplexVector fe = element_forces(lm, speed, omega, options_.loss_factor, q);
+      for (Index i = 0; i < n; ++i) r(lm.dofs[static_cast<std::size_t>(i)]) -= fe(i);
     }
-    // Each element's end forces include its own inertia and gyroscopic moments, so
-    // the section forces are in equilibrium with the element's motion.
+    for (const ReactionResponse& rr : result_.reactions) {
+      NodeAmplitudes f{};
+      for (int d = 0; d < dofs_per_node; ++d)
+        if (rr.fixed[static_cast<std::size_t>(d)]) f[static_cast<std::size_t>(d)] = r(dofs_per_node * rr.node + d);
+      out.reactions.push_back(f);
+    }
+  }
+
+  // The section forces and stresses at the shaft stations. Each element's end forces
+  // include its own inertia and gyroscopic moments, so the section forces are in
+  // equilibrium with the element's motion.
+  void stations(const ComplexVector& q_full, Real speed, Real omega, PointResult& out) const {
     std::size_t b = 0;
     ComplexVector end_forces;
-    const bool keep_all = options.stations == StationOutput::all;
-    for (std::size_t i = 0; i < result.shaft_stations.size(); ++i) {
-      const ShaftStation& st = result.shaft_stations[i];
-      if (beams[b].element != st.element || end_forces.size() == 0) {
-        while (beams[b].element != st.element) ++b;
-        end_forces = element_forces(beams[b].matrices, speed, omega, options.loss_factor,
-                                    element_values(beams[b].segment, q_full));
+    const bool keep_all = options_.stations == StationOutput::all;
+    for (std::size_t i = 0; i < result_.shaft_stations.size(); ++i) {
+      const ShaftStation& st = result_.shaft_stations[i];
+      if (beams_[b].element != st.element || end_forces.size() == 0) {
+        while (beams_[b].element != st.element) ++b;
+        end_forces = element_forces(beams_[b].matrices, speed, omega, options_.loss_factor,
+                                    element_values(beams_[b].segment, q_full));
       }
       const SectionForces forces = section_forces(end_forces, st.end);
-      const SectionStress stress = section_stress(beams[b].segment.section_at_end(st.end), forces);
+      const SectionStress stress = section_stress(beams_[b].segment.section_at_end(st.end), forces);
       const auto station = static_cast<Index>(i);
       consider(out.peaks.von_mises, stress.von_mises, station);
       consider(out.peaks.bending_moment, orbit(forces.My, forces.Mz).major, station);
@@ -391,86 +437,109 @@ HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& 
         out.stress.push_back(stress);
       }
     }
-  };
-  parallel_for(static_cast<Index>(n_points), options.n_threads, [&](Index k, int worker) {
-    solve_point(static_cast<std::size_t>(k), workspaces[static_cast<std::size_t>(worker)]);
-  });
-  if (n_points > 0 &&
-      std::none_of(workspaces.begin(), workspaces.end(), [](const Workspace& w) { return w.used_sparse; }) &&
-      std::any_of(workspaces.begin(), workspaces.end(), [](const Workspace& w) { return w.banded; }))
-    result.info.method = SolverMethod::banded_lu;
+  }
 
-  // Results in sweep order, up to the first point that could not be solved.
-  for (std::size_t k = 0; k < n_points; ++k) {
-    PointResult& pt = points[k];
-    const Real speed = result.frequency_sweep ? options.speed : options.speeds[k];
-    const Real omega = result.frequency_sweep ? options.frequencies[k] : speed;
+  // Point k appended to the result; false (the sweep ends there, said in its info)
+  // when it was not started, not solved or not finite.
+  bool gather(std::size_t k) {
+    PointResult& pt = points_[k];
+    const Real speed = speed_of(k), omega = omega_of(k);
+    const Real at_hz = rad_to_hz(result_.frequency_sweep ? omega : speed);
     if (pt.skipped) {
-      result.info.fail(SolverStatus::interrupted, fmt::format("stopped on request before {:.6g} Hz",
-                                                              rad_to_hz(result.frequency_sweep ? omega : speed)));
-      break;
+      result_.info.fail(SolverStatus::interrupted, fmt::format("stopped on request before {:.6g} Hz", at_hz));
+      return false;
     }
     if (!pt.solved) {
-      result.info.status = SolverStatus::numerical_failure;
-      result.info.message = fmt::format(
+      result_.info.status = SolverStatus::numerical_failure;
+      result_.info.message = fmt::format(
           "the dynamic stiffness is singular at {:.6g} Hz (an undamped resonance on the grid); "
           "add damping or move the grid",
-          rad_to_hz(result.frequency_sweep ? omega : speed));
-      break;
+          at_hz);
+      return false;
     }
     if (!pt.finite) {
-      result.info.fail(SolverStatus::numerical_failure,
-                       fmt::format("the response is not finite at {:.6g} Hz (the dynamic stiffness is too badly "
-                                   "conditioned for the loads); the results stop before it",
-                                   rad_to_hz(result.frequency_sweep ? omega : speed)));
-      break;
+      result_.info.fail(SolverStatus::numerical_failure,
+                        fmt::format("the response is not finite at {:.6g} Hz (the dynamic stiffness is too badly "
+                                    "conditioned for the loads); the results stop before it",
+                                    at_hz));
+      return false;
     }
-    result.speeds.push_back(speed);
-    result.frequencies.push_back(omega);
-    if (options.stability) result.stability.push_back(pt.stability);
-    ++result.info.n_converged;
-    for (std::size_t p = 0; p < result.probes.size(); ++p) {
-      ProbeResponse& pr = result.probes[p];
+    result_.speeds.push_back(speed);
+    result_.frequencies.push_back(omega);
+    if (options_.stability) result_.stability.push_back(pt.stability);
+    ++result_.info.n_converged;
+    for (std::size_t p = 0; p < result_.probes.size(); ++p) {
+      ProbeResponse& pr = result_.probes[p];
       pr.q.push_back(pt.probes[p]);
       pr.orbit.push_back(
           orbit(pt.probes[p][static_cast<std::size_t>(Dof::v)], pt.probes[p][static_cast<std::size_t>(Dof::w)]));
     }
-    for (std::size_t s = 0; s < result.springs.size(); ++s) {
-      result.springs[s].force.push_back(pt.springs[s]);
-      result.springs[s].peak_lateral.push_back(peak_lateral(pt.springs[s]));
+    for (std::size_t s = 0; s < result_.springs.size(); ++s) {
+      result_.springs[s].force.push_back(pt.springs[s]);
+      result_.springs[s].peak_lateral.push_back(peak_lateral(pt.springs[s]));
     }
-    for (std::size_t s = 0; s < result.supports.size(); ++s) {
-      SupportForceResponse& sr = result.supports[s];
+    for (std::size_t s = 0; s < result_.supports.size(); ++s) {
+      SupportForceResponse& sr = result_.supports[s];
       sr.amplitude.push_back(pt.supports[s]);
       sr.peak_lateral.push_back(peak_lateral(pt.supports[s]));
       sr.orbit.push_back(pt.support_orbits[s]);
-      const std::optional<Real> c = model.forces[static_cast<std::size_t>(sr.force)].clearance();
+      const std::optional<Real> c = model_.forces[static_cast<std::size_t>(sr.force)].clearance();
       sr.orbit_clearance_ratio.push_back(c && *c > 0 ? pt.support_orbits[s] / *c
                                                      : std::numeric_limits<Real>::quiet_NaN());
     }
-    for (std::size_t r = 0; r < result.reactions.size(); ++r) {
-      result.reactions[r].force.push_back(pt.reactions[r]);
-      result.reactions[r].peak_lateral.push_back(peak_lateral(pt.reactions[r]));
+    for (std::size_t r = 0; r < result_.reactions.size(); ++r) {
+      result_.reactions[r].force.push_back(pt.reactions[r]);
+      result_.reactions[r].peak_lateral.push_back(peak_lateral(pt.reactions[r]));
     }
-    if (!result.shaft_stations.empty()) result.station_peaks.push_back(pt.peaks);
-    for (std::size_t s = 0; s < result.stations.size(); ++s) {
-      result.stations[s].forces.push_back(pt.forces[s]);
-      result.stations[s].stress.push_back(pt.stress[s]);
+    if (!result_.shaft_stations.empty()) result_.station_peaks.push_back(pt.peaks);
+    for (std::size_t s = 0; s < result_.stations.size(); ++s) {
+      result_.stations[s].forces.push_back(pt.forces[s]);
+      result_.stations[s].stress.push_back(pt.stress[s]);
     }
     pt = PointResult{};  // free as we go
+    return true;
   }
-  // The supports' state at each speed's equilibrium (found above for the tangents);
-  // a frequency sweep runs at one speed.
-  if (supported) {
-    result.operating = operating_series(model);
-    for (std::size_t k = 0; k < result.speeds.size(); ++k) {
-      if (k > 0 && result.speeds[k] == result.speeds[k - 1])
-        for (OperatingSeries& s : result.operating) s.values.push_back(s.values.back());
+
+  // The supports' state at each speed's equilibrium (found above for the tangents); a
+  // frequency sweep runs at one speed.
+  void operating() {
+    if (!supported_) return;
+    result_.operating = operating_series(model_);
+    for (std::size_t k = 0; k < result_.speeds.size(); ++k) {
+      if (k > 0 && result_.speeds[k] == result_.speeds[k - 1])
+        for (OperatingSeries& s : result_.operating) s.values.push_back(s.values.back());
       else
-        append_at_equilibrium(result.operating, linear, result.speeds[k]);
+        append_at_equilibrium(result_.operating, linear_, result_.speeds[k]);
     }
   }
-  return result;
+
+  const Model& model_;
+  const HarmonicOptions& options_;
+  // Supports (fluid-film bearings) as their tangent about the equilibrium at each
+  // speed: elements after the model's own, which keep their indices (a copy only when
+  // there are supports to replace).
+  const bool supported_;
+  const Model linear_copy_;
+  const Model& linear_;
+  const Assembler assembler_;
+  const ComplexSparse T_, Tt_;
+  DynamicStiffness stiffness_;
+  Index generation_ = 0;  // changes when a speed-dependent coefficient widens the pattern
+  std::mutex pattern_mutex_;
+  HarmonicResult result_;
+  std::vector<SegmentData> beams_;
+  std::vector<Index> springs_;            // the connecting elements, whose transmitted force is reported
+  std::vector<Index> reaction_elements_;  // elements touching a fixed DOF
+  std::vector<Index> support_elements_;   // the supports' tangents in the linearised model
+  std::vector<PointResult> points_;
+  std::optional<StabilityScan> scan_;
+  std::optional<StabilityPoint> fixed_speed_stability_;
+};
+
+}  // namespace
+
+HarmonicResult run_harmonic_response(const Model& model, const HarmonicOptions& options) {
+  return HarmonicSweep(model, options).run();
 }
 
 Index first_unstable_point(const HarmonicResult& result) {
