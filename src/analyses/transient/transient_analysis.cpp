@@ -106,19 +106,16 @@ std::pair<Vector, Vector> start_state(const Model& model, const TransientOptions
 
 }  // namespace
 
-TransientResult run_transient(const Model& model, const TransientOptions& options, const SampleSink& sink,
-                              const ProgressSink& progress) {
+namespace {
+
+// The options a run cannot start without, as a C++ caller may have set them.
+void check_options(const Model& model, const TransientOptions& options) {
   if (!(options.duration > 0)) throw Error("transient: the duration must be positive");
   if (!(options.output_interval > 0)) throw Error("transient: the output interval must be positive");
   if (!(options.settings.dt > 0)) throw Error("transient: the time step must be positive");
   for (Index e : options.springs)
     if (!model.elements.at(static_cast<std::size_t>(e)).transmission(0.0))
       throw Error("transient: a recorded element transmits no force (it is not a spring-damper)");
-
-  TransientResult result;
-  const Vector constant_load = options.gravity.squaredNorm() > 0 || options.static_loads
-                                   ? static_load_vector(model, options.gravity, options.static_loads)
-                                   : Vector();
   if (options.driven && !model.drive)
     throw Error("runup: a torque-driven run needs the model's [drive] (its motor and load torques)");
   if (options.driven && options.reduced_modes > 0)
@@ -140,200 +137,212 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
                       "rest; a stronger motor or less friction starts it",
                       start, d.friction_torque));
   }
-  const auto [x_start, v_start] = start_state(model, options);
-  RotorSystem rotor(model, options.profile, constant_load, options.driven ? &*model.drive : nullptr, options.assembled);
-  std::unique_ptr<Integrator> integrator = make_integrator(options.integrator, options.settings);
-  result.info.method = SolverMethod::time_integration;
-  const DofMap& dofs = rotor.dof_map();
-  std::unique_ptr<ProjectedSystem> projected;
-  if (options.reduced_modes > 0) {
-    std::vector<Real> speeds;
-    for (int i = 0; i < modal_basis_speeds; ++i)
-      speeds.push_back(options.profile.speed(options.duration * i / (modal_basis_speeds - 1)));
-    projected = std::make_unique<ProjectedSystem>(
-        rotor, undamped_mode_basis(rotor.assembler(), speeds, options.reduced_modes,
-                                   load_vectors(model, dofs, options, constant_load)));
-    result.basis_size = projected->size();
+}
+
+Vector constant_load_of(const Model& model, const TransientOptions& options) {
+  return options.gravity.squaredNorm() > 0 || options.static_loads
+             ? static_load_vector(model, options.gravity, options.static_loads)
+             : Vector();
+}
+
+// A run-up in named steps: the system integrated (the rotor, or its projection on a
+// modal basis), what it watches (envelopes(), clearances()), its initial state
+// (initial_state()), the steps (advance(), blown_up()) and what it records at the
+// output times (emit()) and at every step (watch()).
+class TransientRun {
+ public:
+  TransientRun(const Model& model, const TransientOptions& options, const SampleSink& sink,
+               const ProgressSink& progress)
+      : model_(model),
+        options_(options),
+        sink_(sink),
+        progress_(progress),
+        constant_load_(constant_load_of(model, options)),
+        rotor_(model, options.profile, constant_load_, options.driven ? &*model.drive : nullptr, options.assembled),
+        integrator_(make_integrator(options.integrator, options.settings)),
+        n_model_(rotor_.model_size()) {
+    result_.info.method = SolverMethod::time_integration;
+    if (options.reduced_modes > 0) {
+      std::vector<Real> speeds;
+      for (int i = 0; i < modal_basis_speeds; ++i)
+        speeds.push_back(options.profile.speed(options.duration * i / (modal_basis_speeds - 1)));
+      projected_ = std::make_unique<ProjectedSystem>(
+          rotor_, undamped_mode_basis(rotor_.assembler(), speeds, options.reduced_modes,
+                                      load_vectors(model, rotor_.dof_map(), options, constant_load_)));
+      result_.basis_size = projected_->size();
+    }
   }
-  SecondOrderSystem& sys = projected ? static_cast<SecondOrderSystem&>(*projected) : rotor;
-  const Index n = sys.size();
+
+  TransientResult run() {
+    envelopes();
+    clearances();
+    State s = initial_state();
+    SecondOrderSystem& sys = system();
+    const StepReport started = integrator_->start(sys, s);
+    if (!started.ok) {
+      result_.info.fail(SolverStatus::numerical_failure, started.message);
+      return std::move(result_);
+    }
+    result_.warning = started.message;
+    emit(0.0, s.x, s.v);
+    watch(s);
+    advance(s);
+    result_.t_end = s.t;
+    result_.speed_end = rotor_.speed(s.t, s.v);
+    return std::move(result_);
+  }
+
+ private:
+  SecondOrderSystem& system() { return projected_ ? static_cast<SecondOrderSystem&>(*projected_) : rotor_; }
+
   // The integrated state in the model's reduced coordinates (after fixed DOFs and links).
-  Vector x_model, v_model;
-  auto model_coordinates = [&](const Vector& x, Vector& out) -> const Vector& {
-    if (!projected) return x;
-    out.noalias() = projected->basis() * x;
+  const Vector& model_coordinates(const Vector& x, Vector& out) const {
+    if (!projected_) return x;
+    out.noalias() = projected_->basis() * x;
     return out;
-  };
+  }
 
   // Envelope bins over the speeds the profile visits within the run (a driven run:
   // from its first speed to the motor's free speed).
-  Real w_lo = options.profile.speed(0.0), w_hi = w_lo;
-  if (options.driven) {
-    w_lo = std::min(w_lo, model.drive->motor.free_speed());
-    w_hi = std::max(w_hi, model.drive->motor.free_speed());
-  } else {
-    for (const auto& [t, w] : options.profile.points())
-      if (t <= options.duration) w_lo = std::min(w_lo, w), w_hi = std::max(w_hi, w);
-    w_lo = std::min(w_lo, options.profile.speed(options.duration));
-    w_hi = std::max(w_hi, options.profile.speed(options.duration));
-  }
-  const Index bins = w_hi > w_lo ? std::max<Index>(options.envelope_bins, 1) : 1;
-  for (std::size_t p = 0; p < options.probes.size(); ++p) {
-    Envelope e;
-    for (Index b = 0; b < bins; ++b)
-      e.speed.push_back(w_lo + (w_hi - w_lo) * (static_cast<Real>(b) + 0.5) / static_cast<Real>(bins));
-    e.magnitude.assign(static_cast<std::size_t>(bins), nan);
-    result.envelopes.push_back(e);
-  }
-  // The supports' clearances, watched at every step: (v, w) of the journal, then of its
-  // housing if it has one (the supports' DOFs, Force::dofs()).
-  result.operating = operating_series(model);
-  std::vector<OperatingSeries> operating_now = result.operating;
-  std::vector<std::vector<Index>> clearance_dofs;
-  for (const OperatingSeries& os : result.operating) {
-    const Force& force = model.forces[static_cast<std::size_t>(os.force)];
-    if (const std::optional<Real> c = force.clearance(); c && *c > 0) {
-      result.clearance_use.push_back({.force = os.force, .clearance = *c});
-      clearance_dofs.push_back(force.dofs());
+  void envelopes() {
+    w_lo_ = options_.profile.speed(0.0), w_hi_ = w_lo_;
+    if (options_.driven) {
+      w_lo_ = std::min(w_lo_, model_.drive->motor.free_speed());
+      w_hi_ = std::max(w_hi_, model_.drive->motor.free_speed());
+    } else {
+      for (const auto& [t, w] : options_.profile.points())
+        if (t <= options_.duration) w_lo_ = std::min(w_lo_, w), w_hi_ = std::max(w_hi_, w);
+      w_lo_ = std::min(w_lo_, options_.profile.speed(options_.duration));
+      w_hi_ = std::max(w_hi_, options_.profile.speed(options_.duration));
+    }
+    bins_ = w_hi_ > w_lo_ ? std::max<Index>(options_.envelope_bins, 1) : 1;
+    for (std::size_t p = 0; p < options_.probes.size(); ++p) {
+      Envelope e;
+      for (Index b = 0; b < bins_; ++b)
+        e.speed.push_back(w_lo_ + (w_hi_ - w_lo_) * (static_cast<Real>(b) + 0.5) / static_cast<Real>(bins_));
+      e.magnitude.assign(static_cast<std::size_t>(bins_), nan);
+      result_.envelopes.push_back(e);
     }
   }
-  auto update_clearance_use = [&](const Vector& x, Real t, Real w) {
-    for (std::size_t k = 0; k < clearance_dofs.size(); ++k) {
-      const std::vector<Index>& d = clearance_dofs[k];
-      Real dy = x(d[0]), dz = x(d[1]);
-      if (d.size() >= 4) dy -= x(d[2]), dz -= x(d[3]);
-      ClearanceUse& u = result.clearance_use[k];
-      const Real ratio = std::hypot(dy, dz) / u.clearance;
-      if (ratio > u.largest) u.largest = ratio, u.time = t, u.speed = w;
-    }
-  };
 
-  auto update_envelopes = [&](const State& s) {
-    const Vector x = rotor.expand(model_coordinates(s.x, x_model));
-    const Real w = rotor.speed(s.t, s.v);
+  // The supports' clearances, watched at every step: (v, w) of the journal, then of
+  // its housing if it has one (the supports' DOFs, Force::dofs()).
+  void clearances() {
+    result_.operating = operating_series(model_);
+    operating_now_ = result_.operating;
+    for (const OperatingSeries& os : result_.operating) {
+      const Force& force = model_.forces[static_cast<std::size_t>(os.force)];
+      if (const std::optional<Real> c = force.clearance(); c && *c > 0) {
+        result_.clearance_use.push_back({.force = os.force, .clearance = *c});
+        clearance_dofs_.push_back(force.dofs());
+      }
+    }
+  }
+
+  // The state at t = 0 (rest, the equilibrium or the steady response), projected on
+  // the basis for a reduced run.
+  State initial_state() {
+    const auto [x_start, v_start] = start_state(model_, options_);
+    const DofMap& dofs = rotor_.dof_map();
+    Vector x0 = Vector::Zero(rotor_.size()), v0 = Vector::Zero(rotor_.size());
+    for (Index i = 0; i < n_model_; ++i) {
+      if (x_start.size() == model_.n_dofs()) x0(i) = x_start(dofs.full_dof(i));
+      if (v_start.size() == model_.n_dofs()) v0(i) = v_start(dofs.full_dof(i));
+    }
+    if (rotor_.driven()) v0(n_model_) = options_.profile.speed(0.0);  // the angle starts at 0
+    const Index n = system().size();
+    State s{0.0, Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
+    if (projected_) {
+      // The M-orthogonal projection onto the basis (ΦᵀMΦ = I): η = Φᵀ·M·x.
+      Vector mx(n_model_);
+      rotor_.mass_times(x0, mx);
+      s.x = projected_->basis().transpose() * mx;
+      rotor_.mass_times(v0, mx);
+      s.v = projected_->basis().transpose() * mx;
+    } else {
+      s.x = x0;
+      s.v = v0;
+    }
+    return s;
+  }
+
+  // At every step: each probe's |r| into its envelope and peak, each journal's
+  // excursion into its clearance use.
+  void watch(const State& s) {
+    const Vector x = rotor_.expand(model_coordinates(s.x, x_model_));
+    const Real w = rotor_.speed(s.t, s.v);
     const Index b =
-        bins == 1
-            ? 0
-            : std::clamp<Index>(static_cast<Index>((w - w_lo) / (w_hi - w_lo) * static_cast<Real>(bins)), 0, bins - 1);
-    for (std::size_t p = 0; p < options.probes.size(); ++p) {
-      const Real r = std::hypot(x(global_dof(options.probes[p], Dof::v)), x(global_dof(options.probes[p], Dof::w)));
-      Envelope& e = result.envelopes[p];
+        bins_ == 1 ? 0
+                   : std::clamp<Index>(static_cast<Index>((w - w_lo_) / (w_hi_ - w_lo_) * static_cast<Real>(bins_)), 0,
+                                       bins_ - 1);
+    for (std::size_t p = 0; p < options_.probes.size(); ++p) {
+      const Real r = std::hypot(x(global_dof(options_.probes[p], Dof::v)), x(global_dof(options_.probes[p], Dof::w)));
+      Envelope& e = result_.envelopes[p];
       Real& m = e.magnitude[static_cast<std::size_t>(b)];
       if (std::isnan(m) || r > m) m = r;
       if (r > e.peak) e.peak = r, e.peak_time = s.t, e.peak_speed = w;
     }
-    update_clearance_use(x, s.t, w);
-  };
+    for (std::size_t k = 0; k < clearance_dofs_.size(); ++k) {
+      const std::vector<Index>& d = clearance_dofs_[k];
+      Real dy = x(d[0]), dz = x(d[1]);
+      if (d.size() >= 4) dy -= x(d[2]), dz -= x(d[3]);
+      ClearanceUse& u = result_.clearance_use[k];
+      const Real ratio = std::hypot(dy, dz) / u.clearance;
+      if (ratio > u.largest) u.largest = ratio, u.time = s.t, u.speed = w;
+    }
+  }
 
-  Vector x_full, v_full;
-  auto emit = [&](Real t, const Vector& x, const Vector& v) {
+  // A sample at output time @p t: the probes, the springs' forces, the supports' state.
+  void emit(Real t, const Vector& x, const Vector& v) {
     TransientSample sample;
     sample.t = t;
-    sample.speed = rotor.speed(t, v);
-    x_full = rotor.expand(model_coordinates(x, x_model));
-    v_full = rotor.expand(model_coordinates(v, v_model));
-    for (Index node : options.probes) {
+    sample.speed = rotor_.speed(t, v);
+    x_full_ = rotor_.expand(model_coordinates(x, x_model_));
+    v_full_ = rotor_.expand(model_coordinates(v, v_model_));
+    for (Index node : options_.probes) {
       std::array<Real, dofs_per_node> q{};
-      for (int d = 0; d < dofs_per_node; ++d) q[static_cast<std::size_t>(d)] = x_full(dofs_per_node * node + d);
+      for (int d = 0; d < dofs_per_node; ++d) q[static_cast<std::size_t>(d)] = x_full_(dofs_per_node * node + d);
       sample.probes.push_back(q);
       sample.magnitude.push_back(std::hypot(q[static_cast<std::size_t>(Dof::v)], q[static_cast<std::size_t>(Dof::w)]));
     }
-    for (Index e : options.springs) {
-      const Transmission link = *model.elements[static_cast<std::size_t>(e)].transmission(sample.speed);
-      Eigen::Matrix<Real, dofs_per_node, 1> dx = x_full.segment<dofs_per_node>(dofs_per_node * link.node_a);
-      Eigen::Matrix<Real, dofs_per_node, 1> dv = v_full.segment<dofs_per_node>(dofs_per_node * link.node_a);
+    for (Index e : options_.springs) {
+      const Transmission link = *model_.elements[static_cast<std::size_t>(e)].transmission(sample.speed);
+      Eigen::Matrix<Real, dofs_per_node, 1> dx = x_full_.segment<dofs_per_node>(dofs_per_node * link.node_a);
+      Eigen::Matrix<Real, dofs_per_node, 1> dv = v_full_.segment<dofs_per_node>(dofs_per_node * link.node_a);
       if (link.node_b) {
-        dx -= x_full.segment<dofs_per_node>(dofs_per_node * *link.node_b);
-        dv -= v_full.segment<dofs_per_node>(dofs_per_node * *link.node_b);
+        dx -= x_full_.segment<dofs_per_node>(dofs_per_node * *link.node_b);
+        dv -= v_full_.segment<dofs_per_node>(dofs_per_node * *link.node_b);
       }
       const Eigen::Matrix<Real, dofs_per_node, 1> f = link.K * dx + link.C * dv;
       std::array<Real, dofs_per_node> out{};
       for (int d = 0; d < dofs_per_node; ++d) out[static_cast<std::size_t>(d)] = f(d);
       sample.springs.push_back(out);
     }
-    if (!operating_now.empty()) {
-      append_in_motion(operating_now, model, rotor.motion(t, x, v), x_full, v_full);
-      for (std::size_t k = 0; k < operating_now.size(); ++k) {
-        sample.operating.push_back(std::move(operating_now[k].values.back()));
-        operating_now[k].values.clear();
-        if (options.keep_samples) result.operating[k].values.push_back(sample.operating.back());
+    if (!operating_now_.empty()) {
+      append_in_motion(operating_now_, model_, rotor_.motion(t, x, v), x_full_, v_full_);
+      for (std::size_t k = 0; k < operating_now_.size(); ++k) {
+        sample.operating.push_back(std::move(operating_now_[k].values.back()));
+        operating_now_[k].values.clear();
+        if (options_.keep_samples) result_.operating[k].values.push_back(sample.operating.back());
       }
     }
-    if (sink) sink(sample);
-    if (options.keep_samples) result.samples.push_back(std::move(sample));
-  };
+    if (sink_) sink_(sample);
+    if (options_.keep_samples) result_.samples.push_back(std::move(sample));
+  }
 
-  const Index n_model = rotor.model_size();
-  Vector x0 = Vector::Zero(rotor.size()), v0 = Vector::Zero(rotor.size());
-  for (Index i = 0; i < n_model; ++i) {
-    if (x_start.size() == model.n_dofs()) x0(i) = x_start(dofs.full_dof(i));
-    if (v_start.size() == model.n_dofs()) v0(i) = v_start(dofs.full_dof(i));
+  void fail(const State& s, const std::string& why) {
+    result_.info.fail(SolverStatus::numerical_failure, fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
+                                                                   rad_to_hz(rotor_.speed(s.t, s.v)), why));
   }
-  if (rotor.driven()) v0(n_model) = options.profile.speed(0.0);  // the angle starts at 0
-  State s{0.0, Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
-  if (projected) {
-    // The M-orthogonal projection onto the basis (ΦᵀMΦ = I): η = Φᵀ·M·x.
-    Vector mx(n_model);
-    rotor.mass_times(x0, mx);
-    s.x = projected->basis().transpose() * mx;
-    rotor.mass_times(v0, mx);
-    s.v = projected->basis().transpose() * mx;
-  } else {
-    s.x = x0;
-    s.v = v0;
-  }
-  const StepReport started = integrator->start(sys, s);
-  if (!started.ok) {
-    result.info.fail(SolverStatus::numerical_failure, started.message);
-    return result;
-  }
-  result.warning = started.message;
-  emit(0.0, s.x, s.v);
-  update_envelopes(s);
 
-  Index next_output = 1;
-  Real dt = options.settings.dt;
-  const Real t_end = options.duration;
-  State previous = s;
-  Vector xi, vi;
-  auto fail = [&](const std::string& why) {
-    result.info.fail(SolverStatus::numerical_failure, fmt::format("stopped at t = {:.6g} s (speed {:.4g} Hz): {}", s.t,
-                                                                  rad_to_hz(rotor.speed(s.t, s.v)), why));
-  };
-  while (s.t < t_end * (1 - 1e-12)) {
-    if (options.stop.requested()) {
-      result.info.fail(SolverStatus::interrupted, fmt::format("stopped on request at t = {:.6g} s (speed {:.4g} Hz)",
-                                                              s.t, rad_to_hz(rotor.speed(s.t, s.v))));
-      break;
-    }
-    const Real h = std::min(dt, t_end - s.t);
-    previous = s;
-    StepReport rep;
-    try {
-      rep = integrator->step(sys, s, h);
-    } catch (const Error& e) {
-      // A force that cannot be evaluated in the step's state (a journal at its
-      // bearing's wall): the run ends there, its samples so far kept.
-      s = previous;
-      fail(e.what());
-      break;
-    }
-    ++result.steps;
-    result.rejected += rep.rejected;
-    result.factorizations += rep.factorizations;
-    result.newton_iterations += rep.iterations;
-    if (!rep.ok) {
-      s = previous;
-      fail(rep.message);
-      break;
-    }
-    if (integrator->adaptive()) dt = rep.dt_next;
-    // Blow-up and non-finite values, located at a node and DOF.
+  // Why the motion after a step cannot go on: a non-finite value, or a displacement
+  // beyond the blow-up limit, located at a node and DOF; empty when it can.
+  std::string blown_up(const State& s) {
     Index worst = -1;
     Real worst_value = 0;
-    const Vector& xm = model_coordinates(s.x, x_model);
-    const Vector& vm = model_coordinates(s.v, v_model);
-    for (Index i = 0; i < n_model; ++i) {
+    const Vector& xm = model_coordinates(s.x, x_model_);
+    const Vector& vm = model_coordinates(s.v, v_model_);
+    for (Index i = 0; i < n_model_; ++i) {
       const Real a = std::abs(xm(i));
       if (!std::isfinite(xm(i)) || !std::isfinite(vm(i))) {
         worst = i, worst_value = nan;
@@ -341,31 +350,92 @@ TransientResult run_transient(const Model& model, const TransientOptions& option
       }
       if (a > worst_value) worst = i, worst_value = a;
     }
-    if (worst >= 0 && (std::isnan(worst_value) || worst_value > options.blowup_limit)) {
-      const Index full = dofs.full_dof(worst);
-      const std::string where = fmt::format("node {} DOF {}", model.node_label(full / dofs_per_node),
-                                            dof_name(static_cast<Dof>(full % dofs_per_node)));
-      const std::string why = std::isnan(worst_value)
-                                  ? fmt::format("a non-finite value appeared at {}", where)
-                                  : fmt::format("the motion blew up: |{}| reached {:.3g} (limit {:.3g})", where,
-                                                worst_value, options.blowup_limit);
-      fail(why);
-      s = previous;
-      break;
-    }
-    while (static_cast<Real>(next_output) * options.output_interval <= s.t * (1 + 1e-12) &&
-           static_cast<Real>(next_output) * options.output_interval <= t_end * (1 + 1e-12)) {
-      const Real to = std::min(static_cast<Real>(next_output) * options.output_interval, s.t);
-      interpolate(previous, s, to, xi, vi);
-      emit(to, xi, vi);
-      ++next_output;
-    }
-    update_envelopes(s);
-    if (progress && result.steps % 200 == 0) progress(s.t, rep.dt);
+    if (worst < 0 || !(std::isnan(worst_value) || worst_value > options_.blowup_limit)) return {};
+    const Index full = rotor_.dof_map().full_dof(worst);
+    const std::string where = fmt::format("node {} DOF {}", model_.node_label(full / dofs_per_node),
+                                          dof_name(static_cast<Dof>(full % dofs_per_node)));
+    return std::isnan(worst_value) ? fmt::format("a non-finite value appeared at {}", where)
+                                   : fmt::format("the motion blew up: |{}| reached {:.3g} (limit {:.3g})", where,
+                                                 worst_value, options_.blowup_limit);
   }
-  result.t_end = s.t;
-  result.speed_end = rotor.speed(s.t, s.v);
-  return result;
+
+  // The steps to the end, each sample between them interpolated at its output time;
+  // a stop, a failed step or a blow-up ends the run at the last good state.
+  void advance(State& s) {
+    SecondOrderSystem& sys = system();
+    Index next_output = 1;
+    Real dt = options_.settings.dt;
+    const Real t_end = options_.duration;
+    State previous = s;
+    Vector xi, vi;
+    while (s.t < t_end * (1 - 1e-12)) {
+      if (options_.stop.requested()) {
+        result_.info.fail(SolverStatus::interrupted, fmt::format("stopped on request at t = {:.6g} s (speed {:.4g} Hz)",
+                                                                 s.t, rad_to_hz(rotor_.speed(s.t, s.v))));
+        return;
+      }
+      const Real h = std::min(dt, t_end - s.t);
+      previous = s;
+      StepReport rep;
+      try {
+        rep = integrator_->step(sys, s, h);
+      } catch (const Error& e) {
+        // A force that cannot be evaluated in the step's state (a journal at its
+        // bearing's wall): the run ends there, its samples so far kept.
+        s = previous;
+        fail(s, e.what());
+        return;
+      }
+      ++result_.steps;
+      result_.rejected += rep.rejected;
+      result_.factorizations += rep.factorizations;
+      result_.newton_iterations += rep.iterations;
+      if (!rep.ok) {
+        s = previous;
+        fail(s, rep.message);
+        return;
+      }
+      if (integrator_->adaptive()) dt = rep.dt_next;
+      if (const std::string why = blown_up(s); !why.empty()) {
+        fail(s, why);
+        s = previous;
+        return;
+      }
+      while (static_cast<Real>(next_output) * options_.output_interval <= s.t * (1 + 1e-12) &&
+             static_cast<Real>(next_output) * options_.output_interval <= t_end * (1 + 1e-12)) {
+        const Real to = std::min(static_cast<Real>(next_output) * options_.output_interval, s.t);
+        interpolate(previous, s, to, xi, vi);
+        emit(to, xi, vi);
+        ++next_output;
+      }
+      watch(s);
+      if (progress_ && result_.steps % 200 == 0) progress_(s.t, rep.dt);
+    }
+  }
+
+  const Model& model_;
+  const TransientOptions& options_;
+  const SampleSink& sink_;
+  const ProgressSink& progress_;
+  const Vector constant_load_;
+  RotorSystem rotor_;
+  std::unique_ptr<Integrator> integrator_;
+  std::unique_ptr<ProjectedSystem> projected_;
+  const Index n_model_;
+  TransientResult result_;
+  Real w_lo_ = 0, w_hi_ = 0;  // the envelopes' speed range
+  Index bins_ = 1;
+  std::vector<OperatingSeries> operating_now_;
+  std::vector<std::vector<Index>> clearance_dofs_;
+  Vector x_model_, v_model_, x_full_, v_full_;  // work vectors
+};
+
+}  // namespace
+
+TransientResult run_transient(const Model& model, const TransientOptions& options, const SampleSink& sink,
+                              const ProgressSink& progress) {
+  check_options(model, options);
+  return TransientRun(model, options, sink, progress).run();
 }
 
 }  // namespace feran
