@@ -288,6 +288,7 @@ struct RunupSpec {
   std::optional<std::string> jacobian;   ///< W-methods: "exact" or "linear"
   std::optional<int> jacobian_interval;  ///< W-methods: steps between Jacobians
   std::optional<Real> blowup;            ///< [m] a displacement that ends the run as diverged
+  std::optional<bool> samples;           ///< keep every sample in the result
   bool operator==(const RunupSpec&) const = default;
 };
 

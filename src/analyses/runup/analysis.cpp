@@ -198,6 +198,11 @@ const FieldTable<RunupSpec>& fields_of<RunupSpec>() {
        .quantity = Quantity::length,
        .bound = positive,
        .unit = "m"},
+      {.key = "samples",
+       .kind = K::flag,
+       .member = &S::samples,
+       .doc = "whether the result keeps every sample (the JSON's time histories, Python's arrays); false keeps the "
+              "envelopes, peaks and clearance use only, for long runs (the CSV still gets every sample)"},
   };
   return table;
 }
@@ -223,6 +228,7 @@ const RunupSpec& RunupAnalysis::defaults() {
     r.jacobian = s.exact_jacobian ? "exact" : "linear";
     r.jacobian_interval = s.jacobian_interval;
     r.blowup = TransientOptions{}.blowup_limit;
+    r.samples = true;
     return r;
   }();
   return d;
@@ -294,6 +300,7 @@ void set_integration(TransientOptions& options, const RunupSpec& resolved) {
   options.reduced_modes = resolved.modes.value_or(0);
   options.output_interval = *resolved.output_interval;
   options.blowup_limit = *resolved.blowup;
+  options.keep_samples = *resolved.samples;
   const Real samples = options.duration / options.output_interval;
   if (samples > defaults::max_runup_samples)
     throw Error(
@@ -432,6 +439,9 @@ const std::vector<QuantityRow>& RunupAnalysis::quantities() {
 RunupSpec RunupAnalysis::study_request(const Model& model, std::span<const QuantitySpec> quantities) {
   RunupSpec request;
   request.probes = quantity_probes(model, quantities, name);
+  // The samples only where a spring's force is read off them (the peaks need none).
+  request.samples = std::any_of(quantities.begin(), quantities.end(),
+                                [](const QuantitySpec& q) { return q.kind == "runup_spring_force"; });
   std::vector<Index> springs;
   const auto add_spring = [&](Index e) {
     if (std::find(springs.begin(), springs.end(), e) != springs.end()) return;

@@ -220,6 +220,30 @@ TEST(Settings, RunupProfileForms) {
   EXPECT_THROW((void)spring_element(file.model, "no such spring"), Error);
 }
 
+// A run-up that keeps no samples keeps the same envelopes, peaks and end state: the
+// samples are only recorded, never used by the integration (an invariant of the run).
+TEST(Settings, RunupWithoutSamplesKeepsItsPeaks) {
+  const ModelFile file = read_model_file(examples + "/01_internal_damping/model.toml");
+  RunupSpec shorter;
+  shorter.duration = 0.2;
+  const TransientOptions with = runup_options(file, shorter);
+  EXPECT_TRUE(with.keep_samples);  // the default
+  shorter.samples = false;
+  const TransientOptions without = runup_options(file, shorter);
+  EXPECT_FALSE(without.keep_samples);
+  const TransientResult a = run_transient(file.model, with), b = run_transient(file.model, without);
+  ASSERT_TRUE(a.info.converged() && b.info.converged());
+  EXPECT_EQ(a.samples.size(), 201u);  // 0.2 s every 1 ms, both ends
+  EXPECT_TRUE(b.samples.empty());
+  ASSERT_EQ(a.envelopes.size(), b.envelopes.size());
+  for (std::size_t p = 0; p < a.envelopes.size(); ++p) {
+    EXPECT_EQ(a.envelopes[p].peak, b.envelopes[p].peak);  // bit for bit
+    EXPECT_EQ(a.envelopes[p].peak_time, b.envelopes[p].peak_time);
+  }
+  EXPECT_EQ(a.t_end, b.t_end);
+  EXPECT_EQ(a.steps, b.steps);
+}
+
 // A tabulated coefficient evaluated beyond its speeds is held at its last value; the
 // analyses say so once per table (issue 12).
 TEST(Settings, WarningsForTablesEvaluatedBeyondTheirRange) {
