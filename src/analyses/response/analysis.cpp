@@ -235,13 +235,14 @@ HarmonicResult ResponseAnalysis::run(const Model& model, const HarmonicOptions& 
 std::vector<std::string> ResponseAnalysis::warnings(const Model& model, const HarmonicOptions& options,
                                                     const HarmonicResult& result) {
   // The speeds and frequencies solved (those asked for when none was).
-  const std::vector<Real>& speeds = !result.speeds.empty()        ? result.speeds
-                                    : options.frequencies.empty() ? options.speeds
-                                                                  : std::vector<Real>{options.speed};
-  const std::vector<Real>& frequencies = !result.speeds.empty() ? result.frequencies : options.frequencies;
+  const bool solved = !result.speeds.empty(), by_frequency = !options.frequencies.empty();
+  const std::vector<Real> speeds = solved         ? result.speeds
+                                   : by_frequency ? std::vector<Real>{options.speed}
+                                                  : options.speeds;
   const auto [low, high] = std::minmax_element(speeds.begin(), speeds.end());
   std::optional<std::pair<Real, Real>> span;  // a speed sweep's are synchronous
-  if ((!result.speeds.empty() && result.frequency_sweep) || (result.speeds.empty() && !frequencies.empty())) {
+  if (by_frequency) {
+    const std::vector<Real>& frequencies = solved ? result.frequencies : options.frequencies;
     const auto [f_low, f_high] = std::minmax_element(frequencies.begin(), frequencies.end());
     span = std::pair{*f_low, *f_high};
   }
