@@ -168,6 +168,10 @@ ComplexVector times(const SparseMatrix& A, const ComplexVector& x) {
   return y;
 }
 
+}  // namespace
+
+namespace detail {
+
 // The complex (forward/backward) form of a block whose DOFs pair up (v with w, ry
 // with rz) and whose matrices commute with the quarter turn J about the spin axis
 // (J: v → w → −v, ry → rz → −ry), i.e. an axisymmetric rotor: on the subspace
@@ -191,6 +195,12 @@ struct ComplexForm {
     return x;
   }
 };
+
+}  // namespace detail
+
+namespace {
+
+using detail::ComplexForm;
 
 // The pairing of the block's DOFs (empty unless every DOF has its twin in the block).
 std::optional<ComplexForm> complex_pairs(const std::vector<Index>& dofs, const std::vector<Index>& local,
@@ -453,7 +463,7 @@ ModalResult ModalSolver::solve_self_consistent(Real speed) const {
   ModalResult result = solve_at(speed, omega0);
   result.frequency_dependent = true;
   if (!result.info.converged()) return result;
-  const Real zero_tol = 1e-6 * std::sqrt(lambda_max_);
+  const Real zero_tol = this->zero_tol();
   constexpr Real rtol = 1e-9;  // on |f_i(ω) − ω| relative to ω
   constexpr int max_iterations = 40;
   std::map<Real, ModalResult> solved;  // the solves at each trial frequency, shared by the slots
@@ -531,16 +541,32 @@ ModalResult ModalSolver::solve_self_consistent(Real speed) const {
   return result;
 }
 
+// One decoupled block of a solve: its matrices, the solver it takes and the forms that
+// solver needs.
+struct ModalSolver::Block {
+  Block(const std::vector<Index>& dofs_, SparseMatrix M_, SparseMatrix D_, SparseMatrix K_)
+      : dofs(dofs_), M(std::move(M_)), D(std::move(D_)), K(std::move(K_)) {}
+  const std::vector<Index>& dofs;  // its reduced DOFs
+  SparseMatrix M, D, K;
+  Matrix Md, Dd, Kd;                      // dense copies, for the dense solvers
+  std::optional<detail::ComplexForm> cf;  // forward/backward coordinates, where they apply
+  Index wanted = 0;                       // modes wanted of it
+  bool arnoldi = false;                   // Arnoldi (else a dense solver)
+  bool constant = false;                  // no speed-dependent entry touches it: its modes are cached
+};
+
+Real ModalSolver::zero_tol() const { return 1e-6 * std::sqrt(lambda_max_); }
+
+Index ModalSolver::wanted() const {
+  return options_.n_modes > 0 ? options_.n_modes : choice() != Choice::dense ? 12 : 0;
+}
+
 ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) const {
   // The assembled matrices themselves when no element depends on speed (no copy).
   const SystemMatrices varying = assembler_->speed_dependent() ? assembler_->at(speed, frequency) : SystemMatrices{};
   const SystemMatrices& sys = assembler_->speed_dependent() ? varying : assembler_->constant();
   const SparseMatrix D = sys.damping(speed);
   const SparseMatrix K = sys.stiffness(speed);
-  const Index n = sys.M.rows();
-  // Strain energy of rigid-body motion is round-off: below 1e-12·λ_max (see checks.cpp).
-  const Real rigid_tol = tolerance::rigid_body * lambda_max_;
-  const Real zero_tol = 1e-6 * std::sqrt(lambda_max_);
 
   ModalResult result;
   result.speed = speed;
@@ -551,142 +577,7 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
                                  rad_to_hz(speed)));
     return result;
   }
-  const Choice choice = this->choice();
-  const Index wanted = options_.n_modes > 0 ? options_.n_modes : choice != Choice::dense ? 12 : 0;
-  // Automatic shift: just below zero, so that rigid-body modes (p = 0) do not make
-  // K + σD + σ²M singular, yet close enough to find the lowest modes first.
-  const Real sigma = std::isnan(options_.shift) ? -std::max(1.0, 1e-6 * std::sqrt(lambda_max_)) : options_.shift;
-
-  // Each decoupled block on its own; the lowest modes of the whole are among the
-  // lowest `wanted` of each block. The largest block goes first: its `wanted`-th
-  // lowest |p| is the cutoff the other blocks' modes must beat to count.
-  detail::StateEigenpairs pairs;
-  pairs.info.method = SolverMethod::dense_qr;
-  pairs.vectors = ComplexMatrix::Zero(n, 0);
-  std::vector<Index> local(static_cast<std::size_t>(n), -1);
-  std::vector<std::vector<Index>> blocks = decoupled_blocks(sys.M, D, K);
-  std::stable_sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
-  Real cutoff = std::numeric_limits<Real>::infinity();
-  bool any_complex = false;
-  for (const std::vector<Index>& dofs : blocks) {
-    const auto nb = static_cast<Index>(dofs.size());
-    for (Index i = 0; i < nb; ++i) local[static_cast<std::size_t>(dofs[static_cast<std::size_t>(i)])] = i;
-    const SparseMatrix Mb = submatrix(sys.M, dofs, local), Db = submatrix(D, dofs, local),
-                       Kb = submatrix(K, dofs, local);
-    const Index wanted_b = std::min(wanted, nb - 1);
-    // Arnoldi pays only when its subspace is smaller than the block's state space;
-    // the automatic choice takes it where the cost model expects it to be cheaper.
-    bool arnoldi_block =
-        choice != Choice::dense && wanted_b > 0 && detail::arnoldi_subspace_size(nb, wanted_b) < 2 * nb;
-    std::optional<ComplexForm> cf;
-    const bool sparse_form = arnoldi_block && options_.complex_form;  // tried on the sparse matrices
-    if (sparse_form) cf = complex_form(dofs, local, twin_, Mb, Db, Kb);
-    if (arnoldi_block && choice == Choice::by_cost) {
-      const detail::BlockForm form{cf.has_value(),
-                                   options_.hermitian_form && symmetric(Db, -1.0) && symmetric(Kb, 1.0)};
-      arnoldi_block = detail::arnoldi_cheaper(nb, wanted_b, form);
-    }
-    // Dense copies for the dense solvers.
-    Matrix Md, Dd, Kd;
-    if (!arnoldi_block) {
-      Md = Mb;
-      Dd = Db;
-      Kd = Kb;
-      if (cf) {
-        cf->Md = ComplexMatrix(cf->M);
-        cf->Dd = ComplexMatrix(cf->D);
-        cf->Kd = ComplexMatrix(cf->K);
-      } else if (options_.complex_form && !sparse_form) {
-        cf = dense_complex_form(dofs, local, twin_, Md, Dd, Kd);
-      }
-    }
-    any_complex = any_complex || cf.has_value();
-    for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
-    const bool constant = std::none_of(dofs.begin(), dofs.end(),
-                                       [&](Index d) { return speed_touched_[static_cast<std::size_t>(d)] != 0; });
-    // The block's modes from the cache or computed (and stored when constant).
-    auto block_modes = [&](Index count, bool arnoldi) {
-      const auto key = std::make_tuple(dofs.front(), nb, count, arnoldi);
-      if (constant) {
-        const std::lock_guard<std::mutex> lock(cache_->mutex);
-        const auto it = cache_->parts.find(key);
-        if (it != cache_->parts.end()) return it->second;
-      }
-      detail::StateEigenpairs computed;
-      bool solved = false;
-      const detail::DenseSelection selection{count, options_.oscillatory_only, zero_tol};
-      if (!arnoldi && options_.hermitian_form) {
-        // An undamped gyroscopic block: the Hermitian-definite form (either form of
-        // coordinates); the general QR when it does not apply.
-        const std::optional<detail::StateEigenpairs> h =
-            cf ? detail::dense_gyroscopic_eigen(cf->Md, cf->Dd, cf->Kd, selection, true)
-               : detail::dense_gyroscopic_eigen(Md.cast<Complex>(), Dd.cast<Complex>(), Kd.cast<Complex>(), selection,
-                                                false);
-        if (h) {
-          computed = cf ? real_pairs(*h, *cf, Mb, Kb, zero_tol, rigid_tol) : *h;
-          solved = true;
-        }
-      }
-      if (arnoldi && !cf && options_.hermitian_form) {
-        // No damping or gyroscopic terms (axial, torsional, bending at rest):
-        // symmetric Lanczos on a problem of half the state order.
-        if (std::optional<detail::StateEigenpairs> u = detail::sparse_undamped_eigen(Mb, Db, Kb, count, sigma)) {
-          computed = std::move(*u);
-          solved = true;
-        }
-      }
-      if (!solved && cf) {
-        // Forward/backward complex coordinates: half the order (the real form if it
-        // fails).
-        computed = arnoldi ? detail::sparse_complex_eigen(cf->M, cf->D, cf->K, count, sigma)
-                           : detail::dense_complex_eigen(cf->Md, cf->Dd, cf->Kd, selection);
-        solved = computed.info.converged();
-        if (solved) computed = real_pairs(computed, *cf, Mb, Kb, zero_tol, rigid_tol);
-      }
-      if (!solved)
-        computed = arnoldi ? detail::sparse_state_eigen(Mb, Db, Kb, count, sigma)
-                           : detail::dense_state_eigen(Md, Dd, Kd, selection);
-      if (constant && computed.info.converged()) {
-        const std::lock_guard<std::mutex> lock(cache_->mutex);
-        cache_->parts.emplace(key, computed);
-      }
-      return computed;
-    };
-    detail::StateEigenpairs part;
-    if (arnoldi_block) {
-      // Past the largest block, a few modes first and more only while all of them lie
-      // below the cutoff: fewer wanted modes converge faster, and a block whose higher
-      // modes cluster (e.g. torsion between heavy disks) does not stall the iteration.
-      const bool first = &dofs == &blocks.front();
-      for (Index k = first ? wanted_b : std::min<Index>(wanted_b, 4);; k = std::min(wanted_b, 2 * k)) {
-        part = block_modes(k, true);
-        const bool beyond = part.values.size() > 0 && part.values.cwiseAbs().maxCoeff() > cutoff;
-        if (!part.info.converged() || k == wanted_b || beyond) break;
-      }
-      if (first) {
-        std::vector<Real> magnitudes;
-        for (const Complex& p : part.values)
-          if (!options_.oscillatory_only || p.imag() > 0.0) magnitudes.push_back(magnitude(p));
-        std::sort(magnitudes.begin(), magnitudes.end());
-        if (static_cast<Index>(magnitudes.size()) >= wanted) cutoff = magnitudes[static_cast<std::size_t>(wanted - 1)];
-      }
-    } else {
-      part = block_modes(wanted, false);
-    }
-    if (&dofs == &blocks.front() || method_rank(part.info.method) > method_rank(pairs.info.method))
-      pairs.info.method = part.info.method;
-    pairs.info.iterations += part.info.iterations;
-    pairs.info.n_converged += part.info.n_converged;
-    if (!part.info.converged() && pairs.info.converged()) {
-      pairs.info.fail(part.info.status, part.info.message);
-    }
-    const Index m0 = pairs.values.size(), m = part.values.size();
-    pairs.values.conservativeResize(m0 + m);
-    pairs.values.tail(m) = part.values;
-    pairs.vectors.conservativeResize(n, m0 + m);
-    pairs.vectors.rightCols(m).setZero();
-    for (Index i = 0; i < nb; ++i) pairs.vectors.row(dofs[static_cast<std::size_t>(i)]).tail(m) = part.vectors.row(i);
-  }
+  detail::StateEigenpairs pairs = eigenpairs(sys.M, D, K, result.complex_form);
   result.info = pairs.info;
   if (!pairs.values.allFinite() || !pairs.vectors.allFinite()) {
     // Overflow in the matrices or the solve: no mode is to be trusted.
@@ -696,11 +587,157 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
                                  rad_to_hz(speed)));
     return result;
   }
-  result.complex_form = any_complex;
   split_repeated(pairs.values, pairs.vectors, assembler_->dof_map());
+  add_modes(pairs, sys, result);
+  keep_lowest(result);
+  return result;
+}
 
-  const SparseMatrix& T = assembler_->dof_map().transformation();
+detail::StateEigenpairs ModalSolver::eigenpairs(const SparseMatrix& M, const SparseMatrix& D, const SparseMatrix& K,
+                                                bool& any_complex) const {
+  // Each decoupled block on its own; the lowest modes of the whole are among the
+  // lowest `wanted` of each block. The largest block goes first: its `wanted`-th
+  // lowest |p| is the cutoff the other blocks' modes must beat to count.
+  const Index n = M.rows();
+  detail::StateEigenpairs pairs;
+  pairs.info.method = SolverMethod::dense_qr;
+  pairs.vectors = ComplexMatrix::Zero(n, 0);
+  std::vector<Index> local(static_cast<std::size_t>(n), -1);
+  std::vector<std::vector<Index>> blocks = decoupled_blocks(M, D, K);
+  std::stable_sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  Real cutoff = std::numeric_limits<Real>::infinity();
+  any_complex = false;
+  for (const std::vector<Index>& dofs : blocks) {
+    const Block b = block(dofs, local, M, D, K);
+    any_complex = any_complex || b.cf.has_value();
+    const bool first = &dofs == &blocks.front();
+    const detail::StateEigenpairs part =
+        b.arnoldi ? lowest_by_arnoldi(b, first, cutoff) : block_modes(b, b.wanted, false);
+    if (first || method_rank(part.info.method) > method_rank(pairs.info.method)) pairs.info.method = part.info.method;
+    pairs.info.iterations += part.info.iterations;
+    pairs.info.n_converged += part.info.n_converged;
+    if (!part.info.converged() && pairs.info.converged()) pairs.info.fail(part.info.status, part.info.message);
+    const Index m0 = pairs.values.size(), m = part.values.size(), nb = static_cast<Index>(dofs.size());
+    pairs.values.conservativeResize(m0 + m);
+    pairs.values.tail(m) = part.values;
+    pairs.vectors.conservativeResize(n, m0 + m);
+    pairs.vectors.rightCols(m).setZero();
+    for (Index i = 0; i < nb; ++i) pairs.vectors.row(dofs[static_cast<std::size_t>(i)]).tail(m) = part.vectors.row(i);
+  }
+  return pairs;
+}
 
+ModalSolver::Block ModalSolver::block(const std::vector<Index>& dofs, std::vector<Index>& local, const SparseMatrix& M,
+                                      const SparseMatrix& D, const SparseMatrix& K) const {
+  const auto nb = static_cast<Index>(dofs.size());
+  for (Index i = 0; i < nb; ++i) local[static_cast<std::size_t>(dofs[static_cast<std::size_t>(i)])] = i;
+  Block b(dofs, submatrix(M, dofs, local), submatrix(D, dofs, local), submatrix(K, dofs, local));
+  const Choice choice = this->choice();
+  b.wanted = std::min(wanted(), nb - 1);
+  // Arnoldi pays only when its subspace is smaller than the block's state space;
+  // the automatic choice takes it where the cost model expects it to be cheaper.
+  b.arnoldi = choice != Choice::dense && b.wanted > 0 && detail::arnoldi_subspace_size(nb, b.wanted) < 2 * nb;
+  const bool sparse_form = b.arnoldi && options_.complex_form;  // tried on the sparse matrices
+  if (sparse_form) b.cf = complex_form(dofs, local, twin_, b.M, b.D, b.K);
+  if (b.arnoldi && choice == Choice::by_cost) {
+    const detail::BlockForm form{b.cf.has_value(),
+                                 options_.hermitian_form && symmetric(b.D, -1.0) && symmetric(b.K, 1.0)};
+    b.arnoldi = detail::arnoldi_cheaper(nb, b.wanted, form);
+  }
+  if (!b.arnoldi) {
+    b.Md = b.M;
+    b.Dd = b.D;
+    b.Kd = b.K;
+    if (b.cf) {
+      b.cf->Md = ComplexMatrix(b.cf->M);
+      b.cf->Dd = ComplexMatrix(b.cf->D);
+      b.cf->Kd = ComplexMatrix(b.cf->K);
+    } else if (options_.complex_form && !sparse_form) {
+      b.cf = dense_complex_form(dofs, local, twin_, b.Md, b.Dd, b.Kd);
+    }
+  }
+  for (Index d : dofs) local[static_cast<std::size_t>(d)] = -1;
+  b.constant =
+      std::none_of(dofs.begin(), dofs.end(), [&](Index d) { return speed_touched_[static_cast<std::size_t>(d)] != 0; });
+  return b;
+}
+
+detail::StateEigenpairs ModalSolver::lowest_by_arnoldi(const Block& b, bool first, Real& cutoff) const {
+  // Past the largest block, a few modes first and more only while all of them lie
+  // below the cutoff: fewer wanted modes converge faster, and a block whose higher
+  // modes cluster (e.g. torsion between heavy disks) does not stall the iteration.
+  detail::StateEigenpairs part;
+  for (Index k = first ? b.wanted : std::min<Index>(b.wanted, 4);; k = std::min(b.wanted, 2 * k)) {
+    part = block_modes(b, k, true);
+    const bool beyond = part.values.size() > 0 && part.values.cwiseAbs().maxCoeff() > cutoff;
+    if (!part.info.converged() || k == b.wanted || beyond) break;
+  }
+  if (first) {
+    std::vector<Real> magnitudes;
+    for (const Complex& p : part.values)
+      if (!options_.oscillatory_only || p.imag() > 0.0) magnitudes.push_back(magnitude(p));
+    std::sort(magnitudes.begin(), magnitudes.end());
+    const Index all = wanted();
+    if (static_cast<Index>(magnitudes.size()) >= all) cutoff = magnitudes[static_cast<std::size_t>(all - 1)];
+  }
+  return part;
+}
+
+detail::StateEigenpairs ModalSolver::block_modes(const Block& b, Index count, bool arnoldi) const {
+  const auto key = std::make_tuple(b.dofs.front(), static_cast<Index>(b.dofs.size()), count, arnoldi);
+  if (b.constant) {
+    const std::lock_guard<std::mutex> lock(cache_->mutex);
+    const auto it = cache_->parts.find(key);
+    if (it != cache_->parts.end()) return it->second;
+  }
+  const Real zero_tol = this->zero_tol(), rigid_tol = tolerance::rigid_body * lambda_max_;
+  // Automatic shift: just below zero, so that rigid-body modes (p = 0) do not make
+  // K + σD + σ²M singular, yet close enough to find the lowest modes first.
+  const Real sigma = std::isnan(options_.shift) ? -std::max(1.0, 1e-6 * std::sqrt(lambda_max_)) : options_.shift;
+  const std::optional<detail::ComplexForm>& cf = b.cf;
+  detail::StateEigenpairs computed;
+  bool solved = false;
+  const detail::DenseSelection selection{count, options_.oscillatory_only, zero_tol};
+  if (!arnoldi && options_.hermitian_form) {
+    // An undamped gyroscopic block: the Hermitian-definite form (either form of
+    // coordinates); the general QR when it does not apply.
+    const std::optional<detail::StateEigenpairs> h =
+        cf ? detail::dense_gyroscopic_eigen(cf->Md, cf->Dd, cf->Kd, selection, true)
+           : detail::dense_gyroscopic_eigen(b.Md.cast<Complex>(), b.Dd.cast<Complex>(), b.Kd.cast<Complex>(), selection,
+                                            false);
+    if (h) {
+      computed = cf ? real_pairs(*h, *cf, b.M, b.K, zero_tol, rigid_tol) : *h;
+      solved = true;
+    }
+  }
+  if (arnoldi && !cf && options_.hermitian_form) {
+    // No damping or gyroscopic terms (axial, torsional, bending at rest):
+    // symmetric Lanczos on a problem of half the state order.
+    if (std::optional<detail::StateEigenpairs> u = detail::sparse_undamped_eigen(b.M, b.D, b.K, count, sigma)) {
+      computed = std::move(*u);
+      solved = true;
+    }
+  }
+  if (!solved && cf) {
+    // Forward/backward complex coordinates: half the order (the real form if it fails).
+    computed = arnoldi ? detail::sparse_complex_eigen(cf->M, cf->D, cf->K, count, sigma)
+                       : detail::dense_complex_eigen(cf->Md, cf->Dd, cf->Kd, selection);
+    solved = computed.info.converged();
+    if (solved) computed = real_pairs(computed, *cf, b.M, b.K, zero_tol, rigid_tol);
+  }
+  if (!solved)
+    computed = arnoldi ? detail::sparse_state_eigen(b.M, b.D, b.K, count, sigma)
+                       : detail::dense_state_eigen(b.Md, b.Dd, b.Kd, selection);
+  if (b.constant && computed.info.converged()) {
+    const std::lock_guard<std::mutex> lock(cache_->mutex);
+    cache_->parts.emplace(key, computed);
+  }
+  return computed;
+}
+
+void ModalSolver::add_modes(const detail::StateEigenpairs& pairs, const SystemMatrices& sys,
+                            ModalResult& result) const {
+  const Real rigid_tol = tolerance::rigid_body * lambda_max_, zero_tol = this->zero_tol();
   // A free rigid-body motion is a double zero eigenvalue of the state matrix (a Jordan
   // block): a solver of the state problem may return it twice as a real zero with the
   // same shape. It is one mode; these are the M-weighted shapes of the real rigid-body
@@ -712,7 +749,6 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
     rigid_shapes.emplace_back(Mphi, kinetic);
     return false;
   };
-
   for (Index j = 0; j < pairs.values.size(); ++j) {
     Mode mode;
     const ComplexVector phi = pairs.vectors.col(j);
@@ -734,45 +770,49 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
     // A zero eigenvalue (rigid-body motion) has no damping ratio.
     mode.damping_ratio = magnitude(p) > 0 ? -p.real() / magnitude(p) : std::numeric_limits<Real>::quiet_NaN();
     if (mode.oscillatory) mode.log_decrement = 2.0 * pi * (-p.real()) / p.imag();
-
-    Real fam[3] = {0, 0, 0};
-    for (Index i = 0; i < n; ++i)
-      fam[family_of(assembler_->dof_map().full_dof(i))] += (std::conj(phi(i)) * Mphi(i)).real();
-    const Real total = fam[0] + fam[1] + fam[2];
-    const int dominant = static_cast<int>(std::max_element(fam, fam + 3) - fam);
-    // A family holding 80 % of the kinetic energy names the mode.
-    mode.type = total > 0 && fam[dominant] < 0.8 * total ? ModeType::coupled
-                : dominant == 0                          ? ModeType::lateral
-                : dominant == 1                          ? ModeType::axial
-                                                         : ModeType::torsional;
-
     if (options_.oscillatory_only && !mode.oscillatory) {
       if (!mode.rigid_body && p.imag() == 0.0 && p.real() > result.divergence) result.divergence = p.real();
       continue;
     }
-    const ComplexVector full = times(T, phi);
-    const WhirlResult whirl = classify_whirl(full);
-    mode.whirl = whirl.whirl;
-    mode.directivity = whirl.directivity;
-    if (mode.type == ModeType::axial || mode.type == ModeType::torsional) {
-      mode.whirl = Whirl::none;
-      mode.directivity = std::numeric_limits<Real>::quiet_NaN();
-    } else {
-      const ShapeResult shape = classify_shape(full, rotor_nodes_);
-      mode.bending = shape.bending;
-      mode.shape_kind = shape.kind;
-    }
-    mode.reduced_shape = phi;
-    if (options_.shapes) mode.shape = normalise(full, mode.type);
+    describe(mode, phi, Mphi);
     result.modes.push_back(std::move(mode));
   }
+}
 
+void ModalSolver::describe(Mode& mode, const ComplexVector& phi, const ComplexVector& Mphi) const {
+  const DofMap& map = assembler_->dof_map();
+  Real fam[3] = {0, 0, 0};
+  for (Index i = 0; i < phi.size(); ++i) fam[family_of(map.full_dof(i))] += (std::conj(phi(i)) * Mphi(i)).real();
+  const Real total = fam[0] + fam[1] + fam[2];
+  const int dominant = static_cast<int>(std::max_element(fam, fam + 3) - fam);
+  // A family holding 80 % of the kinetic energy names the mode.
+  mode.type = total > 0 && fam[dominant] < 0.8 * total ? ModeType::coupled
+              : dominant == 0                          ? ModeType::lateral
+              : dominant == 1                          ? ModeType::axial
+                                                       : ModeType::torsional;
+  const ComplexVector full = times(map.transformation(), phi);
+  const WhirlResult whirl = classify_whirl(full);
+  mode.whirl = whirl.whirl;
+  mode.directivity = whirl.directivity;
+  if (mode.type == ModeType::axial || mode.type == ModeType::torsional) {
+    mode.whirl = Whirl::none;
+    mode.directivity = std::numeric_limits<Real>::quiet_NaN();
+  } else {
+    const ShapeResult shape = classify_shape(full, rotor_nodes_);
+    mode.bending = shape.bending;
+    mode.shape_kind = shape.kind;
+  }
+  mode.reduced_shape = phi;
+  if (options_.shapes) mode.shape = normalise(full, mode.type);
+}
+
+void ModalSolver::keep_lowest(ModalResult& result) const {
   // The lowest modes are those nearest the origin of the complex plane: sorting by
   // |p| keeps heavily overdamped modes (p far out on the negative real axis, with a
   // small imaginary part under rotating damping) from displacing the physical ones.
   auto by_magnitude = [](const Mode& a, const Mode& b) { return abs2(a.eigenvalue) < abs2(b.eigenvalue); };
   std::stable_sort(result.modes.begin(), result.modes.end(), by_magnitude);
-  const Index limit = options_.n_modes > 0 ? options_.n_modes : choice != Choice::dense ? 12 : 0;
+  const Index limit = wanted();
   if (limit > 0 && static_cast<Index>(result.modes.size()) > limit) {
     auto keep = static_cast<std::size_t>(limit);
     // Keep a repeated pair whole (isotropic rotors at rest), as split_repeated does.
@@ -784,7 +824,6 @@ ModalResult ModalSolver::solve_at(Real speed, std::optional<Real> frequency) con
   }
   std::stable_sort(result.modes.begin(), result.modes.end(),
                    [](const Mode& a, const Mode& b) { return a.frequency_hz < b.frequency_hz; });
-  return result;
 }
 
 Real mac(const ComplexVector& a, const ComplexVector& b) {

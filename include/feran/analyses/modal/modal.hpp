@@ -18,6 +18,10 @@
 
 namespace feran {
 
+namespace detail {
+struct StateEigenpairs;
+}  // namespace detail
+
 /// How a mode's nodes whirl in the y–z plane (spin is about +x).
 enum class Whirl {
   forward,   ///< every node's orbit turns with the spin
@@ -172,6 +176,24 @@ class ModalSolver {
   ModalResult solve_at(Real speed, std::optional<Real> frequency) const;
   /// The modes each at its own frequency (frequency-dependent coefficients).
   ModalResult solve_self_consistent(Real speed) const;
+  // The steps of solve_at (modal.cpp).
+  struct Block;  // one decoupled block of (M, D, K)
+  /// The eigenpairs of every decoupled block, in vectors over all reduced DOFs.
+  detail::StateEigenpairs eigenpairs(const SparseMatrix& M, const SparseMatrix& D, const SparseMatrix& K,
+                                     bool& any_complex) const;
+  Block block(const std::vector<Index>& dofs, std::vector<Index>& local, const SparseMatrix& M, const SparseMatrix& D,
+              const SparseMatrix& K) const;
+  /// A block's lowest modes by Arnoldi; the first (largest) block sets @p cutoff.
+  detail::StateEigenpairs lowest_by_arnoldi(const Block& b, bool first, Real& cutoff) const;
+  /// A block's lowest @p count modes by the solver that applies, cached when constant.
+  detail::StateEigenpairs block_modes(const Block& b, Index count, bool arnoldi) const;
+  /// The modes of the eigenpairs: rigid-body zeros once, divergence, type, whirl, shape.
+  void add_modes(const detail::StateEigenpairs& pairs, const SystemMatrices& sys, ModalResult& result) const;
+  void describe(Mode& mode, const ComplexVector& phi, const ComplexVector& Mphi) const;
+  /// The lowest modes by |p| (a repeated pair kept whole), listed by frequency.
+  void keep_lowest(ModalResult& result) const;
+  Real zero_tol() const;  // |p| below which an eigenvalue is zero
+  Index wanted() const;   // modes wanted (12 by default unless the dense solver gives all)
 
   ModalOptions options_;
   std::shared_ptr<const Model> linear_;  // linearised(model) with supports, else null
