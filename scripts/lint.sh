@@ -74,7 +74,7 @@ check "clang-tidy, the library and the program" tidy
 mapfile -t py < <(git ls-files '*.py')
 check "flake8, ${#py[@]} files" flake8 "${py[@]}"
 
-check "eslint, the report's script and the browser tests" node_modules/.bin/eslint src/io/report tests/browser
+check "eslint, the report's script and the browser tests" node_modules/.bin/eslint src/io/report src/analyses src/study tests/browser
 
 no_casts() {  # the casts outside tests, other than target<>'s own definitions
   local found

@@ -5,7 +5,7 @@ matplotlib Figure; pass ``ax=`` to draw into axes of your own (the figure of tho
 axes is returned). Speeds and frequencies are shown in Hz unless ``unit="rpm"``.
 Nothing is computed here that the library has not computed, except what a figure
 itself is made of: the points of an orbit over one period, and the spectra of a
-waterfall (numpy FFTs of a run-up's samples).
+waterfall (the spectra of a run-up's samples, RunupResult.waterfall).
 
     import feran, feran.plot
     model = feran.read_model("examples/01_internal_damping/model.toml")
@@ -404,21 +404,12 @@ def waterfall_spectra(result, probe=0, dof="v", window=None, overlap=0.5):
     of ``window`` seconds (default: a twentieth of the run), each with a Hann window
     and its mean removed; returns (speed at each window's middle [rad/s],
     frequencies [Hz], amplitude spectra, shape (windows, frequencies), in the DOF's
-    unit as the amplitude of a sine)."""
+    unit as the amplitude of a sine). The result's own ``waterfall()``, which the
+    report draws too."""
     i = result.probes.index(probe) if isinstance(probe, str) else int(probe)
-    t, q = result.time, result.displacement[i, :, _dof(dof)]
-    if len(t) < 8:
+    if len(result.time) < 8:
         raise ValueError("the run-up has too few samples for a waterfall")
-    dt = float(np.median(np.diff(t)))
-    n = int(round((window if window else (t[-1] - t[0]) / 20) / dt))
-    n = max(8, min(n, len(t)))
-    hop = max(1, int(n * (1 - overlap)))
-    taper = np.hanning(n)
-    starts = range(0, len(t) - n + 1, hop)
-    spectra = np.array([np.abs(np.fft.rfft((q[s:s + n] - q[s:s + n].mean()) * taper)) * 2 / taper.sum()
-                        for s in starts])
-    middle = np.array([result.speed[s + n // 2] for s in starts])
-    return middle, np.fft.rfftfreq(n, dt), spectra
+    return result.waterfall(i, _dof(dof), window, overlap)
 
 
 def waterfall(result, probe=0, dof="v", window=None, unit="Hz", orders=(1,), fmax=None, ax=None):

@@ -149,6 +149,20 @@ def test_runup_envelope_and_waterfall(model):
     peak = freqs[np.argmax(spectra[-1])]
     assert peak == pytest.approx(20.0, abs=freqs[1])
     np.testing.assert_allclose(speeds, 2 * np.pi * 20)
+    # The result's waterfall (C++, the report's definition) is numpy's: the windows'
+    # Hann-tapered, mean-removed rfft scaled by 2/sum(taper), to round-off (1e-12 of
+    # the largest amplitude: FFTs of a few hundred points in a different order).
+    t, q = u.time, u.displacement[0, :, 1]
+    n = int(round(0.1 / float(np.median(np.diff(t)))))
+    taper = np.hanning(n)
+    starts = range(0, len(t) - n + 1, max(1, int(n * 0.5)))
+    expected = np.array([np.abs(np.fft.rfft((q[s:s + n] - q[s:s + n].mean()) * taper)) * 2 / taper.sum()
+                         for s in starts])
+    speeds, freqs, spectra = feran.plot.waterfall_spectra(u, window=0.1)
+    assert spectra.shape == expected.shape
+    np.testing.assert_allclose(spectra, expected, rtol=0, atol=1e-12 * expected.max())
+    np.testing.assert_allclose(freqs, np.fft.rfftfreq(n, float(np.median(np.diff(t)))), rtol=1e-14)
+    np.testing.assert_array_equal(speeds, [u.speed[s + n // 2] for s in starts])
     fig = feran.plot.waterfall(u, window=0.1, fmax=100)
     assert len(lines(fig, "spectrum")) == spectra_count(u, 0.1)
     assert len(lines(fig, "order 1")) == 1

@@ -17,6 +17,7 @@
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/runup/analysis.hpp>
+#include <feran/analyses/runup/waterfall.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/transient/transient_analysis.hpp>
@@ -427,12 +428,35 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
     section(
         data, "runup",
         [&] {
-          return json::parse(RunupAnalysis::json(run_analysis<RunupAnalysis>(
-              unowned, {}, file_key_name<RunupAnalysis>(), RunContext{.stop = options.stop})));
+          const Outcome<RunupAnalysis> runup = run_analysis<RunupAnalysis>(unowned, {}, file_key_name<RunupAnalysis>(),
+                                                                           RunContext{.stop = options.stop});
+          json j = json::parse(RunupAnalysis::json(runup));
+          // The waterfall of the first probe's v, as feran.plot draws it.
+          if (runup.result.samples.size() >= 8 && !runup.options.probes.empty()) {
+            const Waterfall w = waterfall(runup.result, 0, Dof::v);
+            json rows = json::array();
+            for (Index i = 0; i < w.amplitude.rows(); ++i)
+              rows.push_back(std::vector<Real>(w.amplitude.row(i).begin(), w.amplitude.row(i).end()));
+            std::vector<Real> speeds_hz;
+            for (const Real speed : w.speeds) speeds_hz.push_back(rad_to_hz(speed));
+            j["waterfall"] = {{"probe", 0},
+                              {"dof", "v"},
+                              {"speeds_hz", speeds_hz},
+                              {"frequencies_hz", w.frequencies},
+                              {"amplitude_m", rows}};
+          }
+          return j;
         },
         options.stop);
 
   if (!options.study_directory.empty()) data["study"] = study_results(options.study_directory);
+
+  // The sections computed, in the report's order: the script draws each with its
+  // module (src/analyses/<name>/report.js, src/study/report.js).
+  json sections = json::array();
+  for (const char* key : {"campbell", "modes", "response", "static", "api684", "runup", "study"})
+    if (data.contains(key)) sections.push_back(key);
+  data["sections"] = sections;
 
   // Stopped on request: what was computed is shown, marked incomplete (an analysis
   // cut short keeps its results up to there; the sections after it are left out).

@@ -544,8 +544,10 @@ ModalResult ModalSolver::solve_self_consistent(Real speed) const {
 // One decoupled block of a solve: its matrices, the solver it takes and the forms that
 // solver needs.
 struct ModalSolver::Block {
-  Block(const std::vector<Index>& dofs_, SparseMatrix M_, SparseMatrix D_, SparseMatrix K_)
-      : dofs(dofs_), M(std::move(M_)), D(std::move(D_)), K(std::move(K_)) {}
+  // The submatrices of (M, D, K) on @p dofs_ (local: each DOF's index in the block).
+  Block(const std::vector<Index>& dofs_, const std::vector<Index>& local, const SparseMatrix& M_,
+        const SparseMatrix& D_, const SparseMatrix& K_)
+      : dofs(dofs_), M(submatrix(M_, dofs_, local)), D(submatrix(D_, dofs_, local)), K(submatrix(K_, dofs_, local)) {}
   const std::vector<Index>& dofs;  // its reduced DOFs
   SparseMatrix M, D, K;
   Matrix Md, Dd, Kd;                      // dense copies, for the dense solvers
@@ -631,7 +633,7 @@ ModalSolver::Block ModalSolver::block(const std::vector<Index>& dofs, std::vecto
                                       const SparseMatrix& D, const SparseMatrix& K) const {
   const auto nb = static_cast<Index>(dofs.size());
   for (Index i = 0; i < nb; ++i) local[static_cast<std::size_t>(dofs[static_cast<std::size_t>(i)])] = i;
-  Block b(dofs, submatrix(M, dofs, local), submatrix(D, dofs, local), submatrix(K, dofs, local));
+  Block b(dofs, local, M, D, K);
   const Choice choice = this->choice();
   b.wanted = std::min(wanted(), nb - 1);
   // Arnoldi pays only when its subspace is smaller than the block's state space;

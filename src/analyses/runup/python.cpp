@@ -1,11 +1,13 @@
 // The run-up's Python result: the samples as numpy arrays (probe × sample × DOF), the
 // |r| envelopes over speed and the integrator's work (analysis_binding.hpp binds
 // feran.runup and what every result has).
+#include <optional>
 #include <string>
 
 #include <pybind11/stl.h>
 
 #include <feran/analyses/runup/analysis.hpp>
+#include <feran/analyses/runup/waterfall.hpp>
 #include <feran/core/units.hpp>
 
 #include "analysis_binding.hpp"
@@ -129,6 +131,24 @@ void bind_result<RunupAnalysis>(py::class_<Outcome<RunupAnalysis>>& result) {
             return out;
           },
           "per probe: the largest |r| of the run [m], when [s] and at what speed [rad/s]")
+      .def(
+          "waterfall",
+          [](const PyRunupResult& r, std::size_t probe, int dof, std::optional<Real> window, Real overlap) {
+            if (dof < 0 || dof >= dofs_per_node) throw py::value_error("dof: expected 0 … 5 (u, v, w, rx, ry, rz)");
+            const Waterfall w = waterfall(r.result, probe, static_cast<Dof>(dof), window, overlap);
+            return py::make_tuple(
+                array_1d(w.speeds.size(), [&](std::size_t k) { return w.speeds[k]; }),
+                array_1d(w.frequencies.size(), [&](std::size_t k) { return w.frequencies[k]; }),
+                array_2d(static_cast<std::size_t>(w.amplitude.rows()), static_cast<std::size_t>(w.amplitude.cols()),
+                         [&](std::size_t i, std::size_t k) {
+                           return w.amplitude(static_cast<Index>(i), static_cast<Index>(k));
+                         }));
+          },
+          py::arg("probe") = 0, py::arg("dof") = 1, py::arg("window") = py::none(), py::arg("overlap") = 0.5,
+          "the waterfall of DOF dof (0 … 5: u, v, w, rx, ry, rz) of a probe (its index): windows of window\n"
+          "seconds (default a twentieth of the run) overlapping by overlap, each with its mean removed and a\n"
+          "Hann taper; returns (speed at each window's middle [rad/s], frequencies [Hz], amplitudes of shape\n"
+          "(windows, frequencies) as the amplitude of a sine in the DOF's unit) — the report's definition")
       .def_property_readonly("t_end", [](const PyRunupResult& r) { return r.result.t_end; })
       .def_property_readonly("steps", [](const PyRunupResult& r) { return r.result.steps; })
       .def_property_readonly("rejected", [](const PyRunupResult& r) { return r.result.rejected; })
