@@ -11,7 +11,7 @@
 #include <feran/core/parallel.hpp>
 #include <feran/analyses/response/harmonic_response.hpp>
 #include <feran/analyses/modal/modal.hpp>
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/analyses/transient/rotor_system.hpp>
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/banded_lu.hpp>

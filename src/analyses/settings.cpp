@@ -10,7 +10,7 @@
 
 #include <feran/analyses/static/analysis.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/suggestions.hpp>
 #include <feran/core/units.hpp>

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
 #include <feran/spec/fields.hpp>

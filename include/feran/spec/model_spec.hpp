@@ -281,7 +281,7 @@ struct RunupSpec {
   std::optional<bool> static_loads;  ///< apply the [[static_loads]] as constant forces
   std::optional<std::string> start;  ///< "rest", "equilibrium" or "steady"
   std::optional<bool> drive;         ///< torque-driven by [drive] from the profile's first speed
-  // The integrators' settings (analyses/transient/integrator.hpp, IntegratorSettings).
+  // The integrators' settings (integrators/integrator.hpp, IntegratorSettings).
   std::optional<Real> newton_tol;
   std::optional<int> newton_max_iter;
   std::optional<bool> allow_unstable;    ///< rk3: warn instead of refusing a step above its limit

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include <feran/analyses/settings.hpp>
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/core/error.hpp>
 #include <feran/core/units.hpp>
 #include <feran/io/node_reference.hpp>

@@ -8,7 +8,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
-#include <feran/analyses/transient/second_order_system.hpp>
+#include <feran/integrators/second_order_system.hpp>
 
 namespace feran {
 

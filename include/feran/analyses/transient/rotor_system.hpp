@@ -10,7 +10,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
-#include <feran/analyses/transient/second_order_system.hpp>
+#include <feran/integrators/second_order_system.hpp>
 #include <feran/analyses/transient/speed_profile.hpp>
 #include <feran/core/banded_lu.hpp>
 #include <feran/assembly/assembler.hpp>

@@ -10,7 +10,7 @@
 
 #include <feran/analyses/modal/modal.hpp>
 #include <feran/analyses/common/operating_state.hpp>
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/analyses/transient/speed_profile.hpp>
 #include <feran/assembly/assembler.hpp>
 #include <feran/core/stop.hpp>

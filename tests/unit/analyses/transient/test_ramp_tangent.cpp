@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include <feran/analyses/transient/newmark.hpp>
+#include <feran/integrators/newmark.hpp>
 #include <feran/analyses/transient/rotor_system.hpp>
 
 #include "test_models.hpp"

@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
-#include <feran/analyses/transient/integrator.hpp>
-#include <feran/analyses/transient/newmark.hpp>
-#include <feran/analyses/transient/rk3.hpp>
-#include <feran/analyses/transient/w_method.hpp>
+#include <feran/integrators/integrator.hpp>
+#include <feran/integrators/newmark.hpp>
+#include <feran/integrators/rk3.hpp>
+#include <feran/integrators/w_method.hpp>
 #include <feran/core/error.hpp>
 
 namespace feran {

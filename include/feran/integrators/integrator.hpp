@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include <feran/analyses/transient/second_order_system.hpp>
+#include <feran/integrators/second_order_system.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran {

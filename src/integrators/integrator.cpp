@@ -1,4 +1,4 @@
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include <feran/analyses/transient/newmark.hpp>
+#include <feran/integrators/newmark.hpp>
 
 #include <cmath>
 #include <limits>

@@ -1,7 +1,7 @@
 // make_integrator: integrators by name.
 #include <gtest/gtest.h>
 
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/core/error.hpp>
 
 namespace feran {

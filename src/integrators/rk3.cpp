@@ -1,4 +1,4 @@
-#include <feran/analyses/transient/rk3.hpp>
+#include <feran/integrators/rk3.hpp>
 
 #include <cmath>
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran {

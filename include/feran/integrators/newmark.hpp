@@ -5,7 +5,7 @@
 
 #include <string_view>
 
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran {

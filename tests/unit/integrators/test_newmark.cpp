@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include <feran/analyses/transient/newmark.hpp>
+#include <feran/integrators/newmark.hpp>
 #include <feran/core/error.hpp>
 
 #include "test_systems.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include <feran/analyses/transient/integrator.hpp>
+#include <feran/integrators/integrator.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran {

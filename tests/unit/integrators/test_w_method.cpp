@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include <feran/analyses/transient/w_method.hpp>
+#include <feran/integrators/w_method.hpp>
 #include <feran/core/error.hpp>
 
 #include "test_systems.hpp"

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include <feran/analyses/transient/rk3.hpp>
+#include <feran/integrators/rk3.hpp>
 #include <feran/core/error.hpp>
 
 #include "test_systems.hpp"

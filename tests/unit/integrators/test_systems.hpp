@@ -14,9 +14,9 @@
 
 #include <Eigen/Dense>
 
-#include <feran/analyses/transient/integrator.hpp>
-#include <feran/analyses/transient/rk3.hpp>
-#include <feran/analyses/transient/second_order_system.hpp>
+#include <feran/integrators/integrator.hpp>
+#include <feran/integrators/rk3.hpp>
+#include <feran/integrators/second_order_system.hpp>
 #include <feran/core/types.hpp>
 
 namespace feran::test {

@@ -1,4 +1,4 @@
-#include <feran/analyses/transient/w_method.hpp>
+#include <feran/integrators/w_method.hpp>
 
 #include <algorithm>
 #include <cmath>
