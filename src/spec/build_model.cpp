@@ -1,33 +1,6 @@
 #include <feran/spec/build_model.hpp>
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <limits>
-#include <set>
-#include <unordered_map>
-#include <tuple>
-#include <utility>
-
-#include <fmt/format.h>
-
-#include <feran/assembly/assembler.hpp>
-#include <feran/assembly/checks.hpp>
-#include <feran/core/suggestions.hpp>
-#include <feran/core/units.hpp>
-#include <feran/elements/rigid_body.hpp>
-#include <feran/elements/rotating_damper.hpp>
-#include <feran/elements/spring_damper.hpp>
-#include <feran/elements/timoshenko_beam.hpp>
-#include <feran/forces/coulomb_friction.hpp>
-#include <feran/forces/fluid_film_bearing.hpp>
-#include <feran/forces/harmonic_force.hpp>
-#include <feran/forces/rolling_bearing.hpp>
-#include <feran/forces/static_load.hpp>
-#include <feran/forces/unbalance.hpp>
-#include <feran/spec/fields.hpp>
-
-#include <feran/spec/spec_path.hpp>
+#include "builder.hpp"
 
 namespace feran {
 
@@ -48,109 +21,7 @@ ModelError SpecSource::locate(const SpecError& error) const {
   return ModelError(locate(error.path()), error.message());
 }
 
-namespace {
-
-using detail::all_digits;
-using detail::closest_match;
-using detail::join_list;
-using detail::number_ranges;
-using spec::Bound;
-using spec::child;
-using spec::element;
-
-constexpr std::string_view ground_word = "ground";
-constexpr std::string_view axis_word = "axis";
-
-/// The label of the @p i-th entry of a list: its name, or "<kind> <i+1>" without one.
-std::string entry_label(const std::string& name, std::string_view kind, std::size_t i) {
-  return name.empty() ? fmt::format("{} {}", kind, i + 1) : name;
-}
-
-/// Builds one Model from one spec; every check throws SpecError.
-class Builder {
- public:
-  Builder(const ModelSpec& spec, const SpecSource* source) : spec_(spec), source_(source) {}
-
-  Model build(BuildInfo* info);
-
- private:
-  [[noreturn]] void fail(const std::string& path, const std::string& message) const { throw SpecError(path, message); }
-  /// How messages name the place of @p path: "line 4, column 8", or the path itself.
-  std::string place(const std::string& path) const;
-  /// A quantity as written at @p path, else formatted in @p unit.
-  std::string shown(const std::string& path, Real si, Quantity kind, std::string_view unit = {}) const;
-  /// True when the reader saw @p path (always false for specs built in code).
-  bool given(const std::string& path) const { return source_ != nullptr && source_->places.count(path) != 0; }
-  /// True when @p a was written before @p b (always false without a source).
-  bool earlier(const std::string& a, const std::string& b) const;
-  std::string missing_key(std::string_view key, std::string_view table, std::string_view expected) const {
-    return fmt::format("missing key '{}' in {} (expected {})", key, table, expected);
-  }
-
-  template <class S>
-  void check_bounds(const S& entry, const std::string& path) const;
-  // A quantity's magnitude within physical_range() (and at least its smallest
-  // positive value where it must be positive).
-  void check_range(Real v, const std::string& at, std::string_view key, Quantity quantity, std::string_view unit,
-                   bool positive) const;
-  void check_coefficient(const SpeedCoefficient& c, const std::string& path, std::string_view key, Quantity kind,
-                         bool direct) const;
-  void check_choice(const std::string& value, const std::string& path, std::string_view key,
-                    std::span<const std::string_view> choices) const;
-
-  void build_options();
-  const Material& material(const std::string& name, const std::string& path) const;
-  void build_materials();
-  void check_node_name(const std::string& name, const std::string& path) const;
-  Index add_node(Node node, const std::string& defined_at, const std::string& name_at);
-  void build_shafts();
-  void build_nodes();
-  Index node(const NodeRef& ref, const std::string& path, std::string_view key, std::string_view special = {}) const;
-  std::optional<Index> other_node(const std::optional<NodeRef>& to, const std::string& path, std::string_view special,
-                                  Index from) const;
-  void require_rotating(Index index, const std::string& path, std::string_view reason) const;
-  void build_rigid_bodies();
-  void build_springs();
-  void build_rotating_dampers();
-  void build_friction();
-  void build_journal_bearings();
-  void build_rolling_bearings();
-  std::pair<Index, std::optional<Index>> bearing_nodes(const NodeRef& journal, const std::optional<NodeRef>& to,
-                                                       const std::string& path, std::string_view what) const;
-  void build_rigid_links();
-  void build_fixed();
-  void build_unbalances();
-  void build_forces();
-  void build_static_loads();
-  void build_drive();
-  void check_sweep(std::optional<Real> start, std::optional<Real> stop, const std::string& table) const;
-  /// The nodes of a list of references at @p path (key @p key), none twice.
-  std::vector<Index> distinct_nodes(const std::vector<NodeRef>& refs, const std::string& path,
-                                    std::string_view key) const;
-  void check_analysis_tables() const;
-  void check_response() const;
-  void check_static() const;
-  void check_runup() const;
-  void build_gravity();
-  void check_api684() const;
-  // Each of @p names is the name of one [[springs]] entry, none twice (at @p key[i]).
-  void check_spring_names(const std::vector<std::string>& names, const std::string& key) const;
-  void check_structure(BuildInfo* info);
-
-  const ModelSpec& spec_;
-  const SpecSource* source_;
-  Model model_;
-  BeamOptions beam_;  ///< [options] as shaft elements take them
-  std::vector<Material> materials_;
-  std::vector<std::string> node_paths_;       ///< per node: the table that defines it
-  std::vector<std::string> node_name_paths_;  ///< per node: where its name (or it) is
-  // The nodes by number and by name (so that registering n nodes is linear in n),
-  // and the highest number so far.
-  std::unordered_map<int, std::size_t> node_by_number_;
-  std::unordered_map<std::string, std::size_t> node_by_name_;
-  int highest_number_ = 0;
-  std::vector<std::string> unnamed_spring_labels_;
-};
+namespace builder {
 
 std::string Builder::place(const std::string& path) const {
   if (source_ == nullptr) return path;
@@ -189,64 +60,6 @@ void Builder::check_range(Real v, const std::string& at, std::string_view key, Q
   if (positive && v < range.smallest_positive)
     fail(at, fmt::format("'{}' is {}, below the physical range of {} (at least {})", key, shown(at, v, quantity, unit),
                          quantity_name(quantity), limit(range.smallest_positive)));
-}
-
-template <class S>
-void Builder::check_bounds(const S& entry, const std::string& path) const {
-  using Kind = Bound::Kind;
-  for (const spec::Field<S>& f : spec::fields_of<S>()) {
-    const std::string at = child(path, f.key);
-    const auto check_real = [&](Real v) {
-      const auto text = [&] {
-        return f.kind == spec::FieldKind::quantity ? shown(at, v, f.quantity, f.unit) : fmt::format("{}", v);
-      };
-      if (!std::isfinite(v)) fail(at, fmt::format("'{}' must be a finite number, got {}", f.key, v));
-      if (f.bound.kind == Kind::positive && !(v > 0.0))
-        fail(at, fmt::format("'{}' must be positive, got {}", f.key, text()));
-      if (f.bound.kind == Kind::non_negative && !(v >= 0.0))
-        fail(at, fmt::format("'{}' must not be negative, got {}", f.key, text()));
-      if (f.kind == spec::FieldKind::quantity)
-        check_range(v, at, f.key, f.quantity, f.unit, f.bound.kind == Kind::positive);
-    };
-    const auto check_integer = [&](std::int64_t v, const std::string& where, std::string_view name) {
-      if (f.bound.kind != Kind::at_least) return;
-      if (v < f.bound.minimum) fail(where, fmt::format("'{}' must be at least {}, got {}", name, f.bound.minimum, v));
-      if (v > f.bound.maximum) fail(where, fmt::format("'{}' must be at most {}, got {}", name, f.bound.maximum, v));
-    };
-    std::visit(
-        [&](auto member) {
-          using T = std::remove_cvref_t<decltype(entry.*member)>;
-          const T& value = entry.*member;
-          if constexpr (std::is_same_v<T, Real>) {
-            check_real(value);
-          } else if constexpr (std::is_same_v<T, std::optional<Real>>) {
-            if (value) check_real(*value);
-          } else if constexpr (std::is_same_v<T, int>) {
-            check_integer(value, at, f.key);
-          } else if constexpr (std::is_same_v<T, std::optional<int>> ||
-                               std::is_same_v<T, std::optional<std::int64_t>>) {
-            if (value) check_integer(*value, at, f.key);
-          } else if constexpr (std::is_same_v<T, std::vector<int>>) {
-            for (std::size_t i = 0; i < value.size(); ++i)
-              check_integer(value[i], element(at, i), fmt::format("{}[{}]", f.key, i));
-          } else if constexpr (std::is_same_v<T, std::optional<SpeedCoefficient>>) {
-            if (value) check_coefficient(*value, at, f.key, f.quantity, f.direct);
-          } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::optional<std::string>>) {
-            // A word of a table is checked like its command-line flag: one of the
-            // field's choices, listed in the message.
-            if (f.kind == spec::FieldKind::choice && !f.choices.empty()) {
-              const std::string* word = nullptr;
-              if constexpr (std::is_same_v<T, std::string>) {
-                if (!value.empty()) word = &value;
-              } else if (value) {
-                word = &*value;
-              }
-              if (word) check_choice(*word, at, f.key, f.choices);
-            }
-          }
-        },
-        f.member);
-  }
 }
 
 void Builder::check_coefficient(const SpeedCoefficient& c, const std::string& path, std::string_view key, Quantity kind,
@@ -709,86 +522,6 @@ void Builder::build_rigid_bodies() {
   }
 }
 
-void Builder::build_springs() {
-  for (std::size_t i = 0; i < spec_.springs.size(); ++i) {
-    const SpringSpec& s = spec_.springs[i];
-    const std::string path = element("springs", i);
-    const std::string label = entry_label(s.name, "spring", i);
-    const Index a = node(s.node, child(path, "node"), "node");
-    const std::optional<Index> b = other_node(s.to, path, ground_word, a);
-    check_bounds(s, path);
-
-    SpringDamperCoefficients c;
-    bool any = false;
-    const auto take = [&](const std::optional<SpeedCoefficient>& in, SpeedCoefficient& out) {
-      if (in) {
-        out = *in;
-        any = true;
-      }
-    };
-    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> k = {&s.kx,  &s.ky,  &s.kz,
-                                                                                 &s.krx, &s.kry, &s.krz};
-    const std::array<const std::optional<SpeedCoefficient>*, dofs_per_node> d = {&s.cx,  &s.cy,  &s.cz,
-                                                                                 &s.crx, &s.cry, &s.crz};
-    for (std::size_t j = 0; j < dofs_per_node; ++j) {
-      take(*k[j], c.k[j]);
-      take(*d[j], c.c[j]);
-    }
-    take(s.kyz, c.kyz);
-    take(s.kzy, c.kzy);
-    take(s.cyz, c.cyz);
-    take(s.czy, c.czy);
-    c.loss_factor = s.loss_factor;
-    if (!any)
-      fail(path, fmt::format("a spring needs at least one coefficient: kx, ky, kz, krx, kry, krz, "
-                             "kyz, kzy, cx, cy, cz, crx, cry, crz, cyz or czy{}",
-                             s.loss_factor != 0.0 || given(child(path, "loss_factor"))
-                                 ? " ('loss_factor' only scales the stiffness coefficients, it "
-                                   "is not one)"
-                                 : ""));
-    if (s.name.empty()) unnamed_spring_labels_.push_back(label);
-    model_.elements.emplace_back(SpringDamper(a, b, c), label);
-  }
-}
-
-void Builder::build_rotating_dampers() {
-  constexpr std::string_view reason = "a rotating damper acts between rotating parts";
-  for (std::size_t i = 0; i < spec_.rotating_dampers.size(); ++i) {
-    const RotatingDamperSpec& s = spec_.rotating_dampers[i];
-    const std::string path = element("rotating_dampers", i);
-    const std::string label = entry_label(s.name, "rotating damper", i);
-    const Index a = node(s.node, child(path, "node"), "node");
-    require_rotating(a, child(path, "node"), reason);
-    const std::optional<Index> b = other_node(s.to, path, axis_word, a);
-    if (b) require_rotating(*b, child(path, "to"), reason);
-    check_bounds(s, path);
-    if (s.ct == 0.0 && s.cr == 0.0 && s.cx == 0.0 && s.crx == 0.0)
-      fail(path, "a rotating damper needs at least one positive coefficient: ct, cr, cx or crx");
-    model_.elements.emplace_back(RotatingDamper(a, b, {s.ct, s.cr, s.cx, s.crx}), label);
-  }
-}
-
-void Builder::build_friction() {
-  constexpr std::string_view reason = "Coulomb friction acts between rotating parts";
-  for (std::size_t i = 0; i < spec_.friction.size(); ++i) {
-    const FrictionSpec& s = spec_.friction[i];
-    const std::string path = element("friction", i);
-    CoulombFriction f;
-    const std::string label = entry_label(s.name, "friction", i);
-    f.node_a = node(s.node, child(path, "node"), "node");
-    require_rotating(f.node_a, child(path, "node"), reason);
-    f.node_b = other_node(s.to, path, axis_word, f.node_a);
-    if (f.node_b) require_rotating(*f.node_b, child(path, "to"), reason);
-    check_bounds(s, path);
-    if (s.force == 0.0 && s.moment == 0.0) fail(path, "Coulomb friction needs a positive 'force' or 'moment'");
-    f.force_amplitude = s.force;
-    f.moment_amplitude = s.moment;
-    f.epsilon_t = s.epsilon_t;
-    f.epsilon_r = s.epsilon_r;
-    model_.forces.emplace_back(f, label);
-  }
-}
-
 // The journal (a rotating node) and the housing (a non-rotating node, or the ground)
 // of a bearing's entry at @p path.
 std::pair<Index, std::optional<Index>> Builder::bearing_nodes(const NodeRef& journal, const std::optional<NodeRef>& to,
@@ -801,88 +534,6 @@ std::pair<Index, std::optional<Index>> Builder::bearing_nodes(const NodeRef& jou
                                         "with rotating = false, or the ground)",
                                         what, model_.node_label(*b)));
   return {a, b};
-}
-
-void Builder::build_rolling_bearings() {
-  for (std::size_t i = 0; i < spec_.rolling_bearings.size(); ++i) {
-    const RollingBearingSpec& s = spec_.rolling_bearings[i];
-    const std::string path = element("rolling_bearings", i);
-    const std::string label = entry_label(s.name, "rolling bearing", i);
-    RollingBearing b;
-    std::tie(b.node_a, b.node_b) = bearing_nodes(s.node, s.to, path, "rolling bearing");
-    check_bounds(s, path);
-    check_choice(s.type, child(path, "type"), "type", spec::choices_of<RollingBearingSpec>("type"));
-    if (!(s.element_diameter < s.pitch_diameter))
-      fail(child(path, "element_diameter"),
-           fmt::format("the elements' diameter ({} m) must be smaller than the pitch diameter ({} m)",
-                       s.element_diameter, s.pitch_diameter));
-    if (!(s.contact_angle < 0.5 * pi))
-      fail(child(path, "contact_angle"),
-           fmt::format("the contact angle must be below 90°, got {:.6g}°", s.contact_angle * 180.0 / pi));
-    b.geometry = {.elements = s.elements,
-                  .element_diameter = s.element_diameter,
-                  .pitch_diameter = s.pitch_diameter,
-                  .contact_angle = s.contact_angle,
-                  .clearance = s.clearance,
-                  .hertz_constant = s.hertz_constant,
-                  .roller = s.type == "roller"};
-    model_.forces.emplace_back(b, label);
-  }
-}
-
-void Builder::build_journal_bearings() {
-  for (std::size_t i = 0; i < spec_.journal_bearings.size(); ++i) {
-    const JournalBearingSpec& s = spec_.journal_bearings[i];
-    const std::string path = element("journal_bearings", i);
-    const std::string label = entry_label(s.name, "journal bearing", i);
-    FluidFilmBearing b;
-    std::tie(b.node_a, b.node_b) = bearing_nodes(s.node, s.to, path, "journal bearing");
-    check_bounds(s, path);
-    if (!(s.clearance < 0.5 * s.diameter))
-      fail(child(path, "clearance"), fmt::format("the radial clearance ({} m) must be smaller than the journal's "
-                                                 "radius ({} m); it is usually about a thousandth of it",
-                                                 s.clearance, 0.5 * s.diameter));
-    b.geometry = {.diameter = s.diameter, .length = s.length, .clearance = s.clearance, .viscosity = s.viscosity};
-    check_choice(s.theory, child(path, "theory"), "theory", spec::choices_of<JournalBearingSpec>("theory"));
-    b.theory = s.theory == "long"     ? FilmTheory::long_bearing
-               : s.theory == "finite" ? FilmTheory::finite_length
-                                      : FilmTheory::short_bearing;
-    if (b.theory != FilmTheory::finite_length) {
-      for (const auto& [key, given] :
-           {std::pair{"cavitation", s.cavitation.has_value()},
-            std::pair{"circumferential_cells", s.circumferential_cells.has_value()},
-            std::pair{"axial_cells", s.axial_cells.has_value()}, std::pair{"evaluation", s.evaluation.has_value()}})
-        if (given)
-          fail(child(path, key), fmt::format("'{}' applies only to theory = \"finite\" (the {} bearing's closed "
-                                             "form has its own cavitation condition and no grid)",
-                                             key, s.theory));
-    }
-    if (s.cavitation) {
-      check_choice(*s.cavitation, child(path, "cavitation"), "cavitation",
-                   spec::choices_of<JournalBearingSpec>("cavitation"));
-      b.grid.cavitation = *s.cavitation == "gumbel" ? Cavitation::gumbel : Cavitation::reynolds;
-    }
-    if (s.circumferential_cells) b.grid.circumferential = *s.circumferential_cells;
-    if (s.axial_cells) b.grid.axial = *s.axial_cells;
-    if (s.evaluation) {
-      check_choice(*s.evaluation, child(path, "evaluation"), "evaluation",
-                   spec::choices_of<JournalBearingSpec>("evaluation"));
-      b.grid.evaluation = *s.evaluation == "exact"   ? FilmEvaluation::exact
-                          : *s.evaluation == "table" ? FilmEvaluation::table
-                                                     : FilmEvaluation::automatic;
-    }
-    // Each count within its bounds, their product bounded too: every force evaluation
-    // factorises the Reynolds equation on the whole grid.
-    constexpr long long max_cells = 250000;
-    const long long cells = static_cast<long long>(b.grid.circumferential) * b.grid.axial;
-    if (cells > max_cells)
-      fail(child(path, s.axial_cells ? "axial_cells" : "circumferential_cells"),
-           fmt::format("the film's grid of {} × {} = {} cells is too large: at most {} (each force evaluation "
-                       "solves the Reynolds equation on the whole grid; its time and memory grow faster than the "
-                       "count)",
-                       b.grid.circumferential, b.grid.axial, cells, max_cells));
-    model_.forces.emplace_back(b, label);
-  }
 }
 
 // ---------------------------------------------------------------------------------
@@ -1383,10 +1034,10 @@ Model Builder::build(BuildInfo* info) {
   return std::move(model_);
 }
 
-}  // namespace
+}  // namespace builder
 
 Model build_model(const ModelSpec& spec, const SpecSource* source, BuildInfo* info) {
-  return Builder(spec, source).build(info);
+  return builder::Builder(spec, source).build(info);
 }
 
 }  // namespace feran
