@@ -19,7 +19,7 @@ from ._feran import __version__  # noqa: F401 -- re-exported
 from .study import Study, read_study
 from ._arguments import explained as _explained
 
-from ._feran import _analysis_options
+from ._feran import _analysis_options, _model_tables
 
 # Every compiled function and Model method names a wrong argument in its TypeError.
 read_model, report = (_explained(f) for f in (read_model, report))
@@ -151,12 +151,15 @@ def _runup_frame(r):
 # keys are handed to the model reader as TOML, so they are checked by the same rules
 # as a file's; values are numbers in SI units or text with a unit ("210 GPa").
 
-_ENTRIES = {"material": "materials", "shaft": "shafts", "node": "nodes", "rigid_body": "rigid_bodies",
-            "spring": "springs", "rotating_damper": "rotating_dampers", "friction": "friction",
-            "journal_bearing": "journal_bearings", "rolling_bearing": "rolling_bearings",
-            "rigid_link": "rigid_links", "fixed": "fixed", "unbalance": "unbalances", "force": "forces",
-            "static_load": "static_loads"}
-_TABLES = ("options", "modal", "campbell", "response", "static", "runup", "api684")
+def _entry_word(table):
+    """The name of one entry of an array of tables: rigid_bodies → rigid_body, springs → spring,
+    friction and fixed as they are."""
+    return table[:-3] + "y" if table.endswith("ies") else table[:-1] if table.endswith("s") else table
+
+
+# The model file's tables, from the library's one list of them.
+_ENTRIES = {_entry_word(key): key for key, array, _ in _model_tables() if array}
+_TABLES = tuple(key for key, array, _ in _model_tables() if not array)
 
 
 def _call_name(method, keys):
@@ -181,8 +184,9 @@ for _entry, _table in _ENTRIES.items():
 
 
 def _set_table(self, table, **keys):
-    """Sets the single table [options], [modal], [campbell], [response], [static],
-    [runup] or [api684] to these keys (those not given take their defaults); returns the model."""
+    """Sets a single table ([options], [modal], [campbell], [response], [static], [runup],
+    [api684], [drive]: feran._TABLES) to these keys (those not given take their defaults);
+    returns the model."""
     if table not in _TABLES:
         raise Error(f"set_table({table!r}): expected one of {', '.join(_TABLES)}")
     call = f"set_table({table!r})"

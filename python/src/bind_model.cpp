@@ -266,6 +266,18 @@ void bind_model(py::module_& m) {
   m.def(
       "_speed", [](const py::object& value) { return speed_argument(value, "speed"); }, py::arg("value"),
       "A speed as the analyses take it ('30 Hz', '1800 rpm', or a number in rad/s), in rad/s");
+  m.def(
+      "_model_tables",
+      [] {
+        py::list out;
+        const ModelSpec spec;
+        spec::visit_tables(spec, [&](std::string_view key, spec::TableForm form, std::string_view doc, const auto&) {
+          out.append(py::make_tuple(std::string(key), form == spec::TableForm::array_of_tables, std::string(doc)));
+        });
+        return out;
+      },
+      "The tables of a model file in file order, as (key, is an array of tables, doc): the one list\n"
+      "(spec::visit_tables) the package's add_<entry> and set_table are made from");
   m.def("read_model", &read, py::arg("path_or_text"),
         "Reads and checks a model from a file path or from TOML text (docs/model-format.md).\n"
         "Raises feran.ModelError with file, line, column and message.");
