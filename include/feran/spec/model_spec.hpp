@@ -19,12 +19,21 @@
 
 #include <feran/core/types.hpp>
 #include <feran/model/speed_coefficient.hpp>
+#include <feran/spec/node_ref.hpp>
+#include <feran/spec/entries/rigid_bodies.hpp>
+#include <feran/spec/entries/springs.hpp>
+#include <feran/spec/entries/rotating_dampers.hpp>
+#include <feran/spec/entries/friction.hpp>
+#include <feran/spec/entries/journal_bearings.hpp>
+#include <feran/spec/entries/rolling_bearings.hpp>
+#include <feran/spec/entries/rigid_links.hpp>
+#include <feran/spec/entries/fixed.hpp>
+#include <feran/spec/entries/unbalances.hpp>
+#include <feran/spec/entries/forces.hpp>
+#include <feran/spec/entries/static_loads.hpp>
+#include <feran/spec/entries/drive.hpp>
 
 namespace feran {
-
-/// A reference to a node: its number (an integer) or its name (a string). A string
-/// is always a name, even when it is all digits.
-using NodeRef = std::variant<std::int64_t, std::string>;
 
 /// [options]: model-wide options.
 struct OptionsSpec {
@@ -86,136 +95,6 @@ struct NodeSpec {
   std::optional<std::int64_t> number;  ///< not given: the next free number
   bool rotating = false;
   bool operator==(const NodeSpec&) const = default;
-};
-
-/// [[rigid_bodies]]: given by mass, Ja and Jp, or as a disk by its dimensions.
-struct RigidBodySpec {
-  std::string name;
-  NodeRef node;
-  std::optional<Real> mass;            ///< [kg]
-  std::optional<Real> Ja;              ///< about a transverse axis through the node [kg m²]
-  std::optional<Real> Jp;              ///< polar [kg m²]
-  std::optional<Real> outer_diameter;  ///< disk form [m]
-  std::optional<Real> inner_diameter;  ///< disk form [m]
-  std::optional<Real> width;           ///< disk form [m]
-  std::string material;                ///< disk form: material whose density is used
-  std::optional<Real> offset;          ///< axial offset of the centre of mass [m]
-  std::optional<bool> rotating;        ///< not given: as the node
-  bool operator==(const RigidBodySpec&) const = default;
-};
-
-/// [[springs]]: a spring–damper from a node to ground or to another node. Absent
-/// coefficients are zero.
-struct SpringSpec {
-  std::string name;
-  NodeRef node;
-  std::optional<NodeRef> to;  ///< not given (or "ground"): to ground
-  std::optional<SpeedCoefficient> kx, ky, kz, krx, kry, krz, kyz, kzy;
-  std::optional<SpeedCoefficient> cx, cy, cz, crx, cry, crz, cyz, czy;
-  Real loss_factor = 0.0;
-  bool operator==(const SpringSpec&) const = default;
-};
-
-/// [[rotating_dampers]]: viscous damping between rotating parts (internal damping).
-struct RotatingDamperSpec {
-  std::string name;
-  NodeRef node;
-  std::optional<NodeRef> to;  ///< not given (or "axis"): to the rotating frame's axis
-  Real ct = 0.0;              ///< lateral [N s/m]
-  Real cr = 0.0;              ///< tilt [N m s/rad]
-  Real cx = 0.0;              ///< axial [N s/m]
-  Real crx = 0.0;             ///< torsional [N m s/rad]
-  bool operator==(const RotatingDamperSpec&) const = default;
-};
-
-/// [[friction]]: Coulomb friction between rotating parts.
-struct FrictionSpec {
-  std::string name;
-  NodeRef node;
-  std::optional<NodeRef> to;  ///< not given (or "axis"): to the rotating frame
-  Real force = 0.0;           ///< F_ct0 [N]
-  Real moment = 0.0;          ///< F_cr0 [N m]
-  Real epsilon_t = 1e-4;      ///< regularisation velocity [m/s]
-  Real epsilon_r = 1e-3;      ///< regularisation angular velocity [rad/s]
-  bool operator==(const FrictionSpec&) const = default;
-};
-
-/// [[journal_bearings]]: a plain journal bearing on an oil film.
-struct JournalBearingSpec {
-  std::string name;
-  NodeRef node;                                           ///< the journal
-  std::optional<NodeRef> to;                              ///< the housing; not given (or "ground"): the ground
-  Real diameter = 0.0;                                    ///< D [m]
-  Real length = 0.0;                                      ///< L [m]
-  Real clearance = 0.0;                                   ///< radial clearance c [m]
-  Real viscosity = 0.0;                                   ///< μ [Pa s]
-  std::string theory = "short";                           ///< "short" (Ocvirk), "long" (Sommerfeld) or "finite"
-  std::optional<std::string> cavitation;                  ///< "reynolds" or "gumbel" (finite only)
-  std::optional<int> circumferential_cells, axial_cells;  ///< the finite bearing's grid
-  std::optional<std::string> evaluation;                  ///< "auto", "table" or "exact" (finite only)
-  bool operator==(const JournalBearingSpec&) const = default;
-};
-
-/// [[rolling_bearings]]: a ball or roller bearing, its elements in Hertzian contact.
-struct RollingBearingSpec {
-  std::string name;
-  NodeRef node;                                       ///< the journal (inner race)
-  std::optional<NodeRef> to;                          ///< the housing (outer race); not given (or "ground"): the ground
-  int elements = 0;                                   ///< Z
-  Real element_diameter = 0.0, pitch_diameter = 0.0;  ///< d, D_p [m]
-  Real contact_angle = 0.0;                           ///< α [rad]
-  Real clearance = 0.0;                               ///< radial clearance [m]
-  Real hertz_constant = 0.0;                          ///< K [N/mⁿ]
-  std::string type = "ball";                          ///< "ball" or "roller"
-  bool operator==(const RollingBearingSpec&) const = default;
-};
-
-/// [[rigid_links]]: nodes moving as one rigid body; the first leads.
-struct RigidLinkSpec {
-  std::vector<NodeRef> nodes;
-  bool operator==(const RigidLinkSpec&) const = default;
-};
-
-/// [[fixed]]: DOFs of a node held at zero.
-struct FixedSpec {
-  NodeRef node;
-  /// "u", "v", "w", "rx", "ry", "rz", "all", "lateral", "translations", "rotations";
-  /// empty: all.
-  std::vector<std::string> dofs;
-  bool operator==(const FixedSpec&) const = default;
-};
-
-/// [[unbalances]]: a point unbalance.
-struct UnbalanceSpec {
-  std::string name;
-  NodeRef node;
-  Real mass = 0.0;    ///< [kg]
-  Real radius = 0.0;  ///< [m]
-  Real phase = 0.0;   ///< [rad]
-  Real lever = 0.0;   ///< [m]
-  bool operator==(const UnbalanceSpec&) const = default;
-};
-
-/// [[forces]]: a harmonic force or moment.
-struct ForceSpec {
-  std::string name;
-  NodeRef node;
-  std::string kind = "fixed";     ///< "fixed", "rotating_force" or "rotating_moment"
-  std::string direction;          ///< "x", "y", "z", "rx", "ry", "rz" (kind "fixed")
-  std::optional<Real> amplitude;  ///< [N] or [N m]; required unless time_table
-  Real phase = 0.0;               ///< [rad]
-  std::optional<Real> frequency;  ///< [Hz]: a fixed force at its own frequency (run-ups)
-  /// (time [s], force [N] or moment [N m]): a fixed force given in time (run-ups)
-  std::vector<std::pair<Real, Real>> time_table;
-  bool operator==(const ForceSpec&) const = default;
-};
-
-/// [[static_loads]]: constant forces [N] and moments [N m].
-struct StaticLoadSpec {
-  std::string name;
-  NodeRef node;
-  Real fx = 0.0, fy = 0.0, fz = 0.0, mx = 0.0, my = 0.0, mz = 0.0;
-  bool operator==(const StaticLoadSpec&) const = default;
 };
 
 /// [modal]: defaults of a modal analysis.
@@ -308,22 +187,6 @@ struct Api684Spec {
   std::optional<bool> map;            ///< the undamped critical speed map
   std::optional<bool> stability;      ///< the level I stability analysis
   bool operator==(const Api684Spec&) const = default;
-};
-
-/// [drive]: the motor and load torques of torque-driven run-ups; no motor: none.
-struct DriveSpec {
-  std::string motor;                       ///< "dc", "induction" or "table"; empty: no drive
-  Real inertia = 0.0;                      ///< [kg m²]
-  std::optional<Real> stall_torque;        ///< [N m] (dc)
-  std::optional<Real> no_load_speed;       ///< [rad/s] (dc)
-  std::optional<Real> synchronous_speed;   ///< [rad/s] (induction)
-  std::optional<Real> breakdown_torque;    ///< [N m] (induction)
-  std::optional<Real> breakdown_slip;      ///< (induction)
-  std::optional<SpeedCoefficient> torque;  ///< a table over speed [N m] (table)
-  Real friction_torque = 0.0;              ///< [N m]
-  Real viscous_torque = 0.0;               ///< [N m s/rad]
-  Real quadratic_torque = 0.0;             ///< [N m s²/rad²]
-  bool operator==(const DriveSpec&) const = default;
 };
 
 /// A whole model file.

@@ -1,5 +1,7 @@
 // [drive]: the motor that drives a torque-driven run-up (DC, induction or tabulated torque): the family's field table
 // (its keys, bounds, units and help) and its build step (the checks across its keys, and what it adds to the model).
+#include <feran/spec/entries/drive.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

@@ -1,5 +1,7 @@
 // [[fixed]]: DOFs held at zero: the family's field table (its keys, bounds, units and help) and its build
 // step (the checks across its keys, and what it adds to the model).
+#include <feran/spec/entries/fixed.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

@@ -1,5 +1,7 @@
 // [[forces]]: harmonic and time-table forces and moments, fixed or rotating with the rotor: the family's field table
 // (its keys, bounds, units and help) and its build step (the checks across its keys, and what it adds to the model).
+#include <feran/spec/entries/forces.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

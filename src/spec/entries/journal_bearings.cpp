@@ -1,6 +1,8 @@
 // [[journal_bearings]]: plain journal bearings on an oil film (short, long or finite-length theory): the family's field
 // table (its keys, bounds, units and help) and its build step (the checks across its keys, and the element or force it
 // adds to the model).
+#include <feran/spec/entries/journal_bearings.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

@@ -1,6 +1,8 @@
 // [[rigid_bodies]]: disks, impellers and other rigid bodies at a node (mass, inertias, offset): the family's field
 // table (its keys, bounds, units and help) and its build step (the checks across its keys, and what it adds to the
 // model).
+#include <feran/spec/entries/rigid_bodies.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

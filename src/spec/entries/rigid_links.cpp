@@ -1,5 +1,7 @@
 // [[rigid_links]]: nodes moving as one rigid body with a master node: the family's field table (its keys, bounds, units
 // and help) and its build step (the checks across its keys, and what it adds to the model).
+#include <feran/spec/entries/rigid_links.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

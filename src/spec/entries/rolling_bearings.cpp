@@ -1,6 +1,8 @@
 // [[rolling_bearings]]: ball and roller bearings (Hertzian contact, clearance): the family's field table (its keys,
 // bounds, units and help) and its build step (the checks across its keys, and the element or force it adds to the
 // model).
+#include <feran/spec/entries/rolling_bearings.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

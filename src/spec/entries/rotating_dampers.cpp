@@ -1,5 +1,7 @@
 // [[rotating_dampers]]: viscous (internal) damping between rotating parts: the family's field table (its keys, bounds,
 // units and help) and its build step (the checks across its keys, and the element or force it adds to the model).
+#include <feran/spec/entries/rotating_dampers.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

@@ -1,6 +1,8 @@
 // [[springs]]: spring–dampers between a node and the ground or another node, each coefficient constant or a law of
 // speed or frequency: the family's field table (its keys, bounds, units and help) and its build step (the checks across
 // its keys, and the element or force it adds to the model).
+#include <feran/spec/entries/springs.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

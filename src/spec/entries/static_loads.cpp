@@ -1,5 +1,7 @@
 // [[static_loads]]: constant forces and moments: the family's field table (its keys, bounds, units and help) and its
 // build step (the checks across its keys, and what it adds to the model).
+#include <feran/spec/entries/static_loads.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 

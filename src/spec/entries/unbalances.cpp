@@ -1,5 +1,7 @@
 // [[unbalances]]: mass unbalances at rotor nodes: the family's field table (its keys, bounds, units and help) and its
 // build step (the checks across its keys, and what it adds to the model).
+#include <feran/spec/entries/unbalances.hpp>
+
 #include "../builder.hpp"
 #include "../field_helpers.hpp"
 
