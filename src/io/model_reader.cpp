@@ -19,8 +19,10 @@
 #include <feran/analyses/settings.hpp>
 #include <feran/spec/fields.hpp>
 #include <feran/spec/parameters.hpp>
+#include <feran/spec/request.hpp>
 #include <feran/spec/spec_path.hpp>
 
+#include "spec_table.hpp"
 #include "table_reader.hpp"
 
 namespace feran {
@@ -47,6 +49,12 @@ class SpecReader {
 
   ModelSpec read();
   SpecSource take_source() { return std::move(source_); }
+  /// Reads table @p t (shown as @p context) into @p out by S's field table, keys
+  /// @p extra allowed besides.
+  template <class S>
+  void read_table(const toml::table& t, std::string_view context, S& out, std::span<const std::string_view> extra) {
+    read_fields(TableReader(t, std::string(context), path_), out, "", extra);
+  }
 
  private:
   void record(const std::string& path, const toml::node& node) {
@@ -60,7 +68,7 @@ class SpecReader {
   /// Reads the keys of @p t into @p out by the field table of S; @p path is the
   /// table's path.
   template <class S>
-  void read_fields(const TableReader& t, S& out, const std::string& path);
+  void read_fields(const TableReader& t, S& out, const std::string& path, std::span<const std::string_view> extra = {});
   template <class S>
   void read_field(const TableReader& t, const spec::Field<S>& f, const toml::node& n, S& out, const std::string& at);
   template <class S>
@@ -127,8 +135,9 @@ ModelSpec SpecReader::read() {
 }
 
 template <class S>
-void SpecReader::read_fields(const TableReader& t, S& out, const std::string& path) {
-  std::vector<std::string_view> keys;
+void SpecReader::read_fields(const TableReader& t, S& out, const std::string& path,
+                             std::span<const std::string_view> extra) {
+  std::vector<std::string_view> keys(extra.begin(), extra.end());
   for (const spec::Field<S>& f : spec::fields_of<S>()) keys.push_back(f.key);
   spec::visit_children(out, [&](std::string_view key, std::string_view, auto&) { keys.push_back(key); });
   t.check_keys(keys);
@@ -596,6 +605,35 @@ void check_before_parsing(std::string_view text, const std::string& path) {
 }
 
 }  // namespace
+
+namespace detail {
+
+template <class S>
+S read_spec_table(const toml::table& table, std::string_view context, const std::string& file,
+                  std::span<const std::string_view> extra) {
+  SpecReader reader(table, file);
+  S out;
+  reader.read_table(table, context, out, extra);
+  for (const spec::Field<S>& f : spec::fields_of<S>()) {
+    const toml::node* n = table.get(f.key);
+    if (n == nullptr) continue;
+    try {
+      spec::check_field(out, f, fmt::format("{} '{}'", context, f.key));
+    } catch (const Error& e) {
+      throw ModelError(location_of(file, *n), e.what());
+    }
+  }
+  return out;
+}
+
+template CampbellSpec read_spec_table<CampbellSpec>(const toml::table&, std::string_view, const std::string&,
+                                                    std::span<const std::string_view>);
+template ResponseSpec read_spec_table<ResponseSpec>(const toml::table&, std::string_view, const std::string&,
+                                                    std::span<const std::string_view>);
+template Api684Spec read_spec_table<Api684Spec>(const toml::table&, std::string_view, const std::string&,
+                                                std::span<const std::string_view>);
+
+}  // namespace detail
 
 ModelSpec read_model_spec(std::string_view toml_text, const std::string& path_for_messages, SpecSource* source) {
   check_before_parsing(detail::utf8_text(toml_text, path_for_messages), path_for_messages);

@@ -7,6 +7,7 @@
 #include <feran/analyses/settings.hpp>
 #include <feran/io/model_reader.hpp>
 
+#include "spec_table.hpp"
 #include "table_reader.hpp"
 
 namespace feran {
@@ -63,17 +64,10 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
       root.fail(*root.find("speed_unit"), fmt::format("'speed_unit' must be \"rpm\" or \"Hz\", got \"{}\"", *u));
     options.speed_unit = *u;
   }
-  if (const toml::table* c = sub_table(root, "campbell")) {
-    const TableReader t(*c, "[campbell]", path);
-    t.check_keys({"start", "stop", "points", "modes", "orders"});
-    options.campbell.start = speed(t, "start");
-    options.campbell.stop = speed(t, "stop");
-    options.campbell.points = t.integer("points", 2, 100000);
-    options.campbell.modes = t.integer("modes", 1, 1000);
-    if (const toml::array* a = t.array("orders"))
-      for (std::size_t i = 0; i < a->size(); ++i)
-        options.campbell.orders.push_back(t.integer_at(*a->get(i), fmt::format("orders[{}]", i), 1, 1000));
-  }
+  // [campbell], [response] and [api684] take the keys of the model file's tables of the
+  // same names, read by their field tables (docs/model-format.md), and a few of their own.
+  if (const toml::table* c = sub_table(root, "campbell"))
+    options.campbell = detail::read_spec_table<CampbellSpec>(*c, "[campbell]", path);
   if (const toml::table* m = sub_table(root, "modes")) {
     const TableReader t(*m, "[modes]", path);
     t.check_keys({"speeds", "count"});
@@ -89,12 +83,9 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
   }
   if (const toml::table* r = sub_table(root, "response")) {
     const TableReader t(*r, "[response]", path);
-    t.check_keys({"start", "stop", "points", "probes", "deflection_speed"});
-    options.response.start = speed(t, "start");
-    options.response.stop = speed(t, "stop");
-    options.response.points = t.integer("points", 2, 100000);
-    for (const Index n : nodes(t, "probes", model))
-      options.response.probes.emplace_back(std::int64_t{model.nodes[static_cast<std::size_t>(n)].number});
+    constexpr std::string_view own[] = {"deflection_speed"};
+    options.response = detail::read_spec_table<ResponseSpec>(*r, "[response]", path, own);
+    (void)nodes(t, "probes", model);  // each a node of the model, located here
     options.deflection_speed = speed(t, "deflection_speed");
   }
   for (const char* name : {"static", "runup"})
@@ -106,14 +97,9 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
     }
   if (const toml::table* a = sub_table(root, "api684")) {
     const TableReader t(*a, "[api684]", path);
-    t.check_keys({"enabled", "min_speed", "max_speed", "anticipated_q"});
+    constexpr std::string_view own[] = {"enabled"};
+    options.api684_request = detail::read_spec_table<Api684Spec>(*a, "[api684]", path, own);
     options.api684 = t.boolean("enabled").value_or(true);
-    options.api684_request.min_speed = speed(t, "min_speed");
-    options.api684_request.max_speed = speed(t, "max_speed");
-    if (const auto q = t.quantity("anticipated_q", Quantity::stiffness)) {
-      t.require_positive(*q, "anticipated_q");
-      options.api684_request.anticipated_q = q->si;
-    }
   }
   if (const toml::table* s = sub_table(root, "study")) {
     const TableReader t(*s, "[study]", path);

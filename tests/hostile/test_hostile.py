@@ -593,6 +593,10 @@ def cases():
         ("probe_unknown", '[response]\nprobes = ["rotr"]\n', 2, r"'probes\[0\]': the model has no such node"),
         ("static_enabled_text", '[static]\nenabled = "yes"\n', 2, r"'enabled'"),
         ("api684_unknown_key", '[api684]\nmin_sped = "9000 rpm"\n', 2, r"unknown key 'min_sped'"),
+        # Every key of the model file's tables, checked by their field tables.
+        ("campbell_solver_unknown", '[campbell]\nsolver = "qr"\n', 2,
+         r"\[campbell\] 'solver' must be auto, dense or sparse, got 'qr'"),
+        ("api684_speed_negative", '[api684]\nmin_speed = "-3 Hz"\n', 2, r"\[api684\] 'min_speed': must be positive"),
         ("study_not_a_table", 'study = "dir"\n', 1, r"'study' must be a table"),
         ("title_number", 'title = 3\n', 1, r"'title'"),
     ]
