@@ -288,6 +288,210 @@ json separation_json(const HarmonicResult& hr, Real low, Real high) {
 
 }  // namespace
 
+namespace {
+
+// The report's sections, one step each, over the data embedded in the page.
+class ReportData {
+ public:
+  ReportData(const ModelFile& file, const ReportOptions& options)
+      : file_(file),
+        options_(options),
+        unowned_(std::shared_ptr<const ModelFile>(), &file),
+        // The operating range, when the model or the request gives one.
+        low_(options.api684_request.min_speed ? options.api684_request.min_speed : file.spec.api684.min_speed),
+        high_(options.api684_request.max_speed ? options.api684_request.max_speed : file.spec.api684.max_speed) {}
+
+  json build(std::string* summary) {
+    inputs();
+    campbell();
+    modes();
+    if (file_.model.count_forces(is_unbalance) > 0 || file_.model.count_forces(is_harmonic_force) > 0 ||
+        !options_.response.forces.empty())
+      section(
+          data_, "response", [&] { return response(); }, options_.stop);
+    if (options_.static_analysis)
+      section(
+          data_, "static", [&] { return static_deflection(); }, options_.stop);
+    if (options_.api684 && low_ && high_)
+      section(
+          data_, "api684",
+          [&] {
+            return json::parse(Api684Analysis::json(run_analysis<Api684Analysis>(
+                unowned_, options_.api684_request, file_key_name<Api684Analysis>(), context(true))));
+          },
+          options_.stop);
+    const RunupSpec& r = file_.spec.runup;
+    if (options_.runup && (r.speed || r.to || !r.table.empty()))
+      section(
+          data_, "runup", [&] { return runup(); }, options_.stop);
+    if (!options_.study_directory.empty()) data_["study"] = study_results(options_.study_directory);
+    finish(summary);
+    return std::move(data_);
+  }
+
+ private:
+  // The requested threads for the analyses whose points run side by side.
+  RunContext context(bool parallel = false) const {
+    RunContext c{.stop = options_.stop};
+    if (parallel) c.threads = options_.n_threads;
+    return c;
+  }
+  void inputs();
+  void campbell();
+  void modes();
+  json response();
+  json static_deflection();
+  json runup();
+  void finish(std::string* summary);
+
+  const ModelFile& file_;
+  const ReportOptions& options_;
+  const std::shared_ptr<const ModelFile> unowned_;
+  const std::optional<Real> low_, high_;
+  json data_;
+  std::vector<Real> campbell_speeds_;  // the Campbell diagram's speeds [rad/s]
+  std::vector<Real> mode_speeds_;      // the speeds of the mode shapes [rad/s]
+};
+
+void ReportData::inputs() {
+  data_["inputs"] = {{"model_path", file_.path},
+                     {"command", options_.command},
+                     {"version", options_.version},
+                     {"created", timestamp()},
+                     {"model_text", write_toml(file_.spec)}};
+  data_["title"] = options_.title.empty()
+                       ? (file_.title.empty() ? std::filesystem::path(file_.path).filename().string() : file_.title)
+                       : options_.title;
+  data_["speed_unit"] = options_.speed_unit;
+  data_["operating"] =
+      low_ && high_ ? json{{"min_rpm", rad_to_hz(*low_) * 60}, {"max_rpm", rad_to_hz(*high_) * 60}} : json(nullptr);
+  data_["model"] = model_summary(file_, high_.value_or(0.0));
+}
+
+// The Campbell diagram and damping, to 1.5 × the maximum operating speed unless a
+// table gives its last speed.
+void ReportData::campbell() {
+  CampbellSpec request = options_.campbell;
+  if (!request.stop && !file_.spec.campbell.stop && high_) request.stop = 1.5 * *high_;
+  const Outcome<CampbellAnalysis> o =
+      run_analysis<CampbellAnalysis>(unowned_, request, file_key_name<CampbellAnalysis>(), context(true));
+  campbell_speeds_ = o.options.speeds;
+  data_["campbell"] = json::parse(CampbellAnalysis::json(o));
+}
+
+// Mode shapes at the chosen speeds: by default at rest, unless an oil film carries the
+// rotor only while it turns (then the lowest operating speed, else the Campbell
+// diagram's first speed above 0), and at the maximum operating speed (else the
+// diagram's last).
+void ReportData::modes() {
+  mode_speeds_ = options_.mode_speeds;
+  if (mode_speeds_.empty()) {
+    Real first = 0.0;
+    if (needs_speed(file_.model)) {
+      first = low_.value_or(0.0);
+      for (const Real s : campbell_speeds_)
+        if (!(first > 0) && s > 0) first = s;
+    }
+    mode_speeds_ = {first};
+    const Real last = high_.value_or(campbell_speeds_.back());
+    if (last != first) mode_speeds_.push_back(last);
+  }
+  const ResultSource source{file_.path, file_.title};
+  json modes = json::array();
+  for (const Real s : mode_speeds_) {
+    ModalOptions mo;
+    mo.oscillatory_only = true;
+    mo.n_modes = options_.mode_count;
+    section(
+        modes.emplace_back(), "result",
+        [&] {
+          // The modal analysis's own JSON, of oscillatory modes with their shapes.
+          const Outcome<ModalAnalysis> o{unowned_, {s, mo}, run_modal(file_.model, s, mo, file_.assembler), source};
+          return json::parse(ModalAnalysis::json(o));
+        },
+        options_.stop);
+  }
+  data_["modes"] = modes;
+}
+
+// The unbalance response over the Campbell diagram's speeds, with the peaks judged
+// against the operating range (API 684), and the deflected shape at one speed.
+json ReportData::response() {
+  ResponseSpec request = options_.response;
+  if (!request.stations) request.stations = "summary";
+  if (!request.stop && !file_.spec.response.stop) request.stop = campbell_speeds_.back();
+  const Outcome<ResponseAnalysis> response =
+      run_analysis<ResponseAnalysis>(unowned_, request, file_key_name<ResponseAnalysis>(), context(true));
+  const HarmonicResult& hr = response.result;
+  json j = json::parse(ResponseAnalysis::json(response));
+  if (low_ && high_) j["peaks"] = separation_json(hr, *low_, *high_);
+  // The deflected shape at one speed: every node's orbit, from a response there.
+  Real at = options_.deflection_speed.value_or(0.0);
+  if (!options_.deflection_speed) {
+    Real best = -1;
+    for (const auto& p : hr.probes)
+      for (std::size_t k = 0; k < p.orbit.size(); ++k)
+        if (p.orbit[k].major > best) best = p.orbit[k].major, at = hr.speeds[k];
+  }
+  ResponseSpec shape = options_.response;
+  shape.speed = at;
+  shape.start.reset();
+  shape.stop.reset();
+  shape.points.reset();
+  shape.probes.clear();
+  for (const Node& n : file_.model.nodes) shape.probes.emplace_back(std::int64_t{n.number});
+  shape.stations = "none";
+  j["deflected_shape"] = json::parse(ResponseAnalysis::json(
+      run_analysis<ResponseAnalysis>(unowned_, shape, file_key_name<ResponseAnalysis>(), context())));
+  return j;
+}
+
+// A rotor on oil films rests on them only while it turns: without a speed of its own,
+// the static analysis runs at the maximum operating speed (else the first speed above
+// 0 the mode shapes use).
+json ReportData::static_deflection() {
+  StaticSpec request;
+  if (!file_.spec.static_.speed && needs_speed(file_.model)) request.speed = high_ ? *high_ : mode_speeds_.front();
+  return json::parse(StaticAnalysis::json(
+      run_analysis<StaticAnalysis>(unowned_, request, file_key_name<StaticAnalysis>(), context())));
+}
+
+// The model's run-up, with the waterfall of its first probe's v as feran.plot draws it.
+json ReportData::runup() {
+  const Outcome<RunupAnalysis> runup =
+      run_analysis<RunupAnalysis>(unowned_, {}, file_key_name<RunupAnalysis>(), context());
+  json j = json::parse(RunupAnalysis::json(runup));
+  if (runup.result.samples.size() >= 8 && !runup.options.probes.empty()) {
+    const Waterfall w = waterfall(runup.result, 0, Dof::v);
+    json rows = json::array();
+    for (Index i = 0; i < w.amplitude.rows(); ++i)
+      rows.push_back(std::vector<Real>(w.amplitude.row(i).begin(), w.amplitude.row(i).end()));
+    std::vector<Real> speeds_hz;
+    for (const Real speed : w.speeds) speeds_hz.push_back(rad_to_hz(speed));
+    j["waterfall"] = {
+        {"probe", 0}, {"dof", "v"}, {"speeds_hz", speeds_hz}, {"frequencies_hz", w.frequencies}, {"amplitude_m", rows}};
+  }
+  return j;
+}
+
+void ReportData::finish(std::string* summary) {
+  // The sections computed, in the report's order: the script draws each with its
+  // module (src/analyses/<name>/report.js, src/study/report.js).
+  json sections = json::array();
+  for (const char* key : {"campbell", "modes", "response", "static", "api684", "runup", "study"})
+    if (data_.contains(key)) sections.push_back(key);
+  data_["sections"] = sections;
+  // Stopped on request: what was computed is shown, marked incomplete (an analysis
+  // cut short keeps its results up to there; the sections after it are left out).
+  data_["complete"] = !options_.stop.requested();
+  // The verdicts the report opens with, read off the sections above.
+  const std::vector<detail::Verdict> verdicts = detail::report_verdicts(data_, options_.speed_unit);
+  data_["verdicts"] = detail::verdicts_json(verdicts);
+  if (summary) *summary = detail::verdicts_text(verdicts);
+}
+
+}  // namespace
+
 std::string html_report(const ModelFile& file, const ReportOptions& options, std::string* summary) {
   if (!report_available())
     throw Error(
@@ -295,178 +499,7 @@ std::string html_report(const ModelFile& file, const ReportOptions& options, std
         "installs the front-end packages with npm) and build again");
   if (options.speed_unit != "rpm" && options.speed_unit != "Hz")
     throw Error(fmt::format("the report's speed unit must be \"rpm\" or \"Hz\", got \"{}\"", options.speed_unit));
-  const Model& model = file.model;
-  const ModelSpec& spec = file.spec;
-  const ResultSource source{file.path, file.title};
-
-  // The operating range, when the model or the request gives one.
-  const std::optional<Real> low =
-      options.api684_request.min_speed ? options.api684_request.min_speed : spec.api684.min_speed;
-  const std::optional<Real> high =
-      options.api684_request.max_speed ? options.api684_request.max_speed : spec.api684.max_speed;
-
-  json data;
-  data["inputs"] = {{"model_path", file.path},
-                    {"command", options.command},
-                    {"version", options.version},
-                    {"created", timestamp()},
-                    {"model_text", write_toml(spec)}};
-  data["title"] = options.title.empty()
-                      ? (file.title.empty() ? std::filesystem::path(file.path).filename().string() : file.title)
-                      : options.title;
-  data["speed_unit"] = options.speed_unit;
-  data["operating"] =
-      low && high ? json{{"min_rpm", rad_to_hz(*low) * 60}, {"max_rpm", rad_to_hz(*high) * 60}} : json(nullptr);
-  data["model"] = model_summary(file, high.value_or(0.0));
-
-  // Campbell diagram and damping.
-  const std::shared_ptr<const ModelFile> unowned(std::shared_ptr<const ModelFile>(), &file);
-  CampbellSpec campbell = options.campbell;
-  if (!campbell.stop && !spec.campbell.stop && high) campbell.stop = 1.5 * *high;
-  const Outcome<CampbellAnalysis> campbell_outcome =
-      run_analysis<CampbellAnalysis>(unowned, campbell, file_key_name<CampbellAnalysis>(),
-                                     RunContext{.stop = options.stop, .threads = options.n_threads});
-  const CampbellOptions& co = campbell_outcome.options;
-  data["campbell"] = json::parse(CampbellAnalysis::json(campbell_outcome));
-
-  // Mode shapes at the chosen speeds.
-  std::vector<Real> speeds = options.mode_speeds;
-  if (speeds.empty()) {
-    // At rest, unless an oil film carries the rotor only while it turns: then the
-    // lowest operating speed, else the Campbell diagram's first speed above 0.
-    Real first = 0.0;
-    if (needs_speed(model)) {
-      first = low.value_or(0.0);
-      for (const Real s : co.speeds)
-        if (!(first > 0) && s > 0) first = s;
-    }
-    speeds = {first};
-    const Real last = high.value_or(co.speeds.back());
-    if (last != first) speeds.push_back(last);
-  }
-  json modes = json::array();
-  for (const Real s : speeds) {
-    ModalOptions mo;
-    mo.oscillatory_only = true;
-    mo.n_modes = options.mode_count;
-    section(
-        modes.emplace_back(), "result",
-        [&] {
-          // The modal analysis's own JSON, of oscillatory modes with their shapes.
-          const Outcome<ModalAnalysis> o{unowned, {s, mo}, run_modal(model, s, mo, file.assembler), source};
-          return json::parse(ModalAnalysis::json(o));
-        },
-        options.stop);
-  }
-  data["modes"] = modes;
-
-  // Unbalance response and the deflected shape.
-  if (model.count_forces(is_unbalance) > 0 || model.count_forces(is_harmonic_force) > 0 ||
-      !options.response.forces.empty()) {
-    section(
-        data, "response",
-        [&] {
-          ResponseSpec request = options.response;
-          if (!request.stations) request.stations = "summary";
-          if (!request.stop && !spec.response.stop) request.stop = co.speeds.back();
-          const Outcome<ResponseAnalysis> response =
-              run_analysis<ResponseAnalysis>(unowned, request, file_key_name<ResponseAnalysis>(),
-                                             RunContext{.stop = options.stop, .threads = options.n_threads});
-          const HarmonicResult& hr = response.result;
-          json j = json::parse(ResponseAnalysis::json(response));
-          // With an operating range, each peak's amplification factor and margins (API 684).
-          if (low && high) j["peaks"] = separation_json(hr, *low, *high);
-          // The deflected shape at one speed: every node's orbit, from a response there.
-          Real at = options.deflection_speed.value_or(0.0);
-          if (!options.deflection_speed) {
-            Real best = -1;
-            for (const auto& p : hr.probes)
-              for (std::size_t k = 0; k < p.orbit.size(); ++k)
-                if (p.orbit[k].major > best) best = p.orbit[k].major, at = hr.speeds[k];
-          }
-          ResponseSpec shape = options.response;
-          shape.speed = at;
-          shape.start.reset();
-          shape.stop.reset();
-          shape.points.reset();
-          shape.probes.clear();
-          for (const Node& n : model.nodes) shape.probes.emplace_back(std::int64_t{n.number});
-          shape.stations = "none";
-          j["deflected_shape"] = json::parse(ResponseAnalysis::json(run_analysis<ResponseAnalysis>(
-              unowned, shape, file_key_name<ResponseAnalysis>(), RunContext{.stop = options.stop})));
-          return j;
-        },
-        options.stop);
-  }
-
-  if (options.static_analysis)
-    section(
-        data, "static",
-        [&] {
-          // A rotor on oil films rests on them only while it turns: without a speed of
-          // its own, the static analysis runs at the maximum operating speed (else the
-          // first speed above 0 the mode shapes use).
-          StaticSpec request;
-          if (!spec.static_.speed && needs_speed(model)) request.speed = high ? *high : speeds.front();
-          return json::parse(StaticAnalysis::json(run_analysis<StaticAnalysis>(
-              unowned, request, file_key_name<StaticAnalysis>(), RunContext{.stop = options.stop})));
-        },
-        options.stop);
-
-  if (options.api684 && low && high)
-    section(
-        data, "api684",
-        [&] {
-          return json::parse(Api684Analysis::json(
-              run_analysis<Api684Analysis>(unowned, options.api684_request, file_key_name<Api684Analysis>(),
-                                           RunContext{.stop = options.stop, .threads = options.n_threads})));
-        },
-        options.stop);
-
-  const RunupSpec& r = spec.runup;
-  if (options.runup && (r.speed || r.to || !r.table.empty()))
-    section(
-        data, "runup",
-        [&] {
-          const Outcome<RunupAnalysis> runup = run_analysis<RunupAnalysis>(unowned, {}, file_key_name<RunupAnalysis>(),
-                                                                           RunContext{.stop = options.stop});
-          json j = json::parse(RunupAnalysis::json(runup));
-          // The waterfall of the first probe's v, as feran.plot draws it.
-          if (runup.result.samples.size() >= 8 && !runup.options.probes.empty()) {
-            const Waterfall w = waterfall(runup.result, 0, Dof::v);
-            json rows = json::array();
-            for (Index i = 0; i < w.amplitude.rows(); ++i)
-              rows.push_back(std::vector<Real>(w.amplitude.row(i).begin(), w.amplitude.row(i).end()));
-            std::vector<Real> speeds_hz;
-            for (const Real speed : w.speeds) speeds_hz.push_back(rad_to_hz(speed));
-            j["waterfall"] = {{"probe", 0},
-                              {"dof", "v"},
-                              {"speeds_hz", speeds_hz},
-                              {"frequencies_hz", w.frequencies},
-                              {"amplitude_m", rows}};
-          }
-          return j;
-        },
-        options.stop);
-
-  if (!options.study_directory.empty()) data["study"] = study_results(options.study_directory);
-
-  // The sections computed, in the report's order: the script draws each with its
-  // module (src/analyses/<name>/report.js, src/study/report.js).
-  json sections = json::array();
-  for (const char* key : {"campbell", "modes", "response", "static", "api684", "runup", "study"})
-    if (data.contains(key)) sections.push_back(key);
-  data["sections"] = sections;
-
-  // Stopped on request: what was computed is shown, marked incomplete (an analysis
-  // cut short keeps its results up to there; the sections after it are left out).
-  data["complete"] = !options.stop.requested();
-
-  // The verdicts the report opens with, read off the sections above.
-  const std::vector<detail::Verdict> verdicts = detail::report_verdicts(data, options.speed_unit);
-  data["verdicts"] = detail::verdicts_json(verdicts);
-  if (summary) *summary = detail::verdicts_text(verdicts);
-
+  const json data = ReportData(file, options).build(summary);
   const std::string title = html_escape(data["title"].get<std::string>());
   std::string html;
   html.reserve(detail::plotly_js().size() + (1 << 20));
