@@ -56,10 +56,8 @@ py::array_t<double> peak_places(const PyResponseResult& r, F&& peak) {
   });
 }
 
-}  // namespace
-
-template <>
-void bind_result<ResponseAnalysis>(py::class_<Outcome<ResponseAnalysis>>& result) {
+// The speeds or frequencies swept and the stability at each.
+void bind_sweep(py::class_<PyResponseResult>& result) {
   result.def_property_readonly("frequency_sweep", [](const PyResponseResult& r) { return r.result.frequency_sweep; })
       .def_property_readonly(
           "speeds",
@@ -98,7 +96,12 @@ void bind_result<ResponseAnalysis>(py::class_<Outcome<ResponseAnalysis>>& result
             if (k < 0) return py::none();
             return py::float_(r.result.stability[static_cast<std::size_t>(k)].speed);
           },
-          "the lowest speed of the sweep at which the rotor is unstable [rad/s], or None")
+          "the lowest speed of the sweep at which the rotor is unstable [rad/s], or None");
+}
+
+// The orbits at the probes.
+void bind_probes(py::class_<PyResponseResult>& result) {
+  result
       .def_property_readonly(
           "probes",
           [](const PyResponseResult& r) {
@@ -138,6 +141,20 @@ void bind_result<ResponseAnalysis>(py::class_<Outcome<ResponseAnalysis>>& result
       .def_property_readonly(
           "orbit_backward",
           [](const PyResponseResult& r) { return orbit_values(r, [](const Orbit& o) { return o.backward; }); })
+      .def(
+          "probe_index",
+          [](const PyResponseResult& r, const py::object& node) {
+            const std::vector<Index> wanted = node_arguments(r.model(), node, "node");
+            for (std::size_t i = 0; i < r.result.probes.size(); ++i)
+              if (r.result.probes[i].node == wanted.at(0)) return i;
+            throw Error(fmt::format("node {}: not a probe of this response", py::repr(node).cast<std::string>()));
+          },
+          py::arg("node"), "The index in probes of a node (name or number)");
+}
+
+// The springs' and bearings' forces and the bearings' operating state.
+void bind_supports(py::class_<PyResponseResult>& result) {
+  result
       .def_property_readonly(
           "springs",
           [](const PyResponseResult& r) {
@@ -204,7 +221,12 @@ void bind_result<ResponseAnalysis>(py::class_<Outcome<ResponseAnalysis>>& result
             });
           },
           "that orbit over the bearing's radial clearance (NaN without one), shape (bearings, points);\n"
-          "above 1 the linearised response is no motion the bearing allows (a warning says so)")
+          "above 1 the linearised response is no motion the bearing allows (a warning says so)");
+}
+
+// The reactions of the fixed DOFs and the shaft's stresses and section forces.
+void bind_stations(py::class_<PyResponseResult>& result) {
+  result
       .def_property_readonly(
           "reactions",
           [](const PyResponseResult& r) {
@@ -263,17 +285,18 @@ void bind_result<ResponseAnalysis>(py::class_<Outcome<ResponseAnalysis>>& result
                                                     return v[c];
                                                   });
           },
-          "with stations='all': N, Vy, Vz, T, My, Mz [N, N m], shape (stations, points, 6)")
-      .def(
-          "probe_index",
-          [](const PyResponseResult& r, const py::object& node) {
-            const std::vector<Index> wanted = node_arguments(r.model(), node, "node");
-            for (std::size_t i = 0; i < r.result.probes.size(); ++i)
-              if (r.result.probes[i].node == wanted.at(0)) return i;
-            throw Error(fmt::format("node {}: not a probe of this response", py::repr(node).cast<std::string>()));
-          },
-          py::arg("node"), "The index in probes of a node (name or number)")
-      .def_property_readonly("complete", [](const PyResponseResult& r) { return r.result.info.converged(); })
+          "with stations='all': N, Vy, Vz, T, My, Mz [N, N m], shape (stations, points, 6)");
+}
+
+}  // namespace
+
+template <>
+void bind_result<ResponseAnalysis>(py::class_<Outcome<ResponseAnalysis>>& result) {
+  bind_sweep(result);
+  bind_probes(result);
+  bind_supports(result);
+  bind_stations(result);
+  result.def_property_readonly("complete", [](const PyResponseResult& r) { return r.result.info.converged(); })
       .def_property_readonly("message", [](const PyResponseResult& r) { return r.result.info.message; });
 }
 
