@@ -81,8 +81,8 @@ ModelSpec jeffcott_rotor() {
   SpringSpec damper;
   damper.name = "damper";
   damper.node = std::string("disk");
-  damper.cy = SpeedCoefficient(20.0);  // [N s/m]
-  damper.cz = SpeedCoefficient(20.0);
+  damper.coefficients[spring::cy] = SpeedCoefficient(20.0);  // [N s/m]
+  damper.coefficients[spring::cz] = SpeedCoefficient(20.0);
   spec.springs.push_back(damper);
 
   // Both shaft ends clamped (an empty list of DOFs holds all six).

@@ -48,18 +48,31 @@ namespace {
 // Calls add(coefficient, name) for each of @p c's coefficients.
 template <class F>
 void each_coefficient(const SpringDamperCoefficients& c, F&& add) {
-  constexpr std::array<const char*, dofs_per_node> k_names = {"kx", "ky", "kz", "krx", "kry", "krz"};
-  constexpr std::array<const char*, dofs_per_node> c_names = {"cx", "cy", "cz", "crx", "cry", "crz"};
-  for (std::size_t d = 0; d < dofs_per_node; ++d) {
-    add(c.k[d], k_names[d]);
-    add(c.c[d], c_names[d]);
+  for (std::size_t i = 0; i < spring::count; ++i) {
+    const auto index = static_cast<spring::Coefficient>(i);
+    add(coefficient(c, index), spring::names[i].name.data());
   }
-  add(c.kyz, "kyz");
-  add(c.kzy, "kzy");
-  add(c.cyz, "cyz");
-  add(c.czy, "czy");
 }
 }  // namespace
+
+SpeedCoefficient& coefficient(SpringDamperCoefficients& c, spring::Coefficient i) {
+  switch (i) {
+    case spring::kyz:
+      return c.kyz;
+    case spring::kzy:
+      return c.kzy;
+    case spring::cyz:
+      return c.cyz;
+    case spring::czy:
+      return c.czy;
+    default:
+      return i < spring::cx ? c.k[i] : c.c[i - spring::cx];
+  }
+}
+
+const SpeedCoefficient& coefficient(const SpringDamperCoefficients& c, spring::Coefficient i) {
+  return coefficient(const_cast<SpringDamperCoefficients&>(c), i);  // NOLINT(cppcoreguidelines-pro-type-const-cast)
+}
 
 std::vector<SpeedRange> SpringDamper::frequency_ranges() const {
   std::vector<SpeedRange> out;

@@ -88,8 +88,8 @@ std::string default_of(const Field<S>& f) {
   static const S defaults{};
   return std::visit(
       [&](auto member) -> std::string {
-        using T = std::remove_cvref_t<decltype(defaults.*member)>;
-        const T& v = defaults.*member;
+        using T = std::remove_cvref_t<decltype(spec::member_of(defaults, member))>;
+        const T& v = spec::member_of(defaults, member);
         if constexpr (std::is_same_v<T, Real>) {
           if (v == 0.0) return "`0`";
           return f.kind == FieldKind::quantity ? fmt::format("`{}`", format_quantity(v, f.quantity, f.unit))

@@ -167,8 +167,8 @@ void SpecReader::read_field(const TableReader& t, const spec::Field<S>& f, const
                             const std::string& at) {
   std::visit(
       [&](auto member) {
-        using T = std::remove_cvref_t<decltype(out.*member)>;
-        T& value = out.*member;
+        using T = std::remove_cvref_t<decltype(spec::member_of(out, member))>;
+        T& value = spec::member_of(out, member);
         if constexpr (std::is_same_v<T, Real> || std::is_same_v<T, std::optional<Real>>) {
           if (f.kind == FieldKind::quantity) {
             const QuantityValue q = t.quantity_at(n, f.key, spec::value_quantity(out, f));

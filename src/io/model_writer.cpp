@@ -127,9 +127,9 @@ template <class S>
 std::string value_of(const S& entry, const Field<S>& f) {
   return std::visit(
       [&](auto member) -> std::string {
-        using T = std::remove_cvref_t<decltype(entry.*member)>;
-        const T& v = entry.*member;
-        if (!f.required && v == default_value<S>().*member) return {};
+        using T = std::remove_cvref_t<decltype(spec::member_of(entry, member))>;
+        const T& v = spec::member_of(entry, member);
+        if (!f.required && v == spec::member_of(default_value<S>(), member)) return {};
         if constexpr (std::is_same_v<T, Real> || std::is_same_v<T, std::optional<Real>>) {
           const Real x = [&] {
             if constexpr (std::is_same_v<T, Real>)

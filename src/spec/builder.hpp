@@ -163,8 +163,8 @@ void Builder::check_bounds(const S& entry, const std::string& path) const {
     };
     std::visit(
         [&](auto member) {
-          using T = std::remove_cvref_t<decltype(entry.*member)>;
-          const T& value = entry.*member;
+          using T = std::remove_cvref_t<decltype(spec::member_of(entry, member))>;
+          const T& value = spec::member_of(entry, member);
           if constexpr (std::is_same_v<T, Real>) {
             check_real(value);
           } else if constexpr (std::is_same_v<T, std::optional<Real>>) {

@@ -226,8 +226,8 @@ Slot Resolver::field(S& e, const spec::Field<S>& f, std::size_t i, const std::st
   if (f.kind == FieldKind::quantity) slot.quantity = spec::value_quantity(e, f);
   std::visit(
       [&](auto member) {
-        using T = std::remove_cvref_t<decltype(e.*member)>;
-        T& v = e.*member;
+        using T = std::remove_cvref_t<decltype(spec::member_of(e, member))>;
+        T& v = spec::member_of(e, member);
         if constexpr (std::is_same_v<T, Real>) {
           no_selectors(s);
           last(i, s);
@@ -480,8 +480,8 @@ void list_entry(const ModelSpec& spec, const S& e, const std::string& path, std:
     const std::string at = spec::child(path, f.key);
     std::visit(
         [&](auto member) {
-          using T = std::remove_cvref_t<decltype(e.*member)>;
-          const T& v = e.*member;
+          using T = std::remove_cvref_t<decltype(spec::member_of(e, member))>;
+          const T& v = spec::member_of(e, member);
           if constexpr (std::is_same_v<T, Real> || std::is_same_v<T, int>) {
             out.push_back(at);
           } else if constexpr (std::is_same_v<T, std::optional<Real>> || std::is_same_v<T, std::optional<int>>) {

@@ -144,7 +144,8 @@ constexpr bool keeps_partial_results() {
 template <class S>
 S with_defaults(S s, const S& defaults) {
   for (const spec::Field<S>& f : spec::fields_of<S>())
-    if (!spec::has_value(s, f)) std::visit([&](auto member) { s.*member = defaults.*member; }, f.member);
+    if (!spec::has_value(s, f))
+      std::visit([&](auto member) { spec::member_of(s, member) = spec::member_of(defaults, member); }, f.member);
   return s;
 }
 

@@ -25,6 +25,43 @@ struct SpringDamperCoefficients {
   Real loss_factor = 0.0;                           ///< hysteretic loss factor η of the stiffness (harmonic analyses)
 };
 
+/// The coefficients of a spring–damper by index, and the one table of their names (the
+/// keys of a model file's [[springs]], parameter paths, messages): the direct
+/// stiffnesses kx … krz, the cross-coupled stiffnesses kyz, kzy, the direct dampings
+/// cx … crz and the cross-coupled dampings cyz, czy.
+namespace spring {
+enum Coefficient : std::size_t { kx, ky, kz, krx, kry, krz, kyz, kzy, cx, cy, cz, crx, cry, crz, cyz, czy, count };
+struct CoefficientName {
+  std::string_view name;
+  bool damping;     ///< a damping (else a stiffness)
+  bool rotational;  ///< about an axis (else along one)
+  bool direct;      ///< a direct term (else cross-coupled: may be negative)
+  std::string_view doc;
+};
+inline constexpr std::array<CoefficientName, count> names = {{
+    {"kx", false, false, true, "direct stiffness along x"},
+    {"ky", false, false, true, "direct stiffness along y"},
+    {"kz", false, false, true, "direct stiffness along z"},
+    {"krx", false, true, true, "direct stiffness about x (torsion)"},
+    {"kry", false, true, true, "direct stiffness about y"},
+    {"krz", false, true, true, "direct stiffness about z"},
+    {"kyz", false, false, false, "cross-coupled stiffness, force along y from w; may be negative"},
+    {"kzy", false, false, false, "cross-coupled stiffness, force along z from v; may be negative"},
+    {"cx", true, false, true, "direct damping along x"},
+    {"cy", true, false, true, "direct damping along y"},
+    {"cz", true, false, true, "direct damping along z"},
+    {"crx", true, true, true, "direct damping about x (torsion)"},
+    {"cry", true, true, true, "direct damping about y"},
+    {"crz", true, true, true, "direct damping about z"},
+    {"cyz", true, false, false, "cross-coupled damping, force along y from w'; may be negative"},
+    {"czy", true, false, false, "cross-coupled damping, force along z from v'; may be negative"},
+}};
+}  // namespace spring
+
+/// Coefficient @p i of @p c (spring::names[i]).
+SpeedCoefficient& coefficient(SpringDamperCoefficients& c, spring::Coefficient i);
+const SpeedCoefficient& coefficient(const SpringDamperCoefficients& c, spring::Coefficient i);
+
 /// Spring–damper from @p node_a to @p node_b, or to ground when node_b is empty.
 /// Matrices: docs/theory/spring_damper.md.
 class SpringDamper {

@@ -9,6 +9,8 @@
 /// checks and the key lists of docs/model-format.md are all driven by these tables,
 /// so a key is declared in one place. visit_tables() names the tables of a ModelSpec.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -50,13 +52,41 @@ struct Bound {
   std::int64_t maximum = 1'000'000'000;  ///< integers: the largest allowed value
 };
 
+/// Element @p index of an array member of S (a spring's coefficients).
+template <class S, class T, std::size_t N>
+struct ArrayElement {
+  std::array<T, N> S::*array;
+  std::size_t index;
+};
+
+/// The value a field's member (a pointer to a member of S, or an element of an
+/// array member) designates in @p s; every visitor of Field::member reads and
+/// writes through these.
+template <class S, class T>
+constexpr T& member_of(S& s, T S::*m) {
+  return s.*m;
+}
+template <class S, class T>
+constexpr const T& member_of(const S& s, T S::*m) {
+  return s.*m;
+}
+template <class S, class T, std::size_t N>
+constexpr T& member_of(S& s, const ArrayElement<S, T, N>& m) {
+  return (s.*m.array)[m.index];
+}
+template <class S, class T, std::size_t N>
+constexpr const T& member_of(const S& s, const ArrayElement<S, T, N>& m) {
+  return (s.*m.array)[m.index];
+}
+
 /// The member of S a field is stored in.
 template <class S>
 using Member = std::variant<Real S::*, std::optional<Real> S::*, int S::*, std::optional<int> S::*,
                             std::optional<std::int64_t> S::*, bool S::*, std::optional<bool> S::*, std::string S::*,
                             std::optional<std::string> S::*, std::vector<std::string> S::*, NodeRef S::*,
                             std::optional<NodeRef> S::*, std::vector<NodeRef> S::*, std::vector<int> S::*,
-                            std::optional<SpeedCoefficient> S::*, std::vector<std::pair<Real, Real>> S::*>;
+                            std::optional<SpeedCoefficient> S::*, std::vector<std::pair<Real, Real>> S::*,
+                            ArrayElement<S, std::optional<SpeedCoefficient>, spring::count>>;
 
 /// One key of a table.
 template <class S>

@@ -37,11 +37,11 @@ template <class S>
 bool has_value(const S& s, const Field<S>& f) {
   return std::visit(
       [&](auto member) {
-        using T = std::remove_cvref_t<decltype(s.*member)>;
+        using T = std::remove_cvref_t<decltype(member_of(s, member))>;
         if constexpr (requires(const T& t) { t.has_value(); })
-          return (s.*member).has_value();
+          return (member_of(s, member)).has_value();
         else if constexpr (requires(const T& t) { t.empty(); } && !std::is_same_v<T, std::string>)
-          return !(s.*member).empty();
+          return !(member_of(s, member)).empty();
         else
           return true;
       },
@@ -76,7 +76,7 @@ S overlay(const S& top, const S& bottom) {
     const std::string_view group = !f.group.empty() ? f.group : f.follows;
     const bool from_top = has_value(top, f) || (!group.empty() && sets_group(top, group)) ||
                           (!f.alternative.empty() && sets_other_alternative(top, f.alternative));
-    if (from_top) std::visit([&](auto member) { out.*member = top.*member; }, f.member);
+    if (from_top) std::visit([&](auto member) { member_of(out, member) = member_of(top, member); }, f.member);
   }
   return out;
 }
@@ -142,8 +142,8 @@ void check_field(const S& s, const Field<S>& f, std::string_view option) {
       f.kind == FieldKind::quantity ? std::optional<Quantity>(f.quantity) : std::nullopt;
   std::visit(
       [&](auto member) {
-        using T = std::remove_cvref_t<decltype(s.*member)>;
-        const T& v = s.*member;
+        using T = std::remove_cvref_t<decltype(member_of(s, member))>;
+        const T& v = member_of(s, member);
         if constexpr (std::is_same_v<T, std::optional<Real>>) {
           if (v) detail::check_number(*v, f.bound, kind, f.unit, option);
         } else if constexpr (std::is_same_v<T, std::optional<int>> || std::is_same_v<T, std::optional<std::int64_t>>) {
@@ -166,8 +166,8 @@ template <class S>
 void set_text(S& s, const Field<S>& f, std::string_view text, std::string_view option) {
   std::visit(
       [&](auto member) {
-        using T = std::remove_cvref_t<decltype(s.*member)>;
-        T& v = s.*member;
+        using T = std::remove_cvref_t<decltype(member_of(s, member))>;
+        T& v = member_of(s, member);
         if constexpr (std::is_same_v<T, std::optional<Real>>) {
           v = f.kind == FieldKind::quantity ? detail::quantity_text(text, f.quantity, option)
                                             : detail::number_text(text, option);
@@ -211,9 +211,9 @@ template <class S>
 void set_number(S& s, const Field<S>& f, Real si, std::string_view option) {
   std::visit(
       [&](auto member) {
-        using T = std::remove_cvref_t<decltype(s.*member)>;
+        using T = std::remove_cvref_t<decltype(member_of(s, member))>;
         if constexpr (std::is_same_v<T, std::optional<Real>>)
-          s.*member = si;
+          member_of(s, member) = si;
         else
           throw std::logic_error("set_number: field " + std::string(f.key) + " is not a number");
       },
@@ -226,9 +226,9 @@ template <class S>
 void set_flag(S& s, const Field<S>& f, bool on) {
   std::visit(
       [&](auto member) {
-        using T = std::remove_cvref_t<decltype(s.*member)>;
+        using T = std::remove_cvref_t<decltype(member_of(s, member))>;
         if constexpr (std::is_same_v<T, std::optional<bool>>)
-          s.*member = on;
+          member_of(s, member) = on;
         else
           throw std::logic_error("set_flag: field " + std::string(f.key) + " is not a flag");
       },
@@ -249,8 +249,8 @@ template <class S>
 std::string value_text(const S& s, const Field<S>& f) {
   return std::visit(
       [&](auto member) -> std::string {
-        using T = std::remove_cvref_t<decltype(s.*member)>;
-        const T& v = s.*member;
+        using T = std::remove_cvref_t<decltype(member_of(s, member))>;
+        const T& v = member_of(s, member);
         if constexpr (std::is_same_v<T, std::optional<Real>>)
           return v ? detail::real_text(*v, f.kind, f.quantity, f.unit) : std::string();
         else if constexpr (std::is_same_v<T, Real>)

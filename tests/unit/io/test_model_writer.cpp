@@ -81,10 +81,12 @@ TEST(ModelWriter, ValuesThatNoUnitWritesExactlyRoundTrip) {
   SpringSpec bearing;
   bearing.name = "bearing";
   bearing.node = std::string("a");
-  bearing.ky = SpeedCoefficient(SpeedCoefficient::Table{{0.0, 1.0 / 3.0, 100.0}, {1e7, 2e7 / 3.0, 3e7}});
-  bearing.kz = SpeedCoefficient(SpeedCoefficient::Arctan{5e6, 3.98, 0.55, 0.9, 0.1});
-  bearing.cy = SpeedCoefficient(SpeedCoefficient::Step{10.0, 20.0, 2.0 * 3.141592653589793 * 7.1});
-  bearing.kx = SpeedCoefficient(1e8);
+  bearing.coefficients[spring::ky] =
+      SpeedCoefficient(SpeedCoefficient::Table{{0.0, 1.0 / 3.0, 100.0}, {1e7, 2e7 / 3.0, 3e7}});
+  bearing.coefficients[spring::kz] = SpeedCoefficient(SpeedCoefficient::Arctan{5e6, 3.98, 0.55, 0.9, 0.1});
+  bearing.coefficients[spring::cy] =
+      SpeedCoefficient(SpeedCoefficient::Step{10.0, 20.0, 2.0 * 3.141592653589793 * 7.1});
+  bearing.coefficients[spring::kx] = SpeedCoefficient(1e8);
   spec.springs.push_back(bearing);
   spec.nodes.push_back({.x = -0.0, .name = "housing", .number = 40, .rotating = false});
   spec.campbell.stop = 1000.0 / 7.0;

@@ -49,9 +49,9 @@ TEST(Parameters, GetByNameAndIndex) {
 TEST(Parameters, SetWithUnitsAndBareSI) {
   ModelSpec spec = spec_of(examples + "/02_centrifuge/model.toml");
   set_parameter(spec, "springs[bearing k12].ky", "2e7 N/m");
-  EXPECT_EQ(*spec.springs[0].ky, SpeedCoefficient(2e7));
+  EXPECT_EQ(*spec.springs[0].coefficients[spring::ky], SpeedCoefficient(2e7));
   set_parameter(spec, "springs[bearing k12].ky", "30 kN/mm");
-  EXPECT_EQ(*spec.springs[0].ky, SpeedCoefficient(3e7));
+  EXPECT_EQ(*spec.springs[0].coefficients[spring::ky], SpeedCoefficient(3e7));
   set_parameter(spec, "shafts[0].sections[1].outer_diameter", "12 mm");
   EXPECT_EQ(spec.shafts[0].sections[1].outer_diameter, 12.0 / 1000.0);
   set_parameter(spec, "shafts[0].sections[1].elements", "8");
@@ -63,7 +63,7 @@ TEST(Parameters, SetWithUnitsAndBareSI) {
   set_parameter(spec, "campbell.start", "5 Hz");
   EXPECT_DOUBLE_EQ(*spec.campbell.start, 2.0 * pi * 5.0);
   set_parameter(spec, "springs[bearing k12].kyz", "1e5 N/m");
-  EXPECT_EQ(*spec.springs[0].kyz, SpeedCoefficient(1e5));
+  EXPECT_EQ(*spec.springs[0].coefficients[spring::kyz], SpeedCoefficient(1e5));
 }
 
 TEST(Parameters, PartsOfCoefficientLaws) {
@@ -72,7 +72,7 @@ TEST(Parameters, PartsOfCoefficientLaws) {
   EXPECT_EQ(get_parameter(spec, "springs[foot k11].ky").value, 9000.0);  // the arctan's value
   set_parameter(spec, "springs[foot k11].ky.f_as", "5 Hz");
   set_parameter(spec, "springs[foot k11].ky.c1", "0.8");
-  const auto& law = std::get<SpeedCoefficient::Arctan>(spec.springs[2].ky->law());
+  const auto& law = std::get<SpeedCoefficient::Arctan>(spec.springs[2].coefficients[spring::ky]->law());
   EXPECT_EQ(law.f_as, 5.0);
   EXPECT_EQ(law.c1, 0.8);
   EXPECT_EQ(law.value, 9000.0);  // the other parts are kept
@@ -92,9 +92,9 @@ TEST(Parameters, PartsOfCoefficientLaws) {
   EXPECT_EQ(get_parameter(grid, "springs[bearing b].cy.values[2]").value, 50.0);
   set_parameter(grid, "springs[bearing b].kyz.values[1][1]", "5 kN/m");
   set_parameter(grid, "springs[bearing b].cy.frequencies[1]", "60 Hz");
-  const auto& t = std::get<SpeedCoefficient::FrequencyTable>(grid.springs[1].kyz->law());
+  const auto& t = std::get<SpeedCoefficient::FrequencyTable>(grid.springs[1].coefficients[spring::kyz]->law());
   EXPECT_EQ(t.values, (std::vector<Real>{1e4, 2e4, -1e4, 5e3}));  // row-major, the rest kept
-  const auto& row = std::get<SpeedCoefficient::FrequencyTable>(grid.springs[1].cy->law());
+  const auto& row = std::get<SpeedCoefficient::FrequencyTable>(grid.springs[1].coefficients[spring::cy]->law());
   EXPECT_DOUBLE_EQ(row.frequencies[1], 2.0 * 3.141592653589793 * 60.0);
   const std::string whole = error_of([&] { (void)get_parameter(grid, "springs[bearing b].kyz"); });
   EXPECT_NE(whole.find("follows a frequency table law: name an entry"), std::string::npos) << whole;

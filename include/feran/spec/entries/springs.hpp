@@ -3,10 +3,12 @@
 /// The spec of a model-entry family (docs/model-format.md); its field table and build
 /// step are in src/spec/entries/springs.cpp.
 
+#include <array>
 #include <optional>
 #include <string>
 
 #include <feran/core/types.hpp>
+#include <feran/elements/spring_damper.hpp>
 #include <feran/model/speed_coefficient.hpp>
 #include <feran/spec/node_ref.hpp>
 
@@ -18,8 +20,8 @@ struct SpringSpec {
   std::string name;
   NodeRef node;
   std::optional<NodeRef> to;  ///< not given (or "ground"): to ground
-  std::optional<SpeedCoefficient> kx, ky, kz, krx, kry, krz, kyz, kzy;
-  std::optional<SpeedCoefficient> cx, cy, cz, crx, cry, crz, cyz, czy;
+  /// By spring::Coefficient (kx … czy, spring::names): e.g. coefficients[spring::ky].
+  std::array<std::optional<SpeedCoefficient>, spring::count> coefficients{};
   Real loss_factor = 0.0;
   bool operator==(const SpringSpec&) const = default;
 };
