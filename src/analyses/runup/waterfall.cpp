@@ -26,6 +26,8 @@ Waterfall waterfall(const TransientResult& result, std::size_t probe, Dof dof, s
                    intervals.end());
   Waterfall w;
   w.sample_interval = intervals[intervals.size() / 2];
+  if (!(w.sample_interval > 0.0))
+    throw Error("a waterfall needs samples at increasing times: the median interval between them is not positive");
   const Real length = window.value_or((s.back().t - s.front().t) / 20.0);
   const auto total = static_cast<Index>(s.size());
   w.window_samples = std::clamp<Index>(std::llround(length / w.sample_interval), 8, total);

@@ -155,7 +155,11 @@
   // it computed, in the report's order, in data.sections.
   const context = { data, unit, fromHz, fromRpm, freqUnit, speedTitle, verdict, unstableShapes, numbers, palette, el, fmt, sectionEl,
                     failed, figure, axis, table, operatingShape };
-  for (const key of data.sections) window.feranSections[key](context);
+  for (const key of data.sections) {
+    const draw = (window.feranSections || {})[key];
+    if (draw) draw(context);
+    else root.append(el("p", { class: "error" }, `This report's script has no section "${key}": its data is kept in the page (feran-data).`));
+  }
 
   // ---------------------------------------------------------------- numbers and inputs
   {

@@ -55,6 +55,9 @@ TEST(Waterfall, DefaultWindowIsATwentiethOfTheRunAndBadArgumentsAreRefused) {
   EXPECT_THROW(waterfall(r, 1, Dof::v), Error);
   EXPECT_THROW(waterfall(r, 0, Dof::v, {}, 1.0), Error);
   EXPECT_THROW(waterfall(r, 0, Dof::v, -1.0), Error);
+  TransientResult still = r;  // samples all at one time
+  for (TransientSample& s : still.samples) s.t = 0.0;
+  EXPECT_THROW(waterfall(still, 0, Dof::v), Error);
 }
 
 }  // namespace
