@@ -2,7 +2,7 @@
 /// @file
 /// The waterfall of a run-up: the amplitude spectra of one DOF of a probe over
 /// successive windows of its samples, against the speed at each window's middle. The
-/// one definition the report and feran.plot draw (docs/output-format.md, "Waterfall").
+/// one definition the report and feran.plot draw (docs/report.md, "Run-up"; docs/python.md, feran.plot).
 
 #include <cstddef>
 #include <optional>
