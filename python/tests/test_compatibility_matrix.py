@@ -2,8 +2,8 @@
 
 Families are every shipped example model and one small rotor per kind of support
 (journal bearings in the short, long and finite theories, the finite one also with its
-film force from its table in every analysis, rolling bearings, a tapered
-shaft under axial load), generated here from the journal-bearing rotor of the tests
+film force from its table in every analysis, rolling bearings, an annular seal beside
+the journal bearings, a tapered shaft under axial load), generated here from the journal-bearing rotor of the tests
 (tests/models/valid/journal_rotor.toml); the examples bring frequency tables (07), a
 torque drive (02, model_motor) and dry friction (03). Analyses are the command
 line's: modal, campbell, response, static, runup (20 ms of the model's own run-up),
@@ -59,6 +59,10 @@ def journal_variant(text, kind):
                     'element_diameter = "12 mm"\npitch_diameter = "80 mm"\nclearance = "5 um"\n'
                     'hertz_constant = 1e10\n')
         return out
+    if kind == "seal":  # a water seal at disk 2 (a balance drum), the journal bearings kept
+        return text + ('\n[[annular_seals]]\nname = "balance drum"\nnode = "disk 2"\ndiameter = "150 mm"\n'
+                       'length = "40 mm"\nclearance = "0.2 mm"\npressure_drop = "2 MPa"\n'
+                       'density = "1000 kg/m^3"\nviscosity = "1 mPa*s"\n')
     if kind == "tapered_axial":
         return text.replace('  length = "400 mm"\n  outer_diameter = "60 mm"\n  elements = 4\n  end_node = "disk 2"',
                             '  length = "400 mm"\n  outer_diameter = "60 mm"\n  outer_diameter_end = "50 mm"\n'
@@ -67,7 +71,7 @@ def journal_variant(text, kind):
 
 
 SUPPORT_FAMILIES = ["journal_short", "journal_long", "journal_finite", "journal_finite_table", "rolling",
-                    "tapered_axial"]
+                    "seal", "tapered_axial"]
 EXAMPLES = sorted(p for p in glob.glob(os.path.join(SOURCE, "examples", "*", "*.toml"))
                   if not p.endswith(".study.toml"))
 FAMILIES = [("example:" + os.path.relpath(p, os.path.join(SOURCE, "examples")), p) for p in EXAMPLES] + \
@@ -92,6 +96,7 @@ REFUSALS = [
     r"operating (speed )?range|--min-speed|min_speed",  # api684 without an operating range
     r"no \[runup\]|give a speed profile|--to|--speed",   # runup without a profile
     r"the model has no \[\[unbalances\]\]|nothing excites",  # response without excitation
+    r"added mass that changes with speed",  # runup with an annular seal (its mass varies with speed)
 ]
 
 

@@ -691,6 +691,7 @@ Model Builder::build(BuildInfo* info) {
   build_friction();
   build_journal_bearings();
   build_rolling_bearings();
+  build_annular_seals();
   build_rigid_links();
   build_fixed();
   build_unbalances();

@@ -102,6 +102,7 @@ class Builder {
   void build_friction();
   void build_journal_bearings();
   void build_rolling_bearings();
+  void build_annular_seals();
   std::pair<Index, std::optional<Index>> bearing_nodes(const NodeRef& journal, const std::optional<NodeRef>& to,
                                                        const std::string& path, std::string_view what) const;
   void build_rigid_links();

@@ -88,7 +88,7 @@ class SpringDamper {
   Matrix damping_6x6(Real speed, std::optional<Real> frequency = std::nullopt) const;
   /// The force it transmits (ability of connecting elements, model/element.hpp).
   Transmission transmission(Real speed, std::optional<Real> frequency = std::nullopt) const {
-    return {node_a_, node_b_, stiffness_6x6(speed, frequency), damping_6x6(speed, frequency), coeffs_.loss_factor};
+    return {node_a_, node_b_, stiffness_6x6(speed, frequency), damping_6x6(speed, frequency), coeffs_.loss_factor, {}};
   }
   /// The speed ranges of its tabulated coefficients (ability, model/element.hpp).
   std::vector<SpeedRange> speed_ranges() const;

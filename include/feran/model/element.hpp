@@ -74,8 +74,8 @@ struct LocalMatrices {
 };
 
 /// What a connecting element transmits at a speed: with Δq = q_a − q_b (q_b = 0 for
-/// the ground) its force on node a is −(K·Δq + C·Δq'), and K·Δq + C·Δq' is reported
-/// as the force it transmits to node b or the ground. K and C are 6×6 in the DOF order
+/// the ground) its force on node a is −(K·Δq + C·Δq' + M·Δq''), and K·Δq + C·Δq' +
+/// M·Δq'' is reported as the force it transmits to node b or the ground. K and C are 6×6 in the DOF order
 /// u, v, w, rx, ry, rz.
 struct Transmission {
   Index node_a = 0;
@@ -83,6 +83,9 @@ struct Transmission {
   Matrix K;                     ///< [N/m, N m/rad]
   Matrix C;                     ///< [N s/m, N m s/rad]
   Real loss_factor = 0.0;       ///< hysteretic loss factor η of K (harmonic analyses)
+  /// Added mass [kg, kg m²] of a fluid element (an annular seal): its force on node a
+  /// has −M·Δq'' too. Empty: none.
+  Matrix M;
 };
 
 /// The nodes a connecting element joins: node_a to node_b, or to the ground.

@@ -134,8 +134,9 @@ using FieldTable = std::vector<Field<S>>;
 
 /// The field table of spec type S. Defined for ModelSpec (top-level keys), OptionsSpec,
 /// MaterialSpec, ShaftSpec, SectionSpec, NodeSpec, RigidBodySpec, SpringSpec,
-/// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RollingBearingSpec, RigidLinkSpec, FixedSpec, UnbalanceSpec,
-/// ForceSpec, StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec, Api684Spec and DriveSpec.
+/// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RollingBearingSpec, AnnularSealSpec, RigidLinkSpec, FixedSpec,
+/// UnbalanceSpec, ForceSpec, StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec, Api684Spec
+/// and DriveSpec.
 template <class S>
 const FieldTable<S>& fields_of();
 
@@ -184,6 +185,7 @@ void visit_tables(Spec& spec, F&& f) {
   f("journal_bearings", array_of_tables, "plain journal bearings on an oil film (nonlinear)", spec.journal_bearings);
   f("rolling_bearings", array_of_tables, "ball and roller bearings in Hertzian contact (nonlinear)",
     spec.rolling_bearings);
+  f("annular_seals", array_of_tables, "plain annular liquid seals (short-seal bulk-flow model)", spec.annular_seals);
   f("rigid_links", array_of_tables, "nodes moving together as one rigid body", spec.rigid_links);
   f("fixed", array_of_tables, "DOFs held at zero", spec.fixed);
   f("unbalances", array_of_tables, "point unbalances", spec.unbalances);

@@ -25,6 +25,7 @@
 #include <feran/spec/entries/rotating_dampers.hpp>
 #include <feran/spec/entries/friction.hpp>
 #include <feran/spec/entries/journal_bearings.hpp>
+#include <feran/spec/entries/annular_seals.hpp>
 #include <feran/spec/entries/rolling_bearings.hpp>
 #include <feran/spec/entries/rigid_links.hpp>
 #include <feran/spec/entries/fixed.hpp>
@@ -202,6 +203,7 @@ struct ModelSpec {
   std::vector<FrictionSpec> friction;
   std::vector<JournalBearingSpec> journal_bearings;
   std::vector<RollingBearingSpec> rolling_bearings;
+  std::vector<AnnularSealSpec> annular_seals;
   std::vector<RigidLinkSpec> rigid_links;
   std::vector<FixedSpec> fixed;
   std::vector<UnbalanceSpec> unbalances;

@@ -357,7 +357,7 @@ class HarmonicSweep {
     stations(q_full, speed, omega, out);
   }
 
-  // What each spring–damper and support transmits: (K(1 + jη) + jωC)·(q_a − q_b), and
+  // What each spring–damper and support transmits: (K(1 + jη) + jωC − ω²M)·(q_a − q_b), and
   // each journal's orbit relative to its housing.
   void transmitted_forces(const ComplexVector& q_full, Real speed, Real omega, PointResult& out) const {
     // The motion of a connecting element's first node relative to its second.
@@ -373,10 +373,11 @@ class HarmonicSweep {
       const Transmission link = *element.transmission(speed, omega);
       const NodeAmplitudes dq = relative(link);
       const Eigen::Map<const Eigen::Matrix<Complex, dofs_per_node, 1>> delta(dq.data());
-      const Eigen::Matrix<Complex, dofs_per_node, 1> force =
-          (Complex(1.0, link.loss_factor + options_.loss_factor) * link.K.cast<Complex>() +
-           I * omega * link.C.cast<Complex>()) *
-          delta;
+      Eigen::Matrix<Complex, dofs_per_node, dofs_per_node> Z =
+          Complex(1.0, link.loss_factor + options_.loss_factor) * link.K.cast<Complex>() +
+          I * omega * link.C.cast<Complex>();
+      if (link.M.size() != 0) Z -= omega * omega * link.M.cast<Complex>();  // a seal's added mass
+      const Eigen::Matrix<Complex, dofs_per_node, 1> force = Z * delta;
       NodeAmplitudes f;
       for (int d = 0; d < dofs_per_node; ++d) f[static_cast<std::size_t>(d)] = force(d);
       return f;

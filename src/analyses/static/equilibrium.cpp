@@ -385,7 +385,9 @@ class LinearisedSupport {
     Transmission t{.node_a = nodes.front(),
                    .node_b = {},
                    .K = Matrix::Zero(dofs_per_node, dofs_per_node),
-                   .C = Matrix::Zero(dofs_per_node, dofs_per_node)};
+                   .C = Matrix::Zero(dofs_per_node, dofs_per_node),
+                   .loss_factor = 0.0,
+                   .M = {}};
     if (nodes.size() > 1) t.node_b = nodes[1];
     for (std::size_t i = 0; i < lm.dofs.size(); ++i)
       for (std::size_t j = 0; j < lm.dofs.size(); ++j) {

@@ -116,6 +116,14 @@ void check_options(const Model& model, const TransientOptions& options) {
   for (Index e : options.springs)
     if (!model.elements.at(static_cast<std::size_t>(e)).transmission(0.0))
       throw Error("transient: a recorded element transmits no force (it is not a spring-damper)");
+  // Run-ups integrate M·x'' = r(t, x, v) with a constant mass matrix.
+  for (const Element& e : model.elements)
+    if (e.speed_dependent() && e.local_matrices({}).M.size() != 0)
+      throw Error(
+          fmt::format("runup: '{}' ({}) has an added mass that changes with speed, and a run-up integrates "
+                      "with a constant mass matrix; the steady-state analyses (modal, campbell, response, "
+                      "static, api684) take it",
+                      e.label(), e.kind()));
   if (options.driven && !model.drive)
     throw Error("runup: a torque-driven run needs the model's [drive] (its motor and load torques)");
   if (options.driven && options.reduced_modes > 0)

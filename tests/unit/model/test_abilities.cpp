@@ -31,7 +31,7 @@ struct TestBearing {
   }
   std::string_view kind() const { return "test_bearing"; }
   bool speed_dependent() const { return false; }
-  Transmission transmission(Real) const { return {node, std::nullopt, K6(), Matrix::Zero(6, 6), 0.0}; }
+  Transmission transmission(Real) const { return {node, std::nullopt, K6(), Matrix::Zero(6, 6), 0.0, {}}; }
 };
 
 /// A constant lateral load with only the static ability.
