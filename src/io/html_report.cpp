@@ -115,7 +115,7 @@ json model_summary(const ModelFile& file, Real speed) {
       const auto k = [&](Dof d) { return t->K(static_cast<Index>(d), static_cast<Index>(d)); };
       const auto c = [&](Dof d) { return t->C(static_cast<Index>(d), static_cast<Index>(d)); };
       springs.push_back({{"label", el.label()},
-                         {"kind", "spring_damper"},
+                         {"kind", std::string(el.kind())},
                          {"node_a", t->node_a},
                          {"node_b", t->node_b ? json(*t->node_b) : json(nullptr)},
                          {"x_m", model.nodes[static_cast<std::size_t>(t->node_a)].x},

@@ -142,7 +142,7 @@
       ["polar inertia", fmt(rp.polar_inertia_kg_m2, 5), "kg m²"], ["degrees of freedom", m.n_dofs, "–"]]);
     numbers.push(["rotor mass", rp.mass_kg, "kg", "model"], ["polar inertia", rp.polar_inertia_kg_m2, "kg m²", "model"],
                  ["transverse inertia", rp.transverse_inertia_kg_m2, "kg m²", "model"]);
-    const kinds = { spring_damper: "spring–damper", fluid_film_bearing: "journal bearing", rolling_bearing: "rolling bearing" };
+    const kinds = { spring_damper: "spring–damper", annular_seal: "annular seal", fluid_film_bearing: "journal bearing", rolling_bearing: "rolling bearing" };
     table(s, ["bearing or spring", "kind", "node", "to", `k_yy [N/m]`, `k_zz [N/m]`, "k_yz [N/m]", "k_zy [N/m]", "c_yy [N s/m]", "c_zz [N s/m]"],
       m.springs.map((b) => [b.label, kinds[b.kind] || b.kind, m.nodes[b.node_a].number, b.node_b === null ? "ground" : m.nodes[b.node_b].number,
                             fmt(b.kyy_n_per_m), fmt(b.kzz_n_per_m), fmt(b.kyz_n_per_m), fmt(b.kzy_n_per_m), fmt(b.cyy_n_s_per_m), fmt(b.czz_n_s_per_m)]));

@@ -31,7 +31,8 @@ const FieldTable<AnnularSealSpec>& fields_of<AnnularSealSpec>() {
       {.key = "length",
        .kind = K::quantity,
        .member = &S::length,
-       .doc = "axial length L; the model neglects the circumferential pressure flow, as short seals (L well below 2R) allow",
+       .doc = "axial length L; the model neglects the circumferential pressure flow, as short seals (L well below 2R) "
+              "allow",
        .quantity = Q::length,
        .bound = positive,
        .required = true},
