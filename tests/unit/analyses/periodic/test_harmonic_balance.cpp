@@ -1,0 +1,99 @@
+// Harmonic balance of a dense system (analyses/periodic/harmonic_balance.hpp) against
+// closed forms:
+// - a linear system's balance is its dynamic stiffness: the orbit under F cos ωt is
+//   X = F/(k − mω² + icω) in one step (to 1e-12);
+// - Duffing's oscillator m x'' + c x' + k x + k₃x³ = F cos ωt with one harmonic: every
+//   orbit found satisfies the single-harmonic frequency response
+//   [(k − mω²)A + (3/4)k₃A³]² + (cωA)² = F² (to 1e-10, the Newton tolerance), and in the
+//   range between the folds the lower and upper branches are both found, from starts
+//   near each;
+// - adding harmonics converges: the fundamental's amplitude changes by less and less
+//   (H = 1, 3, 5, 7 against H = 11; each step at least ten times smaller here).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <feran/analyses/periodic/harmonic_balance.hpp>
+#include <feran/core/error.hpp>
+
+namespace feran::test_harmonic_balance {
+namespace {
+
+constexpr Real m = 1.0, c = 0.05, k = 1.0, k3 = 0.5, F = 0.2;
+
+PeriodicSystem duffing(const FourierBasis& basis) {
+  PeriodicSystem s{.M = Matrix::Constant(1, 1, m),
+                   .C = Matrix::Constant(1, 1, c),
+                   .K = Matrix::Constant(1, 1, k),
+                   .external = Vector::Zero(basis.terms()),
+                   .force = [](Real, const Vector& x, const Vector&) {
+                     return NonlinearForceValue{Vector::Constant(1, -k3 * x(0) * x(0) * x(0)),
+                                                Matrix::Constant(1, 1, -3 * k3 * x(0) * x(0)), Matrix()};
+                   }};
+  s.external(1) = F;  // F cos ωt
+  return s;
+}
+
+Real amplitude(const Vector& X) { return std::hypot(X(1), X(2)); }
+
+TEST(HarmonicBalance, LinearSystemIsItsDynamicStiffness) {
+  const FourierBasis basis{.harmonics = 2, .samples = 8};
+  PeriodicSystem s = duffing(basis);
+  s.force = nullptr;
+  const Real w = 0.8;
+  const BalanceResult r = solve_balance(basis, s, w, Vector::Zero(basis.terms()));
+  ASSERT_TRUE(r.converged);
+  EXPECT_EQ(r.iterations, 1);
+  const Complex X = F / Complex(k - m * w * w, c * w);  // x = Re(X e^{iωt}) = a cos + b sin, a = Re X, b = −Im X
+  EXPECT_NEAR(r.X(1), X.real(), 1e-12 * std::abs(X));
+  EXPECT_NEAR(r.X(2), -X.imag(), 1e-12 * std::abs(X));
+  EXPECT_NEAR(r.X(3), 0.0, 1e-15);
+}
+
+TEST(HarmonicBalance, DuffingMeetsTheSingleHarmonicResponseOnBothBranches) {
+  const FourierBasis basis{.harmonics = 1, .samples = 8};
+  const PeriodicSystem s = duffing(basis);
+  const Real w = 1.5;  // between the folds for these values
+  std::vector<Real> found;
+  for (const Real start : {0.0, 2.2}) {
+    Vector X0 = Vector::Zero(basis.terms());
+    X0(1) = start;
+    const BalanceResult r = solve_balance(basis, s, w, X0);
+    ASSERT_TRUE(r.converged) << start;
+    const Real A = amplitude(r.X);
+    const Real lhs = std::pow((k - m * w * w) * A + 0.75 * k3 * A * A * A, 2) + std::pow(c * w * A, 2);
+    EXPECT_NEAR(lhs, F * F, 1e-10 * F * F) << start;
+    found.push_back(A);
+  }
+  EXPECT_LT(found[0], 0.5);  // the lower branch
+  EXPECT_GT(found[1], 1.5);  // the upper branch
+}
+
+TEST(HarmonicBalance, AddingHarmonicsConverges) {
+  const Real w = 1.2;
+  auto fundamental = [&](Index H) {
+    const FourierBasis basis{.harmonics = H, .samples = 4 * H + 4};
+    Vector X0 = Vector::Zero(basis.terms());
+    X0(1) = 1.5;
+    const BalanceResult r = solve_balance(basis, duffing(basis), w, X0);
+    EXPECT_TRUE(r.converged) << H;
+    return amplitude(r.X);
+  };
+  const Real reference = fundamental(11);
+  Real previous = std::abs(fundamental(1) - reference);
+  EXPECT_GT(previous, 0.0);
+  for (const Index H : {3, 5, 7}) {
+    const Real error = std::abs(fundamental(H) - reference);
+    EXPECT_LT(error, 0.1 * previous) << H;
+    previous = error;
+  }
+}
+
+TEST(HarmonicBalance, RefusesMismatchedSizes) {
+  const FourierBasis basis{.harmonics = 1, .samples = 8};
+  EXPECT_THROW(solve_balance(basis, duffing(basis), 1.0, Vector::Zero(5)), Error);
+}
+
+}  // namespace
+}  // namespace feran::test_harmonic_balance
