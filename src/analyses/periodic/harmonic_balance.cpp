@@ -57,6 +57,21 @@ Residual residual(const FourierBasis& basis, const PeriodicSystem& system, const
 
 Real relative(const Residual& r) { return r.scale > 0 ? r.R.norm() / r.scale : r.R.norm(); }
 
+// The force's harmonics H + 1 … 3H relative to 0 … H, by an AFT on three times the
+// harmonics (the orbit's coefficients padded with zeros; a cubic force's reach), with
+// samples enough that force harmonics up to 9H do not fold onto them.
+Real truncation(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
+  if (!system.force || basis.harmonics == 0) return 0.0;
+  const Index n = X.size() / basis.terms();
+  const FourierBasis wide{.harmonics = 3 * basis.harmonics,
+                          .samples = std::max(basis.samples, 12 * basis.harmonics + 1)};
+  Vector padded = Vector::Zero(n * wide.terms());
+  padded.head(X.size()) = X;
+  const Vector F = aft(wide, omega, padded, system.force).F;
+  const Real kept = F.head(X.size()).norm(), left = F.tail(F.size() - X.size()).norm();
+  return kept > 0 ? left / kept : 0.0;
+}
+
 }  // namespace
 
 BalanceResult solve_balance(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X0,
@@ -67,7 +82,7 @@ BalanceResult solve_balance(const FourierBasis& basis, const PeriodicSystem& sys
   if (system.external.size() != 0 && system.external.size() != L.rows())
     throw Error(fmt::format("harmonic balance: the external force has {} coefficients, the system {}",
                             system.external.size(), L.rows()));
-  BalanceResult out{.X = X0, .converged = false, .iterations = 0, .residual = 0.0, .jacobian = {}};
+  BalanceResult out{.X = X0, .converged = false, .iterations = 0, .residual = 0.0, .truncation = 0.0, .jacobian = {}};
   Residual r = residual(basis, system, L, omega, out.X);
   out.residual = relative(r);
   while (out.residual > settings.tolerance && out.iterations < settings.max_iterations) {
@@ -89,6 +104,7 @@ BalanceResult solve_balance(const FourierBasis& basis, const PeriodicSystem& sys
     out.residual = relative(r);
   }
   out.converged = out.residual <= settings.tolerance;
+  out.truncation = truncation(basis, system, omega, out.X);
   out.jacobian = std::move(r.J);
   return out;
 }

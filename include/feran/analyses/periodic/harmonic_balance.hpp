@@ -31,7 +31,12 @@ struct BalanceResult {
   bool converged = false;
   int iterations = 0;
   Real residual = 0.0;  ///< the relative residual reached
-  Matrix jacobian;      ///< ∂R/∂X at X (Floquet analysis and continuation start from it)
+  /// The truncation estimate: the nonlinear force's harmonics H + 1 … 3H along the
+  /// orbit, which the balance leaves out, relative to its harmonics 0 … H (‖·‖ of their
+  /// coefficients). Small when H harmonics represent the orbit; add harmonics when it
+  /// is not. 0 without a nonlinear force.
+  Real truncation = 0.0;
+  Matrix jacobian;  ///< ∂R/∂X at X (Floquet analysis and continuation start from it)
 };
 
 /// The coefficients of L(ω)·X: the linear part's balance, harmonic by harmonic

@@ -90,6 +90,27 @@ TEST(HarmonicBalance, AddingHarmonicsConverges) {
   }
 }
 
+// The truncation estimate: with one harmonic, x³ along A cos(ωt + φ) has (3/4)A³ at ω
+// and (1/4)A³ at 3ω, so the estimate is 1/3 whatever the orbit (to 1e-12); with more
+// harmonics it falls as the fundamental's error does.
+TEST(HarmonicBalance, TruncationEstimateSaysWhenToAddHarmonics) {
+  const Real w = 1.2;
+  Real previous = 0.0;
+  for (const Index H : {1, 3, 5, 7}) {
+    const FourierBasis basis{.harmonics = H, .samples = 4 * H + 4};
+    Vector X0 = Vector::Zero(basis.terms());
+    X0(1) = 1.5;
+    const BalanceResult r = solve_balance(basis, duffing(basis), w, X0);
+    ASSERT_TRUE(r.converged) << H;
+    if (H == 1) {
+      EXPECT_NEAR(r.truncation, 1.0 / 3.0, 1e-12);
+    } else {
+      EXPECT_LT(r.truncation, 0.1 * previous) << H;
+    }
+    previous = r.truncation;
+  }
+}
+
 TEST(HarmonicBalance, RefusesMismatchedSizes) {
   const FourierBasis basis{.harmonics = 1, .samples = 8};
   EXPECT_THROW(solve_balance(basis, duffing(basis), 1.0, Vector::Zero(5)), Error);
