@@ -60,13 +60,29 @@ void motion_at(const FourierBasis& basis, Real omega, const Vector& X, Real t, V
   v *= omega;
 }
 
-AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force) {
+Vector phase_derivative(const FourierBasis& basis, const Vector& X) {
+  const Index n = dofs_of(basis, X);
+  Vector D = Vector::Zero(X.size());
+  for (Index k = 1; k <= basis.harmonics; ++k) {
+    const Real kr = static_cast<Real>(k);
+    D.segment((2 * k - 1) * n, n) = kr * X.segment(2 * k * n, n);
+    D.segment(2 * k * n, n) = -kr * X.segment((2 * k - 1) * n, n);
+  }
+  return D;
+}
+
+AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force,
+              bool velocity_jacobian) {
   basis.check();
   if (!(omega > 0)) throw Error("harmonic balance: the base frequency must be positive");
   const Index n = dofs_of(basis, X), terms = basis.terms(), N = basis.samples;
-  AftResult out{.F = Vector::Zero(n * terms), .J = Matrix::Zero(n * terms, n * terms)};
-  Vector g, dg, x, v, w(terms);
-  Matrix local(n, n * terms);  // ∂f_j/∂X at one sample
+  AftResult out{.F = Vector::Zero(n * terms),
+                .J = Matrix::Zero(n * terms, n * terms),
+                .dF_domega = Vector::Zero(n * terms),
+                .Jv = velocity_jacobian ? Matrix::Zero(n * terms, n * terms) : Matrix()};
+  Vector g, dg, x, v, w(terms), dv;
+  Matrix local(n, n * terms);   // ∂f_j/∂X at one sample
+  Matrix localv(n, n * terms);  // ∂f_j/∂V at one sample
   for (Index j = 0; j < N; ++j) {
     const Real theta = 2 * pi * static_cast<Real>(j) / static_cast<Real>(N);
     basis_row(basis.harmonics, theta, g, dg);
@@ -77,13 +93,23 @@ AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const Loca
     // The DFT's weights: 1/N for the mean, 2/N for the cosines and sines.
     w = (2.0 / static_cast<Real>(N)) * g;
     w(0) = 1.0 / static_cast<Real>(N);
+    const bool has_v = f.dfdv.size() != 0;
     for (Index m = 0; m < terms; ++m) {
       local.middleCols(m * n, n) = g(m) * f.dfdx;
-      if (f.dfdv.size() != 0) local.middleCols(m * n, n) += (omega * dg(m)) * f.dfdv;
+      if (has_v) local.middleCols(m * n, n) += (omega * dg(m)) * f.dfdv;
+      if (velocity_jacobian) {
+        if (has_v)
+          localv.middleCols(m * n, n) = g(m) * f.dfdv;
+        else
+          localv.middleCols(m * n, n).setZero();
+      }
     }
+    if (has_v) dv.noalias() = f.dfdv * (v / omega);  // ∂f/∂ẋ · ∂ẋ/∂ω
     for (Index c = 0; c < terms; ++c) {
       out.F.segment(c * n, n) += w(c) * f.f;
       out.J.middleRows(c * n, n) += w(c) * local;
+      if (has_v) out.dF_domega.segment(c * n, n) += w(c) * dv;
+      if (velocity_jacobian) out.Jv.middleRows(c * n, n) += w(c) * localv;
     }
   }
   return out;

@@ -1,6 +1,7 @@
 #include <feran/analyses/periodic/harmonic_balance.hpp>
 
 #include <algorithm>
+#include <vector>
 
 #include <Eigen/LU>
 #include <fmt/format.h>
@@ -32,61 +33,115 @@ Matrix linear_balance(const FourierBasis& basis, const PeriodicSystem& system, R
 
 namespace {
 
-struct Residual {
-  Vector R;
-  Matrix J;
-  Real scale = 0.0;
-};
-
-Residual residual(const FourierBasis& basis, const PeriodicSystem& system, const Matrix& L, Real omega,
-                  const Vector& X) {
-  Residual r{.R = L * X, .J = L, .scale = 0.0};
-  r.scale = r.R.norm();
-  if (system.external.size() != 0) {
-    r.R -= system.external;
-    r.scale = std::max(r.scale, system.external.norm());
-  }
-  if (system.force) {
-    const AftResult f = aft(basis, omega, X, system.force);
-    r.R -= f.F;
-    r.J -= f.J;
-    r.scale = std::max(r.scale, f.F.norm());
-  }
-  return r;
+void check_sizes(const FourierBasis& basis, const PeriodicSystem& system, const Vector& X) {
+  const Index rows = system.K.rows() * basis.terms();
+  if (X.size() != rows)
+    throw Error(fmt::format("harmonic balance: the orbit has {} coefficients, the system {}", X.size(), rows));
+  if (system.external.size() != 0 && system.external.size() != rows)
+    throw Error(fmt::format("harmonic balance: the external force has {} coefficients, the system {}",
+                            system.external.size(), rows));
+  for (const Index d : system.force_dofs)
+    if (d < 0 || d >= system.K.rows())
+      throw Error(fmt::format("harmonic balance: the force acts on DOF {}, the system has {}", d, system.K.rows()));
 }
 
-Real relative(const Residual& r) { return r.scale > 0 ? r.R.norm() / r.scale : r.R.norm(); }
+// The AFT of the system's force on its DOFs, scattered into the whole layout.
+AftResult force_terms(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
+                      bool velocity_jacobian) {
+  if (system.force_dofs.empty()) return aft(basis, omega, X, system.force, velocity_jacobian);
+  const Index n = system.K.rows(), nl = static_cast<Index>(system.force_dofs.size()), terms = basis.terms();
+  std::vector<Index> at;  // position in X of each local coefficient
+  at.reserve(static_cast<std::size_t>(nl * terms));
+  for (Index m = 0; m < terms; ++m)
+    for (const Index d : system.force_dofs) at.push_back(m * n + d);
+  Vector Xl(nl * terms);
+  for (std::size_t i = 0; i < at.size(); ++i) Xl(static_cast<Index>(i)) = X(at[i]);
+  const AftResult local = aft(basis, omega, Xl, system.force, velocity_jacobian);
+  AftResult out{.F = Vector::Zero(X.size()),
+                .J = Matrix::Zero(X.size(), X.size()),
+                .dF_domega = Vector::Zero(X.size()),
+                .Jv = velocity_jacobian ? Matrix::Zero(X.size(), X.size()) : Matrix()};
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const Index li = static_cast<Index>(i);
+    out.F(at[i]) = local.F(li);
+    out.dF_domega(at[i]) = local.dF_domega(li);
+    for (std::size_t j = 0; j < at.size(); ++j) {
+      out.J(at[i], at[j]) = local.J(li, static_cast<Index>(j));
+      if (velocity_jacobian) out.Jv(at[i], at[j]) = local.Jv(li, static_cast<Index>(j));
+    }
+  }
+  return out;
+}
 
-// The force's harmonics H + 1 … 3H relative to 0 … H, by an AFT on three times the
-// harmonics (the orbit's coefficients padded with zeros; a cubic force's reach), with
-// samples enough that force harmonics up to 9H do not fold onto them.
-Real truncation(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
+// (∂L/∂ω)·X: harmonic k's −2k²ωM a_k + kC b_k and −2k²ωM b_k − kC a_k.
+Vector linear_frequency_derivative(const FourierBasis& basis, const PeriodicSystem& system, Real omega,
+                                   const Vector& X) {
+  const Index n = system.K.rows();
+  Vector d = Vector::Zero(X.size());
+  for (Index k = 1; k <= basis.harmonics; ++k) {
+    const Real kr = static_cast<Real>(k);
+    const auto a = X.segment((2 * k - 1) * n, n), b = X.segment(2 * k * n, n);
+    d.segment((2 * k - 1) * n, n) = -2 * kr * kr * omega * (system.M * a) + kr * (system.C * b);
+    d.segment(2 * k * n, n) = -2 * kr * kr * omega * (system.M * b) - kr * (system.C * a);
+  }
+  return d;
+}
+
+}  // namespace
+
+BalanceTerms balance_terms(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
+                           bool velocity_jacobian) {
+  const Matrix L = linear_balance(basis, system, omega);
+  check_sizes(basis, system, X);
+  BalanceTerms t{.R = L * X,
+                 .dR_dX = L,
+                 .dR_domega = linear_frequency_derivative(basis, system, omega, X),
+                 .Jv = {},
+                 .scale = 0.0};
+  t.scale = t.R.norm();
+  if (system.external.size() != 0) {
+    t.R -= system.external;
+    t.scale = std::max(t.scale, system.external.norm());
+  }
+  if (system.force) {
+    AftResult f = force_terms(basis, system, omega, X, velocity_jacobian);
+    t.R -= f.F;
+    t.dR_dX -= f.J;
+    t.dR_domega -= f.dF_domega;
+    t.scale = std::max(t.scale, f.F.norm());
+    t.Jv = std::move(f.Jv);
+  } else if (velocity_jacobian) {
+    t.Jv = Matrix::Zero(X.size(), X.size());
+  }
+  return t;
+}
+
+Real truncation_estimate(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
   if (!system.force || basis.harmonics == 0) return 0.0;
+  check_sizes(basis, system, X);
   const Index n = X.size() / basis.terms();
   const FourierBasis wide{.harmonics = 3 * basis.harmonics,
                           .samples = std::max(basis.samples, 12 * basis.harmonics + 1)};
   Vector padded = Vector::Zero(n * wide.terms());
   padded.head(X.size()) = X;
-  const Vector F = aft(wide, omega, padded, system.force).F;
+  const Vector F = force_terms(wide, system, omega, padded, false).F;
   const Real kept = F.head(X.size()).norm(), left = F.tail(F.size() - X.size()).norm();
   return kept > 0 ? left / kept : 0.0;
 }
+
+namespace {
+
+Real relative(const BalanceTerms& r) { return r.scale > 0 ? r.R.norm() / r.scale : r.R.norm(); }
 
 }  // namespace
 
 BalanceResult solve_balance(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X0,
                             const BalanceSettings& settings) {
-  const Matrix L = linear_balance(basis, system, omega);
-  if (X0.size() != L.rows())
-    throw Error(fmt::format("harmonic balance: the start has {} coefficients, the system {}", X0.size(), L.rows()));
-  if (system.external.size() != 0 && system.external.size() != L.rows())
-    throw Error(fmt::format("harmonic balance: the external force has {} coefficients, the system {}",
-                            system.external.size(), L.rows()));
   BalanceResult out{.X = X0, .converged = false, .iterations = 0, .residual = 0.0, .truncation = 0.0, .jacobian = {}};
-  Residual r = residual(basis, system, L, omega, out.X);
+  BalanceTerms r = balance_terms(basis, system, omega, out.X);
   out.residual = relative(r);
   while (out.residual > settings.tolerance && out.iterations < settings.max_iterations) {
-    const Eigen::PartialPivLU<Matrix> lu(r.J);
+    const Eigen::PartialPivLU<Matrix> lu(r.dR_dX);
     const Vector step = lu.solve(r.R);
     if (!step.allFinite()) break;  // a singular Jacobian: the last iterate is kept
     ++out.iterations;
@@ -94,7 +149,7 @@ BalanceResult solve_balance(const FourierBasis& basis, const PeriodicSystem& sys
     Real t = 1.0;
     for (int halving = 0; halving <= 20; ++halving, t *= 0.5) {
       const Vector trial = out.X - t * step;
-      Residual next = residual(basis, system, L, omega, trial);
+      BalanceTerms next = balance_terms(basis, system, omega, trial);
       if (next.R.norm() < r.R.norm() || halving == 20) {
         out.X = trial;
         r = std::move(next);
@@ -104,8 +159,8 @@ BalanceResult solve_balance(const FourierBasis& basis, const PeriodicSystem& sys
     out.residual = relative(r);
   }
   out.converged = out.residual <= settings.tolerance;
-  out.truncation = truncation(basis, system, omega, out.X);
-  out.jacobian = std::move(r.J);
+  out.truncation = truncation_estimate(basis, system, omega, out.X);
+  out.jacobian = std::move(r.dR_dX);
   return out;
 }
 

@@ -37,6 +37,13 @@ using LocalForce = std::function<NonlinearForceValue(Real t, const Vector& x, co
 struct AftResult {
   Vector F;  ///< n(2H + 1) force coefficients
   Matrix J;  ///< ∂F/∂X, n(2H + 1) square
+  /// ∂F/∂ω at fixed X: the force's change through the velocities ẋ = ω·(γ'(θ) ⊗ I)X
+  /// (a force's explicit dependence on time is taken to follow the phase θ = ωt).
+  Vector dF_domega;
+  /// ∂F/∂V, the Jacobian with respect to the velocity's own coefficients V (the
+  /// transform of ∂f/∂ẋ; J = ∂F/∂X_x + Jv·ω∇): Hill's method needs it apart. Empty
+  /// unless asked for.
+  Matrix Jv;
 };
 
 /// The motion's coefficients @p X (n(2H + 1) values, n = X.size()/(2H + 1)) sampled at
@@ -44,7 +51,13 @@ struct AftResult {
 /// coefficients by the discrete Fourier transform, exact for force harmonics up to
 /// N − H − 1 (no aliasing into the kept ones); the Jacobian likewise from ∂f/∂x and
 /// ∂f/∂v. Throws Error for a coefficient vector of the wrong length.
-AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force);
+/// With @p velocity_jacobian, Jv is filled as well.
+AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force,
+              bool velocity_jacobian = false);
+
+/// The coefficients of dx/dθ for a motion with coefficients @p X: ∇X, harmonic k's
+/// (a_k, b_k) becoming (k·b_k, −k·a_k), the mean 0.
+Vector phase_derivative(const FourierBasis& basis, const Vector& X);
 
 /// The motion at time @p t: x(t) and v(t) from its coefficients.
 void motion_at(const FourierBasis& basis, Real omega, const Vector& X, Real t, Vector& x, Vector& v);

@@ -6,6 +6,8 @@
 /// (aft.hpp). The rotor's analysis condenses its model onto the nonlinear DOFs and
 /// solves this. Theory: docs/theory/harmonic_balance.md.
 
+#include <vector>
+
 #include <feran/analyses/periodic/aft.hpp>
 #include <feran/core/types.hpp>
 
@@ -17,7 +19,27 @@ struct PeriodicSystem {
   Matrix M, C, K;    ///< n × n
   Vector external;   ///< f_e's n(2H + 1) coefficients (empty: none)
   LocalForce force;  ///< the nonlinear force (may be empty)
+  /// The DOFs the force acts on, in the order of its local x (empty: all n). The AFT
+  /// then works on these alone, and its cost does not grow with the other DOFs.
+  std::vector<Index> force_dofs = {};
 };
+
+/// The balance's residual and its derivatives at (ω, X).
+struct BalanceTerms {
+  Vector R;          ///< L(ω)X − F_e − F(X)
+  Matrix dR_dX;      ///< L(ω) − ∂F/∂X
+  Vector dR_domega;  ///< (∂L/∂ω)X − ∂F/∂ω, F_e held fixed
+  Matrix Jv;         ///< ∂F/∂V (velocity coefficients), n(2H + 1) square; when asked for
+  Real scale = 0.0;  ///< the largest of ‖L·X‖, ‖F_e‖ and ‖F(X)‖
+};
+
+/// R and its derivatives. With @p velocity_jacobian, Jv as well (Hill's method).
+BalanceTerms balance_terms(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
+                           bool velocity_jacobian = false);
+
+/// The force's harmonics H + 1 … 3H along the orbit @p X relative to its harmonics
+/// 0 … H (BalanceResult::truncation).
+Real truncation_estimate(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X);
 
 /// Newton's method on the balance.
 struct BalanceSettings {

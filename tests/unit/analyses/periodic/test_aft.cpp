@@ -7,7 +7,9 @@
 //   amount the DFT predicts;
 // - the Jacobian of a nonlinear force of positions and velocities on two DOFs equals
 //   central differences of the coefficients (step 1e-6: their error is O(h²) ≈ 1e-12
-//   against rounding ≈ 1e-10 relative; tolerance 1e-7).
+//   against rounding ≈ 1e-10 relative; tolerance 1e-7), and so does ∂F/∂ω;
+// - the velocity Jacobian Jv (Hill's method) makes up the whole Jacobian of a force of
+//   velocities alone: J = ω·Jv·∇ (to 1e-13 of the largest entry).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,6 +90,33 @@ TEST(Aft, JacobianEqualsDifferencesOfTheCoefficients) {
     const Vector d = (aft(basis, omega, p, force).F - aft(basis, omega, m, force).F) / (2 * h);
     EXPECT_LT((r.J.col(i) - d).cwiseAbs().maxCoeff(), 1e-7 * (1 + d.cwiseAbs().maxCoeff())) << i;
   }
+  // ∂F/∂ω holds the phase θ = ωt fixed: the forcing term, written −0.1 sin θ, does not
+  // change with ω.
+  const auto at_phase = [&](Real w) {
+    return [&, w](Real t, const Vector& x, const Vector& v) { return force(w * t / omega, x, v); };
+  };
+  const Vector dw =
+      (aft(basis, omega + h, X, at_phase(omega + h)).F - aft(basis, omega - h, X, at_phase(omega - h)).F) / (2 * h);
+  EXPECT_LT((r.dF_domega - dw).cwiseAbs().maxCoeff(), 1e-7 * (1 + dw.cwiseAbs().maxCoeff()));
+}
+
+TEST(Aft, VelocityJacobianMakesUpAForceOfVelocities) {
+  const FourierBasis basis{.harmonics = 3, .samples = 16};
+  const Real omega = 2.5;
+  const auto force = [](Real, const Vector&, const Vector& v) {
+    NonlinearForceValue f{Vector(2), Matrix::Zero(2, 2), Matrix::Zero(2, 2)};
+    f.f << -0.8 * v(0) * v(1), -0.3 * v(1) * v(1) * v(1);
+    f.dfdv << -0.8 * v(1), -0.8 * v(0), 0.0, -0.9 * v(1) * v(1);
+    return f;
+  };
+  Vector X(2 * basis.terms());
+  for (Index i = 0; i < X.size(); ++i) X(i) = 0.2 * std::cos(0.9 * static_cast<Real>(i) + 0.1);
+  const AftResult r = aft(basis, omega, X, force, true);
+  ASSERT_EQ(r.Jv.rows(), X.size());
+  Matrix D(X.size(), X.size());  // ∇ column by column
+  for (Index i = 0; i < X.size(); ++i) D.col(i) = phase_derivative(basis, Vector::Unit(X.size(), i));
+  const Matrix J = omega * r.Jv * D;
+  EXPECT_LT((r.J - J).cwiseAbs().maxCoeff(), 1e-13 * r.J.cwiseAbs().maxCoeff());
 }
 
 TEST(Aft, MotionAtIsTheFourierSeries) {

@@ -111,6 +111,45 @@ TEST(HarmonicBalance, TruncationEstimateSaysWhenToAddHarmonics) {
   }
 }
 
+// A force on some DOFs only (PeriodicSystem::force_dofs) is the same force written on
+// all of them: the residual and Jacobian agree to rounding (1e-14 of their size), and
+// ∂R/∂ω equals central differences (step 1e-6, O(h²) error; tolerance 1e-7).
+TEST(HarmonicBalance, ForceOnSomeDofsIsTheForceOnAll) {
+  const FourierBasis basis{.harmonics = 3, .samples = 16};
+  const Real w = 1.3;
+  PeriodicSystem on_one{.M = Matrix::Identity(2, 2),
+                        .C = (Matrix(2, 2) << 0.1, -0.02, -0.02, 0.05).finished(),
+                        .K = (Matrix(2, 2) << 2.0, -1.0, -1.0, 1.5).finished(),
+                        .external = Vector::Zero(2 * basis.terms()),
+                        .force =
+                            [](Real, const Vector& x, const Vector& v) {
+                              return NonlinearForceValue{Vector::Constant(1, -k3 * x(0) * x(0) * x(0) - 0.2 * v(0)),
+                                                         Matrix::Constant(1, 1, -3 * k3 * x(0) * x(0)),
+                                                         Matrix::Constant(1, 1, -0.2)};
+                            },
+                        .force_dofs = {1}};
+  on_one.external(2) = F;
+  PeriodicSystem on_all = on_one;
+  on_all.force_dofs.clear();
+  on_all.force = [](Real, const Vector& x, const Vector& v) {
+    NonlinearForceValue f{Vector::Zero(2), Matrix::Zero(2, 2), Matrix::Zero(2, 2)};
+    f.f(1) = -k3 * x(1) * x(1) * x(1) - 0.2 * v(1);
+    f.dfdx(1, 1) = -3 * k3 * x(1) * x(1);
+    f.dfdv(1, 1) = -0.2;
+    return f;
+  };
+  Vector X(2 * basis.terms());
+  for (Index i = 0; i < X.size(); ++i) X(i) = 0.4 * std::sin(1.3 * static_cast<Real>(i) + 0.2);
+  const BalanceTerms a = balance_terms(basis, on_one, w, X, true), b = balance_terms(basis, on_all, w, X, true);
+  EXPECT_LT((a.R - b.R).norm(), 1e-14 * b.R.norm());
+  EXPECT_LT((a.dR_dX - b.dR_dX).norm(), 1e-14 * b.dR_dX.norm());
+  EXPECT_LT((a.Jv - b.Jv).norm(), 1e-14 * b.Jv.norm());
+  EXPECT_LT((a.dR_domega - b.dR_domega).norm(), 1e-14 * b.dR_domega.norm());
+  const Real h = 1e-6;
+  const Vector d = (balance_terms(basis, on_one, w + h, X).R - balance_terms(basis, on_one, w - h, X).R) / (2 * h);
+  EXPECT_LT((a.dR_domega - d).cwiseAbs().maxCoeff(), 1e-7 * (1 + d.cwiseAbs().maxCoeff()));
+}
+
 TEST(HarmonicBalance, RefusesMismatchedSizes) {
   const FourierBasis basis{.harmonics = 1, .samples = 8};
   EXPECT_THROW(solve_balance(basis, duffing(basis), 1.0, Vector::Zero(5)), Error);
