@@ -1,0 +1,196 @@
+#include <feran/analyses/periodic/floquet.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+
+extern "C" {
+// LAPACK: eigenvalues and right eigenvectors of a real general matrix.
+void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda, double* wr, double* wi,
+            double* vl, const int* ldvl, double* vr, const int* ldvr, double* work, const int* lwork, int* info);
+}
+
+namespace feran {
+
+namespace {
+
+struct RealEigen {
+  Vector wr, wi;
+  Matrix vr;  // dgeev's layout: a complex pair as columns j (real) and j + 1 (imaginary)
+};
+
+RealEigen real_eigen(Matrix A) {
+  const int N = static_cast<int>(A.rows());
+  RealEigen e{.wr = Vector(N), .wi = Vector(N), .vr = Matrix(N, N)};
+  double vl_dummy = 0.0, work_query = 0.0;
+  const int one = 1;
+  int info = 0, lwork = -1;
+  dgeev_("N", "V", &N, A.data(), &N, e.wr.data(), e.wi.data(), &vl_dummy, &one, e.vr.data(), &N, &work_query, &lwork,
+         &info);
+  lwork = static_cast<int>(work_query);
+  Vector work(lwork);
+  dgeev_("N", "V", &N, A.data(), &N, e.wr.data(), e.wi.data(), &vl_dummy, &one, e.vr.data(), &N, work.data(), &lwork,
+         &info);
+  if (info != 0)
+    throw Error(fmt::format("Floquet analysis: the eigenvalues of Hill's matrix were not found (LAPACK dgeev info {})",
+                            info));
+  return e;
+}
+
+// The mean harmonic k̄ = Σ k|P_k|² / Σ |P_k|² of a perturbation whose real-basis
+// coefficients are @p P (n per term): P_{±k} = (a_k ∓ i b_k)/2.
+Real centroid(const ComplexVector& P, Index n, Index H) {
+  Real num = 0.0, den = P.head(n).squaredNorm();
+  for (Index k = 1; k <= H; ++k) {
+    const ComplexVector a = P.segment((2 * k - 1) * n, n), b = P.segment(2 * k * n, n);
+    const Real plus = 0.25 * (a - Complex(0, 1) * b).squaredNorm(), minus = 0.25 * (a + Complex(0, 1) * b).squaredNorm();
+    num += static_cast<Real>(k) * (plus - minus);
+    den += plus + minus;
+  }
+  return den > 0 ? num / den : 0.0;
+}
+
+void finish(Floquet& out, Real omega, bool autonomous) {
+  const Real T = 2 * pi / omega;
+  const Index m = out.exponents.size();
+  out.multipliers.resize(m);
+  for (Index j = 0; j < m; ++j) out.multipliers(j) = std::exp(out.exponents(j) * T);
+  out.trivial = -1;
+  if (autonomous && m > 0) {
+    Index best = 0;
+    for (Index j = 1; j < m; ++j)
+      if (std::abs(out.multipliers(j) - 1.0) < std::abs(out.multipliers(best) - 1.0)) best = j;
+    out.trivial = best;
+  }
+  out.largest = 0.0;
+  for (Index j = 0; j < m; ++j)
+    if (j != out.trivial) out.largest = std::max(out.largest, std::abs(out.multipliers(j)));
+}
+
+}  // namespace
+
+Floquet hill_floquet(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const BalanceTerms& terms,
+                     bool autonomous) {
+  const Index n = system.M.rows(), T = basis.terms(), N = n * T, H = basis.harmonics;
+  if (terms.dR_dX.rows() != N || terms.Jv.rows() != N)
+    throw Error("Floquet analysis: Hill's method needs the balance's Jacobians with the velocity part (∂F/∂V)");
+  // C̃ = I ⊗ C + 2ω(∇ ⊗ M) − ∂F/∂V; ∇ maps (a_k, b_k) to (k b_k, −k a_k).
+  Matrix Ct = -terms.Jv;
+  for (Index m = 0; m < T; ++m) Ct.block(m * n, m * n, n, n) += system.C;
+  for (Index k = 1; k <= H; ++k) {
+    const Real w2k = 2 * omega * static_cast<Real>(k);
+    const Index a = (2 * k - 1) * n, b = 2 * k * n;
+    Ct.block(a, b, n, n) += w2k * system.M;
+    Ct.block(b, a, n, n) -= w2k * system.M;
+  }
+  const Eigen::PartialPivLU<Matrix> mass(system.M);
+  Matrix A = Matrix::Zero(2 * N, 2 * N);
+  A.topRightCorner(N, N).setIdentity();
+  for (Index m = 0; m < T; ++m) {
+    A.block(N + m * n, 0, n, N) = -mass.solve(terms.dR_dX.middleRows(m * n, n));
+    A.block(N + m * n, N, n, N) = -mass.solve(Ct.middleRows(m * n, n));
+  }
+  const RealEigen e = real_eigen(std::move(A));
+  // Every eigenvalue with its centroid; a complex pair's members have opposite ones.
+  std::vector<Complex> values(static_cast<std::size_t>(2 * N));
+  std::vector<Real> centre(static_cast<std::size_t>(2 * N));
+  for (Index j = 0; j < 2 * N; ++j) {
+    const auto u = static_cast<std::size_t>(j);
+    values[u] = Complex(e.wr(j), e.wi(j));
+    if (e.wi(j) == 0.0) {
+      centre[u] = centroid(e.vr.col(j).head(N).cast<Complex>(), n, H);
+    } else if (e.wi(j) > 0.0) {
+      const ComplexVector P =
+          e.vr.col(j).head(N).cast<Complex>() + Complex(0, 1) * e.vr.col(j + 1).head(N).cast<Complex>();
+      centre[u] = centroid(P, n, H);
+      centre[u + 1] = -centre[u];
+      values[u + 1] = std::conj(values[u]);
+      ++j;
+    }
+  }
+  std::vector<std::size_t> order(values.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return std::abs(centre[a]) < std::abs(centre[b]); });
+  Floquet out;
+  out.exponents.resize(2 * n);
+  for (Index j = 0; j < 2 * n; ++j) out.exponents(j) = values[order[static_cast<std::size_t>(j)]];
+  finish(out, omega, autonomous);
+  return out;
+}
+
+namespace {
+
+// The force's Jacobians on all n DOFs at phase time t along the orbit.
+void jacobians_at(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X, Real t,
+                  Matrix& Jx, Matrix& Jv) {
+  const Index n = system.M.rows();
+  Jx.setZero(n, n);
+  Jv.setZero(n, n);
+  if (!system.force) return;
+  Vector x, v;
+  motion_at(basis, omega, X, t, x, v);
+  if (system.force_dofs.empty()) {
+    const NonlinearForceValue f = system.force(t, x, v);
+    Jx = f.dfdx;
+    if (f.dfdv.size() != 0) Jv = f.dfdv;
+    return;
+  }
+  const auto nl = static_cast<Index>(system.force_dofs.size());
+  Vector xl(nl), vl(nl);
+  for (Index i = 0; i < nl; ++i) {
+    xl(i) = x(system.force_dofs[static_cast<std::size_t>(i)]);
+    vl(i) = v(system.force_dofs[static_cast<std::size_t>(i)]);
+  }
+  const NonlinearForceValue f = system.force(t, xl, vl);
+  for (Index i = 0; i < nl; ++i)
+    for (Index j = 0; j < nl; ++j) {
+      const Index r = system.force_dofs[static_cast<std::size_t>(i)], c = system.force_dofs[static_cast<std::size_t>(j)];
+      Jx(r, c) += f.dfdx(i, j);
+      if (f.dfdv.size() != 0) Jv(r, c) += f.dfdv(i, j);
+    }
+}
+
+}  // namespace
+
+Floquet monodromy_floquet(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
+                          Index steps, bool autonomous) {
+  if (steps < 1) throw Error("Floquet analysis: the monodromy needs at least one step");
+  const Index n = system.M.rows();
+  const Eigen::PartialPivLU<Matrix> mass(system.M);
+  const Real T = 2 * pi / omega, h = T / static_cast<Real>(steps);
+  Matrix Jx, Jv;
+  // ż = A(t) z, z = (δx, δẋ).
+  const auto rate = [&](Real t, const Matrix& z) {
+    jacobians_at(basis, system, omega, X, t, Jx, Jv);
+    Matrix dz(2 * n, z.cols());
+    dz.topRows(n) = z.bottomRows(n);
+    dz.bottomRows(n) = -mass.solve((system.K - Jx) * z.topRows(n) + (system.C - Jv) * z.bottomRows(n));
+    return dz;
+  };
+  Matrix Phi = Matrix::Identity(2 * n, 2 * n);
+  for (Index i = 0; i < steps; ++i) {
+    const Real t = h * static_cast<Real>(i);
+    const Matrix k1 = rate(t, Phi);
+    const Matrix k2 = rate(t + h / 2, Phi + (h / 2) * k1);
+    const Matrix k3 = rate(t + h / 2, Phi + (h / 2) * k2);
+    const Matrix k4 = rate(t + h, Phi + h * k3);
+    Phi += (h / 6) * (k1 + 2 * k2 + 2 * k3 + k4);
+  }
+  const Eigen::EigenSolver<Matrix> eig(Phi, false);
+  if (eig.info() != Eigen::Success) throw Error("Floquet analysis: the monodromy matrix's eigenvalues were not found");
+  Floquet out;
+  out.exponents.resize(2 * n);
+  for (Index j = 0; j < 2 * n; ++j) out.exponents(j) = std::log(eig.eigenvalues()(j)) / T;
+  finish(out, omega, autonomous);
+  return out;
+}
+
+}  // namespace feran
