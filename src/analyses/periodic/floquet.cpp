@@ -115,10 +115,23 @@ Floquet hill_floquet(const FourierBasis& basis, const PeriodicSystem& system, Re
       ++j;
     }
   }
+  // The exponents whose eigenvectors are centred (|k̄| < ½) among those the harmonics
+  // resolve (Re s ≥ −Hω/2) first, by |k̄|; then the strongly damped ones, whose copies
+  // s + ikω the truncated matrix cannot tell apart (it mixes them, some into real
+  // values whose vectors look centred); then the rest. Which copy of a strongly damped
+  // exponent is kept does not change its multiplier's modulus, ≈ e^{−πH}.
+  const Real resolved = -0.5 * static_cast<Real>(std::max<Index>(H, 1)) * omega;
+  const auto group = [&](std::size_t j) {
+    if (values[j].real() < resolved) return 1;
+    return std::abs(centre[j]) < 0.5 ? 0 : 2;
+  };
   std::vector<std::size_t> order(values.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return std::abs(centre[a]) < std::abs(centre[b]); });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const int ga = group(a), gb = group(b);
+    if (ga != gb) return ga < gb;
+    return std::abs(centre[a]) < std::abs(centre[b]);
+  });
   Floquet out;
   out.exponents.resize(2 * n);
   for (Index j = 0; j < 2 * n; ++j) out.exponents(j) = values[order[static_cast<std::size_t>(j)]];

@@ -27,7 +27,10 @@ struct Floquet {
 /// 2n exponents repeated at s + ikω (and, towards the truncation, poorer copies):
 /// the 2n kept are those whose eigenvectors are centred on harmonic 0 — the weighted
 /// mean k̄ of their complex-exponential harmonics −H … H nearest 0 (Lazarus & Thomas
-/// 2010; Guillot et al. 2020). @p terms: balance_terms(…, true) at the orbit.
+/// 2010; Guillot et al. 2020) — among those the harmonics resolve (Re s ≥ −Hω/2);
+/// strongly damped exponents, whose copies the truncated matrix mixes, fill the rest
+/// (their multipliers, of modulus below e^{−πH}, do not decide stability).
+/// @p terms: balance_terms(…, true) at the orbit.
 /// With @p autonomous the multiplier nearest 1 is the phase's and is set aside.
 Floquet hill_floquet(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const BalanceTerms& terms,
                      bool autonomous);

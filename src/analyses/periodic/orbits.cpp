@@ -1,0 +1,295 @@
+#include <feran/analyses/periodic/orbits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+#include <fmt/format.h>
+
+#include <feran/core/error.hpp>
+
+namespace feran {
+
+const char* bifurcation_name(Bifurcation::Kind kind) {
+  switch (kind) {
+    case Bifurcation::Kind::fold:
+      return "fold";
+    case Bifurcation::Kind::period_doubling:
+      return "period_doubling";
+    case Bifurcation::Kind::neimark_sacker:
+      return "neimark_sacker";
+    case Bifurcation::Kind::hopf:
+      return "hopf";
+    case Bifurcation::Kind::static_instability:
+      return "static_instability";
+  }
+  return "";
+}
+
+namespace {
+
+using Kind = OrbitBranch::Kind;
+
+// The continuation problem of one branch: u = X (equilibrium, forced) or (X, ω)
+// (self-excited, with the phase fixed by u(anchor) = 0); p = Ω.
+struct BranchProblem {
+  const CondensedRotor& rotor;
+  FourierBasis fourier;
+  Kind kind;
+  Index anchor = -1;
+
+  Index nx() const { return rotor.size() * fourier.terms(); }
+  Real omega(const Vector& u, Real p) const {
+    if (kind == Kind::self_excited) return u(nx());
+    return kind == Kind::forced ? p : 1.0;  // an equilibrium's ω does not enter
+  }
+  Vector X(const Vector& u) const { return u.head(nx()); }
+  Real speed_for(Real p) const { return p; }
+
+  BalanceTerms terms(const Vector& u, Real p, bool velocity) const {
+    const Real w = omega(u, p);
+    return balance_terms(fourier, rotor.at(p, w, fourier), w, X(u), velocity);
+  }
+  // ∂R/∂Ω by central differences (the model's speed dependence: gyroscopics, speed-
+  // dependent supports, the film's speed, the unbalance's Ω²; for a forced orbit ω = Ω
+  // moves with it); the step 1e-6·Ω leaves an error of about 1e-10 of ‖R‖'s terms.
+  Vector dR_dp(const Vector& u, Real p) const {
+    const Real h = 1e-6 * std::max(std::abs(p), 1.0);
+    Vector up = u, um = u;
+    const auto residual = [&](const Vector& v, Real q) {
+      const Real w = kind == Kind::forced ? q : omega(v, q);
+      return balance_terms(fourier, rotor.at(q, w, fourier), w, X(v)).R;
+    };
+    return (residual(up, p + h) - residual(um, p - h)) / (2 * h);
+  }
+
+  BranchEquations operator()(const Vector& u, Real p) const {
+    BalanceTerms t = terms(u, p, false);
+    const Index n = nx();
+    if (kind != Kind::self_excited)
+      return BranchEquations{.G = std::move(t.R), .Gu = std::move(t.dR_dX), .Gp = dR_dp(u, p), .scale = t.scale};
+    BranchEquations e{.G = Vector(n + 1), .Gu = Matrix::Zero(n + 1, n + 1), .Gp = Vector::Zero(n + 1),
+                      .scale = t.scale};
+    e.G.head(n) = t.R;
+    e.G(n) = u(anchor) * (t.scale > 0 ? t.scale : 1.0);  // the phase, weighted like the forces
+    e.Gu.topLeftCorner(n, n) = t.dR_dX;
+    e.Gu.topRightCorner(n, 1) = t.dR_domega;
+    e.Gu(n, anchor) = t.scale > 0 ? t.scale : 1.0;
+    e.Gp.head(n) = dR_dp(u, p);
+    return e;
+  }
+
+  SteadyState orbit(const Vector& u, Real p, const OrbitSettings& settings) const {
+    const Real w = omega(u, p);
+    const PeriodicSystem system = rotor.at(p, w, fourier);
+    const BalanceTerms t = balance_terms(fourier, system, w, X(u), true);
+    SteadyState o{.speed = p,
+            .frequency = kind == Kind::equilibrium ? 0.0 : w,
+            .X = X(u),
+            .floquet = hill_floquet(fourier, system, kind == Kind::equilibrium ? p : w, t, kind == Kind::self_excited),
+            .stable = true,
+            .truncation = truncation_estimate(fourier, system, w, X(u)),
+            .residual = t.scale > 0 ? t.R.norm() / t.scale : t.R.norm()};
+    o.stable = growth(o) <= settings.stability_tolerance;
+    return o;
+  }
+
+  // The test function of stability: an equilibrium's largest Re s/|s|, an orbit's
+  // largest ln|μ| (the phase's multiplier left out).
+  Real growth(const SteadyState& o) const {
+    Real most = -std::numeric_limits<Real>::infinity();
+    for (Index j = 0; j < o.floquet.exponents.size(); ++j) {
+      if (j == o.floquet.trivial) continue;
+      const Complex s = o.floquet.exponents(j);
+      const Real g = kind == Kind::equilibrium ? (std::abs(s) > 0 ? s.real() / std::abs(s) : 0.0)
+                                               : std::log(std::abs(o.floquet.multipliers(j)));
+      most = std::max(most, g);
+    }
+    return most;
+  }
+};
+
+Real length_scale(const CondensedRotor& rotor, const OrbitSettings& settings) {
+  if (settings.length_scale > 0) return settings.length_scale;
+  Real c = std::numeric_limits<Real>::infinity();
+  for (const Force& f : rotor.model().forces)
+    if (const auto cl = f.clearance(); cl && *cl > 0) c = std::min(c, *cl);
+  return std::isfinite(c) ? c : 1e-3;
+}
+
+// Which crossing an orbit's critical multiplier makes.
+Bifurcation::Kind multiplier_kind(const SteadyState& o, Kind kind) {
+  Index critical = -1;
+  Real nearest = std::numeric_limits<Real>::infinity();
+  for (Index j = 0; j < o.floquet.exponents.size(); ++j) {
+    if (j == o.floquet.trivial) continue;
+    const Real d = kind == Kind::equilibrium ? std::abs(o.floquet.exponents(j).real())
+                                             : std::abs(std::abs(o.floquet.multipliers(j)) - 1.0);
+    if (d < nearest) {
+      nearest = d;
+      critical = j;
+    }
+  }
+  if (critical < 0) return Bifurcation::Kind::fold;
+  if (kind == Kind::equilibrium) {
+    const Complex s = o.floquet.exponents(critical);
+    return std::abs(s.imag()) > 1e-6 * std::max(std::abs(s), o.speed * 1e-9)
+               ? Bifurcation::Kind::hopf
+               : Bifurcation::Kind::static_instability;
+  }
+  const Complex mu = o.floquet.multipliers(critical);
+  const Real angle = std::abs(std::arg(mu));
+  if (angle > pi - 1e-3) return Bifurcation::Kind::period_doubling;
+  if (angle < 1e-3) return Bifurcation::Kind::fold;
+  return Bifurcation::Kind::neimark_sacker;
+}
+
+OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const Vector& direction, Real towards,
+                   const Vector& u_scale, Real p_scale, const OrbitSettings& settings) {
+  const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
+  OrbitBranch out;
+  out.kind = problem.kind;
+  std::vector<SteadyState> orbits;
+  const auto monitor = [&](const Branch& b) {
+    const BranchPoint& p = b.points.back();
+    orbits.push_back(problem.orbit(p.u, p.p, settings));
+    return true;
+  };
+  orbits.push_back(problem.orbit(start.u, start.p, settings));
+  const Branch b = continue_branch(G, start, direction, towards, u_scale, p_scale, settings.continuation, monitor);
+  out.orbits = std::move(orbits);
+  out.ended_by = b.ended_by;
+  out.clipped = b.clipped();
+  // Bifurcations between consecutive points: folds by dp/ds, stability changes by the
+  // test function, each located on the branch.
+  const auto stability_test = [&](const BranchPoint& p) { return problem.growth(problem.orbit(p.u, p.p, settings)); };
+  for (std::size_t i = 1; i < b.points.size() && i < out.orbits.size(); ++i) {
+    const BranchPoint &a = b.points[i - 1], &c = b.points[i];
+    bool fold = false;
+    if (problem.kind != Kind::equilibrium && fold_test(a) * fold_test(c) < 0) {
+      const BranchPoint f = locate_on_branch(G, a, c, u_scale, p_scale, settings.continuation, fold_test);
+      out.bifurcations.push_back({Bifurcation::Kind::fold, problem.orbit(f.u, f.p, settings), i - 1});
+      fold = true;
+    }
+    const Real ga = problem.growth(out.orbits[i - 1]) - settings.stability_tolerance;
+    const Real gc = problem.growth(out.orbits[i]) - settings.stability_tolerance;
+    if (ga * gc < 0) {
+      const BranchPoint x = locate_on_branch(G, a, c, u_scale, p_scale, settings.continuation,
+                                             [&](const BranchPoint& p) { return stability_test(p) - settings.stability_tolerance; });
+      SteadyState at = problem.orbit(x.u, x.p, settings);
+      const Bifurcation::Kind k = multiplier_kind(at, problem.kind);
+      if (!fold) out.bifurcations.push_back({k, std::move(at), i - 1});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+OrbitBranch equilibrium_branch(const CondensedRotor& rotor, const OrbitSettings& settings) {
+  const BranchProblem problem{.rotor = rotor, .fourier = {.harmonics = 0, .samples = 1}, .kind = Kind::equilibrium};
+  const ContinuationSettings& c = settings.continuation;
+  const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
+  const BranchPoint start = correct_at_fixed_parameter(G, Vector::Zero(rotor.size()), c.p_min, c);
+  if (!(start.residual <= c.tolerance))
+    throw Error(fmt::format("periodic orbits: the static equilibrium at {:.6g} rad/s was not found (residual {:.3g})",
+                            c.p_min, start.residual));
+  const Real L = length_scale(rotor, settings);
+  return follow(problem, start, Vector(), +1.0, Vector::Constant(rotor.size(), L),
+                std::max(c.p_max - c.p_min, std::abs(c.p_min)), settings);
+}
+
+OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& settings, bool downwards) {
+  if (!rotor.forced())
+    throw Error("periodic orbits: no unbalance or synchronous force acts: there is no forced orbit to follow");
+  const BranchProblem problem{.rotor = rotor, .fourier = settings.fourier, .kind = Kind::forced};
+  const ContinuationSettings& c = settings.continuation;
+  const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
+  const Real first = downwards ? c.p_max : c.p_min;
+  // From the equilibrium at the first speed, then the forced orbit there.
+  const BranchProblem statics{.rotor = rotor, .fourier = {.harmonics = 0, .samples = 1}, .kind = Kind::equilibrium};
+  const BranchPoint eq = correct_at_fixed_parameter(
+      [&](const Vector& u, Real p) { return statics(u, p); }, Vector::Zero(rotor.size()), first, c);
+  Vector u0 = Vector::Zero(problem.nx());
+  u0.head(rotor.size()) = eq.u;
+  const BranchPoint start = correct_at_fixed_parameter(G, u0, first, c);
+  if (!(start.residual <= c.tolerance))
+    throw Error(fmt::format("periodic orbits: the forced orbit at {:.6g} rad/s was not found (residual {:.3g})", first,
+                            start.residual));
+  const Real L = length_scale(rotor, settings);
+  return follow(problem, start, Vector(), downwards ? -1.0 : 1.0, Vector::Constant(problem.nx(), L),
+                std::max(c.p_max - c.p_min, std::abs(first)), settings);
+}
+
+OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, const OrbitSettings& settings) {
+  if (hopf.kind != Bifurcation::Kind::hopf) throw Error("periodic orbits: a self-excited branch starts at a Hopf point");
+  const Index n = rotor.size();
+  const Real speed = hopf.at.speed;
+  // The critical mode at the Hopf point: the linearised equations about the
+  // equilibrium, (s²M + s(C − ∂f/∂ẋ) + (K − ∂f/∂x))φ = 0.
+  const FourierBasis mean{.harmonics = 0, .samples = 1};
+  const PeriodicSystem system = rotor.at(speed, speed, mean);
+  const BalanceTerms t = balance_terms(mean, system, 1.0, hopf.at.X, true);
+  Matrix A = Matrix::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  const Eigen::PartialPivLU<Matrix> mass(system.M);
+  A.bottomLeftCorner(n, n) = -mass.solve(t.dR_dX);
+  A.bottomRightCorner(n, n) = -mass.solve(system.C - t.Jv);
+  const Eigen::EigenSolver<Matrix> eig(A);
+  Index critical = -1;
+  for (Index j = 0; j < 2 * n; ++j) {
+    const Complex s = eig.eigenvalues()(j);
+    if (s.imag() > 0 && (critical < 0 || std::abs(s.real()) < std::abs(eig.eigenvalues()(critical).real())))
+      critical = j;
+  }
+  if (critical < 0) throw Error("periodic orbits: no oscillatory mode crosses at the Hopf point");
+  const Real omega = eig.eigenvalues()(critical).imag();
+  ComplexVector phi = eig.eigenvectors().col(critical).head(n);
+  Index anchor = 0;
+  phi.cwiseAbs().maxCoeff(&anchor);
+  phi *= std::abs(phi(anchor)) / phi(anchor);  // φ_anchor real and positive
+  phi /= phi.norm();
+
+  FourierBasis fourier = settings.fourier;
+  if (fourier.harmonics < 1) throw Error("periodic orbits: a self-excited orbit needs at least one harmonic");
+  const BranchProblem problem{.rotor = rotor, .fourier = fourier, .kind = Kind::self_excited, .anchor = 2 * n + anchor};
+  const Index nx = problem.nx();
+  const Real L = length_scale(rotor, settings);
+  Vector u_scale = Vector::Constant(nx + 1, L);
+  u_scale(nx) = omega;
+  const Real p_scale = std::max(settings.continuation.p_max - settings.continuation.p_min, speed);
+  // The start: the equilibrium as an orbit of amplitude 0 at ω; the direction: the
+  // critical mode's x = Re(φ e^{iωt}) = Re φ cos ωt − Im φ sin ωt.
+  BranchPoint start{.u = Vector::Zero(nx + 1), .p = speed, .tangent = {}, .iterations = 0, .residual = 0.0};
+  start.u.head(n) = hopf.at.X;
+  start.u(nx) = omega;
+  Vector direction = Vector::Zero(nx + 2);
+  direction.segment(n, n) = phi.real() / L;
+  direction.segment(2 * n, n) = -phi.imag() / L;
+  direction.normalize();
+  OrbitBranch out = follow(problem, start, direction, 0.0, u_scale, p_scale, settings);
+  // The orbit of amplitude 0 is the Hopf point itself: its multipliers are the
+  // equilibrium's, not an orbit's; the branch's criticality is the side its next
+  // orbits lie on.
+  if (out.orbits.size() > 1) {
+    const Real dp = out.orbits[1].speed - speed;
+    // Which side of the Hopf speed the equilibrium is unstable on: its growth just above.
+    const BranchProblem statics{.rotor = rotor, .fourier = mean, .kind = Kind::equilibrium};
+    const Real above = speed * (1 + 1e-4);
+    const BranchPoint eq = correct_at_fixed_parameter([&](const Vector& u, Real p) { return statics(u, p); },
+                                                      hopf.at.X, above, settings.continuation);
+    const bool unstable_above = statics.growth(statics.orbit(eq.u, above, settings)) > 0;
+    out.criticality = (dp > 0) == unstable_above ? "supercritical" : "subcritical";
+  }
+  return out;
+}
+
+Vector orbit_motion(const CondensedRotor& rotor, const SteadyState& orbit, const FourierBasis& fourier, Real theta) {
+  const FourierBasis f = orbit.frequency > 0 ? fourier : FourierBasis{.harmonics = 0, .samples = 1};
+  Vector x, v;
+  motion_at(f, 1.0, orbit.X, theta, x, v);
+  return rotor.expand(x);
+}
+
+}  // namespace feran
