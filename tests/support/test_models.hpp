@@ -11,6 +11,7 @@
 #include <feran/elements/spring_damper.hpp>
 #include <feran/elements/timoshenko_beam.hpp>
 #include <feran/forces/coulomb_friction.hpp>
+#include <feran/forces/fluid_film_bearing.hpp>
 #include <feran/forces/harmonic_force.hpp>
 #include <feran/forces/static_load.hpp>
 #include <feran/forces/unbalance.hpp>
@@ -134,6 +135,39 @@ inline Model friswell_5_9_1(int n_el = 6, const BeamOptions& opt = {}) {
   add_isotropic_bearing(m, node_at(1.5), 1e6);
   fix(m, 0, {Dof::u, Dof::rx});
   return m;
+}
+
+// Friswell et al. (2010), Example 5.5.1: D = 100 mm, L = 30 mm, c = 0.1 mm, μ = 0.1 Pa s.
+inline constexpr JournalBearingGeometry friswell_5_5_1_bearing{
+    .diameter = 0.1, .length = 0.03, .clearance = 1e-4, .viscosity = 0.1};
+
+// A rigid rotor of mass 2m on two identical journal bearings at x = ±a (a = 0.2 m):
+// node 0 at the centre carries the body and leads nodes 1 and 2 (the journals) by a
+// rigid link; its axial and torsional DOFs are fixed; gravity −9.81 m/s² along y. The
+// cylindrical motion (v, w of node 0) has mass m per bearing; the conical motion is
+// made much stiffer (J_A small) so that it stays stable well beyond the cylindrical
+// threshold.
+inline Model rigid_rotor_in_journal_bearings(Real m_per_bearing, FilmTheory theory,
+                                             const JournalBearingGeometry& geometry = friswell_5_5_1_bearing,
+                                             const FiniteBearingGrid& grid = {}) {
+  constexpr Real a = 0.2;
+  Model model;
+  model.nodes = {{1, "centre", 0.0, true}, {2, "left", -a, true}, {3, "right", a, true}};
+  const Real mass = 2 * m_per_bearing;
+  model.elements.emplace_back(
+      RigidBody(0, {.mass = mass, .transverse_inertia = 0.05 * mass * a * a, .polar_inertia = 0.02 * mass * a * a},
+                true),
+      "rotor");
+  model.links.push_back({0, {1, 2}});
+  FixedDofs fixed{.node = 0, .dofs = {}};
+  fixed.dofs[static_cast<std::size_t>(Dof::u)] = fixed.dofs[static_cast<std::size_t>(Dof::rx)] = true;
+  model.fixed.push_back(fixed);
+  model.forces.emplace_back(
+      FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "left");
+  model.forces.emplace_back(
+      FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "right");
+  model.gravity = Eigen::Vector3d(0, -9.81, 0);
+  return model;
 }
 
 }  // namespace feran::test

@@ -285,11 +285,14 @@ OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, co
   return out;
 }
 
-Vector orbit_motion(const CondensedRotor& rotor, const SteadyState& orbit, const FourierBasis& fourier, Real theta) {
-  const FourierBasis f = orbit.frequency > 0 ? fourier : FourierBasis{.harmonics = 0, .samples = 1};
-  Vector x, v;
-  motion_at(f, 1.0, orbit.X, theta, x, v);
-  return rotor.expand(x);
+void orbit_state(const CondensedRotor& rotor, const SteadyState& orbit, const FourierBasis& fourier, Real theta,
+                 Vector& x, Vector& v) {
+  const bool moving = orbit.frequency > 0;
+  const FourierBasis f = moving ? fourier : FourierBasis{.harmonics = 0, .samples = 1};
+  Vector xr, vr;
+  motion_at(f, moving ? orbit.frequency : 1.0, orbit.X, moving ? theta / orbit.frequency : 0.0, xr, vr);
+  x = rotor.expand(xr);
+  v = moving ? rotor.expand(vr) : Vector::Zero(x.size());
 }
 
 }  // namespace feran

@@ -81,7 +81,9 @@ OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& sett
 /// largest component of the critical mode; continued in speed within [p_min, p_max].
 OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, const OrbitSettings& settings);
 
-/// The orbit's motion of all unconstrained DOFs at phase θ ∈ [0, 2π).
-Vector orbit_motion(const CondensedRotor& rotor, const SteadyState& orbit, const FourierBasis& fourier, Real theta);
+/// The displacements @p x and velocities @p v of all unconstrained DOFs on the orbit
+/// at phase θ = ωt (an equilibrium: its displacements, no velocity).
+void orbit_state(const CondensedRotor& rotor, const SteadyState& orbit, const FourierBasis& fourier, Real theta,
+                 Vector& x, Vector& v);
 
 }  // namespace feran

@@ -20,37 +20,17 @@
 
 #include <feran/analyses/periodic/orbits.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
-#include <feran/elements/rigid_body.hpp>
-#include <feran/forces/fluid_film_bearing.hpp>
+
+#include "test_models.hpp"
 
 namespace feran::test_orbits {
 namespace {
 
-constexpr JournalBearingGeometry friswell{.diameter = 0.1, .length = 0.03, .clearance = 1e-4, .viscosity = 0.1};
+constexpr JournalBearingGeometry friswell = test::friswell_5_5_1_bearing;
 constexpr Real g = 9.81;
 
-// The rigid rotor of test_supports.cpp: mass 2m on two bearings at x = ±a, the conical
-// motion much stiffer than the cylindrical one.
 Model rigid_rotor(Real m_per_bearing) {
-  constexpr Real a = 0.2;
-  Model model;
-  model.nodes = {{1, "centre", 0.0, true}, {2, "left", -a, true}, {3, "right", a, true}};
-  const Real mass = 2 * m_per_bearing;
-  model.elements.emplace_back(
-      RigidBody(0, {.mass = mass, .transverse_inertia = 0.05 * mass * a * a, .polar_inertia = 0.02 * mass * a * a},
-                true),
-      "rotor");
-  model.links.push_back({0, {1, 2}});
-  FixedDofs fixed{.node = 0, .dofs = {}};
-  fixed.dofs[static_cast<std::size_t>(Dof::u)] = fixed.dofs[static_cast<std::size_t>(Dof::rx)] = true;
-  model.fixed.push_back(fixed);
-  model.forces.emplace_back(
-      FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = friswell, .theory = FilmTheory::short_bearing, .grid = {}}, "left");
-  model.forces.emplace_back(
-      FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = friswell, .theory = FilmTheory::short_bearing, .grid = {}},
-      "right");
-  model.gravity = Eigen::Vector3d(0, -g, 0);
-  return model;
+  return test::rigid_rotor_in_journal_bearings(m_per_bearing, FilmTheory::short_bearing);
 }
 
 constexpr Real threshold = 863.345;  // rad/s

@@ -23,38 +23,19 @@
 #include <feran/forces/rolling_bearing.hpp>
 #include <feran/forces/unbalance.hpp>
 
+#include "test_models.hpp"
+
 namespace feran::test_supports {
 namespace {
 
 // Friswell et al. (2010), Example 5.5.1: D = 100 mm, L = 30 mm, c = 0.1 mm, μ = 0.1 Pa s.
-constexpr JournalBearingGeometry friswell{.diameter = 0.1, .length = 0.03, .clearance = 1e-4, .viscosity = 0.1};
+constexpr JournalBearingGeometry friswell = test::friswell_5_5_1_bearing;
 constexpr Real g = 9.81;
 
-// A rigid rotor of mass 2m on two identical bearings at x = ±a: node 0 at the centre
-// carries the body and leads nodes 1 and 2 (the journals) by a rigid link; its axial
-// and torsional DOFs are fixed. The cylindrical motion (v, w of node 0) has mass m per
-// bearing; the conical motion is made much stiffer (J_A small) so that it stays
-// stable well beyond the cylindrical threshold.
+// The rigid rotor on two journal bearings of tests/support/test_models.hpp.
 Model rigid_rotor(Real m_per_bearing, FilmTheory theory, const JournalBearingGeometry& geometry = friswell,
                   const FiniteBearingGrid& grid = {}) {
-  constexpr Real a = 0.2;
-  Model model;
-  model.nodes = {{1, "centre", 0.0, true}, {2, "left", -a, true}, {3, "right", a, true}};
-  const Real mass = 2 * m_per_bearing;
-  model.elements.emplace_back(
-      RigidBody(0, {.mass = mass, .transverse_inertia = 0.05 * mass * a * a, .polar_inertia = 0.02 * mass * a * a},
-                true),
-      "rotor");
-  model.links.push_back({0, {1, 2}});
-  FixedDofs fixed{.node = 0, .dofs = {}};
-  fixed.dofs[static_cast<std::size_t>(Dof::u)] = fixed.dofs[static_cast<std::size_t>(Dof::rx)] = true;
-  model.fixed.push_back(fixed);
-  model.forces.emplace_back(
-      FluidFilmBearing{.node_a = 1, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "left");
-  model.forces.emplace_back(
-      FluidFilmBearing{.node_a = 2, .node_b = {}, .geometry = geometry, .theory = theory, .grid = grid}, "right");
-  model.gravity = Eigen::Vector3d(0, -g, 0);
-  return model;
+  return test::rigid_rotor_in_journal_bearings(m_per_bearing, theory, geometry, grid);
 }
 
 // The 2×2 eigenvalue problem (m·λ² + C·λ + K)·x = 0 of one bearing carrying mass m
