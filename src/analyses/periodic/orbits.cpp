@@ -150,6 +150,8 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
   const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
   OrbitBranch out;
   out.kind = problem.kind;
+  out.fourier = problem.fourier;
+  out.phase_anchor = problem.anchor;
   std::vector<SteadyState> orbits;
   const auto monitor = [&](const Branch& b) {
     const BranchPoint& p = b.points.back();
@@ -281,6 +283,31 @@ OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, co
                                                       hopf.at.X, above, settings.continuation);
     const bool unstable_above = statics.growth(statics.orbit(eq.u, above, settings)) > 0;
     out.criticality = (dp > 0) == unstable_above ? "supercritical" : "subcritical";
+  }
+  return out;
+}
+
+std::vector<SteadyState> states_at(const CondensedRotor& rotor, const OrbitBranch& branch, Real speed,
+                                   const OrbitSettings& settings) {
+  const BranchProblem problem{
+      .rotor = rotor, .fourier = branch.fourier, .kind = branch.kind, .anchor = branch.phase_anchor};
+  const bool autonomous = branch.kind == Kind::self_excited;
+  const auto u_of = [&](const SteadyState& o) {
+    Vector u(o.X.size() + (autonomous ? 1 : 0));
+    u.head(o.X.size()) = o.X;
+    if (autonomous) u(o.X.size()) = o.frequency;
+    return u;
+  };
+  std::vector<SteadyState> out;
+  for (std::size_t i = 1; i < branch.orbits.size(); ++i) {
+    const SteadyState &a = branch.orbits[i - 1], &b = branch.orbits[i];
+    if ((a.speed - speed) * (b.speed - speed) > 0 || a.speed == b.speed) continue;
+    if (b.speed == speed && i + 1 < branch.orbits.size()) continue;  // counted with the next interval
+    const Real f = (speed - a.speed) / (b.speed - a.speed);
+    const Vector u0 = u_of(a) + f * (u_of(b) - u_of(a));
+    const BranchPoint p = correct_at_fixed_parameter([&](const Vector& u, Real q) { return problem(u, q); }, u0,
+                                                     speed, settings.continuation);
+    if (p.residual <= settings.continuation.tolerance) out.push_back(problem.orbit(p.u, speed, settings));
   }
   return out;
 }

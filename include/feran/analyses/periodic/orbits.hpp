@@ -65,6 +65,10 @@ struct OrbitBranch {
   /// "subcritical" (it leaves towards the stable side, unstable orbits that bound the
   /// equilibrium's region of attraction); empty otherwise.
   std::string criticality;
+  /// The harmonic balance's harmonics and samples the branch was computed with.
+  FourierBasis fourier;
+  /// A self-excited branch: the coefficient held at 0 to fix the phase (−1: none).
+  Index phase_anchor = -1;
 };
 
 /// The static equilibrium over [p_min, p_max] from p_min (continuation in speed of the
@@ -80,6 +84,13 @@ OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& sett
 /// their base frequency an unknown fixed in phase by the first harmonic's sine of the
 /// largest component of the critical mode; continued in speed within [p_min, p_max].
 OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, const OrbitSettings& settings);
+
+/// The states of @p branch at speed @p speed: one wherever the branch crosses it
+/// (several where it folds back), each solved at that speed from the interpolation
+/// between the branch's points on either side. Empty when the branch does not reach
+/// the speed.
+std::vector<SteadyState> states_at(const CondensedRotor& rotor, const OrbitBranch& branch, Real speed,
+                                   const OrbitSettings& settings);
 
 /// The displacements @p x and velocities @p v of all unconstrained DOFs on the orbit
 /// at phase θ = ωt (an equilibrium: its displacements, no velocity).
