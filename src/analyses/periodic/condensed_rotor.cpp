@@ -37,7 +37,10 @@ void require_time_domain_model(const Model& model, const Assembler& assembler) {
         "periodic orbits: the model has hysteretic damping (a loss factor), which is defined for harmonic motion "
         "only; periodic orbits and their stability need damping in time: give it as viscous damping");
   for (const Force& f : model.forces)
-    if (const auto* h = f.target<HarmonicForce>(); h != nullptr && h->frequency)
+    if (const auto* h = f.target<HarmonicForce>(); h != nullptr && !h->time_table.empty())
+      throw Error(fmt::format(
+          "periodic orbits: the force '{}' is given by a time table, which is not periodic: leave it out", f.label()));
+    else if (h != nullptr && h->frequency)
       throw Error(fmt::format(
           "periodic orbits: the harmonic force '{}' acts at a frequency of its own ({:.6g} rad/s), not at the "
           "rotor speed: with it the motion has two base frequencies (quasi-periodic), which the periodic analysis "

@@ -17,9 +17,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include <feran/analyses/periodic/orbits.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
+
+#include <feran/forces/harmonic_force.hpp>
 
 #include "test_models.hpp"
 
@@ -92,6 +95,139 @@ TEST(Orbits, HopfPointIsTheLinearThresholdAndItsBranchLeavesIt) {
     EXPECT_GT(ratio, 0.3) << i;
     EXPECT_LT(ratio, 0.55) << i;
   }
+}
+
+}  // namespace
+}  // namespace feran::test_orbits
+
+namespace feran::test_orbits {
+namespace {
+
+// A cubic spring −k₃x³ on one DOF, written as a nonlinear force.
+struct CubicSpring {
+  Index dof = 0;
+  Real k3 = 0.0;
+  std::string_view kind() const { return "cubic_spring"; }
+  std::vector<Index> nodes() const { return {dof / dofs_per_node}; }
+  std::vector<Index> dofs() const { return {dof}; }
+  NonlinearForceValue force(const MotionState&, const Vector& x, const Vector&) const {
+    return {Vector::Constant(1, -k3 * x(0) * x(0) * x(0)), Matrix::Constant(1, 1, -3 * k3 * x(0) * x(0)), Matrix()};
+  }
+};
+
+// Duffing's oscillator m x'' + c x' + k x + k₃x³ = F cos Ωt as a rotor: a point mass on
+// a spring and damper moving in y alone, the cubic spring a force, F a synchronous
+// harmonic force. Its forced branch with one harmonic meets the closed-form
+// single-harmonic frequency response [(k − mΩ²)A + ¾k₃A³]² + (cΩA)² = F² at every
+// orbit (1e-8, the balance's tolerance with the curve's conditioning), and its two
+// folds are where the cubic in A² has a double root (1e-6 in Ω: located to the
+// continuation's tolerance, the speed derivative by differences).
+TEST(Orbits, ForcedDuffingRotorFollowsItsFrequencyResponseThroughBothFolds) {
+  constexpr Real m = 1.0, k = 1.0, c = 0.05, k3 = 0.5, F = 0.2;
+  Model model = test::jeffcott(m, k, c, 0.0);
+  test::fix(model, 0, {Dof::w});
+  model.forces.emplace_back(CubicSpring{global_dof(0, Dof::v), k3}, "cubic");
+  model.forces.emplace_back(HarmonicForce{.node = 0,
+                                          .type = HarmonicForce::Kind::fixed,
+                                          .direction = Dof::v,
+                                          .amplitude = F,
+                                          .phase = 0.0,
+                                          .frequency = std::nullopt,
+                                          .time_table = {}},
+                            "F");
+  const CondensedRotor rotor(model, nullptr, {.modes = 12, .gravity = Eigen::Vector3d::Zero(), .static_loads = false, .unbalance = true,
+                                              .reference_speed = 0.0});
+  ASSERT_EQ(rotor.size(), 1);
+  OrbitSettings settings;
+  settings.fourier = {.harmonics = 1, .samples = 8};
+  settings.length_scale = 1.0;
+  settings.continuation.p_min = 0.5;
+  settings.continuation.p_max = 2.5;
+  settings.continuation.max_points = 2000;
+  settings.continuation.tolerance = 1e-10;
+  const OrbitBranch b = forced_branch(rotor, settings);
+  EXPECT_TRUE(b.clipped) << b.ended_by;
+  for (const SteadyState& o : b.orbits) {
+    const Real w = o.speed, A = std::hypot(o.X(1), o.X(2));
+    const Real lhs = std::pow((k - m * w * w) * A + 0.75 * k3 * A * A * A, 2) + std::pow(c * w * A, 2);
+    EXPECT_NEAR(lhs, F * F, 1e-8 * F * F) << w;
+  }
+  // The folds of the closed form: the discriminant of the cubic in u = A² vanishes.
+  const auto discriminant = [&](Real w) {
+    const Real k0 = k - m * w * w, q = 0.75 * k3;
+    const Real a = q * q, bb = 2 * k0 * q, cc = k0 * k0 + c * c * w * w, d = -F * F;
+    return 18 * a * bb * cc * d - 4 * bb * bb * bb * d + bb * bb * cc * cc - 4 * a * cc * cc * cc - 27 * a * a * d * d;
+  };
+  std::vector<Real> expected;
+  for (Real w = 0.5; w < 2.5; w += 1e-3) {
+    Real lo = w, hi = w + 1e-3;
+    if (discriminant(lo) * discriminant(hi) > 0) continue;
+    for (int i = 0; i < 100 && hi - lo > 1e-14; ++i) {
+      const Real mid = 0.5 * (lo + hi);
+      (discriminant(lo) * discriminant(mid) <= 0 ? hi : lo) = mid;
+    }
+    expected.push_back(0.5 * (lo + hi));
+  }
+  ASSERT_EQ(expected.size(), 2U);
+  std::vector<Real> folds;
+  for (const Bifurcation& f : b.bifurcations)
+    if (f.kind == Bifurcation::Kind::fold) folds.push_back(f.at.speed);
+  ASSERT_EQ(folds.size(), 2U);
+  EXPECT_NEAR(folds[0], expected[1], 1e-6);  // the jump-down, met first on the way up
+  EXPECT_NEAR(folds[1], expected[0], 1e-6);
+  // Between the folds the orbits are unstable (the middle branch), elsewhere stable.
+  for (std::size_t i = 0; i < b.orbits.size(); ++i) {
+    const bool middle = i > b.bifurcations.front().after && i <= b.bifurcations.back().after;
+    EXPECT_EQ(b.orbits[i].stable, !middle) << i;
+  }
+}
+
+// Internal (rotating) damping destabilises a Jeffcott rotor above
+// Ω = ω_n(1 + c_e/c_i): the Hopf point of the equilibrium branch, to 1e-6.
+TEST(Orbits, InternalDampingHopfIsAtTheClosedFormSpeed) {
+  const Real ce = 100.0, ci = 300.0;
+  const Model model = test::jeffcott(test::runup_mass, test::runup_stiffness, ce, ci);
+  const CondensedRotor rotor(model, nullptr, {});
+  const Real wn = std::sqrt(test::runup_stiffness / test::runup_mass);
+  OrbitSettings settings;
+  settings.continuation.p_min = 0.5 * wn;
+  settings.continuation.p_max = 3.0 * wn;
+  const OrbitBranch eq = equilibrium_branch(rotor, settings);
+  ASSERT_EQ(eq.bifurcations.size(), 1U);
+  EXPECT_EQ(eq.bifurcations[0].kind, Bifurcation::Kind::hopf);
+  EXPECT_NEAR(eq.bifurcations[0].at.speed, wn * (1 + ce / ci), 1e-6 * wn);
+}
+
+// Coulomb friction between rotor and shaft (regularised over 1e-5 m/s) makes the
+// Jeffcott rotor whirl above ω_n; the whirl branch leaving the Hopf point settles on
+// the closed-form orbit — radius F/(c_e·ω_n), frequency ω_n (the friction force is
+// tangential and of constant size on it) — at 2ω_n to 1e-3 (the regularisation's
+// ε/((Ω − ω_n)R) ≈ 1.5e-4), and its orbits there are stable.
+TEST(Orbits, CoulombFrictionWhirlHasTheClosedFormRadiusAndFrequency) {
+  const Real ce = 300.0, F = 20.0;
+  const Model model = test::runup_jeffcott(ce, 0.0, 0.0, F);
+  const CondensedRotor rotor(model, nullptr, {.modes = 12, .gravity = Eigen::Vector3d::Zero(), .static_loads = false, .unbalance = false,
+                                              .reference_speed = 0.0});
+  const Real wn = std::sqrt(test::runup_stiffness / test::runup_mass);
+  OrbitSettings settings;
+  settings.continuation.p_min = 0.5 * wn;
+  settings.continuation.p_max = 2.5 * wn;
+  const OrbitBranch eq = equilibrium_branch(rotor, settings);
+  ASSERT_FALSE(eq.bifurcations.empty());
+  ASSERT_EQ(eq.bifurcations[0].kind, Bifurcation::Kind::hopf);
+  settings.fourier = {.harmonics = 3, .samples = 32};
+  settings.length_scale = F / (ce * wn);
+  settings.continuation.max_points = 400;
+  const OrbitBranch whirl = hopf_branch(rotor, eq.bifurcations[0], settings);
+  const std::vector<SteadyState> at = states_at(rotor, whirl, 2 * wn, settings);
+  ASSERT_EQ(at.size(), 1U) << whirl.ended_by;
+  const Real R = F / (ce * wn);
+  const SteadyState& o = at[0];
+  const Index n = rotor.size();
+  const Real radius = std::hypot(o.X(n), o.X(2 * n));  // the first kept DOF's first harmonic
+  EXPECT_NEAR(radius, R, 1e-3 * R);
+  EXPECT_NEAR(o.frequency, wn, 1e-3 * wn);
+  EXPECT_TRUE(o.stable);
 }
 
 }  // namespace
