@@ -18,6 +18,10 @@
 #include <feran/forces/finite_bearing_table.hpp>
 #include <feran/forces/fluid_film_bearing.hpp>
 #include <feran/io/model_reader.hpp>
+#include <feran/analyses/periodic/orbits.hpp>
+#include <feran/analyses/transient/transient_analysis.hpp>
+
+#include "test_models.hpp"
 
 namespace feran {
 namespace {
@@ -313,6 +317,69 @@ void BM_FiniteBearingForce(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FiniteBearingForce)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// A flexible rotor of 100 lateral DOFs on two short journal bearings: a steel shaft
+// Ø 40 mm, 0.8 m, 24 elements (axial and torsional DOFs held), a 20 kg disk at mid-span,
+// bearings D 40 mm, L 12 mm, c 50 µm, μ 0.02 Pa s; gravity −y. Its equilibrium loses
+// stability at a Hopf point near 559 rad/s (subcritical; the whip's fold near 506 rad/s).
+Model whirl_rotor() {
+  Model m;
+  const int n_el = 24;
+  const Index first = test::add_shaft(m, 0.0, 0.8, n_el, 0.04, test::steel());
+  for (Index i = 0; i < m.n_nodes(); ++i) test::fix(m, i, {Dof::u, Dof::rx});
+  test::add_body(m, first + n_el / 2, 20.0, 0.05, 0.1);
+  const JournalBearingGeometry g{.diameter = 0.04, .length = 0.012, .clearance = 5e-5, .viscosity = 0.02};
+  for (const Index node : {first, first + n_el})
+    m.forces.emplace_back(
+        FluidFilmBearing{.node_a = node, .node_b = {}, .geometry = g, .theory = FilmTheory::short_bearing, .grid = {}});
+  m.gravity = Eigen::Vector3d(0, -9.81, 0);
+  return m;
+}
+
+// The whirl branch of whirl_rotor() by harmonic balance, as the periodic analysis
+// finds it: the condensed rotor (8 fixed-interface modes: 13 coordinates), the
+// equilibrium from 100 to 3000 rad/s with its Hopf point, and 200 self-excited orbits
+// from it (8 harmonics, 64 samples) with Hill's multipliers and the fold located.
+void BM_WhirlBranch(benchmark::State& state) {
+  const Model m = whirl_rotor();
+  Index orbits = 0;
+  for (auto _ : state) {
+    const CondensedRotor rotor(m, nullptr,
+                               {.modes = 8, .gravity = m.gravity, .static_loads = true, .unbalance = false,
+                                .reference_speed = 300.0});
+    OrbitSettings s;
+    s.continuation.p_min = 100.0;
+    s.continuation.p_max = 3000.0;
+    const OrbitBranch eq = equilibrium_branch(rotor, s);
+    s.fourier = {.harmonics = 8, .samples = 64};
+    s.continuation.max_points = 200;
+    const OrbitBranch w = hopf_branch(rotor, eq.bifurcations.at(0), s);
+    orbits = static_cast<Index>(w.orbits.size());
+  }
+  state.counters["orbits"] = static_cast<double>(orbits);
+}
+BENCHMARK(BM_WhirlBranch)->Iterations(1)->Unit(benchmark::kSecond);
+
+// One run-up of whirl_rotor() that settles on one of those orbits: 1 s (≈ 50 periods
+// of the whirl) at constant 700 rad/s, above the Hopf point, from the equilibrium
+// disturbed by a nanometre, trapezoidal rule at 10 µs. Reaching the branch's 200
+// orbits so takes 200 such runs (and the unstable ones cannot be reached at all).
+void BM_RunupToWhirlOrbit(benchmark::State& state) {
+  const Model m = whirl_rotor();
+  TransientOptions options;
+  options.profile = SpeedProfile::constant(700.0);
+  options.duration = 1.0;
+  options.integrator = "trapezoidal";
+  options.settings.dt = 1e-5;
+  options.output_interval = 1e-3;
+  options.probes = {0};
+  options.gravity = m.gravity;
+  options.start = RunupStart::equilibrium;
+  options.initial_velocity = Vector::Zero(m.n_dofs());
+  options.initial_velocity(global_dof(12, Dof::v)) = 1e-6;
+  for (auto _ : state) benchmark::DoNotOptimize(run_transient(m, options));
+}
+BENCHMARK(BM_RunupToWhirlOrbit)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace feran

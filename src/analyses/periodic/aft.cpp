@@ -71,6 +71,23 @@ Vector phase_derivative(const FourierBasis& basis, const Vector& X) {
   return D;
 }
 
+Vector force_coefficients(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force) {
+  basis.check();
+  if (!(omega > 0)) throw Error("harmonic balance: the base frequency must be positive");
+  const Index n = dofs_of(basis, X), terms = basis.terms(), N = basis.samples;
+  Vector F = Vector::Zero(n * terms), g, dg, x, v;
+  for (Index j = 0; j < N; ++j) {
+    const Real theta = 2 * pi * static_cast<Real>(j) / static_cast<Real>(N);
+    basis_row(basis.harmonics, theta, g, dg);
+    combine(X, g, n, x);
+    combine(X, dg, n, v);
+    v *= omega;
+    const Vector f = force(theta / omega, x, v).f;
+    for (Index c = 0; c < terms; ++c) F.segment(c * n, n) += (c == 0 ? 1.0 : 2.0) / static_cast<Real>(N) * g(c) * f;
+  }
+  return F;
+}
+
 AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force,
               bool velocity_jacobian) {
   basis.check();

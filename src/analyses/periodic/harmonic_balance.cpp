@@ -116,6 +116,22 @@ BalanceTerms balance_terms(const FourierBasis& basis, const PeriodicSystem& syst
   return t;
 }
 
+Vector balance_residual(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
+  check_sizes(basis, system, X);
+  Vector R = linear_balance(basis, system, omega) * X;
+  if (system.external.size() != 0) R -= system.external;
+  if (!system.force) return R;
+  if (system.force_dofs.empty()) return R - force_coefficients(basis, omega, X, system.force);
+  const Index n = system.K.rows(), nl = static_cast<Index>(system.force_dofs.size()), terms = basis.terms();
+  Vector Xl(nl * terms);
+  for (Index m = 0; m < terms; ++m)
+    for (Index d = 0; d < nl; ++d) Xl(m * nl + d) = X(m * n + system.force_dofs[static_cast<std::size_t>(d)]);
+  const Vector F = force_coefficients(basis, omega, Xl, system.force);
+  for (Index m = 0; m < terms; ++m)
+    for (Index d = 0; d < nl; ++d) R(m * n + system.force_dofs[static_cast<std::size_t>(d)]) -= F(m * nl + d);
+  return R;
+}
+
 Real truncation_estimate(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
   if (!system.force || basis.harmonics == 0) return 0.0;
   check_sizes(basis, system, X);

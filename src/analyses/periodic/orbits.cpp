@@ -59,7 +59,7 @@ struct BranchProblem {
     Vector up = u, um = u;
     const auto residual = [&](const Vector& v, Real q) {
       const Real w = kind == Kind::forced ? q : omega(v, q);
-      return balance_terms(fourier, rotor.at(q, w, fourier), w, X(v)).R;
+      return balance_residual(fourier, rotor.at(q, w, fourier), w, X(v));
     };
     return (residual(up, p + h) - residual(um, p - h)) / (2 * h);
   }

@@ -55,6 +55,9 @@ struct AftResult {
 AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force,
               bool velocity_jacobian = false);
 
+/// The force's coefficients F alone (no Jacobian): N force evaluations and the DFT.
+Vector force_coefficients(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force);
+
 /// The coefficients of dx/dθ for a motion with coefficients @p X: ∇X, harmonic k's
 /// (a_k, b_k) becoming (k·b_k, −k·a_k), the mean 0.
 Vector phase_derivative(const FourierBasis& basis, const Vector& X);

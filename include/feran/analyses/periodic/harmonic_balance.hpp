@@ -37,6 +37,9 @@ struct BalanceTerms {
 BalanceTerms balance_terms(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
                            bool velocity_jacobian = false);
 
+/// R alone (no Jacobians): L(ω)X − F_e − F(X).
+Vector balance_residual(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X);
+
 /// The force's harmonics H + 1 … 3H along the orbit @p X relative to its harmonics
 /// 0 … H (BalanceResult::truncation).
 Real truncation_estimate(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X);

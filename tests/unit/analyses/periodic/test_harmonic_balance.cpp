@@ -142,6 +142,8 @@ TEST(HarmonicBalance, ForceOnSomeDofsIsTheForceOnAll) {
   for (Index i = 0; i < X.size(); ++i) X(i) = 0.4 * std::sin(1.3 * static_cast<Real>(i) + 0.2);
   const BalanceTerms a = balance_terms(basis, on_one, w, X, true), b = balance_terms(basis, on_all, w, X, true);
   EXPECT_LT((a.R - b.R).norm(), 1e-14 * b.R.norm());
+  EXPECT_LT((balance_residual(basis, on_one, w, X) - a.R).norm(), 1e-14 * a.R.norm());
+  EXPECT_LT((balance_residual(basis, on_all, w, X) - a.R).norm(), 1e-14 * a.R.norm());
   EXPECT_LT((a.dR_dX - b.dR_dX).norm(), 1e-14 * b.dR_dX.norm());
   EXPECT_LT((a.Jv - b.Jv).norm(), 1e-14 * b.Jv.norm());
   EXPECT_LT((a.dR_domega - b.dR_domega).norm(), 1e-14 * b.dR_domega.norm());
