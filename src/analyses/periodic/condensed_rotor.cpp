@@ -54,6 +54,26 @@ CondensedRotor::CondensedRotor(const Model& model, std::shared_ptr<const Assembl
                                const CondensationOptions& options)
     : model_(model), assembler_(std::move(assembler)), options_(options) {
   if (!assembler_) assembler_ = std::make_shared<const Assembler>(model_);
+  collect();
+  reduce();
+}
+
+CondensedRotor::CondensedRotor(const Model& model, std::shared_ptr<const Assembler> assembler,
+                               const CondensedRotor& basis_of)
+    : model_(model), assembler_(std::move(assembler)), options_(basis_of.options_) {
+  if (!assembler_) assembler_ = std::make_shared<const Assembler>(model_);
+  collect();
+  if (assembler_->dof_map().n_reduced() != basis_of.basis_.rows() || kept_ != basis_of.kept_ ||
+      force_coordinates_ != basis_of.force_coordinates_)
+    throw Error(
+        "periodic orbits: the parameter changed the model's DOFs or where its nonlinear forces and loads act; a "
+        "branch can follow numbers only, not the model's structure");
+  modes_ = basis_of.modes_;
+  basis_ = basis_of.basis_;
+  mass_reference_ = basis_.transpose() * (Matrix(assembler_->at(options_.reference_speed).M) * basis_);
+}
+
+void CondensedRotor::collect() {
   require_time_domain_model(model_, *assembler_);
   const DofMap& dofs = assembler_->dof_map();
   const Index n = dofs.n_reduced();
@@ -97,7 +117,12 @@ CondensedRotor::CondensedRotor(const Model& model, std::shared_ptr<const Assembl
   const bool loaded = options_.gravity.squaredNorm() > 0 || options_.static_loads;
   constant_load_ = loaded ? Vector(T.transpose() * static_load_vector(model_, options_.gravity, options_.static_loads))
                           : Vector::Zero(n);
+}
 
+void CondensedRotor::reduce() {
+  const DofMap& dofs = assembler_->dof_map();
+  const Index n = dofs.n_reduced();
+  const bool loaded = options_.gravity.squaredNorm() > 0 || options_.static_loads;
   // Craig–Bampton: q_B = η_B; q_I = Ψ·η_B + V·η_m (+ the static deflection with B held).
   const SystemMatrices ref = assembler_->at(options_.reference_speed);
   const Matrix Kd = Matrix(ref.stiffness(options_.reference_speed));

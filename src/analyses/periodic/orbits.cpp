@@ -27,6 +27,25 @@ const char* bifurcation_name(Bifurcation::Kind kind) {
   return "";
 }
 
+RotorFamily::RotorFamily(const CondensedRotor& rotor) : base_(rotor) {}
+
+RotorFamily::RotorFamily(const CondensedRotor& rotor, Real speed, std::function<Model(Real)> build, std::string name)
+    : base_(rotor), speed_(speed), build_(std::move(build)), name_(std::move(name)) {}
+
+const CondensedRotor& RotorFamily::at(Real p) const {
+  if (!build_) return base_;
+  for (auto it = cache_.begin(); it != cache_.end(); ++it)
+    if (it->p == p) {
+      cache_.splice(cache_.begin(), cache_, it);
+      return *cache_.front().rotor;
+    }
+  Member m{.p = p, .model = std::make_unique<Model>(build_(p)), .rotor = nullptr};
+  m.rotor = std::make_unique<CondensedRotor>(*m.model, nullptr, base_);
+  cache_.push_front(std::move(m));
+  if (cache_.size() > 8) cache_.pop_back();
+  return *cache_.front().rotor;
+}
+
 namespace {
 
 using Kind = OrbitBranch::Kind;
@@ -34,34 +53,35 @@ using Kind = OrbitBranch::Kind;
 // The continuation problem of one branch: u = X (equilibrium, forced) or (X, ω)
 // (self-excited, with the phase fixed by u(anchor) = 0); p = Ω.
 struct BranchProblem {
-  const CondensedRotor& rotor;
+  const RotorFamily& family;
   FourierBasis fourier;
   Kind kind;
   Index anchor = -1;
+  Real p_scale = 1.0;  // the parameter's scale (its differences' step)
 
-  Index nx() const { return rotor.size() * fourier.terms(); }
+  Index nx() const { return family.base().size() * fourier.terms(); }
   Real omega(const Vector& u, Real p) const {
     if (kind == Kind::self_excited) return u(nx());
-    return kind == Kind::forced ? p : 1.0;  // an equilibrium's ω does not enter
+    return kind == Kind::forced ? family.speed(p) : 1.0;  // an equilibrium's ω does not enter
   }
   Vector X(const Vector& u) const { return u.head(nx()); }
-  Real speed_for(Real p) const { return p; }
+  PeriodicSystem system(Real p, Real w) const { return family.at(p).at(family.speed(p), w, fourier); }
 
   BalanceTerms terms(const Vector& u, Real p, bool velocity) const {
     const Real w = omega(u, p);
-    return balance_terms(fourier, rotor.at(p, w, fourier), w, X(u), velocity);
+    return balance_terms(fourier, system(p, w), w, X(u), velocity);
   }
-  // ∂R/∂Ω by central differences (the model's speed dependence: gyroscopics, speed-
-  // dependent supports, the film's speed, the unbalance's Ω²; for a forced orbit ω = Ω
-  // moves with it); the step 1e-6·Ω leaves an error of about 1e-10 of ‖R‖'s terms.
+  // ∂R/∂p by central differences (the model's dependence on the speed — gyroscopics,
+  // speed-dependent supports, the film's speed, the unbalance's Ω²; a forced orbit's
+  // ω = Ω moves with it — or on the number a path names); the step 1e-6·|p| leaves an
+  // error of about 1e-10 of ‖R‖'s terms.
   Vector dR_dp(const Vector& u, Real p) const {
-    const Real h = 1e-6 * std::max(std::abs(p), 1.0);
-    Vector up = u, um = u;
-    const auto residual = [&](const Vector& v, Real q) {
-      const Real w = kind == Kind::forced ? q : omega(v, q);
-      return balance_residual(fourier, rotor.at(q, w, fourier), w, X(v));
+    const Real h = 1e-6 * (p != 0.0 ? std::abs(p) : p_scale);
+    const auto residual = [&](Real q) {
+      const Real w = omega(u, q);
+      return balance_residual(fourier, system(q, w), w, X(u));
     };
-    return (residual(up, p + h) - residual(um, p - h)) / (2 * h);
+    return (residual(p + h) - residual(p - h)) / (2 * h);
   }
 
   BranchEquations operator()(const Vector& u, Real p) const {
@@ -81,16 +101,19 @@ struct BranchProblem {
   }
 
   SteadyState orbit(const Vector& u, Real p, const OrbitSettings& settings) const {
-    const Real w = omega(u, p);
-    const PeriodicSystem system = rotor.at(p, w, fourier);
-    const BalanceTerms t = balance_terms(fourier, system, w, X(u), true);
-    SteadyState o{.speed = p,
-            .frequency = kind == Kind::equilibrium ? 0.0 : w,
-            .X = X(u),
-            .floquet = hill_floquet(fourier, system, kind == Kind::equilibrium ? p : w, t, kind == Kind::self_excited),
-            .stable = true,
-            .truncation = truncation_estimate(fourier, system, w, X(u)),
-            .residual = t.scale > 0 ? t.R.norm() / t.scale : t.R.norm()};
+    const Real w = omega(u, p), speed = family.speed(p);
+    const PeriodicSystem sys = system(p, w);
+    const BalanceTerms t = balance_terms(fourier, sys, w, X(u), true);
+    // An equilibrium's "multipliers" are over one revolution (any period would do).
+    const Real period_frequency = kind == Kind::equilibrium ? std::max(speed, 1e-300) : w;
+    SteadyState o{.parameter = p,
+                  .speed = speed,
+                  .frequency = kind == Kind::equilibrium ? 0.0 : w,
+                  .X = X(u),
+                  .floquet = hill_floquet(fourier, sys, period_frequency, t, kind == Kind::self_excited),
+                  .stable = true,
+                  .truncation = truncation_estimate(fourier, sys, w, X(u)),
+                  .residual = t.scale > 0 ? t.R.norm() / t.scale : t.R.norm()};
     o.stable = growth(o) <= settings.stability_tolerance;
     return o;
   }
@@ -110,10 +133,10 @@ struct BranchProblem {
   }
 };
 
-Real length_scale(const CondensedRotor& rotor, const OrbitSettings& settings) {
+Real length_scale(const RotorFamily& family, const OrbitSettings& settings) {
   if (settings.length_scale > 0) return settings.length_scale;
   Real c = std::numeric_limits<Real>::infinity();
-  for (const Force& f : rotor.model().forces)
+  for (const Force& f : family.base().model().forces)
     if (const auto cl = f.clearance(); cl && *cl > 0) c = std::min(c, *cl);
   return std::isfinite(c) ? c : 1e-3;
 }
@@ -189,49 +212,75 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
 
 }  // namespace
 
-OrbitBranch equilibrium_branch(const CondensedRotor& rotor, const OrbitSettings& settings) {
-  const BranchProblem problem{.rotor = rotor, .fourier = {.harmonics = 0, .samples = 1}, .kind = Kind::equilibrium};
+Real parameter_scale(const ContinuationSettings& c, Real start) {
+  const Real range = c.p_max - c.p_min;
+  return range > 0 ? range : std::max(std::abs(start), 1e-300);
+}
+
+OrbitBranch equilibrium_branch(const RotorFamily& family, const OrbitSettings& settings) {
   const ContinuationSettings& c = settings.continuation;
+  const Real p_scale = parameter_scale(c, c.p_min);
+  const BranchProblem problem{.family = family,
+                              .fourier = {.harmonics = 0, .samples = 1},
+                              .kind = Kind::equilibrium,
+                              .anchor = -1,
+                              .p_scale = p_scale};
+  const CondensedRotor& rotor = family.base();
   const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
   const BranchPoint start = correct_at_fixed_parameter(G, Vector::Zero(rotor.size()), c.p_min, c);
   if (!(start.residual <= c.tolerance))
-    throw Error(fmt::format("periodic orbits: the static equilibrium at {:.6g} rad/s was not found (residual {:.3g})",
-                            c.p_min, start.residual));
-  const Real L = length_scale(rotor, settings);
-  return follow(problem, start, Vector(), +1.0, Vector::Constant(rotor.size(), L),
-                std::max(c.p_max - c.p_min, std::abs(c.p_min)), settings);
+    throw Error(fmt::format("periodic orbits: the static equilibrium at {} = {:.6g} was not found (residual {:.3g})",
+                            family.name(), c.p_min, start.residual));
+  const Real L = length_scale(family, settings);
+  return follow(problem, start, Vector(), +1.0, Vector::Constant(rotor.size(), L), p_scale, settings);
 }
 
-OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& settings, bool downwards) {
+OrbitBranch equilibrium_branch(const CondensedRotor& rotor, const OrbitSettings& settings) {
+  return equilibrium_branch(RotorFamily(rotor), settings);
+}
+
+OrbitBranch forced_branch(const RotorFamily& family, const OrbitSettings& settings, bool downwards) {
+  const CondensedRotor& rotor = family.base();
   if (!rotor.forced())
     throw Error("periodic orbits: no unbalance or synchronous force acts: there is no forced orbit to follow");
-  const BranchProblem problem{.rotor = rotor, .fourier = settings.fourier, .kind = Kind::forced};
   const ContinuationSettings& c = settings.continuation;
-  const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
   const Real first = downwards ? c.p_max : c.p_min;
-  // From the equilibrium at the first speed, then the forced orbit there.
-  const BranchProblem statics{.rotor = rotor, .fourier = {.harmonics = 0, .samples = 1}, .kind = Kind::equilibrium};
-  const BranchPoint eq = correct_at_fixed_parameter(
-      [&](const Vector& u, Real p) { return statics(u, p); }, Vector::Zero(rotor.size()), first, c);
+  const Real p_scale = parameter_scale(c, first);
+  const BranchProblem problem{
+      .family = family, .fourier = settings.fourier, .kind = Kind::forced, .anchor = -1, .p_scale = p_scale};
+  const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
+  // From the equilibrium at the first point, then the forced orbit there.
+  const BranchProblem statics{.family = family,
+                              .fourier = {.harmonics = 0, .samples = 1},
+                              .kind = Kind::equilibrium,
+                              .anchor = -1,
+                              .p_scale = p_scale};
+  const BranchPoint eq = correct_at_fixed_parameter([&](const Vector& u, Real p) { return statics(u, p); },
+                                                    Vector::Zero(rotor.size()), first, c);
   Vector u0 = Vector::Zero(problem.nx());
   u0.head(rotor.size()) = eq.u;
   const BranchPoint start = correct_at_fixed_parameter(G, u0, first, c);
   if (!(start.residual <= c.tolerance))
-    throw Error(fmt::format("periodic orbits: the forced orbit at {:.6g} rad/s was not found (residual {:.3g})", first,
-                            start.residual));
-  const Real L = length_scale(rotor, settings);
-  return follow(problem, start, Vector(), downwards ? -1.0 : 1.0, Vector::Constant(problem.nx(), L),
-                std::max(c.p_max - c.p_min, std::abs(first)), settings);
+    throw Error(fmt::format("periodic orbits: the forced orbit at {} = {:.6g} was not found (residual {:.3g})",
+                            family.name(), first, start.residual));
+  const Real L = length_scale(family, settings);
+  return follow(problem, start, Vector(), downwards ? -1.0 : 1.0, Vector::Constant(problem.nx(), L), p_scale,
+                settings);
 }
 
-OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, const OrbitSettings& settings) {
+OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& settings, bool downwards) {
+  return forced_branch(RotorFamily(rotor), settings, downwards);
+}
+
+OrbitBranch hopf_branch(const RotorFamily& family, const Bifurcation& hopf, const OrbitSettings& settings) {
   if (hopf.kind != Bifurcation::Kind::hopf) throw Error("periodic orbits: a self-excited branch starts at a Hopf point");
+  const CondensedRotor& rotor = family.base();
   const Index n = rotor.size();
-  const Real speed = hopf.at.speed;
+  const Real p0 = hopf.at.parameter, speed = family.speed(p0);
   // The critical mode at the Hopf point: the linearised equations about the
   // equilibrium, (s²M + s(C − ∂f/∂ẋ) + (K − ∂f/∂x))φ = 0.
   const FourierBasis mean{.harmonics = 0, .samples = 1};
-  const PeriodicSystem system = rotor.at(speed, speed, mean);
+  const PeriodicSystem system = family.at(p0).at(speed, speed, mean);
   const BalanceTerms t = balance_terms(mean, system, 1.0, hopf.at.X, true);
   Matrix A = Matrix::Zero(2 * n, 2 * n);
   A.topRightCorner(n, n).setIdentity();
@@ -253,17 +302,21 @@ OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, co
   phi *= std::abs(phi(anchor)) / phi(anchor);  // φ_anchor real and positive
   phi /= phi.norm();
 
-  FourierBasis fourier = settings.fourier;
+  const FourierBasis& fourier = settings.fourier;
   if (fourier.harmonics < 1) throw Error("periodic orbits: a self-excited orbit needs at least one harmonic");
-  const BranchProblem problem{.rotor = rotor, .fourier = fourier, .kind = Kind::self_excited, .anchor = 2 * n + anchor};
+  const Real p_scale = parameter_scale(settings.continuation, p0);
+  const BranchProblem problem{.family = family,
+                              .fourier = fourier,
+                              .kind = Kind::self_excited,
+                              .anchor = 2 * n + anchor,
+                              .p_scale = p_scale};
   const Index nx = problem.nx();
-  const Real L = length_scale(rotor, settings);
+  const Real L = length_scale(family, settings);
   Vector u_scale = Vector::Constant(nx + 1, L);
   u_scale(nx) = omega;
-  const Real p_scale = std::max(settings.continuation.p_max - settings.continuation.p_min, speed);
   // The start: the equilibrium as an orbit of amplitude 0 at ω; the direction: the
   // critical mode's x = Re(φ e^{iωt}) = Re φ cos ωt − Im φ sin ωt.
-  BranchPoint start{.u = Vector::Zero(nx + 1), .p = speed, .tangent = {}, .iterations = 0, .residual = 0.0};
+  BranchPoint start{.u = Vector::Zero(nx + 1), .p = p0, .tangent = {}, .iterations = 0, .residual = 0.0};
   start.u.head(n) = hopf.at.X;
   start.u(nx) = omega;
   Vector direction = Vector::Zero(nx + 2);
@@ -275,22 +328,31 @@ OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, co
   // equilibrium's, not an orbit's; the branch's criticality is the side its next
   // orbits lie on.
   if (out.orbits.size() > 1) {
-    const Real dp = out.orbits[1].speed - speed;
-    // Which side of the Hopf speed the equilibrium is unstable on: its growth just above.
-    const BranchProblem statics{.rotor = rotor, .fourier = mean, .kind = Kind::equilibrium};
-    const Real above = speed * (1 + 1e-4);
+    const Real dp = out.orbits[1].parameter - p0;
+    // Which side of the Hopf point the equilibrium is unstable on: its growth just
+    // beyond it.
+    const BranchProblem statics{
+        .family = family, .fourier = mean, .kind = Kind::equilibrium, .anchor = -1, .p_scale = p_scale};
+    const Real beyond = p0 + 1e-4 * p_scale;
     const BranchPoint eq = correct_at_fixed_parameter([&](const Vector& u, Real p) { return statics(u, p); },
-                                                      hopf.at.X, above, settings.continuation);
-    const bool unstable_above = statics.growth(statics.orbit(eq.u, above, settings)) > 0;
-    out.criticality = (dp > 0) == unstable_above ? "supercritical" : "subcritical";
+                                                      hopf.at.X, beyond, settings.continuation);
+    const bool unstable_beyond = statics.growth(statics.orbit(eq.u, beyond, settings)) > 0;
+    out.criticality = (dp > 0) == unstable_beyond ? "supercritical" : "subcritical";
   }
   return out;
 }
 
-std::vector<SteadyState> states_at(const CondensedRotor& rotor, const OrbitBranch& branch, Real speed,
+OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, const OrbitSettings& settings) {
+  return hopf_branch(RotorFamily(rotor), hopf, settings);
+}
+
+std::vector<SteadyState> states_at(const RotorFamily& family, const OrbitBranch& branch, Real speed,
                                    const OrbitSettings& settings) {
-  const BranchProblem problem{
-      .rotor = rotor, .fourier = branch.fourier, .kind = branch.kind, .anchor = branch.phase_anchor};
+  const BranchProblem problem{.family = family,
+                              .fourier = branch.fourier,
+                              .kind = branch.kind,
+                              .anchor = branch.phase_anchor,
+                              .p_scale = parameter_scale(settings.continuation, speed)};
   const bool autonomous = branch.kind == Kind::self_excited;
   const auto u_of = [&](const SteadyState& o) {
     Vector u(o.X.size() + (autonomous ? 1 : 0));
@@ -301,15 +363,20 @@ std::vector<SteadyState> states_at(const CondensedRotor& rotor, const OrbitBranc
   std::vector<SteadyState> out;
   for (std::size_t i = 1; i < branch.orbits.size(); ++i) {
     const SteadyState &a = branch.orbits[i - 1], &b = branch.orbits[i];
-    if ((a.speed - speed) * (b.speed - speed) > 0 || a.speed == b.speed) continue;
-    if (b.speed == speed && i + 1 < branch.orbits.size()) continue;  // counted with the next interval
-    const Real f = (speed - a.speed) / (b.speed - a.speed);
+    if ((a.parameter - speed) * (b.parameter - speed) > 0 || a.parameter == b.parameter) continue;
+    if (b.parameter == speed && i + 1 < branch.orbits.size()) continue;  // counted with the next interval
+    const Real f = (speed - a.parameter) / (b.parameter - a.parameter);
     const Vector u0 = u_of(a) + f * (u_of(b) - u_of(a));
     const BranchPoint p = correct_at_fixed_parameter([&](const Vector& u, Real q) { return problem(u, q); }, u0,
                                                      speed, settings.continuation);
     if (p.residual <= settings.continuation.tolerance) out.push_back(problem.orbit(p.u, speed, settings));
   }
   return out;
+}
+
+std::vector<SteadyState> states_at(const CondensedRotor& rotor, const OrbitBranch& branch, Real speed,
+                                   const OrbitSettings& settings) {
+  return states_at(RotorFamily(rotor), branch, speed, settings);
 }
 
 void orbit_state(const CondensedRotor& rotor, const SteadyState& orbit, const FourierBasis& fourier, Real theta,

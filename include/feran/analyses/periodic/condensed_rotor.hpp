@@ -49,6 +49,11 @@ class CondensedRotor {
   /// (defined for harmonic motion only), harmonic forces with a frequency of their own,
   /// a model larger than the dense eigensolver of the reduction takes.
   CondensedRotor(const Model& model, std::shared_ptr<const Assembler> assembler, const CondensationOptions& options);
+  /// @p model on the basis of @p basis_of (its options too): a model that differs from
+  /// that one's in numbers only (a parameter of a branch), projected on the same
+  /// coordinates, so that a branch's unknowns keep their meaning as the parameter
+  /// moves. Throws Error when the DOFs or where the forces and loads act differ.
+  CondensedRotor(const Model& model, std::shared_ptr<const Assembler> assembler, const CondensedRotor& basis_of);
 
   /// Coordinates n_η.
   Index size() const { return basis_.cols(); }
@@ -83,6 +88,9 @@ class CondensedRotor {
   const Assembler& assembler() const { return *assembler_; }
 
  private:
+  void collect();  // the checks, the nonlinear forces, the kept DOFs, the constant load
+  void reduce();   // the Craig–Bampton basis
+
   const Model& model_;
   std::shared_ptr<const Assembler> assembler_;
   CondensationOptions options_;

@@ -7,7 +7,9 @@
 /// Floquet multipliers, and the bifurcations along each branch located on it.
 /// Theory: docs/theory/harmonic_balance.md.
 
-#include <optional>
+#include <functional>
+#include <list>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,8 +31,46 @@ struct OrbitSettings {
   Real stability_tolerance = 1e-7;
 };
 
+/// What a branch is continued in: the rotor and its speed at each value p of the
+/// parameter — the speed itself, or a number of the model (a bearing's clearance, the
+/// oil's viscosity, an unbalance, a stiffness: any parameter path) at a fixed speed.
+class RotorFamily {
+ public:
+  /// The speed as the parameter: the one rotor at every p, Ω = p.
+  explicit RotorFamily(const CondensedRotor& rotor);
+  /// A number of the model as the parameter at the fixed speed @p speed [rad/s]:
+  /// @p build makes the model with the parameter at p, and each is condensed on the
+  /// basis of @p rotor (the model at the branch's start), so that the coefficients keep
+  /// their meaning. @p name names the parameter (its path) in messages. @p rotor must
+  /// outlive the family.
+  RotorFamily(const CondensedRotor& rotor, Real speed, std::function<Model(Real)> build, std::string name);
+
+  /// The rotor at parameter @p p (the last few built are kept).
+  const CondensedRotor& at(Real p) const;
+  /// The speed at parameter @p p [rad/s].
+  Real speed(Real p) const { return build_ ? speed_ : p; }
+  bool is_speed() const { return !build_; }
+  /// The rotor the family starts from (its coordinates are every member's).
+  const CondensedRotor& base() const { return base_; }
+  /// "speed", or the parameter's name.
+  const std::string& name() const { return name_; }
+
+ private:
+  struct Member {
+    Real p;
+    std::unique_ptr<Model> model;
+    std::unique_ptr<CondensedRotor> rotor;
+  };
+  const CondensedRotor& base_;
+  Real speed_ = 0.0;
+  std::function<Model(Real)> build_;
+  std::string name_ = "speed";
+  mutable std::list<Member> cache_;
+};
+
 /// One steady state.
 struct SteadyState {
+  Real parameter = 0.0;  ///< the branch's parameter p (the speed [rad/s], or the number a path names, SI)
   Real speed = 0.0;      ///< Ω [rad/s]
   Real frequency = 0.0;  ///< base frequency ω [rad/s] (an equilibrium: 0)
   Vector X;              ///< coefficients of the condensed coordinates
@@ -71,24 +111,30 @@ struct OrbitBranch {
   Index phase_anchor = -1;
 };
 
-/// The static equilibrium over [p_min, p_max] from p_min (continuation in speed of the
-/// balance with harmonic 0 alone), its eigenvalues at each speed, and Hopf points.
+/// The static equilibrium over [p_min, p_max] from p_min (continuation of the balance
+/// with harmonic 0 alone), its eigenvalues at each point, and Hopf points. The
+/// CondensedRotor forms continue in speed.
+OrbitBranch equilibrium_branch(const RotorFamily& family, const OrbitSettings& settings);
 OrbitBranch equilibrium_branch(const CondensedRotor& rotor, const OrbitSettings& settings);
 
 /// The orbits forced by the unbalance (ω = Ω) over [p_min, p_max] from p_min, or from
 /// p_max towards p_min when @p downwards (a run-down). Folds, period doubling and
 /// Neimark–Sacker points are located on it.
+OrbitBranch forced_branch(const RotorFamily& family, const OrbitSettings& settings, bool downwards = false);
 OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& settings, bool downwards = false);
 
 /// The self-excited orbits leaving the Hopf point @p hopf of an equilibrium branch,
 /// their base frequency an unknown fixed in phase by the first harmonic's sine of the
-/// largest component of the critical mode; continued in speed within [p_min, p_max].
+/// largest component of the critical mode; continued within [p_min, p_max].
+OrbitBranch hopf_branch(const RotorFamily& family, const Bifurcation& hopf, const OrbitSettings& settings);
 OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, const OrbitSettings& settings);
 
-/// The states of @p branch at speed @p speed: one wherever the branch crosses it
+/// The states of @p branch at parameter @p p (the speed): one wherever the branch crosses it
 /// (several where it folds back), each solved at that speed from the interpolation
 /// between the branch's points on either side. Empty when the branch does not reach
 /// the speed.
+std::vector<SteadyState> states_at(const RotorFamily& family, const OrbitBranch& branch, Real p,
+                                   const OrbitSettings& settings);
 std::vector<SteadyState> states_at(const CondensedRotor& rotor, const OrbitBranch& branch, Real speed,
                                    const OrbitSettings& settings);
 

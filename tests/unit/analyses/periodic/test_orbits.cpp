@@ -103,6 +103,41 @@ TEST(Orbits, HopfPointIsTheLinearThresholdAndItsBranchLeavesIt) {
 namespace feran::test_orbits {
 namespace {
 
+// Continuation in a number of the model at a fixed speed: the oil's viscosity, at the
+// speed of the Hopf point found in speed (viscosity 0.1 Pa s). The equilibrium branch
+// in viscosity from 0.05 to 0.2 Pa s meets its Hopf point at 0.1 Pa s (1e-5 relative:
+// two locations, each to about 1e-6), and the self-excited branch leaves it with
+// orbits that solve the balance (1e-9), each model condensed on the first's basis.
+TEST(Orbits, ContinuationInViscosityMeetsTheSameHopfPoint) {
+  const Real m = 525.0 / g;
+  const Model model = rigid_rotor(m);
+  const CondensedRotor rotor = condensed(model);
+  OrbitSettings settings;
+  settings.continuation.p_min = 600.0;
+  settings.continuation.p_max = 1100.0;
+  const Real speed = equilibrium_branch(rotor, settings).bifurcations.at(0).at.speed;
+  const auto with_viscosity = [&](Real mu) {
+    JournalBearingGeometry geometry = friswell;
+    geometry.viscosity = mu;
+    return test::rigid_rotor_in_journal_bearings(m, FilmTheory::short_bearing, geometry);
+  };
+  const Model first = with_viscosity(0.05);
+  const CondensedRotor base = condensed(first);
+  const RotorFamily family(base, speed, with_viscosity, "journal_bearings[*].viscosity");
+  settings.continuation.p_min = 0.05;
+  settings.continuation.p_max = 0.2;
+  const OrbitBranch eq = equilibrium_branch(family, settings);
+  ASSERT_EQ(eq.bifurcations.size(), 1U) << eq.ended_by;
+  EXPECT_EQ(eq.bifurcations[0].kind, Bifurcation::Kind::hopf);
+  EXPECT_NEAR(eq.bifurcations[0].at.parameter, 0.1, 1e-5 * 0.1);
+  EXPECT_NEAR(eq.bifurcations[0].at.speed, speed, 1e-12 * speed);
+  settings.fourier = {.harmonics = 6, .samples = 48};
+  settings.continuation.max_points = 12;
+  const OrbitBranch whirl = hopf_branch(family, eq.bifurcations[0], settings);
+  ASSERT_GT(whirl.orbits.size(), 5U) << whirl.ended_by;
+  for (std::size_t i = 1; i < whirl.orbits.size(); ++i) EXPECT_LT(whirl.orbits[i].residual, 1e-9) << i;
+}
+
 // A cubic spring −k₃x³ on one DOF, written as a nonlinear force.
 struct CubicSpring {
   Index dof = 0;
