@@ -6,6 +6,9 @@
 // - the branch turns twice, and the turning points located on it are the curve's folds,
 //   where the cubic in A² has a double root (its discriminant vanishes; found by
 //   bisection to 1e-13): to 1e-8 in ω;
+// - the point of the branch in phase quadrature with the force (a₁ = 0, located on
+//   it) lies on the backbone ω² = (k + ¾k₃A²)/m, the free undamped oscillation's
+//   single-harmonic frequency at that amplitude (1e-9: the location's tolerance);
 // - the branch ends on the range's limit and says it was clipped there;
 // - a corrector that cannot converge ends the branch with a reason and keeps the points.
 #include <gtest/gtest.h>
@@ -78,6 +81,17 @@ TEST(Continuation, DuffingsFrequencyResponseWithBothFolds) {
     EXPECT_NEAR(lhs, F * F, 1e-8 * F * F) << i;
     if (i > 0 && fold_test(b.points[i - 1]) * fold_test(p) < 0)
       folds.push_back(locate_on_branch(G, b.points[i - 1], p, u_scale, 1.0, settings, fold_test).p);
+  }
+  // Phase quadrature: a₁ changes sign once, near the peak.
+  std::vector<BranchPoint> quadrature;
+  const auto a1 = [](const BranchPoint& p) { return p.u(1); };
+  for (std::size_t i = 1; i < b.points.size(); ++i)
+    if (a1(b.points[i - 1]) * a1(b.points[i]) < 0)
+      quadrature.push_back(locate_on_branch(G, b.points[i - 1], b.points[i], u_scale, 1.0, settings, a1));
+  ASSERT_EQ(quadrature.size(), 1U);
+  {
+    const Real w = quadrature[0].p, A = std::hypot(quadrature[0].u(1), quadrature[0].u(2));
+    EXPECT_NEAR(w * w, (k + 0.75 * k3 * A * A) / m, 1e-9 * w * w);
   }
   const std::vector<Real> expected = closed_form_folds();
   ASSERT_EQ(expected.size(), 2U);
