@@ -344,9 +344,9 @@ void BM_WhirlBranch(benchmark::State& state) {
   const Model m = whirl_rotor();
   Index orbits = 0;
   for (auto _ : state) {
-    const CondensedRotor rotor(m, nullptr,
-                               {.modes = 8, .gravity = m.gravity, .static_loads = true, .unbalance = false,
-                                .reference_speed = 300.0});
+    const CondensedRotor rotor(
+        m, nullptr,
+        {.modes = 8, .gravity = m.gravity, .static_loads = true, .unbalance = false, .reference_speed = 300.0});
     OrbitSettings s;
     s.continuation.p_min = 100.0;
     s.continuation.p_max = 3000.0;

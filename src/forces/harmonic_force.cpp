@@ -6,7 +6,7 @@
 namespace feran {
 
 void HarmonicForce::add_harmonic(const HarmonicExcitation&, ComplexVector& f) const {
-  if (frequency || !time_table.empty()) return;  // its own time law: not a steady state of the sweep's
+  if (own_time_law()) return;  // not a steady state of the sweep's
   const Complex I(0.0, 1.0);
   const Complex a = amplitude * std::polar(1.0, phase);
   switch (type) {

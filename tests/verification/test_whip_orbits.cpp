@@ -39,9 +39,10 @@ constexpr Index journal = 1;  // node "left"
 
 struct Whirl {
   Model model = test::rigid_rotor_in_journal_bearings(525.0 / 9.81, FilmTheory::short_bearing);
-  CondensedRotor rotor{model, nullptr,
-                       {.modes = 12, .gravity = model.gravity, .static_loads = true, .unbalance = false,
-                        .reference_speed = 500.0}};
+  CondensedRotor rotor{
+      model,
+      nullptr,
+      {.modes = 12, .gravity = model.gravity, .static_loads = true, .unbalance = false, .reference_speed = 500.0}};
   OrbitSettings settings;
   OrbitBranch branch;
 
@@ -126,9 +127,8 @@ TEST(WhipOrbits, BetweenFoldAndThresholdTheLargeOrbitIsReachedAndTheSmallOneLeft
   const Whirl& w = whirl();
   std::vector<SteadyState> at = states_at(w.rotor, w.branch, 850.0, w.settings);
   ASSERT_EQ(at.size(), 2U);
-  std::sort(at.begin(), at.end(), [&](const SteadyState& a, const SteadyState& b) {
-    return orbit_size(w, a) < orbit_size(w, b);
-  });
+  std::sort(at.begin(), at.end(),
+            [&](const SteadyState& a, const SteadyState& b) { return orbit_size(w, a) < orbit_size(w, b); });
   const SteadyState &small = at[0], &large = at[1];
   EXPECT_FALSE(small.stable);
   EXPECT_TRUE(large.stable);

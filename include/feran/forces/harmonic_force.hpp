@@ -37,6 +37,8 @@ struct HarmonicForce {
 
   std::string_view kind() const { return "harmonic_force"; }
   std::vector<Index> nodes() const { return {node}; }
+  /// A frequency of its own or a time table: it acts in run-ups only.
+  bool own_time_law() const { return frequency.has_value() || !time_table.empty(); }
   void add_harmonic(const HarmonicExcitation& e, ComplexVector& f) const;
   void add_transient(const MotionState& s, Vector& f) const;
 };

@@ -39,6 +39,12 @@
 ///                                                              journal moves in: responses
 ///                                                              give each orbit as a fraction
 ///                                                              of it
+///   own_time_law()                                             its load follows a time law of
+///                                                              its own (a frequency of its own,
+///                                                              a time table), not the rotation:
+///                                                              the steady-state analyses leave
+///                                                              it out (true), the periodic one
+///                                                              refuses it
 ///   synchronous_inertia()                                      a mass turning with the rotor
 ///                                                              at an eccentricity (an
 ///                                                              unbalance): its m·e² [kg m²],
@@ -151,6 +157,12 @@ concept HasClearance = requires(const F& f) {
   { f.clearance() } -> std::convertible_to<Real>;
 };
 
+/// A load with a time law of its own (a frequency of its own, a time table).
+template <class F>
+concept HasOwnTimeLaw = requires(const F& f) {
+  { f.own_time_law() } -> std::same_as<bool>;
+};
+
 /// A mass turning with the rotor at an eccentricity (an unbalance).
 template <class F>
 concept HasSynchronousInertia = requires(const F& f) {
@@ -212,6 +224,8 @@ class Force {
   std::optional<Real> clearance() const { return self_->clearance(); }
   /// The m·e² [kg m²] of a mass turning with the rotor (an unbalance); empty for others.
   std::optional<Real> synchronous_inertia() const { return self_->synchronous_inertia(); }
+  /// True for a load that follows a time law of its own, not the rotation (run-ups only).
+  bool own_time_law() const { return self_->own_time_law(); }
   /// The global DOFs of a nonlinear force (empty for others).
   std::vector<Index> dofs() const { return self_->dofs(); }
   /// Force and Jacobian of a nonlinear force at local displacements @p x and
@@ -248,6 +262,7 @@ class Force {
     virtual std::vector<OperatingValue> operating_data(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual std::optional<Real> clearance() const = 0;
     virtual std::optional<Real> synchronous_inertia() const = 0;
+    virtual bool own_time_law() const = 0;
     virtual std::vector<Index> dofs() const = 0;
     virtual NonlinearForceValue force(const MotionState&, const Vector&, const Vector&) const = 0;
     virtual const std::type_info& type() const = 0;
@@ -308,6 +323,12 @@ class Force {
         return static_cast<Real>(value.synchronous_inertia());
       else
         return std::nullopt;
+    }
+    bool own_time_law() const override {
+      if constexpr (HasOwnTimeLaw<F>)
+        return value.own_time_law();
+      else
+        return false;
     }
     std::vector<Index> dofs() const override {
       if constexpr (HasNonlinearForce<F>)

@@ -48,6 +48,17 @@ void combine(const Vector& X, const Vector& g, Index n, Vector& x) {
   for (Index m = 0; m < g.size(); ++m) x += g(m) * X.segment(m * n, n);
 }
 
+// The motion at sample j of N: its phase θ_j, the basis row there and x, ẋ.
+Real sample(const FourierBasis& basis, Real omega, const Vector& X, Index n, Index j, Vector& g, Vector& dg, Vector& x,
+            Vector& v) {
+  const Real theta = 2 * pi * static_cast<Real>(j) / static_cast<Real>(basis.samples);
+  basis_row(basis.harmonics, theta, g, dg);
+  combine(X, g, n, x);
+  combine(X, dg, n, v);
+  v *= omega;
+  return theta;
+}
+
 }  // namespace
 
 void motion_at(const FourierBasis& basis, Real omega, const Vector& X, Real t, Vector& x, Vector& v) {
@@ -77,19 +88,14 @@ Vector force_coefficients(const FourierBasis& basis, Real omega, const Vector& X
   const Index n = dofs_of(basis, X), terms = basis.terms(), N = basis.samples;
   Vector F = Vector::Zero(n * terms), g, dg, x, v;
   for (Index j = 0; j < N; ++j) {
-    const Real theta = 2 * pi * static_cast<Real>(j) / static_cast<Real>(N);
-    basis_row(basis.harmonics, theta, g, dg);
-    combine(X, g, n, x);
-    combine(X, dg, n, v);
-    v *= omega;
+    const Real theta = sample(basis, omega, X, n, j, g, dg, x, v);
     const Vector f = force(theta / omega, x, v).f;
     for (Index c = 0; c < terms; ++c) F.segment(c * n, n) += (c == 0 ? 1.0 : 2.0) / static_cast<Real>(N) * g(c) * f;
   }
   return F;
 }
 
-AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force,
-              bool velocity_jacobian) {
+AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const LocalForce& force, bool velocity_jacobian) {
   basis.check();
   if (!(omega > 0)) throw Error("harmonic balance: the base frequency must be positive");
   const Index n = dofs_of(basis, X), terms = basis.terms(), N = basis.samples;
@@ -101,11 +107,7 @@ AftResult aft(const FourierBasis& basis, Real omega, const Vector& X, const Loca
   Matrix local(n, n * terms);   // ∂f_j/∂X at one sample
   Matrix localv(n, n * terms);  // ∂f_j/∂V at one sample
   for (Index j = 0; j < N; ++j) {
-    const Real theta = 2 * pi * static_cast<Real>(j) / static_cast<Real>(N);
-    basis_row(basis.harmonics, theta, g, dg);
-    combine(X, g, n, x);
-    combine(X, dg, n, v);
-    v *= omega;
+    const Real theta = sample(basis, omega, X, n, j, g, dg, x, v);
     const NonlinearForceValue f = force(theta / omega, x, v);
     // The DFT's weights: 1/N for the mean, 2/N for the cosines and sines.
     w = (2.0 / static_cast<Real>(N)) * g;

@@ -12,7 +12,6 @@
 #include <feran/analyses/static/equilibrium.hpp>
 #include <feran/analyses/transient/modal_basis.hpp>
 #include <feran/core/error.hpp>
-#include <feran/forces/harmonic_force.hpp>
 
 namespace feran {
 
@@ -37,15 +36,13 @@ void require_time_domain_model(const Model& model, const Assembler& assembler) {
         "periodic orbits: the model has hysteretic damping (a loss factor), which is defined for harmonic motion "
         "only; periodic orbits and their stability need damping in time: give it as viscous damping");
   for (const Force& f : model.forces)
-    if (const auto* h = f.target<HarmonicForce>(); h != nullptr && !h->time_table.empty())
+    if (f.own_time_law())
       throw Error(fmt::format(
-          "periodic orbits: the force '{}' is given by a time table, which is not periodic: leave it out", f.label()));
-    else if (h != nullptr && h->frequency)
-      throw Error(fmt::format(
-          "periodic orbits: the harmonic force '{}' acts at a frequency of its own ({:.6g} rad/s), not at the "
-          "rotor speed: with it the motion has two base frequencies (quasi-periodic), which the periodic analysis "
-          "does not compute; leave it out, or make it synchronous",
-          f.label(), *h->frequency));
+          "periodic orbits: the force '{}' follows a time law of its own (a frequency of its own or a time table), "
+          "not the rotation: with it the motion is not periodic at the rotor speed (or has two base frequencies, a "
+          "quasi-periodic motion), which the periodic analysis does not compute; leave it out, or make it "
+          "synchronous",
+          f.label()));
 }
 
 }  // namespace
@@ -78,9 +75,10 @@ void CondensedRotor::collect() {
   const DofMap& dofs = assembler_->dof_map();
   const Index n = dofs.n_reduced();
   if (n > modal_basis_max_dofs)
-    throw Error(fmt::format("periodic orbits: the model has {} DOFs; the condensation's dense eigensolver takes at "
-                            "most {}",
-                            n, modal_basis_max_dofs));
+    throw Error(
+        fmt::format("periodic orbits: the model has {} DOFs; the condensation's dense eigensolver takes at "
+                    "most {}",
+                    n, modal_basis_max_dofs));
   const RowMajor T = dofs.transformation();
   const auto columns_of = [&](Index full, std::set<Index>& into) {
     for (RowMajor::InnerIterator it(T, full); it; ++it)
@@ -138,7 +136,8 @@ void CondensedRotor::reduce() {
   const auto pick = [](const Matrix& A, const std::vector<Index>& rows, const std::vector<Index>& cols) {
     Matrix out(static_cast<Index>(rows.size()), static_cast<Index>(cols.size()));
     for (Index r = 0; r < out.rows(); ++r)
-      for (Index c = 0; c < out.cols(); ++c) out(r, c) = A(rows[static_cast<std::size_t>(r)], cols[static_cast<std::size_t>(c)]);
+      for (Index c = 0; c < out.cols(); ++c)
+        out(r, c) = A(rows[static_cast<std::size_t>(r)], cols[static_cast<std::size_t>(c)]);
     return out;
   };
   Matrix interior_basis(ni, 0), constraint(ni, nb);
@@ -148,8 +147,8 @@ void CondensedRotor::reduce() {
     // Free interior motions (an axial or torsional rigid motion nothing holds) are not
     // touched by lateral DOFs; a shift of 1e-10 of the stiffness' scale lets the solve
     // pass them.
-    Kii += (1e-10 * Kii.diagonal().cwiseAbs().maxCoeff() / std::max(Mii.diagonal().cwiseAbs().maxCoeff(), 1e-300)) *
-           Mii;
+    Kii +=
+        (1e-10 * Kii.diagonal().cwiseAbs().maxCoeff() / std::max(Mii.diagonal().cwiseAbs().maxCoeff(), 1e-300)) * Mii;
     const Eigen::LDLT<Matrix> kii(Kii);
     constraint = -kii.solve(pick(K, interior, kept_));
     const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> eig(Kii, Mii);
@@ -216,7 +215,7 @@ PeriodicSystem CondensedRotor::at(Real speed, Real omega, const FourierBasis& fo
       if (force.has_harmonic()) force.add_harmonic(at_speed, f);
     const ComplexVector fr =
         P.transpose().cast<Complex>() * (assembler_->dof_map().transformation().transpose().cast<Complex>() * f);
-    out.external.segment(nr, nr) = fr.real();        // x = Re(F e^{iΩt}): a = Re F
+    out.external.segment(nr, nr) = fr.real();       // x = Re(F e^{iΩt}): a = Re F
     out.external.segment(2 * nr, nr) = -fr.imag();  // b = −Im F
   }
   if (!forces_.empty()) {

@@ -190,8 +190,8 @@ Branch continue_branch(const BranchFunction& G, const BranchPoint& start, const 
   return branch;
 }
 
-BranchPoint locate_on_branch(const BranchFunction& G, const BranchPoint& a, const BranchPoint& b,
-                             const Vector& u_scale, Real p_scale, const ContinuationSettings& settings,
+BranchPoint locate_on_branch(const BranchFunction& G, const BranchPoint& a, const BranchPoint& b, const Vector& u_scale,
+                             Real p_scale, const ContinuationSettings& settings,
                              const std::function<Real(const BranchPoint&)>& tau, Real tolerance) {
   const Vector za = scaled(a.u, a.p, u_scale, p_scale), zb = scaled(b.u, b.p, u_scale, p_scale);
   const Vector& t = a.tangent;

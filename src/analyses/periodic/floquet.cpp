@@ -39,8 +39,8 @@ RealEigen real_eigen(Matrix A) {
   dgeev_("N", "V", &N, A.data(), &N, e.wr.data(), e.wi.data(), &vl_dummy, &one, e.vr.data(), &N, work.data(), &lwork,
          &info);
   if (info != 0)
-    throw Error(fmt::format("Floquet analysis: the eigenvalues of Hill's matrix were not found (LAPACK dgeev info {})",
-                            info));
+    throw Error(
+        fmt::format("Floquet analysis: the eigenvalues of Hill's matrix were not found (LAPACK dgeev info {})", info));
   return e;
 }
 
@@ -50,7 +50,8 @@ Real centroid(const ComplexVector& P, Index n, Index H) {
   Real num = 0.0, den = P.head(n).squaredNorm();
   for (Index k = 1; k <= H; ++k) {
     const ComplexVector a = P.segment((2 * k - 1) * n, n), b = P.segment(2 * k * n, n);
-    const Real plus = 0.25 * (a - Complex(0, 1) * b).squaredNorm(), minus = 0.25 * (a + Complex(0, 1) * b).squaredNorm();
+    const Real plus = 0.25 * (a - Complex(0, 1) * b).squaredNorm(),
+               minus = 0.25 * (a + Complex(0, 1) * b).squaredNorm();
     num += static_cast<Real>(k) * (plus - minus);
     den += plus + minus;
   }
@@ -165,7 +166,8 @@ void jacobians_at(const FourierBasis& basis, const PeriodicSystem& system, Real 
   const NonlinearForceValue f = system.force(t, xl, vl);
   for (Index i = 0; i < nl; ++i)
     for (Index j = 0; j < nl; ++j) {
-      const Index r = system.force_dofs[static_cast<std::size_t>(i)], c = system.force_dofs[static_cast<std::size_t>(j)];
+      const Index r = system.force_dofs[static_cast<std::size_t>(i)],
+                  c = system.force_dofs[static_cast<std::size_t>(j)];
       Jx(r, c) += f.dfdx(i, j);
       if (f.dfdv.size() != 0) Jv(r, c) += f.dfdv(i, j);
     }

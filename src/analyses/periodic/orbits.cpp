@@ -89,8 +89,8 @@ struct BranchProblem {
     const Index n = nx();
     if (kind != Kind::self_excited)
       return BranchEquations{.G = std::move(t.R), .Gu = std::move(t.dR_dX), .Gp = dR_dp(u, p), .scale = t.scale};
-    BranchEquations e{.G = Vector(n + 1), .Gu = Matrix::Zero(n + 1, n + 1), .Gp = Vector::Zero(n + 1),
-                      .scale = t.scale};
+    BranchEquations e{
+        .G = Vector(n + 1), .Gu = Matrix::Zero(n + 1, n + 1), .Gp = Vector::Zero(n + 1), .scale = t.scale};
     e.G.head(n) = t.R;
     e.G(n) = u(anchor) * (t.scale > 0 ? t.scale : 1.0);  // the phase, weighted like the forces
     e.Gu.topLeftCorner(n, n) = t.dR_dX;
@@ -157,9 +157,8 @@ Bifurcation::Kind multiplier_kind(const SteadyState& o, Kind kind) {
   if (critical < 0) return Bifurcation::Kind::fold;
   if (kind == Kind::equilibrium) {
     const Complex s = o.floquet.exponents(critical);
-    return std::abs(s.imag()) > 1e-6 * std::max(std::abs(s), o.speed * 1e-9)
-               ? Bifurcation::Kind::hopf
-               : Bifurcation::Kind::static_instability;
+    return std::abs(s.imag()) > 1e-6 * std::max(std::abs(s), o.speed * 1e-9) ? Bifurcation::Kind::hopf
+                                                                             : Bifurcation::Kind::static_instability;
   }
   const Complex mu = o.floquet.multipliers(critical);
   const Real angle = std::abs(std::arg(mu));
@@ -200,8 +199,9 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
     const Real ga = problem.growth(out.orbits[i - 1]) - settings.stability_tolerance;
     const Real gc = problem.growth(out.orbits[i]) - settings.stability_tolerance;
     if (ga * gc < 0) {
-      const BranchPoint x = locate_on_branch(G, a, c, u_scale, p_scale, settings.continuation,
-                                             [&](const BranchPoint& p) { return stability_test(p) - settings.stability_tolerance; });
+      const BranchPoint x =
+          locate_on_branch(G, a, c, u_scale, p_scale, settings.continuation,
+                           [&](const BranchPoint& p) { return stability_test(p) - settings.stability_tolerance; });
       SteadyState at = problem.orbit(x.u, x.p, settings);
       const Bifurcation::Kind k = multiplier_kind(at, problem.kind);
       if (!fold) out.bifurcations.push_back({k, std::move(at), i - 1});
@@ -264,8 +264,7 @@ OrbitBranch forced_branch(const RotorFamily& family, const OrbitSettings& settin
     throw Error(fmt::format("periodic orbits: the forced orbit at {} = {:.6g} was not found (residual {:.3g})",
                             family.name(), first, start.residual));
   const Real L = length_scale(family, settings);
-  return follow(problem, start, Vector(), downwards ? -1.0 : 1.0, Vector::Constant(problem.nx(), L), p_scale,
-                settings);
+  return follow(problem, start, Vector(), downwards ? -1.0 : 1.0, Vector::Constant(problem.nx(), L), p_scale, settings);
 }
 
 OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& settings, bool downwards) {
@@ -273,7 +272,8 @@ OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& sett
 }
 
 OrbitBranch hopf_branch(const RotorFamily& family, const Bifurcation& hopf, const OrbitSettings& settings) {
-  if (hopf.kind != Bifurcation::Kind::hopf) throw Error("periodic orbits: a self-excited branch starts at a Hopf point");
+  if (hopf.kind != Bifurcation::Kind::hopf)
+    throw Error("periodic orbits: a self-excited branch starts at a Hopf point");
   const CondensedRotor& rotor = family.base();
   const Index n = rotor.size();
   const Real p0 = hopf.at.parameter, speed = family.speed(p0);
@@ -305,11 +305,8 @@ OrbitBranch hopf_branch(const RotorFamily& family, const Bifurcation& hopf, cons
   const FourierBasis& fourier = settings.fourier;
   if (fourier.harmonics < 1) throw Error("periodic orbits: a self-excited orbit needs at least one harmonic");
   const Real p_scale = parameter_scale(settings.continuation, p0);
-  const BranchProblem problem{.family = family,
-                              .fourier = fourier,
-                              .kind = Kind::self_excited,
-                              .anchor = 2 * n + anchor,
-                              .p_scale = p_scale};
+  const BranchProblem problem{
+      .family = family, .fourier = fourier, .kind = Kind::self_excited, .anchor = 2 * n + anchor, .p_scale = p_scale};
   const Index nx = problem.nx();
   const Real L = length_scale(family, settings);
   Vector u_scale = Vector::Constant(nx + 1, L);
@@ -334,8 +331,8 @@ OrbitBranch hopf_branch(const RotorFamily& family, const Bifurcation& hopf, cons
     const BranchProblem statics{
         .family = family, .fourier = mean, .kind = Kind::equilibrium, .anchor = -1, .p_scale = p_scale};
     const Real beyond = p0 + 1e-4 * p_scale;
-    const BranchPoint eq = correct_at_fixed_parameter([&](const Vector& u, Real p) { return statics(u, p); },
-                                                      hopf.at.X, beyond, settings.continuation);
+    const BranchPoint eq = correct_at_fixed_parameter([&](const Vector& u, Real p) { return statics(u, p); }, hopf.at.X,
+                                                      beyond, settings.continuation);
     const bool unstable_beyond = statics.growth(statics.orbit(eq.u, beyond, settings)) > 0;
     out.criticality = (dp > 0) == unstable_beyond ? "supercritical" : "subcritical";
   }
@@ -367,8 +364,8 @@ std::vector<SteadyState> states_at(const RotorFamily& family, const OrbitBranch&
     if (b.parameter == speed && i + 1 < branch.orbits.size()) continue;  // counted with the next interval
     const Real f = (speed - a.parameter) / (b.parameter - a.parameter);
     const Vector u0 = u_of(a) + f * (u_of(b) - u_of(a));
-    const BranchPoint p = correct_at_fixed_parameter([&](const Vector& u, Real q) { return problem(u, q); }, u0,
-                                                     speed, settings.continuation);
+    const BranchPoint p = correct_at_fixed_parameter([&](const Vector& u, Real q) { return problem(u, q); }, u0, speed,
+                                                     settings.continuation);
     if (p.residual <= settings.continuation.tolerance) out.push_back(problem.orbit(p.u, speed, settings));
   }
   return out;

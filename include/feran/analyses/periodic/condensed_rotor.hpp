@@ -97,11 +97,11 @@ class CondensedRotor {
   std::vector<Index> kept_;
   Index modes_ = 0;
   Matrix basis_;
-  Matrix mass_reference_;  // Φᵀ·M·Φ at the reference speed (project())
-  std::vector<Force> forces_;                // the nonlinear forces
-  std::vector<Matrix> selectors_;            // per force: its local DOFs from force_coordinates()
+  Matrix mass_reference_;          // Φᵀ·M·Φ at the reference speed (project())
+  std::vector<Force> forces_;      // the nonlinear forces
+  std::vector<Matrix> selectors_;  // per force: its local DOFs from force_coordinates()
   std::vector<Index> force_coordinates_;
-  Vector constant_load_;                     // reduced DOFs
+  Vector constant_load_;  // reduced DOFs
   bool forced_ = false;
 };
 

@@ -76,8 +76,8 @@ Branch continue_branch(const BranchFunction& G, const BranchPoint& start, const 
 /// distance σ along a's tangent: each trial point is corrected on the hyperplane
 /// through ẑ_a + σ·t_a normal to t_a. Stops when |σ − σ'| ≤ @p tolerance·σ_b or after
 /// 40 trials. Folds: τ = the tangent's p component.
-BranchPoint locate_on_branch(const BranchFunction& G, const BranchPoint& a, const BranchPoint& b,
-                             const Vector& u_scale, Real p_scale, const ContinuationSettings& settings,
+BranchPoint locate_on_branch(const BranchFunction& G, const BranchPoint& a, const BranchPoint& b, const Vector& u_scale,
+                             Real p_scale, const ContinuationSettings& settings,
                              const std::function<Real(const BranchPoint&)>& tau, Real tolerance = 1e-10);
 
 /// The tangent's p component (dp/ds in scaled variables): a fold's test function.

@@ -86,7 +86,7 @@ struct SteadyState {
 struct Bifurcation {
   enum class Kind { fold, period_doubling, neimark_sacker, hopf, static_instability };
   Kind kind = Kind::fold;
-  SteadyState at;           ///< the state there
+  SteadyState at;     ///< the state there
   std::size_t after;  ///< between orbits `after` and `after` + 1 of the branch
 };
 

@@ -20,51 +20,22 @@
 #include <feran/analyses/periodic/harmonic_balance.hpp>
 #include <feran/core/error.hpp>
 
+#include "duffing.hpp"
+
 namespace feran::test_continuation {
 namespace {
 
-constexpr Real m = 1.0, c = 0.05, k = 1.0, k3 = 0.5, F = 0.2;
+using namespace test::duffing;  // NOLINT(google-build-using-namespace): the shared case's names
 
-PeriodicSystem duffing(const FourierBasis& basis) {
-  PeriodicSystem s{.M = Matrix::Constant(1, 1, m),
-                   .C = Matrix::Constant(1, 1, c),
-                   .K = Matrix::Constant(1, 1, k),
-                   .external = Vector::Zero(basis.terms()),
-                   .force = [](Real, const Vector& x, const Vector&) {
-                     return NonlinearForceValue{Vector::Constant(1, -k3 * x(0) * x(0) * x(0)),
-                                                Matrix::Constant(1, 1, -3 * k3 * x(0) * x(0)), Matrix()};
-                   }};
-  s.external(1) = F;
-  return s;
-}
-
-// The discriminant of the cubic in u = A² whose roots are the orbits at ω.
-Real discriminant(Real w) {
-  const Real k0 = k - m * w * w, q = 0.75 * k3;
-  const Real a = q * q, b = 2 * k0 * q, cc = k0 * k0 + c * c * w * w, d = -F * F;
-  return 18 * a * b * cc * d - 4 * b * b * b * d + b * b * cc * cc - 4 * a * cc * cc * cc - 27 * a * a * d * d;
-}
-
-std::vector<Real> closed_form_folds() {
-  std::vector<Real> folds;
-  for (Real w = 0.5; w < 2.5; w += 1e-3) {
-    Real lo = w, hi = w + 1e-3;
-    if (discriminant(lo) * discriminant(hi) > 0) continue;
-    for (int i = 0; i < 100 && hi - lo > 1e-14; ++i) {
-      const Real mid = 0.5 * (lo + hi);
-      (discriminant(lo) * discriminant(mid) <= 0 ? hi : lo) = mid;
-    }
-    folds.push_back(0.5 * (lo + hi));
-  }
-  return folds;
-}
+PeriodicSystem duffing(const FourierBasis& basis) { return test::duffing::system(basis); }
 
 TEST(Continuation, DuffingsFrequencyResponseWithBothFolds) {
   const FourierBasis basis{.harmonics = 1, .samples = 8};
   const PeriodicSystem s = duffing(basis);
   const BranchFunction G = [&](const Vector& X, Real w) {
     BalanceTerms t = balance_terms(basis, s, w, X);
-    return BranchEquations{.G = std::move(t.R), .Gu = std::move(t.dR_dX), .Gp = std::move(t.dR_domega), .scale = t.scale};
+    return BranchEquations{
+        .G = std::move(t.R), .Gu = std::move(t.dR_dX), .Gp = std::move(t.dR_domega), .scale = t.scale};
   };
   ContinuationSettings settings{.p_min = 0.5, .p_max = 2.5, .max_points = 2000, .tolerance = 1e-10};
   const BranchPoint start = correct_at_fixed_parameter(G, Vector::Zero(3), 0.5, settings);
@@ -76,9 +47,7 @@ TEST(Continuation, DuffingsFrequencyResponseWithBothFolds) {
   std::vector<Real> folds;
   for (std::size_t i = 0; i < b.points.size(); ++i) {
     const BranchPoint& p = b.points[i];
-    const Real w = p.p, A = std::hypot(p.u(1), p.u(2));
-    const Real lhs = std::pow((k - m * w * w) * A + 0.75 * k3 * A * A * A, 2) + std::pow(c * w * A, 2);
-    EXPECT_NEAR(lhs, F * F, 1e-8 * F * F) << i;
+    EXPECT_NEAR(response_curve(p.p, std::hypot(p.u(1), p.u(2))), F * F, 1e-8 * F * F) << i;
     if (i > 0 && fold_test(b.points[i - 1]) * fold_test(p) < 0)
       folds.push_back(locate_on_branch(G, b.points[i - 1], p, u_scale, 1.0, settings, fold_test).p);
   }
@@ -106,8 +75,10 @@ TEST(Continuation, ABranchThatCannotBeFollowedKeepsItsPoints) {
   // stands for a model that cannot be evaluated there.
   const BranchFunction G = [](const Vector& u, Real p) {
     if (p > 0.5) throw Error("outside");
-    return BranchEquations{.G = Vector::Constant(1, u(0) - p), .Gu = Matrix::Identity(1, 1),
-                           .Gp = Vector::Constant(1, -1.0), .scale = 1.0};
+    return BranchEquations{.G = Vector::Constant(1, u(0) - p),
+                           .Gu = Matrix::Identity(1, 1),
+                           .Gp = Vector::Constant(1, -1.0),
+                           .scale = 1.0};
   };
   ContinuationSettings settings{.p_min = 0.0, .p_max = 2.0, .step = 0.1};
   const BranchPoint start = correct_at_fixed_parameter(G, Vector::Zero(1), 0.0, settings);

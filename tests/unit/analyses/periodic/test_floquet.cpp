@@ -19,29 +19,19 @@
 #include <feran/analyses/periodic/floquet.hpp>
 #include <feran/core/error.hpp>
 
+#include "duffing.hpp"
+
 namespace feran::test_floquet {
 namespace {
 
-constexpr Real m = 1.0, c = 0.05, k = 1.0, k3 = 0.5, F = 0.2;
+using namespace test::duffing;  // NOLINT(google-build-using-namespace): the shared case's names
 
-PeriodicSystem duffing(const FourierBasis& basis) {
-  PeriodicSystem s{.M = Matrix::Constant(1, 1, m),
-                   .C = Matrix::Constant(1, 1, c),
-                   .K = Matrix::Constant(1, 1, k),
-                   .external = Vector::Zero(basis.terms()),
-                   .force = [](Real, const Vector& x, const Vector&) {
-                     return NonlinearForceValue{Vector::Constant(1, -k3 * x(0) * x(0) * x(0)),
-                                                Matrix::Constant(1, 1, -3 * k3 * x(0) * x(0)), Matrix()};
-                   }};
-  s.external(1) = F;
-  return s;
-}
+PeriodicSystem duffing(const FourierBasis& basis) { return test::duffing::system(basis); }
 
 std::vector<Complex> sorted(const ComplexVector& v) {
   std::vector<Complex> out(v.data(), v.data() + v.size());
-  std::sort(out.begin(), out.end(), [](Complex a, Complex b) {
-    return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
-  });
+  std::sort(out.begin(), out.end(),
+            [](Complex a, Complex b) { return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag(); });
   return out;
 }
 
@@ -74,9 +64,7 @@ TEST(Floquet, DuffingsThreeOrbitsByHillAndByMonodromy) {
   // The three single-harmonic orbits as starts: the roots A of
   // [(k − mω²)A + ¾k₃A³]² + (cωA)² = F², found by scanning for sign changes, and their
   // a = Fκ/(κ² + c²ω²), b = Fcω/(κ² + c²ω²), κ = k − mω² + ¾k₃A².
-  const auto g = [&](Real A) {
-    return std::pow((k - m * w * w) * A + 0.75 * k3 * A * A * A, 2) + std::pow(c * w * A, 2) - F * F;
-  };
+  const auto g = [&](Real A) { return response_curve(w, A) - F * F; };
   std::vector<Vector> starts;
   for (Real A = 1e-3; A < 3.0; A += 1e-3)
     if (g(A) * g(A + 1e-3) < 0) {

@@ -24,6 +24,7 @@
 
 #include <feran/forces/harmonic_force.hpp>
 
+#include "duffing.hpp"
 #include "test_models.hpp"
 
 namespace feran::test_orbits {
@@ -39,8 +40,9 @@ Model rigid_rotor(Real m_per_bearing) {
 constexpr Real threshold = 863.345;  // rad/s
 
 CondensedRotor condensed(const Model& model) {
-  return CondensedRotor(model, nullptr, {.modes = 12, .gravity = model.gravity, .static_loads = true,
-                                         .unbalance = false, .reference_speed = 500.0});
+  return CondensedRotor(
+      model, nullptr,
+      {.modes = 12, .gravity = model.gravity, .static_loads = true, .unbalance = false, .reference_speed = 500.0});
 }
 
 TEST(Orbits, EquilibriumOfTheCondensedRigidRotorIsTheStaticOne) {
@@ -83,8 +85,7 @@ TEST(Orbits, HopfPointIsTheLinearThresholdAndItsBranchLeavesIt) {
   const Bifurcation& fold = whirl.bifurcations.front();
   EXPECT_EQ(fold.kind, Bifurcation::Kind::fold);
   EXPECT_NEAR(fold.at.speed, 807.55, 0.005 * 807.55);
-  for (std::size_t i = 1; i < whirl.orbits.size(); ++i)
-    EXPECT_EQ(whirl.orbits[i].stable, i > fold.after) << i;
+  for (std::size_t i = 1; i < whirl.orbits.size(); ++i) EXPECT_EQ(whirl.orbits[i].stable, i > fold.after) << i;
   const SteadyState& last = whirl.orbits.back();
   EXPECT_TRUE(last.speed > threshold);
   EXPECT_GT(std::hypot(last.X(4), last.X(8)), 0.7 * friswell.clearance);
@@ -158,7 +159,7 @@ struct CubicSpring {
 // folds are where the cubic in A² has a double root (1e-6 in Ω: located to the
 // continuation's tolerance, the speed derivative by differences).
 TEST(Orbits, ForcedDuffingRotorFollowsItsFrequencyResponseThroughBothFolds) {
-  constexpr Real m = 1.0, k = 1.0, c = 0.05, k3 = 0.5, F = 0.2;
+  using namespace test::duffing;  // NOLINT(google-build-using-namespace): the shared case's names
   Model model = test::jeffcott(m, k, c, 0.0);
   test::fix(model, 0, {Dof::w});
   model.forces.emplace_back(CubicSpring{global_dof(0, Dof::v), k3}, "cubic");
@@ -170,8 +171,12 @@ TEST(Orbits, ForcedDuffingRotorFollowsItsFrequencyResponseThroughBothFolds) {
                                           .frequency = std::nullopt,
                                           .time_table = {}},
                             "F");
-  const CondensedRotor rotor(model, nullptr, {.modes = 12, .gravity = Eigen::Vector3d::Zero(), .static_loads = false, .unbalance = true,
-                                              .reference_speed = 0.0});
+  const CondensedRotor rotor(model, nullptr,
+                             {.modes = 12,
+                              .gravity = Eigen::Vector3d::Zero(),
+                              .static_loads = false,
+                              .unbalance = true,
+                              .reference_speed = 0.0});
   ASSERT_EQ(rotor.size(), 1);
   OrbitSettings settings;
   settings.fourier = {.harmonics = 1, .samples = 8};
@@ -183,26 +188,10 @@ TEST(Orbits, ForcedDuffingRotorFollowsItsFrequencyResponseThroughBothFolds) {
   const OrbitBranch b = forced_branch(rotor, settings);
   EXPECT_TRUE(b.clipped) << b.ended_by;
   for (const SteadyState& o : b.orbits) {
-    const Real w = o.speed, A = std::hypot(o.X(1), o.X(2));
-    const Real lhs = std::pow((k - m * w * w) * A + 0.75 * k3 * A * A * A, 2) + std::pow(c * w * A, 2);
-    EXPECT_NEAR(lhs, F * F, 1e-8 * F * F) << w;
+    EXPECT_NEAR(test::duffing::response_curve(o.speed, std::hypot(o.X(1), o.X(2))), F * F, 1e-8 * F * F) << o.speed;
   }
   // The folds of the closed form: the discriminant of the cubic in u = A² vanishes.
-  const auto discriminant = [&](Real w) {
-    const Real k0 = k - m * w * w, q = 0.75 * k3;
-    const Real a = q * q, bb = 2 * k0 * q, cc = k0 * k0 + c * c * w * w, d = -F * F;
-    return 18 * a * bb * cc * d - 4 * bb * bb * bb * d + bb * bb * cc * cc - 4 * a * cc * cc * cc - 27 * a * a * d * d;
-  };
-  std::vector<Real> expected;
-  for (Real w = 0.5; w < 2.5; w += 1e-3) {
-    Real lo = w, hi = w + 1e-3;
-    if (discriminant(lo) * discriminant(hi) > 0) continue;
-    for (int i = 0; i < 100 && hi - lo > 1e-14; ++i) {
-      const Real mid = 0.5 * (lo + hi);
-      (discriminant(lo) * discriminant(mid) <= 0 ? hi : lo) = mid;
-    }
-    expected.push_back(0.5 * (lo + hi));
-  }
+  const std::vector<Real> expected = test::duffing::closed_form_folds();
   ASSERT_EQ(expected.size(), 2U);
   std::vector<Real> folds;
   for (const Bifurcation& f : b.bifurcations)
@@ -241,8 +230,12 @@ TEST(Orbits, InternalDampingHopfIsAtTheClosedFormSpeed) {
 TEST(Orbits, CoulombFrictionWhirlHasTheClosedFormRadiusAndFrequency) {
   const Real ce = 300.0, F = 20.0;
   const Model model = test::runup_jeffcott(ce, 0.0, 0.0, F);
-  const CondensedRotor rotor(model, nullptr, {.modes = 12, .gravity = Eigen::Vector3d::Zero(), .static_loads = false, .unbalance = false,
-                                              .reference_speed = 0.0});
+  const CondensedRotor rotor(model, nullptr,
+                             {.modes = 12,
+                              .gravity = Eigen::Vector3d::Zero(),
+                              .static_loads = false,
+                              .unbalance = false,
+                              .reference_speed = 0.0});
   const Real wn = std::sqrt(test::runup_stiffness / test::runup_mass);
   OrbitSettings settings;
   settings.continuation.p_min = 0.5 * wn;
@@ -263,6 +256,33 @@ TEST(Orbits, CoulombFrictionWhirlHasTheClosedFormRadiusAndFrequency) {
   EXPECT_NEAR(radius, R, 1e-3 * R);
   EXPECT_NEAR(o.frequency, wn, 1e-3 * wn);
   EXPECT_TRUE(o.stable);
+}
+
+}  // namespace
+}  // namespace feran::test_orbits
+
+namespace feran::test_orbits {
+namespace {
+
+// What the periodic analysis cannot take is refused with the reason: a force with a
+// time law of its own (two base frequencies), a hysteretic loss factor (harmonic
+// motion only).
+TEST(Orbits, RefusesWhatIsNotPeriodicAtTheRotorSpeed) {
+  Model own = test::jeffcott(1.0, 1.0, 0.1, 0.0);
+  own.forces.emplace_back(HarmonicForce{.node = 0,
+                                        .type = HarmonicForce::Kind::fixed,
+                                        .direction = Dof::v,
+                                        .amplitude = 1.0,
+                                        .phase = 0.0,
+                                        .frequency = 3.0,
+                                        .time_table = {}},
+                          "shaker");
+  try {
+    const CondensedRotor rotor(own, nullptr, {});
+    ADD_FAILURE() << "accepted a force at a frequency of its own";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'shaker' follows a time law of its own"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
