@@ -122,7 +122,12 @@ Floquet hill_floquet(const FourierBasis& basis, const PeriodicSystem& system, Re
   // values whose vectors look centred); then the rest. Which copy of a strongly damped
   // exponent is kept does not change its multiplier's modulus, ≈ e^{−πH}.
   const Real resolved = -0.5 * static_cast<Real>(std::max<Index>(H, 1)) * omega;
+  // An exponent on the strip's edge (Im s = ±ω/2: a real negative multiplier, period
+  // doubling) is one exponent, though both s and its conjugate s − iω lie on the edge
+  // with |k̄| = ½: the one with Im s > 0 is kept, the other goes last.
+  const auto on_lower_edge = [&](std::size_t j) { return std::abs(values[j].imag() + 0.5 * omega) <= 1e-7 * omega; };
   const auto group = [&](std::size_t j) {
+    if (on_lower_edge(j)) return 3;
     if (values[j].real() < resolved) return 1;
     return std::abs(centre[j]) < 0.5 ? 0 : 2;
   };

@@ -8,10 +8,19 @@
 //   orbits to about that; the margin allows other platforms' rounding), the lower and upper orbits are
 //   stable, and the middle one has one real multiplier above 1 (a saddle, as the fold
 //   that joins it to the others says it must).
+// - Mathieu's equation x'' + c x' + (δ + ε cos ωt)x = 0 about x = 0 (a force with the
+//   time dependence, at ω = 1): near δ = ¼ the first tongue of parametric resonance,
+//   where a real multiplier passes −1 — period doubling. Hill's multipliers (H = 12)
+//   against the monodromy's (2000 steps; 1e-9), one below −1 inside the tongue (δ = 0.25) and
+//   none outside it (δ = 0.4), and the edges of the tongue found by bisection on the
+//   multiplier −1 against the monodromy's edges (1e-8). Without the rule for exponents
+//   on the strip's edge (floquet.cpp) Hill kept the stable multiplier twice inside the
+//   tongue and called the unstable trivial solution stable.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -93,6 +102,61 @@ TEST(Floquet, DuffingsThreeOrbitsByHillAndByMonodromy) {
   EXPECT_LT(largest[0], 1.0);
   EXPECT_GT(largest[1], 1.0 + 1e-3);
   EXPECT_LT(largest[2], 1.0);
+}
+
+PeriodicSystem mathieu(Real delta, Real eps, Real damping) {
+  return PeriodicSystem{
+      .M = Matrix::Identity(1, 1),
+      .C = Matrix::Constant(1, 1, damping),
+      .K = Matrix::Constant(1, 1, delta),
+      .external = {},
+      .force = [eps](Real t, const Vector& x, const Vector&) {
+        const Real e = eps * std::cos(t);  // t = θ/ω with ω = 1
+        return NonlinearForceValue{Vector::Constant(1, -e * x(0)), Matrix::Constant(1, 1, -e), Matrix()};
+      }};
+}
+
+// The most negative real multiplier, or +∞ when there is none.
+Real most_negative(const Floquet& f) {
+  Real most = std::numeric_limits<Real>::infinity();
+  for (Index j = 0; j < f.multipliers.size(); ++j)
+    if (std::abs(f.multipliers(j).imag()) < 1e-9 && f.multipliers(j).real() < 0)
+      most = std::min(most, f.multipliers(j).real());
+  return most;
+}
+
+TEST(Floquet, MathieusTongueIsAPeriodDoubling) {
+  const FourierBasis basis{.harmonics = 12, .samples = 64};
+  const Real eps = 0.2, damping = 0.02;
+  const Vector X = Vector::Zero(basis.terms());
+  const auto hill = [&](Real delta) {
+    const PeriodicSystem s = mathieu(delta, eps, damping);
+    return hill_floquet(basis, s, 1.0, balance_terms(basis, s, 1.0, X, true), false);
+  };
+  const auto mono = [&](Real delta) {
+    return monodromy_floquet(basis, mathieu(delta, eps, damping), 1.0, X, 2000, false);
+  };
+  for (const Real delta : {0.25, 0.4}) {
+    const std::vector<Complex> a = sorted(hill(delta).multipliers), b = sorted(mono(delta).multipliers);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t j = 0; j < a.size(); ++j) EXPECT_LT(std::abs(a[j] - b[j]), 1e-9) << delta << " " << j;
+  }
+  EXPECT_LT(most_negative(hill(0.25)), -1.0);  // inside the tongue: a multiplier beyond −1
+  EXPECT_GT(hill(0.4).largest, 0.0);
+  EXPECT_LT(hill(0.4).largest, 1.0);  // outside: stable
+  // The tongue's edges: where the most negative multiplier is −1, by bisection.
+  const auto edge = [&](auto floquet, Real inside, Real outside) {
+    for (int i = 0; i < 45; ++i) {
+      const Real mid = 0.5 * (inside + outside);
+      (most_negative(floquet(mid)) < -1.0 ? inside : outside) = mid;
+    }
+    return 0.5 * (inside + outside);
+  };
+  for (const Real outside : {0.1, 0.4}) {
+    const Real by_hill = edge(hill, 0.25, outside), by_monodromy = edge(mono, 0.25, outside);
+    EXPECT_NEAR(by_hill, by_monodromy, 1e-8) << outside;
+    EXPECT_NEAR(by_hill, 0.25, 0.6 * eps) << outside;  // about ¼ ∓ ε/2, to first order in ε
+  }
 }
 
 }  // namespace
