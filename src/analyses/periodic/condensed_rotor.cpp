@@ -67,7 +67,6 @@ CondensedRotor::CondensedRotor(const Model& model, std::shared_ptr<const Assembl
         "branch can follow numbers only, not the model's structure");
   modes_ = basis_of.modes_;
   basis_ = basis_of.basis_;
-  mass_reference_ = basis_.transpose() * (Matrix(assembler_->at(options_.reference_speed).M) * basis_);
 }
 
 void CondensedRotor::collect() {
@@ -188,7 +187,6 @@ void CondensedRotor::reduce() {
     basis_.row(interior[static_cast<std::size_t>(r)]).head(nb) = constraint.row(r);
     basis_.row(interior[static_cast<std::size_t>(r)]).tail(interior_basis.cols()) = interior_basis.row(r);
   }
-  mass_reference_ = basis_.transpose() * M * basis_;
 }
 
 PeriodicSystem CondensedRotor::at(Real speed, Real omega, const FourierBasis& fourier) const {
@@ -238,11 +236,6 @@ PeriodicSystem CondensedRotor::at(Real speed, Real omega, const FourierBasis& fo
 
 Vector CondensedRotor::expand(const Vector& eta) const {
   return assembler_->dof_map().transformation() * (basis_ * eta);
-}
-
-Vector CondensedRotor::project(const Vector& q) const {
-  const Matrix M = Matrix(assembler_->at(options_.reference_speed).M);
-  return mass_reference_.ldlt().solve(basis_.transpose() * (M * q));
 }
 
 }  // namespace feran

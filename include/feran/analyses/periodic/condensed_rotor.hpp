@@ -81,8 +81,6 @@ class CondensedRotor {
 
   /// All unconstrained DOFs (global_dof order) from coordinates @p eta.
   Vector expand(const Vector& eta) const;
-  /// The coordinates closest to the reduced DOFs @p q (M-weighted least squares).
-  Vector project(const Vector& q) const;
   /// The model the rotor was condensed from.
   const Model& model() const { return model_; }
   const Assembler& assembler() const { return *assembler_; }
@@ -97,7 +95,6 @@ class CondensedRotor {
   std::vector<Index> kept_;
   Index modes_ = 0;
   Matrix basis_;
-  Matrix mass_reference_;          // Φᵀ·M·Φ at the reference speed (project())
   std::vector<Force> forces_;      // the nonlinear forces
   std::vector<Matrix> selectors_;  // per force: its local DOFs from force_coordinates()
   std::vector<Index> force_coordinates_;
