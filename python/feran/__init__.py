@@ -13,8 +13,8 @@ import numpy as _np
 from ._toml import keys_toml as _keys_toml
 
 from ._feran import (Api684Result, CampbellResult, Error, Interrupted, ModalResult, Model, ModelError,
-                     ParameterError, ResponseResult, RunupResult, StaticResult, StudyResult, api684, campbell,
-                     modal, read_model, report, response, runup, static)
+                     OrbitsResult, ParameterError, ResponseResult, RunupResult, StaticResult, StudyResult, api684,
+                     campbell, modal, orbits, read_model, report, response, runup, static)
 from ._feran import __version__  # noqa: F401 -- re-exported
 from .study import Study, read_study
 from ._arguments import explained as _explained
@@ -67,6 +67,7 @@ static = _analysis(static, _analysis_options["static"])
 response = _analysis(response, _analysis_options["response"])
 runup = _analysis(runup, _analysis_options["runup"])
 api684 = _analysis(api684, _analysis_options["api684"])
+orbits = _analysis(orbits, _analysis_options["orbits"])
 for _method in ("__init__", "__getitem__", "__setitem__", "geometry", "_add"):
     setattr(Model, _method, _explained(getattr(Model, _method), "Model"))
 
@@ -145,6 +146,23 @@ def _runup_frame(r):
     return _pd().DataFrame(columns)
 
 
+def _orbits_frame(r):
+    """One row per steady state of every branch: branch, parameter, speed_hz,
+    frequency_hz, stable, largest_multiplier, then per probe 'PROBE.amplitude' and
+    'PROBE.largest' [m]."""
+    rows = []
+    for b in r.branches:
+        for k in range(len(b["parameter"])):
+            row = {"branch": b["name"], "parameter": b["parameter"][k], "speed_hz": b["speed"][k] * _HZ,
+                   "frequency_hz": b["frequency"][k] * _HZ, "stable": bool(b["stable"][k]),
+                   "largest_multiplier": b["largest_multiplier"][k]}
+            for i, probe in enumerate(r.probes):
+                row[f"{probe}.amplitude"] = b["amplitude"][k, i]
+                row[f"{probe}.largest"] = b["largest"][k, i]
+            rows.append(row)
+    return _pd().DataFrame(rows)
+
+
 # -- building a model in code ----------------------------------------------------------
 # Each add_<entry>(**keys) adds one entry of a model file's array of tables, with the
 # file's keys (docs/model-format.md); set_table(name, **keys) sets a single table. The
@@ -185,7 +203,7 @@ for _entry, _table in _ENTRIES.items():
 
 def _set_table(self, table, **keys):
     """Sets a single table ([options], [modal], [campbell], [response], [static], [runup],
-    [api684], [drive]: feran._TABLES) to these keys (those not given take their defaults);
+    [api684], [orbits], [drive]: feran._TABLES) to these keys (those not given take their defaults);
     returns the model."""
     if table not in _TABLES:
         raise Error(f"set_table({table!r}): expected one of {', '.join(_TABLES)}")
@@ -227,7 +245,7 @@ def _pd():
 
 for _result, _frame in ((ModalResult, _modal_frame), (CampbellResult, _campbell_frame),
                         (ResponseResult, _response_frame), (StaticResult, _static_frame),
-                        (RunupResult, _runup_frame), (StudyResult, _study_frame)):
+                        (RunupResult, _runup_frame), (OrbitsResult, _orbits_frame), (StudyResult, _study_frame)):
     if hasattr(_result, "to_json"):
         _result.to_dict = _to_dict
     _result.to_pandas = _frame
@@ -254,6 +272,6 @@ for _result, _names in _SPEEDS.items():
             setattr(_result, f"{_name}_hz", _speed_in(_name, _HZ, "Hz"))
         setattr(_result, f"{_name}_rpm", _speed_in(_name, 60 * _HZ, "rpm"))
 
-__all__ = ["CampbellResult", "Error", "Interrupted", "ModalResult", "Model", "ModelError", "ParameterError",
-           "ResponseResult", "RunupResult", "StaticResult", "Study", "StudyResult", "campbell", "modal",
-           "read_model", "read_study", "response", "runup", "static"]
+__all__ = ["CampbellResult", "Error", "Interrupted", "ModalResult", "Model", "ModelError", "OrbitsResult",
+           "ParameterError", "ResponseResult", "RunupResult", "StaticResult", "Study", "StudyResult", "campbell",
+           "modal", "orbits", "read_model", "read_study", "response", "runup", "static"]

@@ -381,6 +381,72 @@ def deflected_shape(result, speed=None, ax=None):
     return fig
 
 
+# -- periodic orbits -------------------------------------------------------------------
+
+_BIFURCATION_MARKERS = {"fold": "s", "hopf": "o", "neimark_sacker": "D", "period_doubling": "^",
+                        "static_instability": "v"}
+
+
+def _probe_index(result, probe):
+    if probe is None:
+        return 0
+    return result.probes.index(probe) if isinstance(probe, str) else int(probe)
+
+
+def bifurcation(result, probe=None, quantity="amplitude", unit="Hz", ax=None):
+    """The bifurcation diagram of an orbits result: the orbit's ``quantity`` at a probe
+    ("amplitude": the largest distance from its centre, "largest": from the axis,
+    "mean_v", "mean_w") against the branches' parameter, stable states solid and
+    unstable ones dashed, each bifurcation marked (fold ■, Hopf ●, Neimark–Sacker ◆,
+    period doubling ▲). Speeds in ``unit``; a parameter path in its SI unit."""
+    i = _probe_index(result, probe)
+    speed = result.parameter == "speed"
+    factor = _speed_factor(unit) if speed else 1.0
+    fig, ax = _axes(ax)
+    for n, b in enumerate(result.branches):
+        x, y, stable = b["parameter"] * factor, b[quantity][:, i], b["stable"]
+        colour = f"C{n % 10}"
+        for k in range(1, len(x)):
+            ax.plot(x[k - 1:k + 1], y[k - 1:k + 1], "-" if stable[k - 1] and stable[k] else "--", color=colour,
+                    label=b["name"] if k == 1 else None, gid=f"branch {n}")
+        f = b["bifurcations"]
+        for k, kind in enumerate(f["kind"]):
+            ax.plot([f["parameter"][k] * factor], [f[quantity][k, i]], _BIFURCATION_MARKERS.get(kind, "x"),
+                    color="k", ms=7, mfc="none", gid=f"{kind} {n}.{k}")
+            ax.annotate(kind.replace("_", "–" if kind == "neimark_sacker" else " "),
+                        (f["parameter"][k] * factor, f[quantity][k, i]), fontsize=8, xytext=(4, 4),
+                        textcoords="offset points")
+    ax.set_xlabel(f"speed [{unit}]" if speed else result.parameter)
+    ax.set_ylabel(quantity.replace("_", " "))
+    ax.yaxis.set_major_formatter(EngFormatter(unit="m"))
+    ax.set_title(f"steady states at {result.probes[i]} (solid: stable, dashed: unstable)")
+    ax.legend()
+    return fig
+
+
+def periodic_orbit(result, branch=0, point=-1, probe=None, ax=None):
+    """A steady state's orbit (v, w) over one period at each probe (or one), its start
+    marked: the orbit of ``point`` of branch ``branch`` (an index, or the branch's name)
+    of an orbits result."""
+    if isinstance(branch, str):
+        branch = [b["name"] for b in result.branches].index(branch)
+    b = result.branches[branch]
+    point = point % len(b["parameter"])
+    _, v, w = result.orbit(branch, point)
+    fig, ax = _axes(ax, size=(5, 5))
+    for i in range(len(result.probes)) if probe is None else [_probe_index(result, probe)]:
+        ax.plot(v[i], w[i], label=result.probes[i], gid=f"orbit {i}")
+        ax.plot([v[i][0]], [w[i][0]], "o", color=ax.lines[-1].get_color(), gid=f"orbit start {i}")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("v [m]")
+    ax.set_ylabel("w [m]")
+    where = (f"{b['speed'][point] / (2 * math.pi):.4g} Hz" if result.parameter == "speed"
+             else f"{result.parameter} = {b['parameter'][point]:.4g}")
+    ax.set_title(f"{b['name']} at {where}, {'stable' if b['stable'][point] else 'unstable'}")
+    ax.legend()
+    return fig
+
+
 # -- run-ups --------------------------------------------------------------------------
 
 def runup_envelope(result, probe=None, unit="Hz", ax=None):

@@ -7,7 +7,8 @@ the journal bearings, a tapered shaft under axial load), generated here from the
 (tests/models/valid/journal_rotor.toml); the examples bring frequency tables (07), a
 torque drive (02, model_motor) and dry friction (03). Analyses are the command
 line's: modal, campbell, response, static, runup (20 ms of the model's own run-up),
-api684 (where the model gives an operating range) and report. Each cell either runs,
+api684 (where the model gives an operating range), orbits (a coarse branch over
+1000–3000 rpm) and report. Each cell either runs,
 with every number it writes finite (or null where the output format allows it), or is
 refused with one of the documented reasons below. Doors: the command line's JSON and
 CSV, Python (to_dict() equals the command line's JSON to 1e-12), and the report's
@@ -87,6 +88,9 @@ ANALYSES = {
     "runup": (["--duration", "0.02s"], dict(duration="0.02 s"), True),
     "api684": (["--points", "61", "--map-points", "5", "--no-stability"],
                dict(points=61, map_points=5, stability=False), True),
+    # A coarse branch: 2 harmonics, at most 12 states per branch.
+    "orbits": (["--from", "1000rpm", "--to", "3000rpm", "--harmonics", "2", "--points", "12"],
+               dict(from_="1000 rpm", to="3000 rpm", harmonics=2, points=12), True),
     "report": (None, None, False),
 }
 
@@ -97,6 +101,10 @@ REFUSALS = [
     r"no \[runup\]|give a speed profile|--to|--speed",   # runup without a profile
     r"the model has no \[\[unbalances\]\]|nothing excites",  # response without excitation
     r"added mass that changes with speed",  # runup with an annular seal (its mass varies with speed)
+    # orbits: what the periodic analysis cannot take (docs/theory/harmonic_balance.md)
+    r"periodic orbits: the model has supports whose coefficients depend on the frequency",
+    r"periodic orbits: the model has hysteretic damping",
+    r"periodic orbits: the force .* follows a time law of its own",
 ]
 
 
@@ -152,7 +160,7 @@ def test_cell(tmp_path, family, analysis):
         data = json.loads(re.search(r'<script id="feran-data" type="application/json">\n(.*?)\n</script>',
                                     html, re.S).group(1))
         finite_numbers(data)
-        for section in ("campbell", "response", "static", "api684"):
+        for section in ("campbell", "response", "static", "api684", "orbits"):
             if isinstance(data.get(section), dict):
                 assert "error" not in data[section], (section, data[section].get("error"))
         # The report's Campbell diagram is the command's, where the report kept the
@@ -238,6 +246,8 @@ STUDY_REFUSALS = REFUSALS + [
     r"the model has no journal or rolling bearing",
     r"the rotor does not stay at its static equilibrium",  # a static quantity of an unstable equilibrium
     r"the rotor is unstable at .* where the response is no steady state",  # a response quantity there
+    r"no stable self-excited orbit in the range|no jump in the range",  # jump_down_speed without one
+    r"no steady state in the range is stable",       # largest_stable_orbit
     r"failed",                                        # an analysis that did not converge, named
 ]
 
@@ -291,6 +301,9 @@ def test_study_quantities(tmp_path, family):
                  f'[[variables]]\nname = "rho"\npath = "{rho}"\nlower = "7800 kg/m^3"\nupper = "7900 kg/m^3"\n'
                  + "".join(quantity_toml(k, low, high, rho, bearing_value) for k in kinds)
                  + '[explore]\nmethod = "grid"\nlevels = 1\n')
+        if "jump_down_speed" in kinds or "largest_stable_orbit" in kinds:  # a coarse branch (ANALYSES)
+            study = study.replace('"response.points" = 9\n', '"response.points" = 9\n"orbits.from" = "1000 rpm"\n'
+                                  '"orbits.to" = "3000 rpm"\n"orbits.harmonics" = 2\n"orbits.points" = 12\n')
         if "runup_peak" in kinds or "runup_spring_force" in kinds:
             study = study.replace('"response.points" = 9\n', '"response.points" = 9\n"runup.duration" = "0.02 s"\n')
         file = tmp_path / "s.toml"

@@ -16,6 +16,7 @@
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
+#include <feran/analyses/periodic/analysis.hpp>
 #include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/runup/waterfall.hpp>
 #include <feran/analyses/static/equilibrium.hpp>
@@ -324,6 +325,15 @@ class ReportData {
     if (options_.runup && (r.speed || r.to || !r.table.empty()))
       section(
           data_, "runup", [&] { return runup(); }, options_.stop);
+    const OrbitsSpec& o = file_.spec.orbits;
+    if (options_.orbits && ((o.from && o.to) || o.parameter))
+      section(
+          data_, "orbits",
+          [&] {
+            return json::parse(OrbitsAnalysis::json(
+                run_analysis<OrbitsAnalysis>(unowned_, {}, file_key_name<OrbitsAnalysis>(), context())));
+          },
+          options_.stop);
     if (!options_.study_directory.empty()) data_["study"] = study_results(options_.study_directory);
     finish(summary);
     return std::move(data_);
@@ -478,7 +488,7 @@ void ReportData::finish(std::string* summary) {
   // The sections computed, in the report's order: the script draws each with its
   // module (src/analyses/<name>/report.js, src/study/report.js).
   json sections = json::array();
-  for (const char* key : {"campbell", "modes", "response", "static", "api684", "runup", "study"})
+  for (const char* key : {"campbell", "modes", "response", "static", "api684", "runup", "orbits", "study"})
     if (data_.contains(key)) sections.push_back(key);
   data_["sections"] = sections;
   // Stopped on request: what was computed is shown, marked incomplete (an analysis

@@ -57,7 +57,8 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
                         ReportOptions& options) {
   const toml::table root_table = detail::parse_toml(toml_text, path);
   const TableReader root(root_table, "", path);
-  root.check_keys({"title", "speed_unit", "campbell", "modes", "response", "static", "api684", "runup", "study"});
+  root.check_keys(
+      {"title", "speed_unit", "campbell", "modes", "response", "static", "api684", "runup", "orbits", "study"});
   if (const auto t = root.string("title")) options.title = *t;
   if (const auto u = root.string("speed_unit")) {
     if (*u != "rpm" && *u != "Hz")
@@ -88,12 +89,13 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
     (void)nodes(t, "probes", model);  // each a node of the model, located here
     options.deflection_speed = speed(t, "deflection_speed");
   }
-  for (const char* name : {"static", "runup"})
+  for (const auto& [name, enabled] : {std::pair<const char*, bool*>{"static", &options.static_analysis},
+                                      {"runup", &options.runup},
+                                      {"orbits", &options.orbits}})
     if (const toml::table* s = sub_table(root, name)) {
       const TableReader t(*s, fmt::format("[{}]", name), path);
       t.check_keys({"enabled"});
-      (std::string_view(name) == "static" ? options.static_analysis : options.runup) =
-          t.boolean("enabled").value_or(true);
+      *enabled = t.boolean("enabled").value_or(true);
     }
   if (const toml::table* a = sub_table(root, "api684")) {
     const TableReader t(*a, "[api684]", path);

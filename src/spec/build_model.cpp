@@ -496,6 +496,7 @@ void Builder::check_analysis_tables() const {
   check_static();
   check_runup();
   check_api684();
+  check_orbits();
 }
 
 void Builder::check_response() const {
@@ -645,6 +646,24 @@ void Builder::check_spring_names(const std::vector<std::string>& names, const st
         names.begin() + static_cast<std::ptrdiff_t>(i))
       fail(at, fmt::format("spring '{}' appears twice in '{}'", name, key.substr(key.rfind('.') + 1)));
   }
+}
+
+void Builder::check_orbits() const {
+  const OrbitsSpec& o = spec_.orbits;
+  check_bounds(o, "orbits");
+  for (const char* key : {"branch", "direction"}) {
+    const std::optional<std::string>& value = std::string_view(key) == "branch" ? o.branch : o.direction;
+    if (value) check_choice(*value, child("orbits", key), key, spec::choices_of<OrbitsSpec>(key));
+  }
+  if (o.from && o.to && !(*o.to > *o.from))
+    fail("orbits.to",
+         fmt::format("'to' ({}) must be above 'from' ({})", shown("orbits.to", *o.to, Quantity::speed, "Hz"),
+                     shown("orbits.from", *o.from, Quantity::speed, "Hz")));
+  if (o.harmonics && o.samples && *o.samples < 2 * *o.harmonics + 1)
+    fail("orbits.samples", fmt::format("'samples' ({}) must be at least 2·harmonics + 1 = {}: fewer samples alias "
+                                       "the harmonics",
+                                       *o.samples, 2 * *o.harmonics + 1));
+  distinct_nodes(o.probes, "orbits.probes", "probes");
 }
 
 void Builder::check_api684() const {

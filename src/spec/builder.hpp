@@ -121,6 +121,7 @@ class Builder {
   void check_runup() const;
   void build_gravity();
   void check_api684() const;
+  void check_orbits() const;
   // Each of @p names is the name of one [[springs]] entry, none twice (at @p key[i]).
   void check_spring_names(const std::vector<std::string>& names, const std::string& key) const;
   void check_structure(BuildInfo* info);

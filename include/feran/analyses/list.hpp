@@ -8,6 +8,7 @@
 #include <feran/analyses/api684/analysis.hpp>
 #include <feran/analyses/campbell/analysis.hpp>
 #include <feran/analyses/modal/analysis.hpp>
+#include <feran/analyses/periodic/analysis.hpp>
 #include <feran/analyses/response/analysis.hpp>
 #include <feran/analyses/runup/analysis.hpp>
 #include <feran/analyses/static/analysis.hpp>
@@ -25,7 +26,7 @@ struct AnalysisList {
 
 /// The analyses, in the order the command line's help lists them after the ones not
 /// yet moved into their folders.
-using Analyses =
-    AnalysisList<ModalAnalysis, CampbellAnalysis, ResponseAnalysis, StaticAnalysis, RunupAnalysis, Api684Analysis>;
+using Analyses = AnalysisList<ModalAnalysis, CampbellAnalysis, ResponseAnalysis, StaticAnalysis, RunupAnalysis,
+                              Api684Analysis, OrbitsAnalysis>;
 
 }  // namespace feran

@@ -135,8 +135,8 @@ using FieldTable = std::vector<Field<S>>;
 /// The field table of spec type S. Defined for ModelSpec (top-level keys), OptionsSpec,
 /// MaterialSpec, ShaftSpec, SectionSpec, NodeSpec, RigidBodySpec, SpringSpec,
 /// RotatingDamperSpec, FrictionSpec, JournalBearingSpec, RollingBearingSpec, AnnularSealSpec, RigidLinkSpec, FixedSpec,
-/// UnbalanceSpec, ForceSpec, StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec, Api684Spec
-/// and DriveSpec.
+/// UnbalanceSpec, ForceSpec, StaticLoadSpec, ModalSpec, CampbellSpec, ResponseSpec, StaticSpec, RunupSpec, Api684Spec,
+/// OrbitsSpec and DriveSpec.
 template <class S>
 const FieldTable<S>& fields_of();
 
@@ -197,6 +197,8 @@ void visit_tables(Spec& spec, F&& f) {
   f("static", table, "gravity and defaults for a static analysis", spec.static_);
   f("runup", table, "speed profile and defaults for a run-up (transient) analysis", spec.runup);
   f("api684", table, "operating range and settings of the API 617 / API 684 analyses", spec.api684);
+  f("orbits", table, "speed range and settings of periodic orbits (harmonic balance, continuation, Floquet)",
+    spec.orbits);
   f("drive", table, "the motor and load torques of torque-driven run-ups", spec.drive);
 }
 

@@ -190,6 +190,22 @@ struct Api684Spec {
   bool operator==(const Api684Spec&) const = default;
 };
 
+/// [orbits]: the periodic orbits (harmonic balance) over a speed range, or over a
+/// parameter path at a fixed speed, and their settings.
+struct OrbitsSpec {
+  std::optional<Real> from, to;                             ///< the speed range [rad/s]
+  std::optional<std::string> parameter;                     ///< a parameter path continued instead of the speed
+  std::optional<std::string> parameter_from, parameter_to;  ///< its range, values with units
+  std::optional<Real> speed;                                ///< the fixed speed of a parameter branch [rad/s]
+  std::optional<std::string> branch;                        ///< "auto", "forced", "whirl" or "equilibrium"
+  std::optional<std::string> direction;                     ///< a forced branch: "up", "down" or "both"
+  std::optional<int> harmonics, samples, modes, points;
+  std::vector<NodeRef> probes;
+  std::optional<bool> gravity;       ///< apply [static] gravity as a constant force
+  std::optional<bool> static_loads;  ///< apply the [[static_loads]]
+  bool operator==(const OrbitsSpec&) const = default;
+};
+
 /// A whole model file.
 struct ModelSpec {
   std::string title;
@@ -215,6 +231,7 @@ struct ModelSpec {
   StaticSpec static_;  ///< the [static] table ("static" is a C++ keyword)
   RunupSpec runup;
   Api684Spec api684;
+  OrbitsSpec orbits;
   DriveSpec drive;
   bool operator==(const ModelSpec&) const = default;
 };

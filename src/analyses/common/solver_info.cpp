@@ -20,6 +20,8 @@ std::string_view to_string(SolverMethod method) {
       return "banded-lu";
     case SolverMethod::time_integration:
       return "time-integration";
+    case SolverMethod::harmonic_balance:
+      return "harmonic-balance";
   }
   return "none";
 }

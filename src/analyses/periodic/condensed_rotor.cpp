@@ -234,6 +234,16 @@ PeriodicSystem CondensedRotor::at(Real speed, Real omega, const FourierBasis& fo
   return out;
 }
 
+Vector CondensedRotor::static_equilibrium(Real speed) const {
+  const Equilibrium e = solve_equilibrium(
+      model_, *assembler_, speed,
+      {.gravity = options_.gravity, .loads = options_.static_loads, .tolerance = 1e-10, .max_iterations = 60});
+  if (!e.info.converged())
+    throw Error(fmt::format("periodic orbits: the static equilibrium was not found: {}", e.info.message));
+  const Matrix full = assembler_->dof_map().transformation() * basis_;
+  return full.colPivHouseholderQr().solve(e.q);
+}
+
 Vector CondensedRotor::expand(const Vector& eta) const {
   return assembler_->dof_map().transformation() * (basis_ * eta);
 }

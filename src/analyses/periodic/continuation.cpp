@@ -145,6 +145,8 @@ Branch continue_branch(const BranchFunction& G, const BranchPoint& start, const 
   while (static_cast<Index>(branch.points.size()) < settings.max_points) {
     const BranchPoint& last = branch.points.back();
     const Vector z = scaled(last.u, last.p, u_scale, p_scale);
+    if (const Real tp = std::abs(last.tangent(m)); settings.max_parameter_step > 0 && tp > 0)
+      h = std::max(settings.min_step, std::min(h, settings.max_parameter_step / tp));
     Corrected next;
     Real residual = 0.0;
     while (true) {

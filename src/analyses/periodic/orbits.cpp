@@ -27,6 +27,31 @@ const char* bifurcation_name(Bifurcation::Kind kind) {
   return "";
 }
 
+Real critical_frequency(const Bifurcation& b) {
+  const Floquet& f = b.at.floquet;
+  Index critical = -1;
+  Real nearest = std::numeric_limits<Real>::infinity();
+  for (Index j = 0; j < f.exponents.size(); ++j) {
+    if (j == f.trivial || f.exponents(j).imag() <= 0) continue;
+    const Real d = b.kind == Bifurcation::Kind::hopf ? std::abs(f.exponents(j).real())
+                                                     : std::abs(std::abs(f.multipliers(j)) - 1.0);
+    if (d < nearest) {
+      nearest = d;
+      critical = j;
+    }
+  }
+  switch (b.kind) {
+    case Bifurcation::Kind::hopf:
+      return critical < 0 ? 0.0 : f.exponents(critical).imag();
+    case Bifurcation::Kind::neimark_sacker:
+      return critical < 0 ? 0.0 : std::abs(std::arg(f.multipliers(critical))) * b.at.frequency / (2.0 * pi);
+    case Bifurcation::Kind::period_doubling:
+      return 0.5 * b.at.frequency;
+    default:
+      return 0.0;
+  }
+}
+
 RotorFamily::RotorFamily(const CondensedRotor& rotor) : base_(rotor) {}
 
 RotorFamily::RotorFamily(const CondensedRotor& rotor, Real speed, std::function<Model(Real)> build, std::string name)
@@ -178,7 +203,7 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
   const auto monitor = [&](const Branch& b) {
     const BranchPoint& p = b.points.back();
     orbits.push_back(problem.orbit(p.u, p.p, settings));
-    return true;
+    return !settings.monitor || settings.monitor(orbits.back());
   };
   orbits.push_back(problem.orbit(start.u, start.p, settings));
   const Branch b = continue_branch(G, start, direction, towards, u_scale, p_scale, settings.continuation, monitor);
@@ -210,6 +235,51 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
   return out;
 }
 
+// The equilibrium at parameter @p p: Newton's method from rest, else from the static
+// analysis's equilibrium (a support without stiffness at rest).
+BranchPoint equilibrium_start(const BranchFunction& G, const RotorFamily& family, Real p,
+                              const ContinuationSettings& c) {
+  const CondensedRotor& rotor = family.at(p);
+  BranchPoint start = correct_at_fixed_parameter(G, Vector::Zero(rotor.size()), p, c);
+  if (start.residual <= c.tolerance) return start;
+  return correct_at_fixed_parameter(G, rotor.static_equilibrium(family.speed(p)), p, c);
+}
+
+// The forced orbit at parameter @p p when Newton's method from the equilibrium @p u0
+// does not reach it (a strongly nonlinear support: contacts opening, a film near its
+// clearance): the loads at the rotor speed switched on gradually, the orbit continued
+// in their scale λ from 0 (the equilibrium) to 1.
+BranchPoint forced_start(const BranchProblem& problem, const Vector& u0, Real p, Real length,
+                         const ContinuationSettings& c) {
+  const Real w = problem.omega(u0, p);
+  const PeriodicSystem full = problem.system(p, w);
+  const Index n0 = problem.family.base().size();
+  const auto system = [&](Real lambda) {
+    PeriodicSystem s = full;
+    if (s.external.size() > n0) s.external.tail(s.external.size() - n0) *= lambda;
+    return s;
+  };
+  const BranchFunction G = [&](const Vector& u, Real lambda) {
+    BalanceTerms t = balance_terms(problem.fourier, system(lambda), w, u, false);
+    const Real h = 1e-6;
+    const Vector Gp = (balance_residual(problem.fourier, system(lambda + h), w, u) -
+                       balance_residual(problem.fourier, system(lambda - h), w, u)) /
+                      (2 * h);
+    return BranchEquations{.G = std::move(t.R), .Gu = std::move(t.dR_dX), .Gp = Gp, .scale = t.scale};
+  };
+  ContinuationSettings homotopy = c;
+  homotopy.p_min = 0.0;
+  homotopy.p_max = 1.0;
+  homotopy.max_parameter_step = 0.1;
+  homotopy.max_points = std::max<Index>(c.max_points, 200);
+  const BranchPoint zero = correct_at_fixed_parameter(G, u0, 0.0, c);
+  const Branch b = continue_branch(G, zero, Vector(), +1.0, Vector::Constant(u0.size(), length), 1.0, homotopy);
+  BranchPoint out = b.points.back();
+  if (!b.clipped() || out.p != 1.0) out.residual = std::numeric_limits<Real>::infinity();
+  out.p = p;
+  return out;
+}
+
 }  // namespace
 
 Real parameter_scale(const ContinuationSettings& c, Real start) {
@@ -227,7 +297,7 @@ OrbitBranch equilibrium_branch(const RotorFamily& family, const OrbitSettings& s
                               .p_scale = p_scale};
   const CondensedRotor& rotor = family.base();
   const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
-  const BranchPoint start = correct_at_fixed_parameter(G, Vector::Zero(rotor.size()), c.p_min, c);
+  const BranchPoint start = equilibrium_start(G, family, c.p_min, c);
   if (!(start.residual <= c.tolerance))
     throw Error(fmt::format("periodic orbits: the static equilibrium at {} = {:.6g} was not found (residual {:.3g})",
                             family.name(), c.p_min, start.residual));
@@ -255,11 +325,12 @@ OrbitBranch forced_branch(const RotorFamily& family, const OrbitSettings& settin
                               .kind = Kind::equilibrium,
                               .anchor = -1,
                               .p_scale = p_scale};
-  const BranchPoint eq = correct_at_fixed_parameter([&](const Vector& u, Real p) { return statics(u, p); },
-                                                    Vector::Zero(rotor.size()), first, c);
+  const BranchPoint eq = equilibrium_start([&](const Vector& u, Real p) { return statics(u, p); }, family, first, c);
   Vector u0 = Vector::Zero(problem.nx());
   u0.head(rotor.size()) = eq.u;
-  const BranchPoint start = correct_at_fixed_parameter(G, u0, first, c);
+  BranchPoint start = correct_at_fixed_parameter(G, u0, first, c);
+  if (!(start.residual <= c.tolerance) && eq.residual <= c.tolerance)
+    start = forced_start(problem, u0, first, length_scale(family, settings), c);
   if (!(start.residual <= c.tolerance))
     throw Error(fmt::format("periodic orbits: the forced orbit at {} = {:.6g} was not found (residual {:.3g})",
                             family.name(), first, start.residual));

@@ -20,6 +20,7 @@ enum class SolverMethod {
   sparse_lu,             ///< a linear system: sparse LU
   banded_lu,             ///< a linear system of small bandwidth: banded LU with partial pivoting (LAPACK)
   time_integration,      ///< a time integrator (TransientResult names which)
+  harmonic_balance,      ///< periodic orbits: harmonic balance continued along a branch
 };
 
 /// How a solve ended.

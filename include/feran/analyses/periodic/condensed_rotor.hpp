@@ -81,6 +81,12 @@ class CondensedRotor {
 
   /// All unconstrained DOFs (global_dof order) from coordinates @p eta.
   Vector expand(const Vector& eta) const;
+  /// The coordinates of the static equilibrium at @p speed [rad/s] as the static
+  /// analysis solves it on the whole model (its Newton steps cut back at the
+  /// supports' limits, from rest), fitted to the basis by least squares: where the
+  /// balance's own Newton steps cannot start from rest (a support without stiffness
+  /// there: rolling elements in their clearance). Throws Error when it is not found.
+  Vector static_equilibrium(Real speed) const;
   /// The model the rotor was condensed from.
   const Model& model() const { return model_; }
   const Assembler& assembler() const { return *assembler_; }

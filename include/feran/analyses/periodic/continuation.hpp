@@ -31,6 +31,9 @@ struct ContinuationSettings {
   Real step = 0.05;               ///< first step, in the scaled arclength
   Real min_step = 1e-6;           ///< below it the branch stops (it cannot be followed)
   Real max_step = 0.5;
+  /// The most the parameter moves in one step, as a fraction of its scale (0: no
+  /// limit): keeps a branch drawn finely where its orbits change fast.
+  Real max_parameter_step = 0.0;
   Index max_points = 200;     ///< points on the branch, the start included
   int max_iterations = 8;     ///< Newton steps of one corrector
   int target_iterations = 4;  ///< the step grows when the corrector needs fewer, shrinks when more

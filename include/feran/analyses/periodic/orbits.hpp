@@ -20,6 +20,8 @@
 
 namespace feran {
 
+struct SteadyState;
+
 struct OrbitSettings {
   FourierBasis fourier{.harmonics = 8, .samples = 64};
   ContinuationSettings continuation;  ///< p_min, p_max: the speed range [rad/s]
@@ -29,6 +31,9 @@ struct OrbitSettings {
   /// An orbit is unstable when a multiplier's modulus exceeds 1 + this (an
   /// equilibrium: when an eigenvalue's real part exceeds this times its modulus).
   Real stability_tolerance = 1e-7;
+  /// Called with each new state of a branch; returning false ends the branch there
+  /// (ended_by "stopped"): a door's stop request and progress.
+  std::function<bool(const SteadyState&)> monitor = {};
 };
 
 /// What a branch is continued in: the rotor and its speed at each value p of the
@@ -92,6 +97,13 @@ struct Bifurcation {
 
 /// The name of a kind ("fold", "period_doubling", "neimark_sacker", "hopf", "static_instability").
 const char* bifurcation_name(Bifurcation::Kind kind);
+
+/// The frequency [rad/s] of the motion a bifurcation lets grow: at a Hopf point the
+/// whirl's (the imaginary part of the critical eigenvalue), at a Neimark–Sacker point
+/// the new one, arg μ/2π of the orbit's (the critical multiplier's angle; the motion
+/// then holds it and its difference with the orbit's harmonics), at a period doubling
+/// half the orbit's; 0 at a fold or a static instability.
+Real critical_frequency(const Bifurcation& b);
 
 struct OrbitBranch {
   enum class Kind { equilibrium, forced, self_excited };
