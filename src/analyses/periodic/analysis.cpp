@@ -422,6 +422,42 @@ OrbitsResult OrbitsAnalysis::run(const Model& model, const OrbitsOptions& option
   return result;
 }
 
+namespace {
+
+// The branch parameter's value as messages give it: a speed in rpm, else with its unit.
+std::string parameter_text(const OrbitsOptions& o, Real p) {
+  if (!o.build) return rpm(p);
+  return o.parameter_quantity ? format_quantity(p, *o.parameter_quantity, o.parameter_unit) : fmt::format("{:g}", p);
+}
+
+// A stretch of a branch where its stability changes back and forth within a hundredth
+// of the range: a multiplier that hovers at the unit circle within the method's
+// accuracy (a branch turning vertical, a mode whose damping vanishes). Each change is
+// located and reported; this says what they are worth. Empty when there is none.
+std::string flickering(const OrbitsBranch& b, const OrbitsOptions& options) {
+  const std::vector<SteadyState>& s = b.branch.orbits;
+  const Real near = 0.01 * std::abs(options.to - options.from);
+  std::vector<Real> changes;
+  for (std::size_t k = 1; k < s.size(); ++k)
+    if (s[k].stable != s[k - 1].stable) changes.push_back(s[k].parameter);
+  for (std::size_t i = 0; i + 2 < changes.size(); ++i) {
+    std::size_t j = i;
+    while (j + 1 < changes.size() && std::abs(changes[j + 1] - changes[j]) < near) ++j;
+    if (j >= i + 2)
+      return fmt::format(
+          "orbits: on the {} branch the stability changes {} times between {} = {} and {}: a multiplier "
+          "stays at the unit circle there within the method's accuracy, so those states are neither surely stable "
+          "nor surely unstable (more harmonics may settle it)",
+          b.name, j - i + 1, options.build ? options.parameter : "speed",
+          parameter_text(options, std::min(changes[i], changes[j])),
+          parameter_text(options, std::max(changes[i], changes[j])));
+    i = j;
+  }
+  return {};
+}
+
+}  // namespace
+
 std::vector<std::string> OrbitsAnalysis::warnings(const Model& model, const OrbitsOptions& options,
                                                   const OrbitsResult& result) {
   std::vector<std::string> out = options.build ? range_warnings(model, options.speed, options.speed)
@@ -441,6 +477,7 @@ std::vector<std::string> OrbitsAnalysis::warnings(const Model& model, const Orbi
   }
   constexpr Real truncation_limit = 1e-3;
   for (const OrbitsBranch& b : result.branches) {
+    if (const std::string w = flickering(b, options); !w.empty()) out.push_back(w);
     Real worst = 0;
     for (const SteadyState& s : b.branch.orbits) worst = std::max(worst, s.truncation);
     if (worst > truncation_limit)
@@ -460,11 +497,6 @@ std::vector<std::string> OrbitsAnalysis::warnings(const Model& model, const Orbi
 // ---- study quantities ----------------------------------------------------------------
 
 namespace {
-
-std::string parameter_text(const OrbitsOptions& o, Real p) {
-  if (!o.build) return rpm(p);
-  return o.parameter_quantity ? format_quantity(p, *o.parameter_quantity, o.parameter_unit) : fmt::format("{:g}", p);
-}
 
 // The speed at which a run-down leaves the whirl (the lowest speed of a stable
 // self-excited orbit), or a run-up's forced orbit jumps down (the first fold met going

@@ -189,6 +189,34 @@ TEST(OrbitsAnalysis, ABranchInTheViscosityMeetsTheHopfPointAtTheFilesViscosity) 
   EXPECT_NEAR(o.options.to, 0.2, 1e-15);
 }
 
+// Stability that changes back and forth within a hundredth of the range is said to be
+// within the method's accuracy; changes farther apart are not.
+TEST(OrbitsAnalysis, StabilityFlickeringAtTheUnitCircleIsSaid) {
+  const auto file = rotor("from = 600\nto = 1100\n");
+  const OrbitsOptions options = orbits_options(*file);
+  OrbitsResult result;
+  result.branch = "whirl";
+  OrbitsBranch& b = result.branches.emplace_back();
+  b.name = "whirl 1";
+  b.branch.kind = OrbitBranch::Kind::self_excited;
+  b.branch.clipped = true;
+  const auto states = [&](std::vector<std::pair<Real, bool>> points) {
+    b.branch.orbits.clear();
+    for (const auto& [p, stable] : points) {
+      SteadyState& state = b.branch.orbits.emplace_back();
+      state.parameter = state.speed = p;
+      state.stable = stable;
+    }
+    std::string said;
+    for (const std::string& w : OrbitsAnalysis::warnings(file->model, options, result))
+      if (w.find("stability changes") != std::string::npos) said = w;
+    return said;
+  };
+  EXPECT_NE(states({{700, true}, {701, false}, {702, true}, {703, false}, {704, true}}).find("changes 4 times"),
+            std::string::npos);
+  EXPECT_EQ(states({{700, true}, {750, false}, {800, true}, {850, false}}), "");
+}
+
 TEST(OrbitsAnalysis, RefusesBadOptionsNamingWhatToChange) {
   const auto file = rotor("");
   const auto refused = [&](const OrbitsSpec& request, const std::string& expected) {
