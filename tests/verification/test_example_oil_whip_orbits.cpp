@@ -47,7 +47,8 @@ std::string model_text() {
 
 // The example without its unbalance (the whirl alone: a periodic orbit).
 std::shared_ptr<const ModelFile> without_unbalance() {
-  const std::string text = std::regex_replace(model_text(), std::regex(R"(\[\[unbalances\]\]\n([^\[\n][^\n]*\n)*)"), "");
+  const std::string text =
+      std::regex_replace(model_text(), std::regex(R"(\[\[unbalances\]\]\n([^\[\n][^\n]*\n)*)"), "");
   return std::make_shared<const ModelFile>(read_model_string(text, "model_without_unbalance.toml"));
 }
 
@@ -193,9 +194,10 @@ TEST(ExampleOilWhipOrbits, BetweenFoldAndHopfTheWhipAndTheEquilibriumAreBothStab
   const SteadyState& fold = w.whirl().bifurcations.at(0).at;
   orbit_state(*w.rotor, fold, w.whirl().fourier, 0.0, x0, v0);
   const Real dying = w.run(hz_to_rad(87.55), x0, v0, 3.0);
-  std::printf("87.85 Hz: whip orbit %.4f um, run-up from 95 %% of it %.4f um, from the equilibrium %.4f um; "
-              "87.55 Hz: from the fold's orbit (%.4f um) %.4f um after 3 s\n",
-              1e6 * expected, 1e6 * whipping, 1e6 * resting, 1e6 * w.size(fold), 1e6 * dying);
+  std::printf(
+      "87.85 Hz: whip orbit %.4f um, run-up from 95 %% of it %.4f um, from the equilibrium %.4f um; "
+      "87.55 Hz: from the fold's orbit (%.4f um) %.4f um after 3 s\n",
+      1e6 * expected, 1e6 * whipping, 1e6 * resting, 1e6 * w.size(fold), 1e6 * dying);
   EXPECT_NEAR(whipping, expected, 0.01 * expected);
   EXPECT_LT(resting, 1e-6);
   EXPECT_LT(dying, 0.6 * w.size(fold));
