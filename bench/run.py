@@ -74,6 +74,11 @@ def cases():
     # Newton iteration, 4 s of rotor time at 50 µs.
     out.append(("example06_runup_oil_whip", "examples", None,
                 ["runup", os.path.join(ex, "06_oil_whip", "model.toml")], 1, "run"))
+    # The oil-whip rotor's steady states (its [orbits] table): the equilibrium and the
+    # whip branch by harmonic balance, each state with its Floquet multipliers (Hill's
+    # method), over 5000–5400 rpm; the run-up above reaches one whip state in 4 s.
+    out.append(("example06_orbits_whip", "examples", None,
+                ["orbits", os.path.join(ex, "06_oil_whip", "model.toml")], 1, "run"))
     # Frequency-dependent pedestal tables: each mode iterated to its own frequency,
     # against the same rotor with the pedestal built in (one eigen solve per speed).
     ex7 = os.path.join(ex, "07_pedestal")

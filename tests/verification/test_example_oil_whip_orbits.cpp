@@ -4,7 +4,9 @@
 // - With its unbalance the forced orbit loses stability at a Neimark–Sacker point
 //   within 1 % of the Campbell diagram's threshold (measured 88.27 Hz against 88.00
 //   Hz), the motion growing there at the threshold's whirl frequency (5 %: measured
-//   43.8 Hz against 44.6 Hz).
+//   43.8 Hz against 44.6 Hz). Further up, the orbit already unstable, the pair of
+//   multipliers meets at −1: period doublings, the growing motion locked onto half
+//   the speed between them (88.51 to 90.24 Hz).
 // - Without it the equilibrium's Hopf point is the Campbell threshold (1e-4: the
 //   threshold's own bisection); the whip branch leaving it is subcritical and turns at
 //   a fold 0.3 % below it (measured 87.708 Hz at H = 6) into stable whip orbits.
@@ -75,9 +77,16 @@ TEST(ExampleOilWhipOrbits, TheForcedOrbitLosesStabilityAtTheThresholdIntoTheWhir
   const Outcome<OrbitsAnalysis> o = run_analysis<OrbitsAnalysis>(file, request, file_key_name<OrbitsAnalysis>());
   ASSERT_EQ(o.result.branch, "forced");
   const OrbitBranch& b = o.result.branches.at(0).branch;
-  ASSERT_EQ(b.bifurcations.size(), 1U) << b.ended_by;
+  ASSERT_GE(b.bifurcations.size(), 1U) << b.ended_by;
   const Bifurcation& ns = b.bifurcations[0];
   EXPECT_EQ(ns.kind, Bifurcation::Kind::neimark_sacker);
+  // Past it, on the unstable branch, the pair meets at −1 and splits: the new motion
+  // locks onto half the speed between two period doublings (measured 88.51 and
+  // 90.24 Hz), then parts again.
+  for (std::size_t i = 1; i < b.bifurcations.size(); ++i) {
+    EXPECT_EQ(b.bifurcations[i].kind, Bifurcation::Kind::period_doubling) << i;
+    EXPECT_FALSE(b.orbits[b.bifurcations[i].after].stable) << i;
+  }
   const Real onset = threshold();
   std::printf("Neimark–Sacker at %.4f Hz, new motion at %.3f Hz; threshold %.4f Hz\n", rad_to_hz(ns.at.speed),
               rad_to_hz(critical_frequency(ns)), rad_to_hz(onset));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
@@ -143,18 +144,22 @@ struct BranchProblem {
     return o;
   }
 
-  // The test function of stability: an equilibrium's largest Re s/|s|, an orbit's
-  // largest ln|μ| (the phase's multiplier left out).
-  Real growth(const SteadyState& o) const {
-    Real most = -std::numeric_limits<Real>::infinity();
+  // The test functions of stability, largest first: an equilibrium's Re s/|s|, an
+  // orbit's ln|μ| (the phase's multiplier left out).
+  std::vector<Real> growths(const SteadyState& o) const {
+    std::vector<Real> out;
     for (Index j = 0; j < o.floquet.exponents.size(); ++j) {
       if (j == o.floquet.trivial) continue;
       const Complex s = o.floquet.exponents(j);
-      const Real g = kind == Kind::equilibrium ? (std::abs(s) > 0 ? s.real() / std::abs(s) : 0.0)
-                                               : std::log(std::abs(o.floquet.multipliers(j)));
-      most = std::max(most, g);
+      out.push_back(kind == Kind::equilibrium ? (std::abs(s) > 0 ? s.real() / std::abs(s) : 0.0)
+                                              : std::log(std::abs(o.floquet.multipliers(j))));
     }
-    return most;
+    std::sort(out.begin(), out.end(), std::greater<>());
+    return out;
+  }
+  Real growth(const SteadyState& o) const {
+    const std::vector<Real> g = growths(o);
+    return g.empty() ? -std::numeric_limits<Real>::infinity() : g.front();
   }
 };
 
@@ -210,9 +215,15 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
   out.orbits = std::move(orbits);
   out.ended_by = b.ended_by;
   out.clipped = b.clipped();
-  // Bifurcations between consecutive points: folds by dp/ds, stability changes by the
-  // test function, each located on the branch.
-  const auto stability_test = [&](const BranchPoint& p) { return problem.growth(problem.orbit(p.u, p.p, settings)); };
+  // Bifurcations between consecutive points: folds by dp/ds, and each change in the
+  // number of exponents (multipliers) beyond the stability limit — also one more
+  // crossing on a branch already unstable — by the test function of the first that
+  // crosses, each located on the branch.
+  const Real limit = settings.stability_tolerance;
+  const auto unstable = [&](const SteadyState& o) {
+    const std::vector<Real> g = problem.growths(o);
+    return static_cast<std::size_t>(std::count_if(g.begin(), g.end(), [&](Real x) { return x > limit; }));
+  };
   for (std::size_t i = 1; i < b.points.size() && i < out.orbits.size(); ++i) {
     const BranchPoint &a = b.points[i - 1], &c = b.points[i];
     bool fold = false;
@@ -221,12 +232,14 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
       out.bifurcations.push_back({Bifurcation::Kind::fold, problem.orbit(f.u, f.p, settings), i - 1});
       fold = true;
     }
-    const Real ga = problem.growth(out.orbits[i - 1]) - settings.stability_tolerance;
-    const Real gc = problem.growth(out.orbits[i]) - settings.stability_tolerance;
-    if (ga * gc < 0) {
-      const BranchPoint x =
-          locate_on_branch(G, a, c, u_scale, p_scale, settings.continuation,
-                           [&](const BranchPoint& p) { return stability_test(p) - settings.stability_tolerance; });
+    const std::size_t ua = unstable(out.orbits[i - 1]), uc = unstable(out.orbits[i]);
+    if (ua != uc) {
+      const std::size_t rank = std::min(ua, uc);  // the (rank + 1)-th largest crosses
+      const auto test = [&](const BranchPoint& p) {
+        const std::vector<Real> g = problem.growths(problem.orbit(p.u, p.p, settings));
+        return (rank < g.size() ? g[rank] : -std::numeric_limits<Real>::infinity()) - limit;
+      };
+      const BranchPoint x = locate_on_branch(G, a, c, u_scale, p_scale, settings.continuation, test);
       SteadyState at = problem.orbit(x.u, x.p, settings);
       const Bifurcation::Kind k = multiplier_kind(at, problem.kind);
       if (!fold) out.bifurcations.push_back({k, std::move(at), i - 1});

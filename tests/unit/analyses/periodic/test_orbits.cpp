@@ -222,6 +222,35 @@ TEST(Orbits, InternalDampingHopfIsAtTheClosedFormSpeed) {
   EXPECT_NEAR(eq.bifurcations[0].at.speed, wn * (1 + ce / ci), 1e-6 * wn);
 }
 
+// Two Jeffcott rotors side by side (ω_2 = 2ω_1), each with internal damping: the
+// equilibrium loses stability at ω_1(1 + c_e/c_i) and, already unstable, loses it once
+// more at ω_2(1 + c_e/c_i), where the second rotor's forward whirl crosses too. Both
+// Hopf points are found and located: the first to 1e-6 of ω_1, the second to 2e-6 of
+// its speed (measured 1.2e-6: the stability limit 1e-7 on Re s/|s| sits that far from
+// Re s = 0 where the second mode's damping changes slowly with speed). The second is
+// missed by a test of the largest exponent alone, which stays positive past the first.
+TEST(Orbits, ASecondHopfPointOnAnAlreadyUnstableEquilibriumIsFound) {
+  const Real ce = 100.0, ci = 300.0, m = test::runup_mass, k = test::runup_stiffness;
+  Model model = test::jeffcott(m, k, ce, ci);
+  const Index n = test::add_node(model, 1.0, true, "second disk");
+  test::add_body(model, n, m, 1e-3, 1e-3);
+  test::add_isotropic_bearing(model, n, 4 * k, ce);
+  model.elements.emplace_back(RotatingDamper(n, std::nullopt, {ci, 0, 0, 0}));
+  test::fix(model, n, {Dof::u, Dof::rx, Dof::ry, Dof::rz});
+  const CondensedRotor rotor(model, nullptr, {});
+  const Real w1 = std::sqrt(k / m);
+  OrbitSettings settings;
+  settings.continuation.p_min = 0.5 * w1;
+  settings.continuation.p_max = 3.5 * w1;
+  const OrbitBranch eq = equilibrium_branch(rotor, settings);
+  ASSERT_EQ(eq.bifurcations.size(), 2U);
+  for (const Bifurcation& b : eq.bifurcations) EXPECT_EQ(b.kind, Bifurcation::Kind::hopf);
+  EXPECT_NEAR(eq.bifurcations[0].at.speed, w1 * (1 + ce / ci), 1e-6 * w1);
+  const Real second = 2 * w1 * (1 + ce / ci);
+  EXPECT_NEAR(eq.bifurcations[1].at.speed, second, 2e-6 * second);
+  EXPECT_NEAR(critical_frequency(eq.bifurcations[1]), 2 * w1, 1e-6 * w1);
+}
+
 // Coulomb friction between rotor and shaft (regularised over 1e-5 m/s) makes the
 // Jeffcott rotor whirl above ω_n; the whirl branch leaving the Hopf point settles on
 // the closed-form orbit — radius F/(c_e·ω_n), frequency ω_n (the friction force is
