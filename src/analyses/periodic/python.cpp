@@ -73,6 +73,7 @@ py::tuple orbit_in_time(const PyOrbitsResult& r, std::size_t branch, std::size_t
   if (branch >= r.result.branches.size()) throw py::index_error("orbit: no branch " + std::to_string(branch));
   const OrbitsBranch& b = r.result.branches[branch];
   if (point >= b.probes.size()) throw py::index_error("orbit: the branch has no point " + std::to_string(point));
+  if (samples < 2) throw py::value_error("orbit: samples must be at least 2 (the period's both ends)");
   const std::vector<ProbeOrbit>& p = b.probes[point];
   const auto value = [](const Vector& c, Real theta) {
     Real x = c(0);
