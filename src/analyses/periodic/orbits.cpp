@@ -53,6 +53,18 @@ Real critical_frequency(const Bifurcation& b) {
   }
 }
 
+const char* branch_kind_name(OrbitBranch::Kind kind) {
+  switch (kind) {
+    case OrbitBranch::Kind::equilibrium:
+      return "equilibrium";
+    case OrbitBranch::Kind::forced:
+      return "forced";
+    case OrbitBranch::Kind::self_excited:
+      return "self_excited";
+  }
+  return "";
+}
+
 RotorFamily::RotorFamily(const CondensedRotor& rotor) : base_(rotor) {}
 
 RotorFamily::RotorFamily(const CondensedRotor& rotor, Real speed, std::function<Model(Real)> build, std::string name)

@@ -7,6 +7,7 @@
 
 #include <pybind11/stl.h>
 
+#include <feran/analyses/periodic/aft.hpp>
 #include <feran/analyses/periodic/analysis.hpp>
 #include <feran/core/units.hpp>
 
@@ -17,12 +18,6 @@ namespace feran::python {
 namespace {
 
 using PyOrbitsResult = Outcome<OrbitsAnalysis>;
-
-const char* kind_word(OrbitBranch::Kind k) {
-  return k == OrbitBranch::Kind::equilibrium ? "equilibrium"
-         : k == OrbitBranch::Kind::forced    ? "forced"
-                                             : "self_excited";
-}
 
 // A probe quantity of each state: states × probes.
 template <class F>
@@ -53,7 +48,7 @@ py::dict branch_dict(const OrbitsBranch& b, std::size_t n_probes) {
   for (const Bifurcation& f : b.branch.bifurcations) at.push_back(&f.at);
   py::dict d = states_dict(orbits, b.probes, n_probes);
   d["name"] = b.name;
-  d["kind"] = kind_word(b.branch.kind);
+  d["kind"] = branch_kind_name(b.branch.kind);
   d["ended_by"] = b.branch.ended_by;
   d["clipped"] = b.branch.clipped;
   d["criticality"] = b.branch.criticality.empty() ? py::none() : py::cast(b.branch.criticality);
@@ -75,17 +70,25 @@ py::tuple orbit_in_time(const PyOrbitsResult& r, std::size_t branch, std::size_t
   if (point >= b.probes.size()) throw py::index_error("orbit: the branch has no point " + std::to_string(point));
   if (samples < 2) throw py::value_error("orbit: samples must be at least 2 (the period's both ends)");
   const std::vector<ProbeOrbit>& p = b.probes[point];
-  const auto value = [](const Vector& c, Real theta) {
-    Real x = c(0);
-    for (Index k = 1; 2 * k < c.size(); ++k)
-      x += c(2 * k - 1) * std::cos(static_cast<Real>(k) * theta) + c(2 * k) * std::sin(static_cast<Real>(k) * theta);
-    return x;
-  };
+  // Each probe's (v, w) as a two-DOF motion on the branch's harmonics (aft.hpp).
+  const Index terms = p.empty() ? 1 : p[0].v.size(), H = (terms - 1) / 2;
+  const FourierBasis basis{.harmonics = H, .samples = 2 * H + 1};
   const auto theta = [&](std::size_t j) { return 2.0 * pi * static_cast<Real>(j) / static_cast<Real>(samples - 1); };
-  return py::make_tuple(
-      array_1d(samples, theta),
-      array_2d(p.size(), samples, [&](std::size_t i, std::size_t j) { return value(p[i].v, theta(j)); }),
-      array_2d(p.size(), samples, [&](std::size_t i, std::size_t j) { return value(p[i].w, theta(j)); }));
+  Matrix v(static_cast<Index>(p.size()), static_cast<Index>(samples)), w = v;
+  Vector X(2 * terms), x, xdot;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (Index k = 0; k < terms; ++k) X(2 * k) = p[i].v(k), X(2 * k + 1) = p[i].w(k);
+    for (std::size_t j = 0; j < samples; ++j) {
+      motion_at(basis, 1.0, X, theta(j), x, xdot);
+      v(static_cast<Index>(i), static_cast<Index>(j)) = x(0);
+      w(static_cast<Index>(i), static_cast<Index>(j)) = x(1);
+    }
+  }
+  const auto at = [](const Matrix& m) {
+    return array_2d(static_cast<std::size_t>(m.rows()), static_cast<std::size_t>(m.cols()),
+                    [&](std::size_t i, std::size_t j) { return m(static_cast<Index>(i), static_cast<Index>(j)); });
+  };
+  return py::make_tuple(array_1d(samples, theta), at(v), at(w));
 }
 
 }  // namespace

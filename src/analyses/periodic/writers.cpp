@@ -20,18 +20,6 @@ using namespace detail;  // NOLINT(google-build-using-namespace): the writers' s
 
 namespace {
 
-const char* kind_name(OrbitBranch::Kind k) {
-  switch (k) {
-    case OrbitBranch::Kind::equilibrium:
-      return "equilibrium";
-    case OrbitBranch::Kind::forced:
-      return "forced";
-    case OrbitBranch::Kind::self_excited:
-      return "self_excited";
-  }
-  return "";
-}
-
 // The fastest growth of a state's disturbances [1/s]: the largest real part of its
 // exponents, the orbit's phase exponent left out.
 Real growth_rate(const SteadyState& s) {
@@ -67,7 +55,7 @@ Json state_json(const SteadyState& s, const std::vector<ProbeOrbit>& probes) {
 
 Json branch_json(const OrbitsBranch& b) {
   Json j = {{"name", b.name},
-            {"kind", kind_name(b.branch.kind)},
+            {"kind", branch_kind_name(b.branch.kind)},
             {"ended_by", b.branch.ended_by},
             {"clipped", b.branch.clipped},
             {"criticality", b.branch.criticality.empty() ? Json(nullptr) : Json(b.branch.criticality)},

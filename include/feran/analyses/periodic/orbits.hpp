@@ -123,6 +123,9 @@ struct OrbitBranch {
   Index phase_anchor = -1;
 };
 
+/// The name of a branch kind ("equilibrium", "forced", "self_excited").
+const char* branch_kind_name(OrbitBranch::Kind kind);
+
 /// The static equilibrium over [p_min, p_max] from p_min (continuation of the balance
 /// with harmonic 0 alone), its eigenvalues at each point, and Hopf points. The
 /// CondensedRotor forms continue in speed.
