@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <Eigen/LU>
 #include <fmt/format.h>
@@ -54,6 +55,7 @@ Vector tangent_at(const BranchEquations& e, const Vector& u_scale, Real p_scale,
 struct Corrected {
   BranchPoint point;
   bool converged = false;
+  std::string refused;  // the model's reason when it could not be evaluated there
 };
 
 // Newton on G = 0 with tᵀ(ẑ − ẑ_pred) = 0.
@@ -68,7 +70,8 @@ Corrected correct(const BranchFunction& G, const Vector& predicted, const Vector
     BranchEquations e;
     try {
       e = G(u, p);
-    } catch (const Error&) {
+    } catch (const Error& error) {
+      out.refused = error.what();
       return out;  // outside the model's domain (a journal at its wall): a shorter step
     }
     const Real r = relative(e);
@@ -154,6 +157,12 @@ Branch continue_branch(const BranchFunction& G, const BranchPoint& start, const 
       if (next.converged) break;
       residual = next.point.residual;
       h *= 0.5;
+      if (h < settings.min_step && !next.refused.empty()) {
+        branch.ended_by = fmt::format(
+            "the branch could not be continued beyond p = {:.8g}: the model cannot be evaluated just beyond it: {}",
+            last.p, next.refused);
+        return branch;
+      }
       if (h < settings.min_step) {
         branch.ended_by = fmt::format(
             "the branch could not be continued beyond p = {:.8g}: the corrector did not converge even with the "
@@ -173,10 +182,15 @@ Branch continue_branch(const BranchFunction& G, const BranchPoint& start, const 
       // The limit crossed: the point on it, from the interpolation between the two.
       const Real limit = point.p > settings.p_max ? settings.p_max : settings.p_min;
       const Real f = (limit - last.p) / (point.p - last.p);
-      BranchPoint end = correct_at_fixed_parameter(G, last.u + f * (point.u - last.u), limit, settings);
-      if (end.residual <= settings.tolerance) {
-        end.tangent = tangent_at(G(end.u, end.p), u_scale, p_scale, point.tangent);
-        branch.points.push_back(std::move(end));
+      try {
+        BranchPoint end = correct_at_fixed_parameter(G, last.u + f * (point.u - last.u), limit, settings);
+        if (end.residual <= settings.tolerance) {
+          end.tangent = tangent_at(G(end.u, end.p), u_scale, p_scale, point.tangent);
+          branch.points.push_back(std::move(end));
+        }
+      } catch (const Error&) {
+        // The model cannot be evaluated at the limit itself: the branch ends at the
+        // last point before it (the range was reached all the same).
       }
       branch.ended_by = "range";
       if (monitor) static_cast<void>(monitor(branch));

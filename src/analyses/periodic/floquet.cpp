@@ -7,6 +7,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/QR>
+#include <unsupported/Eigen/MatrixFunctions>
 #include <fmt/format.h>
 
 #include <feran/core/error.hpp>
@@ -58,13 +60,17 @@ Real centroid(const ComplexVector& P, Index n, Index H) {
   return den > 0 ? num / den : 0.0;
 }
 
-void finish(Floquet& out, Real omega, bool autonomous) {
+// The multipliers from the exponents, the phase's multiplier (@p trivial; −1: none,
+// or the one nearest 1 when @p autonomous and no index is given), the largest.
+void finish(Floquet& out, Real omega, bool autonomous, Index trivial = -1) {
   const Real T = 2 * pi / omega;
   const Index m = out.exponents.size();
   out.multipliers.resize(m);
   for (Index j = 0; j < m; ++j) out.multipliers(j) = std::exp(out.exponents(j) * T);
   out.trivial = -1;
-  if (autonomous && m > 0) {
+  if (autonomous && trivial >= 0) {
+    out.trivial = trivial;
+  } else if (autonomous && m > 0) {
     Index best = 0;
     for (Index j = 1; j < m; ++j)
       if (std::abs(out.multipliers(j) - 1.0) < std::abs(out.multipliers(best) - 1.0)) best = j;
@@ -178,38 +184,142 @@ void jacobians_at(const FourierBasis& basis, const PeriodicSystem& system, Real 
     }
 }
 
+// The state matrix A(t) of ż = A(t)z, z = (δx, δẋ), along the orbit.
+class StateMatrix {
+ public:
+  StateMatrix(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X)
+      : basis_(basis), system_(system), omega_(omega), X_(X), mass_(system.M) {
+    const Index n = system.M.rows();
+    base_ = Matrix::Zero(2 * n, 2 * n);
+    base_.bottomLeftCorner(n, n) = -mass_.solve(system.K);
+    base_.bottomRightCorner(n, n) = -mass_.solve(system.C);
+    // The state scaled as (ϖ·δx, δẋ) with ϖ² = ‖M⁻¹K‖₁ (at least ω²): a similarity,
+    // so the multipliers are the same, but the blocks' norms are balanced and the
+    // exponentials need fewer squarings.
+    scale_ = std::max(omega, std::sqrt(base_.bottomLeftCorner(n, n).cwiseAbs().colwise().sum().maxCoeff()));
+    base_.topRightCorner(n, n) = scale_ * Matrix::Identity(n, n);
+    base_.bottomLeftCorner(n, n) /= scale_;
+  }
+  // A(t) of the scaled state (ϖ·δx, δẋ).
+  const Matrix& scaled_at(Real t) {
+    const Index n = system_.M.rows();
+    jacobians_at(basis_, system_, omega_, X_, t, Jx_, Jv_);
+    A_ = base_;
+    A_.bottomLeftCorner(n, n) += mass_.solve(Jx_) / scale_;
+    A_.bottomRightCorner(n, n) += mass_.solve(Jv_);
+    return A_;
+  }
+  Real scale() const { return scale_; }
+  // (δx, δẋ) · z for the DOFs' rates.
+  Matrix rate(Real t, const Matrix& z) {
+    const Index n = system_.M.rows();
+    jacobians_at(basis_, system_, omega_, X_, t, Jx_, Jv_);
+    Matrix dz(2 * n, z.cols());
+    dz.topRows(n) = z.bottomRows(n);
+    dz.bottomRows(n) = -mass_.solve((system_.K - Jx_) * z.topRows(n) + (system_.C - Jv_) * z.bottomRows(n));
+    return dz;
+  }
+
+ private:
+  const FourierBasis& basis_;
+  const PeriodicSystem& system_;
+  Real omega_;
+  const Vector& X_;
+  Eigen::PartialPivLU<Matrix> mass_;
+  Matrix base_, A_, Jx_, Jv_;
+  Real scale_ = 1.0;
+};
+
+// Φ(T) by the classical Runge–Kutta method.
+Matrix runge_kutta_monodromy(StateMatrix& A, Index dimension, Real T, Index steps) {
+  const Real h = T / static_cast<Real>(steps);
+  Matrix Phi = Matrix::Identity(dimension, dimension);
+  for (Index i = 0; i < steps; ++i) {
+    const Real t = h * static_cast<Real>(i);
+    const Matrix k1 = A.rate(t, Phi);
+    const Matrix k2 = A.rate(t + h / 2, Phi + (h / 2) * k1);
+    const Matrix k3 = A.rate(t + h / 2, Phi + (h / 2) * k2);
+    const Matrix k4 = A.rate(t + h, Phi + h * k3);
+    Phi += (h / 6) * (k1 + 2 * k2 + 2 * k3 + k4);
+  }
+  return Phi;
+}
+
+// Φ(T) by the commutator-free exponential integrator of order four: with A₁, A₂ at
+// the Gauss points t + (½ ∓ √3/6)h, Φ ← exp(h(α₂A₁ + α₁A₂))·exp(h(α₁A₁ + α₂A₂))·Φ,
+// α₁,₂ = ¼ ± √3/6 (Blanes & Moan 2006; Thalhammer 2006).
+Matrix exponential_monodromy(StateMatrix& A, Index dimension, Real T, Index steps) {
+  const Real h = T / static_cast<Real>(steps), c = std::sqrt(3.0) / 6.0, a1 = 0.25 + c, a2 = 0.25 - c;
+  Matrix Phi = Matrix::Identity(dimension, dimension), first(dimension, dimension), second(dimension, dimension);
+  for (Index i = 0; i < steps; ++i) {
+    const Real t = h * static_cast<Real>(i);
+    const Matrix A1 = A.scaled_at(t + (0.5 - c) * h);
+    const Matrix& A2 = A.scaled_at(t + (0.5 + c) * h);
+    first = (h * (a1 * A1 + a2 * A2)).exp();
+    second = (h * (a2 * A1 + a1 * A2)).exp();
+    Phi = second * (first * Phi);
+  }
+  // Back to (δx, δẋ).
+  const Index n = dimension / 2;
+  Phi.topRightCorner(n, n) /= A.scale();
+  Phi.bottomLeftCorner(n, n) *= A.scale();
+  return Phi;
+}
+
+// The orbit's state velocity ż(0) = (ẋ(0), ẍ(0)) from its coefficients.
+Vector state_velocity(const FourierBasis& basis, Real omega, const Vector& X) {
+  const Index n = X.size() / basis.terms();
+  Vector x, v;
+  motion_at(basis, omega, X, 0.0, x, v);
+  Vector z(2 * n);
+  z.head(n) = v;
+  z.tail(n).setZero();
+  for (Index k = 1; k <= basis.harmonics; ++k) {
+    const Real kw = static_cast<Real>(k) * omega;
+    z.tail(n) -= kw * kw * X.segment((2 * k - 1) * n, n);  // at θ = 0: −(kω)² a_k
+  }
+  return z;
+}
+
 }  // namespace
 
 Floquet monodromy_floquet(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
-                          Index steps, bool autonomous) {
+                          Index steps, bool autonomous, MonodromyScheme scheme) {
   if (steps < 1) throw Error("Floquet analysis: the monodromy needs at least one step");
   const Index n = system.M.rows();
-  const Eigen::PartialPivLU<Matrix> mass(system.M);
-  const Real T = 2 * pi / omega, h = T / static_cast<Real>(steps);
-  Matrix Jx, Jv;
-  // ż = A(t) z, z = (δx, δẋ).
-  const auto rate = [&](Real t, const Matrix& z) {
-    jacobians_at(basis, system, omega, X, t, Jx, Jv);
-    Matrix dz(2 * n, z.cols());
-    dz.topRows(n) = z.bottomRows(n);
-    dz.bottomRows(n) = -mass.solve((system.K - Jx) * z.topRows(n) + (system.C - Jv) * z.bottomRows(n));
-    return dz;
-  };
-  Matrix Phi = Matrix::Identity(2 * n, 2 * n);
-  for (Index i = 0; i < steps; ++i) {
-    const Real t = h * static_cast<Real>(i);
-    const Matrix k1 = rate(t, Phi);
-    const Matrix k2 = rate(t + h / 2, Phi + (h / 2) * k1);
-    const Matrix k3 = rate(t + h / 2, Phi + (h / 2) * k2);
-    const Matrix k4 = rate(t + h, Phi + h * k3);
-    Phi += (h / 6) * (k1 + 2 * k2 + 2 * k3 + k4);
-  }
-  const Eigen::EigenSolver<Matrix> eig(Phi, false);
-  if (eig.info() != Eigen::Success) throw Error("Floquet analysis: the monodromy matrix's eigenvalues were not found");
+  const Real T = 2 * pi / omega;
+  StateMatrix A(basis, system, omega, X);
+  const Matrix Phi = scheme == MonodromyScheme::exponential ? exponential_monodromy(A, 2 * n, T, steps)
+                                                            : runge_kutta_monodromy(A, 2 * n, T, steps);
+  if (!Phi.allFinite())
+    throw Error(fmt::format(
+        "Floquet analysis: the monodromy matrix is not finite after {} steps (the explicit scheme's steps are too "
+        "long for the stiffest motion)",
+        steps));
   Floquet out;
   out.exponents.resize(2 * n);
-  for (Index j = 0; j < 2 * n; ++j) out.exponents(j) = std::log(eig.eigenvalues()(j)) / T;
-  finish(out, omega, autonomous);
+  Index trivial = -1;
+  Matrix reduced = Phi;
+  if (autonomous) {
+    // The phase's multiplier is 1 with eigenvector ż(0), the orbit's own velocity; in
+    // an orthonormal basis [ż(0)/‖ż(0)‖, Q] Φ is block triangular, [[1, ·], [0, QᵀΦQ]],
+    // so the other 2n − 1 are QᵀΦQ's eigenvalues. Taken so rather than picked by value:
+    // the orbit is the balance's, not exactly the equations', and the computed
+    // phase multiplier differs from 1 by about the truncation error — as much as a
+    // multiplier near 1 may.
+    const Vector z0 = state_velocity(basis, omega, X);
+    if (z0.norm() > 0) {
+      const Eigen::HouseholderQR<Matrix> qr(z0 / z0.norm());
+      const Matrix U = qr.householderQ();
+      reduced = (U.transpose() * Phi * U).bottomRightCorner(2 * n - 1, 2 * n - 1);
+      trivial = 2 * n - 1;
+      out.exponents(trivial) = 0.0;
+    }
+  }
+  const Eigen::EigenSolver<Matrix> eig(reduced, false);
+  if (eig.info() != Eigen::Success) throw Error("Floquet analysis: the monodromy matrix's eigenvalues were not found");
+  for (Index j = 0; j < reduced.rows(); ++j) out.exponents(j) = std::log(eig.eigenvalues()(j)) / T;
+  finish(out, omega, autonomous, trivial);
   return out;
 }
 

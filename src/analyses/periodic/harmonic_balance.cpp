@@ -116,19 +116,29 @@ BalanceTerms balance_terms(const FourierBasis& basis, const PeriodicSystem& syst
   return t;
 }
 
-Vector balance_residual(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
-  check_sizes(basis, system, X);
-  Vector R = linear_balance(basis, system, omega) * X;
-  if (system.external.size() != 0) R -= system.external;
-  if (!system.force) return R;
-  if (system.force_dofs.empty()) return R - force_coefficients(basis, omega, X, system.force);
+namespace {
+
+// The force's coefficients alone (no Jacobians) on the whole layout.
+Vector force_vector(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
+  if (system.force_dofs.empty()) return force_coefficients(basis, omega, X, system.force);
   const Index n = system.K.rows(), nl = static_cast<Index>(system.force_dofs.size()), terms = basis.terms();
   Vector Xl(nl * terms);
   for (Index m = 0; m < terms; ++m)
     for (Index d = 0; d < nl; ++d) Xl(m * nl + d) = X(m * n + system.force_dofs[static_cast<std::size_t>(d)]);
-  const Vector F = force_coefficients(basis, omega, Xl, system.force);
+  const Vector Fl = force_coefficients(basis, omega, Xl, system.force);
+  Vector F = Vector::Zero(X.size());
   for (Index m = 0; m < terms; ++m)
-    for (Index d = 0; d < nl; ++d) R(m * n + system.force_dofs[static_cast<std::size_t>(d)]) -= F(m * nl + d);
+    for (Index d = 0; d < nl; ++d) F(m * n + system.force_dofs[static_cast<std::size_t>(d)]) = Fl(m * nl + d);
+  return F;
+}
+
+}  // namespace
+
+Vector balance_residual(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X) {
+  check_sizes(basis, system, X);
+  Vector R = linear_balance(basis, system, omega) * X;
+  if (system.external.size() != 0) R -= system.external;
+  if (system.force) R -= force_vector(basis, system, omega, X);
   return R;
 }
 
@@ -140,7 +150,7 @@ Real truncation_estimate(const FourierBasis& basis, const PeriodicSystem& system
                           .samples = std::max(basis.samples, 12 * basis.harmonics + 1)};
   Vector padded = Vector::Zero(n * wide.terms());
   padded.head(X.size()) = X;
-  const Vector F = force_terms(wide, system, omega, padded, false).F;
+  const Vector F = force_vector(wide, system, omega, padded);
   const Real kept = F.head(X.size()).norm(), left = F.tail(F.size() - X.size()).norm();
   return kept > 0 ? left / kept : 0.0;
 }

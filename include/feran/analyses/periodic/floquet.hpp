@@ -35,11 +35,26 @@ struct Floquet {
 Floquet hill_floquet(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const BalanceTerms& terms,
                      bool autonomous);
 
+/// How monodromy_floquet() integrates the linearised equations over one period.
+enum class MonodromyScheme {
+  /// The classical Runge–Kutta method (error O(steps⁻⁴)); explicit, so the steps must
+  /// resolve the stiffest motion (a bearing film's): the independent check.
+  runge_kutta,
+  /// The fourth-order commutator-free exponential integrator of Blanes & Moan (2006)
+  /// and Thalhammer (2006): per step, two exponentials of the state matrix at the
+  /// step's two Gauss points combined. Stable at any step for the stiff film
+  /// motions; on strongly nonlinear orbits its order drops towards three (stiff
+  /// order reduction).
+  exponential,
+};
+
 /// The multipliers from the monodromy matrix: the linearised equations
 /// M δẍ + (C − ∂f/∂ẋ(t)) δẋ + (K − ∂f/∂x(t)) δx = 0 along the orbit @p X integrated over
-/// one period by the classical Runge–Kutta method in @p steps steps (error O(steps⁻⁴)),
-/// and Φ(T)'s eigenvalues; s = ln μ / T with Im s in (−ω/2, ω/2].
+/// one period in @p steps steps by @p scheme, and Φ(T)'s eigenvalues; s = ln μ / T with
+/// Im s in (−ω/2, ω/2]. With @p autonomous the multiplier whose eigenvector lies
+/// closest to the orbit's own velocity (ẋ, ẍ) at t = 0 — the phase's, Φ(T)ż(0) = ż(0)
+/// — is set aside.
 Floquet monodromy_floquet(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
-                          Index steps, bool autonomous);
+                          Index steps, bool autonomous, MonodromyScheme scheme = MonodromyScheme::runge_kutta);
 
 }  // namespace feran

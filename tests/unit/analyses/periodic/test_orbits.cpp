@@ -139,6 +139,31 @@ TEST(Orbits, ContinuationInViscosityMeetsTheSameHopfPoint) {
   for (std::size_t i = 1; i < whirl.orbits.size(); ++i) EXPECT_LT(whirl.orbits[i].residual, 1e-9) << i;
 }
 
+// A model the parameter path cannot build beyond a value (a door's checks refusing
+// it) ends the branch there with the model's reason, keeping the states found.
+TEST(Orbits, ABranchIntoValuesTheModelRefusesKeepsItsStatesAndSaysWhy) {
+  const Real m = 525.0 / g;
+  const auto with_viscosity = [&](Real mu) {
+    if (mu > 0.15) throw Error("journal_bearings[0].viscosity: above the oil's range");
+    JournalBearingGeometry geometry = friswell;
+    geometry.viscosity = mu;
+    return test::rigid_rotor_in_journal_bearings(m, FilmTheory::short_bearing, geometry);
+  };
+  const Model first = with_viscosity(0.05);
+  const CondensedRotor base = condensed(first);
+  const RotorFamily family(base, 900.0, with_viscosity, "journal_bearings[*].viscosity");
+  OrbitSettings settings;
+  settings.continuation.p_min = 0.05;
+  settings.continuation.p_max = 0.2;
+  const OrbitBranch eq = equilibrium_branch(family, settings);
+  ASSERT_GT(eq.orbits.size(), 5U) << eq.ended_by;
+  EXPECT_FALSE(eq.clipped);
+  EXPECT_LE(eq.orbits.back().parameter, 0.15);
+  EXPECT_GT(eq.orbits.back().parameter, 0.149);
+  EXPECT_NE(eq.ended_by.find("above the oil's range"), std::string::npos) << eq.ended_by;
+  EXPECT_NE(eq.ended_by.find("cannot be evaluated just beyond"), std::string::npos) << eq.ended_by;
+}
+
 // A cubic spring −k₃x³ on one DOF, written as a nonlinear force.
 struct CubicSpring {
   Index dof = 0;
