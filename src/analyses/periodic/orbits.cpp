@@ -439,6 +439,64 @@ OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, co
   return hopf_branch(RotorFamily(rotor), hopf, settings);
 }
 
+OrbitBranch branch_through(const RotorFamily& family, const SteadyState& start, OrbitBranch::Kind kind,
+                           const OrbitSettings& settings, bool downwards) {
+  if (kind == Kind::equilibrium)
+    throw Error("periodic orbits: an equilibrium branch starts from the static equilibrium (equilibrium_branch)");
+  const CondensedRotor& rotor = family.base();
+  const Index n = rotor.size();
+  const FourierBasis& fourier = settings.fourier;
+  fourier.check();
+  if (fourier.harmonics < 1) throw Error("periodic orbits: an orbit needs at least one harmonic");
+  if (start.X.size() < n || start.X.size() % n != 0)
+    throw Error(
+        fmt::format("periodic orbits: the given orbit has {} coefficients, not a whole number of harmonics "
+                    "of the rotor's {} coordinates",
+                    start.X.size(), n));
+  if (kind == Kind::forced && !rotor.forced())
+    throw Error("periodic orbits: no unbalance or synchronous force acts: there is no forced orbit to follow");
+  if (kind == Kind::self_excited && !(start.frequency > 0))
+    throw Error("periodic orbits: a self-excited orbit needs its frequency (> 0)");
+  // The coefficients on the branch's harmonics.
+  const Index nx = n * fourier.terms();
+  Vector X = Vector::Zero(nx);
+  X.head(std::min(nx, start.X.size())) = start.X.head(std::min(nx, start.X.size()));
+  Index anchor = -1;
+  if (kind == Kind::self_excited) {
+    // The phase: θ → θ + φ with tan φ = b₁/a₁ of the coordinate whose first harmonic is
+    // largest makes its b₁ 0 (and a₁ > 0); harmonic k turns by kφ.
+    Index j = 0;
+    (X.segment(n, n).cwiseAbs2() + X.segment(2 * n, n).cwiseAbs2()).maxCoeff(&j);
+    const Real phi = std::atan2(X(2 * n + j), X(n + j));
+    for (Index k = 1; k <= fourier.harmonics; ++k) {
+      const Real c = std::cos(static_cast<Real>(k) * phi), s = std::sin(static_cast<Real>(k) * phi);
+      const Vector a = X.segment((2 * k - 1) * n, n), b = X.segment(2 * k * n, n);
+      X.segment((2 * k - 1) * n, n) = c * a + s * b;
+      X.segment(2 * k * n, n) = c * b - s * a;
+    }
+    anchor = 2 * n + j;
+    X(anchor) = 0.0;
+  }
+  const Real p0 = start.parameter;
+  const Real p_scale = parameter_scale(settings.continuation, p0);
+  const BranchProblem problem{.family = family, .fourier = fourier, .kind = kind, .anchor = anchor, .p_scale = p_scale};
+  const BranchFunction G = [&](const Vector& u, Real p) { return problem(u, p); };
+  const Index m = nx + (kind == Kind::self_excited ? 1 : 0);
+  Vector u0(m);
+  u0.head(nx) = X;
+  if (kind == Kind::self_excited) u0(nx) = start.frequency;
+  const BranchPoint first = correct_at_fixed_parameter(G, u0, p0, settings.continuation);
+  if (!(first.residual <= settings.continuation.tolerance))
+    throw Error(
+        fmt::format("periodic orbits: the given orbit at {} = {:.6g} does not converge to an orbit of the "
+                    "balance (residual {:.3g}); a start nearer the orbit, or more harmonics, may help",
+                    family.name(), p0, first.residual));
+  const Real L = length_scale(family, settings);
+  Vector u_scale = Vector::Constant(m, L);
+  if (kind == Kind::self_excited) u_scale(nx) = first.u(nx);
+  return follow(problem, first, Vector(), downwards ? -1.0 : 1.0, u_scale, p_scale, settings);
+}
+
 std::vector<SteadyState> states_at(const RotorFamily& family, const OrbitBranch& branch, Real speed,
                                    const OrbitSettings& settings) {
   const BranchProblem problem{.family = family,

@@ -144,6 +144,20 @@ OrbitBranch forced_branch(const CondensedRotor& rotor, const OrbitSettings& sett
 OrbitBranch hopf_branch(const RotorFamily& family, const Bifurcation& hopf, const OrbitSettings& settings);
 OrbitBranch hopf_branch(const CondensedRotor& rotor, const Bifurcation& hopf, const OrbitSettings& settings);
 
+/// The branch through a given orbit @p start — one of another branch (in another
+/// parameter, or with other harmonics), or one found otherwise — continued from it
+/// towards increasing parameter (decreasing with @p downwards) within
+/// [p_min, p_max]: a forced orbit (@p kind forced, ω = Ω) or a self-excited one
+/// (@p kind self_excited, ω from @p start.frequency an unknown). The start is its
+/// coefficients @p start.X on the condensed coordinates of @p family's rotor (padded with
+/// zeros or cut to the harmonics of @p settings.fourier) at @p start.parameter, the
+/// family's parameter; a self-excited start is first shifted in phase so that the
+/// first harmonic's sine of its largest first-harmonic coordinate is 0 (its phase
+/// condition). The start is corrected at its parameter first, so it need only be near
+/// an orbit. Throws Error when it does not converge there.
+OrbitBranch branch_through(const RotorFamily& family, const SteadyState& start, OrbitBranch::Kind kind,
+                           const OrbitSettings& settings, bool downwards = false);
+
 /// The states of @p branch at parameter @p p (the speed): one wherever the branch crosses it
 /// (several where it folds back), each solved at that speed from the interpolation
 /// between the branch's points on either side. Empty when the branch does not reach

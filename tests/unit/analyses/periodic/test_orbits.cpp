@@ -13,7 +13,9 @@
 //   orbits (whirl ratio ½, the journal near the clearance) above the threshold. The
 //   fold converges as harmonics are added (H = 3, 6, 8, 10, 16: 801.52, 806.86,
 //   807.19, 807.40, 807.55 rad/s); asserted within 0.5 % of 807.55. Every orbit solves
-//   the balance to 1e-9.
+//   the balance to 1e-9;
+// - a branch through a given orbit (one of that branch, spoilt) is that branch, and in
+//   the oil's viscosity reaches the orbit of the rotor built with another viscosity.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,6 +105,87 @@ TEST(Orbits, HopfPointIsTheLinearThresholdAndItsBranchLeavesIt) {
 
 namespace feran::test_orbits {
 namespace {
+
+// The size of an orbit's first harmonic, whatever its phase.
+Real first_harmonic(const SteadyState& o, Index n) {
+  return std::sqrt(o.X.segment(n, n).squaredNorm() + o.X.segment(2 * n, n).squaredNorm());
+}
+
+// A branch continued from a given orbit: the whip orbit at 950 rad/s of the branch from
+// the Hopf point, spoilt (1 % larger, its phase turned by 0.7 rad, its frequency 1 %
+// off), is corrected back onto the orbit (first-harmonic size and frequency 1e-8) and
+// continued: downwards it meets the same fold (1e-5: two locations, each to the
+// continuation's tolerance), upwards its state at 1050 rad/s is the first branch's
+// (1e-8). Continued instead in the oil's viscosity at 950 rad/s, its state at
+// 0.12 Pa s is the whirl orbit at 950 rad/s of the speed branch of the rotor built with
+// 0.12 Pa s (1e-7): one orbit reached by two parameterisations.
+TEST(Orbits, ABranchThroughAGivenOrbitIsTheBranchThroughIt) {
+  const Real m = 525.0 / g;
+  const Model model = rigid_rotor(m);
+  const CondensedRotor rotor = condensed(model);
+  const Index n = rotor.size();
+  OrbitSettings settings;
+  settings.continuation.p_min = 600.0;
+  settings.continuation.p_max = 1100.0;
+  const OrbitBranch eq = equilibrium_branch(rotor, settings);
+  settings.fourier = {.harmonics = 8, .samples = 64};
+  settings.continuation.max_points = 60;
+  const OrbitBranch whirl = hopf_branch(rotor, eq.bifurcations.at(0), settings);
+  ASSERT_EQ(whirl.bifurcations.size(), 1U);
+  const std::vector<SteadyState> at = states_at(rotor, whirl, 950.0, settings);
+  ASSERT_EQ(at.size(), 1U);
+  SteadyState given = at[0];
+  for (Index k = 1; k <= settings.fourier.harmonics; ++k) {
+    const Real c = std::cos(0.7 * static_cast<Real>(k)), s = std::sin(0.7 * static_cast<Real>(k));
+    const Vector a = given.X.segment((2 * k - 1) * n, n), b = given.X.segment(2 * k * n, n);
+    given.X.segment((2 * k - 1) * n, n) = c * a - s * b;
+    given.X.segment(2 * k * n, n) = s * a + c * b;
+  }
+  given.X *= 1.01;
+  given.frequency *= 1.01;
+
+  const RotorFamily in_speed(rotor);
+  const OrbitBranch down = branch_through(in_speed, given, OrbitBranch::Kind::self_excited, settings, true);
+  ASSERT_GT(down.orbits.size(), 5U) << down.ended_by;
+  EXPECT_NEAR(down.orbits[0].frequency, at[0].frequency, 1e-8 * at[0].frequency);
+  EXPECT_NEAR(first_harmonic(down.orbits[0], n), first_harmonic(at[0], n), 1e-8 * first_harmonic(at[0], n));
+  ASSERT_FALSE(down.bifurcations.empty()) << down.ended_by;
+  EXPECT_EQ(down.bifurcations[0].kind, Bifurcation::Kind::fold);
+  EXPECT_NEAR(down.bifurcations[0].at.speed, whirl.bifurcations[0].at.speed, 1e-5 * whirl.bifurcations[0].at.speed);
+  const OrbitBranch up = branch_through(in_speed, given, OrbitBranch::Kind::self_excited, settings, false);
+  EXPECT_TRUE(up.clipped) << up.ended_by;
+  const std::vector<SteadyState> a = states_at(rotor, whirl, 1050.0, settings),
+                                 b = states_at(rotor, up, 1050.0, settings);
+  ASSERT_EQ(a.size(), 1U);
+  ASSERT_EQ(b.size(), 1U);
+  EXPECT_NEAR(b[0].frequency, a[0].frequency, 1e-8 * a[0].frequency);
+  EXPECT_NEAR(first_harmonic(b[0], n), first_harmonic(a[0], n), 1e-8 * first_harmonic(a[0], n));
+  EXPECT_EQ(b[0].stable, a[0].stable);
+
+  const auto with_viscosity = [&](Real mu) {
+    JournalBearingGeometry geometry = friswell;
+    geometry.viscosity = mu;
+    return test::rigid_rotor_in_journal_bearings(m, FilmTheory::short_bearing, geometry);
+  };
+  const RotorFamily in_viscosity(rotor, 950.0, with_viscosity, "journal_bearings[*].viscosity");
+  OrbitSettings v = settings;
+  v.continuation.p_min = 0.05;
+  v.continuation.p_max = 0.2;
+  SteadyState from = at[0];
+  from.parameter = friswell.viscosity;
+  const OrbitBranch thicker = branch_through(in_viscosity, from, OrbitBranch::Kind::self_excited, v, false);
+  const std::vector<SteadyState> by_viscosity = states_at(in_viscosity, thicker, 0.12, v);
+  ASSERT_EQ(by_viscosity.size(), 1U) << thicker.ended_by;
+  const Model other = with_viscosity(0.12);
+  const CondensedRotor other_rotor = condensed(other);
+  const OrbitBranch other_eq = equilibrium_branch(other_rotor, settings);
+  const OrbitBranch other_whirl = hopf_branch(other_rotor, other_eq.bifurcations.at(0), settings);
+  const std::vector<SteadyState> by_speed = states_at(other_rotor, other_whirl, 950.0, settings);
+  ASSERT_FALSE(by_speed.empty()) << other_whirl.ended_by;
+  const SteadyState& large = by_speed.back();
+  EXPECT_NEAR(by_viscosity[0].frequency, large.frequency, 1e-7 * large.frequency);
+  EXPECT_NEAR(first_harmonic(by_viscosity[0], n), first_harmonic(large, n), 1e-7 * first_harmonic(large, n));
+}
 
 // Continuation in a number of the model at a fixed speed: the oil's viscosity, at the
 // speed of the Hopf point found in speed (viscosity 0.1 Pa s). The equilibrium branch
