@@ -210,7 +210,7 @@ class StateMatrix {
     return A_;
   }
   Real scale() const { return scale_; }
-  // (δx, δẋ) · z for the DOFs' rates.
+  // ż = A(t)z for the columns of z, in the unscaled state (δx, δẋ).
   Matrix rate(Real t, const Matrix& z) {
     const Index n = system_.M.rows();
     jacobians_at(basis_, system_, omega_, X_, t, Jx_, Jv_);

@@ -51,9 +51,10 @@ enum class MonodromyScheme {
 /// The multipliers from the monodromy matrix: the linearised equations
 /// M δẍ + (C − ∂f/∂ẋ(t)) δẋ + (K − ∂f/∂x(t)) δx = 0 along the orbit @p X integrated over
 /// one period in @p steps steps by @p scheme, and Φ(T)'s eigenvalues; s = ln μ / T with
-/// Im s in (−ω/2, ω/2]. With @p autonomous the multiplier whose eigenvector lies
-/// closest to the orbit's own velocity (ẋ, ẍ) at t = 0 — the phase's, Φ(T)ż(0) = ż(0)
-/// — is set aside.
+/// Im s in (−ω/2, ω/2]. With @p autonomous the phase's multiplier, whose eigenvector
+/// is the orbit's own velocity ż(0) = (ẋ, ẍ) at t = 0, is projected out: the other
+/// 2n − 1 are the eigenvalues of QᵀΦQ, Q an orthonormal basis of ż(0)'s complement,
+/// and the phase's is reported as exactly 1 (Floquet::trivial, the last).
 Floquet monodromy_floquet(const FourierBasis& basis, const PeriodicSystem& system, Real omega, const Vector& X,
                           Index steps, bool autonomous, MonodromyScheme scheme = MonodromyScheme::runge_kutta);
 
