@@ -8,7 +8,7 @@
 // checks each report in turn, in one browser, and writes PREFIX.png
 // (the whole page) and, with FERAN_SECTION_SCREENSHOTS=1, PREFIX-SECTION.png (each
 // section). SECTIONS: the sections that must be present, comma-separated (model,
-// campbell, damping, modes, response, static, api684, runup, study, numbers).
+// campbell, damping, modes, response, static, api684, runup, orbits, study, numbers).
 // Exit code 0 when all is well.
 import { chromium } from "playwright-core";
 
@@ -67,7 +67,10 @@ async function check(report, prefix, required) {
              cases: data.api684 && data.api684.cases ? data.api684.cases.map((c) => c.probes.length) : [],
              map: data.api684 && data.api684.map ? data.api684.map.criticals_rpm.length + data.api684.map.curves.length + 1 : 0,
              modeSpeeds: data.modes.length, numbers: window.feranReport.numbers,
-             runupProbes: data.runup && data.runup.probes ? data.runup.probes.length : 0 };
+             runupProbes: data.runup && data.runup.probes ? data.runup.probes.length : 0,
+             orbitProbes: data.orbits && data.orbits.probes ? data.orbits.probes.length : 0,
+             orbitTraces: data.orbits && data.orbits.branches
+               ? data.orbits.branches.reduce((n, b) => n + 2 + (b.bifurcations.length ? 1 : 0), 0) : 0 };
   });
 
   for (const s of required) if (!found.sections.includes(s)) problem(`section '${s}' is missing`);
@@ -105,6 +108,12 @@ async function check(report, prefix, required) {
   if (found.sections.includes("runup")) {
     const r = inSection("runup");
     expect(r.length === 3 && r[0].traces === found.runupProbes && r[2].types[0] === "heatmap", "runup: envelope, time history and waterfall");
+  }
+  if (found.sections.includes("orbits")) {
+    // Per probe a bifurcation diagram: per branch its stable and its unstable stretch, and its bifurcations.
+    const o = inSection("orbits");
+    expect(o.length === found.orbitProbes && o.every((p) => p.traces === found.orbitTraces),
+           `orbits: a bifurcation diagram per probe (${found.orbitProbes}) with ${found.orbitTraces} traces`);
   }
   if (found.sections.includes("study")) expect(inSection("study").length >= 1, "study: at least one figure");
   expect(found.numbers > 0, "numbers: the table is empty");
