@@ -199,6 +199,8 @@ struct OrbitsSpec {
   std::optional<Real> speed;                                ///< the fixed speed of a parameter branch [rad/s]
   std::optional<std::string> branch;                        ///< "auto", "forced", "whirl" or "equilibrium"
   std::optional<std::string> direction;                     ///< a forced branch: "up", "down" or "both"
+  std::optional<std::string> start_at;  ///< the parameter's value where a run finds the orbit to start from
+  std::optional<Real> settle;           ///< that run's longest simulated time [s]
   std::optional<int> harmonics, samples, modes, points;
   std::vector<NodeRef> probes;
   std::optional<bool> gravity;       ///< apply [static] gravity as a constant force

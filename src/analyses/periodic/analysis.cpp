@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -94,8 +95,26 @@ const FieldTable<OrbitsSpec>& fields_of<OrbitsSpec>() {
        .kind = K::choice,
        .member = &S::direction,
        .doc = "a forced branch followed up from the range's start, down from its end (a run-down), or both (its "
-              "hysteresis)",
-       .choices = direction_choices},
+              "hysteresis); a branch from `start_at` followed from there up, down or both",
+       .choices = direction_choices,
+       .default_text = "`\"up\"`; `\"both\"` with `start_at`"},
+      {.key = "start_at",
+       .kind = K::text,
+       .member = &S::start_at,
+       .doc = "a value within the range — a speed (`\"90 Hz\"`) over speed, the parameter's value with its unit in "
+              "a parameter branch — where a run at constant speed finds the orbit the rotor settles on (from its "
+              "equilibrium, nudged); the branch through that orbit is followed from it instead of the branches from "
+              "the equilibrium: an orbit beyond a fold, or a whirl where the equilibrium is unstable over the whole "
+              "range",
+       .default_text = "none: the branches start from the equilibrium or the range's end"},
+      {.key = "settle",
+       .kind = K::quantity,
+       .member = &S::settle,
+       .doc = "the longest simulated time of the run of `start_at`; it ends as soon as its motion repeats",
+       .quantity = Quantity::time,
+       .bound = {Bound::Kind::positive},
+       .unit = "s",
+       .default_text = "2000 revolutions"},
       {.key = "harmonics",
        .kind = K::integer,
        .member = &S::harmonics,
@@ -210,6 +229,35 @@ void set_parameter_range(OrbitsOptions& options, const ModelSpec& spec, const Or
   };
 }
 
+// Where the run that finds the branch's first orbit is made.
+void set_start(OrbitsOptions& options, const ModelSpec& spec, const std::string& text, const OptionName& named) {
+  if (options.branch == "equilibrium")
+    throw Error(
+        fmt::format("{} finds the orbit a run settles on, and branch \"equilibrium\" follows no orbit: "
+                    "leave out one of them",
+                    named("start_at")));
+  Real at = 0;
+  if (options.build) {
+    at = parameter_value(spec, options.parameter, text, named("start_at"));
+  } else {
+    char* end = nullptr;
+    (void)std::strtod(text.c_str(), &end);
+    if (end != text.c_str() && *end == '\0')
+      throw Error(fmt::format("{} '{}': give a speed with its unit ('90 Hz', '5400 rpm')", named("start_at"), text));
+    try {
+      at = parse_quantity(text, Quantity::speed);
+    } catch (const QuantityError& e) {
+      throw Error(fmt::format("{} '{}': {}", named("start_at"), text, e.what()));
+    }
+    if (!(at > 0)) throw Error(fmt::format("{} ({}) must be a speed above 0", named("start_at"), text));
+  }
+  if (at < options.from || at > options.to)
+    throw Error(fmt::format("{} ({}) must lie within the branch's range, {} to {}", named("start_at"), text,
+                            options.build ? fmt::format("{:g}", options.from) : rpm(options.from),
+                            options.build ? fmt::format("{:g}", options.to) : rpm(options.to)));
+  options.start_at = at;
+}
+
 }  // namespace
 
 OrbitsOptions OrbitsAnalysis::settings(const Model& model, const ModelSpec& spec, const OrbitsSpec& asked,
@@ -234,8 +282,14 @@ OrbitsOptions OrbitsAnalysis::settings(const Model& model, const ModelSpec& spec
     options.to = *asked.to;
   }
   options.branch = *resolved.branch;
-  options.up = *resolved.direction != "down";
-  options.down = *resolved.direction != "up";
+  const std::string direction = asked.start_at && !asked.direction ? "both" : *resolved.direction;
+  options.up = direction != "down";
+  options.down = direction != "up";
+  if (asked.start_at) set_start(options, spec, *asked.start_at, named);
+  if (asked.settle && !asked.start_at)
+    throw Error(fmt::format("{} is the longest time of the run of {}; give {} as well", named("settle"),
+                            named("start_at"), named("start_at")));
+  options.settle = asked.settle.value_or(0.0);
   const int H = *resolved.harmonics;
   const int samples = resolved.samples.value_or(8 * H);
   if (samples < 2 * H + 1)
@@ -348,6 +402,35 @@ class BranchRunner {
   }
   const OrbitSettings& settings() const { return settings_; }
 
+  // The branch through the orbit a run at parameter @p at settles on (within @p settle
+  // seconds; 0: the default), up and down as the options say.
+  void run_from(Real at, Real settle) {
+    current_ = "run";
+    SettleSettings how{.duration = settle,
+                       .steps = std::max<Index>(64, options_.fourier.samples),
+                       .watch = [this, at](Real t, Real end) {
+                         if (context_.stop.requested()) return false;
+                         if (context_.progress)
+                           context_.progress(std::clamp(t / end, 0.0, 1.0),
+                                             fmt::format("run at {} = {:.5g}, t = {:.4g} s", family_.name(), at, t));
+                         return true;
+                       }};
+    try {
+      result_.settled = settle_orbit(family_, at, settings_, how);
+    } catch (const Error& e) {
+      if (context_.stop.requested())
+        result_.info.fail(SolverStatus::interrupted, "stopped during the run that finds the first orbit");
+      else
+        result_.info.fail(SolverStatus::not_converged, e.what());
+      return;
+    }
+    const SettledOrbit& s = *result_.settled;
+    if (options_.down)
+      run("from run (down)", [&](const OrbitSettings& o) { return branch_through(family_, s.start, s.kind, o, true); });
+    if (options_.up)
+      run("from run (up)", [&](const OrbitSettings& o) { return branch_through(family_, s.start, s.kind, o, false); });
+  }
+
  private:
   bool watch(const SteadyState& s) {
     if (context_.stop.requested()) return false;
@@ -404,6 +487,10 @@ OrbitsResult OrbitsAnalysis::run(const Model& model, const OrbitsOptions& option
   const RotorFamily family =
       parameter ? RotorFamily(*base, options.speed, options.build, options.parameter) : RotorFamily(*rotor);
   BranchRunner runner(options, context, family, result);
+  if (options.start_at) {
+    runner.run_from(*options.start_at, options.settle);
+    return result;
+  }
   if (result.branch == "forced") {
     if (options.up) runner.run("forced (up)", [&](const OrbitSettings& s) { return forced_branch(family, s, false); });
     if (options.down)
@@ -515,7 +602,7 @@ Real jump_down_speed(DesignAnalyses& a, const QuantitySpec&, std::string& clippe
         if (f.kind == Bifurcation::Kind::fold && f.after + 1 < b.branch.orbits.size() &&
             (b.branch.orbits[f.after].stable || b.branch.orbits[f.after + 1].stable))
           lowest = std::min(lowest, f.at.parameter);
-    } else if (b.branch.kind == OrbitBranch::Kind::forced && b.name == "forced (up)") {
+    } else if (b.branch.kind == OrbitBranch::Kind::forced && b.name.ends_with("(up)")) {
       for (const Bifurcation& f : b.branch.bifurcations)
         if (f.kind == Bifurcation::Kind::fold && f.after < b.branch.orbits.size() && b.branch.orbits[f.after].stable) {
           lowest = std::min(lowest, f.at.parameter);

@@ -53,6 +53,14 @@ Real critical_frequency(const Bifurcation& b) {
   }
 }
 
+Real length_scale(const RotorFamily& family, const OrbitSettings& settings) {
+  if (settings.length_scale > 0) return settings.length_scale;
+  Real c = std::numeric_limits<Real>::infinity();
+  for (const Force& f : family.base().model().forces)
+    if (const auto cl = f.clearance(); cl && *cl > 0) c = std::min(c, *cl);
+  return std::isfinite(c) ? c : 1e-3;
+}
+
 const char* branch_kind_name(OrbitBranch::Kind kind) {
   switch (kind) {
     case OrbitBranch::Kind::equilibrium:
@@ -175,14 +183,6 @@ struct BranchProblem {
   }
 };
 
-Real length_scale(const RotorFamily& family, const OrbitSettings& settings) {
-  if (settings.length_scale > 0) return settings.length_scale;
-  Real c = std::numeric_limits<Real>::infinity();
-  for (const Force& f : family.base().model().forces)
-    if (const auto cl = f.clearance(); cl && *cl > 0) c = std::min(c, *cl);
-  return std::isfinite(c) ? c : 1e-3;
-}
-
 // Which crossing an orbit's critical multiplier makes.
 Bifurcation::Kind multiplier_kind(const SteadyState& o, Kind kind) {
   Index critical = -1;
@@ -217,16 +217,45 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
   out.fourier = problem.fourier;
   out.phase_anchor = problem.anchor;
   std::vector<SteadyState> orbits;
+  // A self-excited branch that comes back to the equilibrium (a Hopf point, reached
+  // from the orbits' side) would go on through it — with the anchor coordinate's a₁,
+  // its amplitude (b₁ being held at 0), changing sign: the same orbits half a period
+  // later — or along the trivial solutions there (harmonics 0, any ω). It ends there
+  // instead: at the first state whose a₁ has changed sign or whose harmonics have
+  // shrunk below 10⁻³ of the length scale, once they had exceeded 10⁻² of it (a
+  // branch leaving a Hopf point starts at 0).
+  const Index n = problem.family.base().size(), nx = problem.nx();
+  const Index amplitude = problem.kind == Kind::self_excited ? problem.anchor - n : -1;
+  const Real L = u_scale.size() > 0 ? u_scale(0) : 1.0;
+  Real sign = 0.0;
+  bool grown = false;
+  std::string met;
+  const auto crosses = [&](const BranchPoint& p) {
+    if (amplitude < 0) return false;
+    const Real a = p.u(amplitude), h = p.u.segment(n, nx - n).norm();
+    if (grown && (sign * a < 0 || h < 1e-3 * L)) return true;
+    grown = grown || h > 1e-2 * L;
+    if (std::abs(a) > 1e-6 * L) sign = a > 0 ? 1.0 : -1.0;  // not the Hopf point's own 0
+    return false;
+  };
   const auto monitor = [&](const Branch& b) {
     const BranchPoint& p = b.points.back();
+    if (crosses(p)) {
+      met = fmt::format(
+          "it meets the static equilibrium (orbits of amplitude 0: a Hopf point) between {} = {:.6g} "
+          "and {:.6g}",
+          problem.family.name(), b.points[b.points.size() - 2].p, p.p);
+      return false;
+    }
     orbits.push_back(problem.orbit(p.u, p.p, settings));
     return !settings.monitor || settings.monitor(orbits.back());
   };
   orbits.push_back(problem.orbit(start.u, start.p, settings));
+  static_cast<void>(crosses(start));
   const Branch b = continue_branch(G, start, direction, towards, u_scale, p_scale, settings.continuation, monitor);
   out.orbits = std::move(orbits);
-  out.ended_by = b.ended_by;
-  out.clipped = b.clipped();
+  out.ended_by = met.empty() ? b.ended_by : met;
+  out.clipped = met.empty() && b.clipped();
   // Bifurcations between consecutive points: folds by dp/ds, and each change in the
   // number of exponents (multipliers) beyond the stability limit — also one more
   // crossing on a branch already unstable — by the test function of the first that

@@ -120,6 +120,24 @@ void bind_result<OrbitsAnalysis>(py::class_<Outcome<OrbitsAnalysis>>& result) {
           "equilibrium), stable, largest_multiplier, truncation, and per probe (states × probes)\n"
           "amplitude, largest, mean_v, mean_w [m]; bifurcations: the same arrays for the bifurcations\n"
           "located on it, with kind and after (the state before it)")
+      .def_property_readonly(
+          "run",
+          [](const PyOrbitsResult& r) -> py::object {
+            if (!r.result.settled) return py::none();
+            const SettledOrbit& s = *r.result.settled;
+            py::dict d;
+            d["parameter"] = s.start.parameter;
+            d["speed"] = s.start.speed;
+            d["kind"] = branch_kind_name(s.kind);
+            d["settled_after"] = s.time;
+            d["frequency"] = s.start.frequency;
+            d["mismatch"] = s.mismatch;
+            return d;
+          },
+          "with start_at: the run's orbit before the balance corrected it, a dict: parameter (SI), speed\n"
+          "and frequency [rad/s], kind (\"forced\" or \"self_excited\"), settled_after [s] (the simulated\n"
+          "time until its motion repeated), mismatch (how far one period fails to close, relative to\n"
+          "its extent); None without start_at")
       .def("orbit", &orbit_in_time, py::arg("branch"), py::arg("point"), py::arg("samples") = 129,
            "The orbit of each probe over one period at a branch's point: (theta, v, w), theta the\n"
            "phase [rad] (samples,), v and w [m] (probes, samples)");

@@ -42,6 +42,8 @@
     figure(s, traces, { title: { text: `steady states at ${probe.name || "node " + probe.node}` }, xaxis: axis(xTitle), yaxis: axis("amplitude [µm]"), height: 420 });
   });
   const rows = [];
+  // The run that found the first orbit (start_at): where, when it settled, its frequency.
+  if (o.run) rows.push(["run (start)", `settled after ${fmt(o.run.settled_after_s, 3)} s`, bySpeed ? `${fmt(fromHz(o.run.speed_hz), 5)} ${unit}` : `${fmt(o.run.parameter, 5)} ${o.parameter.unit}`, `${fmt(o.run.frequency_hz, 5)} Hz`, ""]);
   o.branches.forEach((b) => {
     b.bifurcations.forEach((f) => {
       const where = bySpeed ? `${fmt(fromHz(f.speed_hz), 5)} ${unit}` : `${fmt(f.parameter, 5)} ${o.parameter.unit}`;

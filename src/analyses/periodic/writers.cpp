@@ -101,6 +101,16 @@ std::string OrbitsAnalysis::json(const Outcome<OrbitsAnalysis>& o) {
   for (const Index node : options.probes) probes.push_back(node_json(o.model(), node));
   j["probes"] = probes;
   j["solver"] = solver_json(result.info);
+  j["start_at"] = options.start_at ? Json(*options.start_at) : Json(nullptr);
+  if (const auto& r = result.settled)
+    j["run"] = {{"parameter", r->start.parameter},
+                {"speed_hz", rad_to_hz(r->start.speed)},
+                {"kind", branch_kind_name(r->kind)},
+                {"settled_after_s", r->time},
+                {"frequency_hz", rad_to_hz(r->start.frequency)},
+                {"mismatch", r->mismatch}};
+  else
+    j["run"] = nullptr;
   Json branches = Json::array();
   for (const OrbitsBranch& b : result.branches) branches.push_back(branch_json(b));
   j["branches"] = branches;
@@ -204,6 +214,13 @@ std::string OrbitsAnalysis::terminal(const Outcome<OrbitsAnalysis>& o) {
                        speed_text(options.speed, unit));
   else
     out += fmt::format("speeds from {} to {}\n", speed_text(options.from, unit), speed_text(options.to, unit));
+  if (const auto& r = result.settled)
+    out += fmt::format(
+        "a run at {} settled after {:.4g} s on a {} orbit at {} (one period repeats it within {:.2g}): the branch "
+        "goes through it\n",
+        options.build ? parameter_text(options, r->start.parameter, unit) : speed_text(r->start.speed, unit), r->time,
+        r->kind == OrbitBranch::Kind::forced ? "forced" : "self-excited",
+        frequency_text(rad_to_hz(r->start.frequency), unit), r->mismatch);
   out += "amplitude: the largest distance of the orbit from its centre at each probe\n";
   for (const OrbitsBranch& b : result.branches) out += branch_text(b, options, o.model(), unit);
   return out;

@@ -17,6 +17,7 @@
 #include <feran/analyses/analysis.hpp>
 #include <feran/analyses/common/solver_info.hpp>
 #include <feran/analyses/periodic/orbits.hpp>
+#include <feran/analyses/periodic/settle.hpp>
 #include <feran/core/units.hpp>
 #include <feran/study/quantity.hpp>
 
@@ -39,6 +40,11 @@ struct OrbitsOptions {
   /// and the self-excited orbits leaving each Hopf point) or "equilibrium".
   std::string branch = "auto";
   bool up = true, down = false;  ///< a forced branch's directions (down: a run-down)
+  /// The parameter's value (SI) at which a run at constant speed finds the orbit the
+  /// rotor settles on; the branches are then the one through it, followed up and down
+  /// as `up` and `down` say. None: the branches start from the equilibrium.
+  std::optional<Real> start_at;
+  Real settle = 0.0;  ///< that run's longest simulated time [s] (0: 2000 revolutions)
   FourierBasis fourier{.harmonics = 8, .samples = 64};
   Index modes = 12;    ///< fixed-interface modes of the condensation
   Index points = 200;  ///< most points of each branch
@@ -69,6 +75,9 @@ struct OrbitsResult {
   /// "forced", "whirl" or "equilibrium": what "auto" resolved to.
   std::string branch;
   std::vector<OrbitsBranch> branches;
+  /// With OrbitsOptions::start_at: the run's orbit (before the balance corrected it),
+  /// when it settled on one.
+  std::optional<SettledOrbit> settled;
   Index dofs = 0;         ///< the model's unconstrained DOFs
   Index coordinates = 0;  ///< the condensed rotor's coordinates
   /// A branch that could not be started, or a stop: the branches so far are kept.
@@ -85,7 +94,8 @@ struct OrbitsAnalysis {
       "The branch is the unbalance's forced orbits when the model has one, else the static\n"
       "equilibrium and the self-excited whirl leaving each Hopf point (--branch). --direction\n"
       "down or both adds the run-down. --parameter PATH with --parameter-from, --parameter-to\n"
-      "and --speed continues in a number of the model at a fixed speed instead.";
+      "and --speed continues in a number of the model at a fixed speed instead. --start-at\n"
+      "follows the branch through the orbit a run at that speed (or value) settles on.";
   using Spec = OrbitsSpec;
   using Options = OrbitsOptions;
   using Result = OrbitsResult;

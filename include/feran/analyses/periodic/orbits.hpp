@@ -73,6 +73,10 @@ class RotorFamily {
   mutable std::list<Member> cache_;
 };
 
+/// The length [m] a branch's coefficients are scaled by: OrbitSettings::length_scale,
+/// or the smallest clearance of the family's supports, else 1 mm.
+Real length_scale(const RotorFamily& family, const OrbitSettings& settings);
+
 /// One steady state.
 struct SteadyState {
   Real parameter = 0.0;  ///< the branch's parameter p (the speed [rad/s], or the number a path names, SI)

@@ -247,18 +247,6 @@ TEST(Orbits, ABranchIntoValuesTheModelRefusesKeepsItsStatesAndSaysWhy) {
   EXPECT_NE(eq.ended_by.find("cannot be evaluated just beyond"), std::string::npos) << eq.ended_by;
 }
 
-// A cubic spring −k₃x³ on one DOF, written as a nonlinear force.
-struct CubicSpring {
-  Index dof = 0;
-  Real k3 = 0.0;
-  std::string_view kind() const { return "cubic_spring"; }
-  std::vector<Index> nodes() const { return {dof / dofs_per_node}; }
-  std::vector<Index> dofs() const { return {dof}; }
-  NonlinearForceValue force(const MotionState&, const Vector& x, const Vector&) const {
-    return {Vector::Constant(1, -k3 * x(0) * x(0) * x(0)), Matrix::Constant(1, 1, -3 * k3 * x(0) * x(0)), Matrix()};
-  }
-};
-
 // Duffing's oscillator m x'' + c x' + k x + k₃x³ = F cos Ωt as a rotor: a point mass on
 // a spring and damper moving in y alone, the cubic spring a force, F a synchronous
 // harmonic force. Its forced branch with one harmonic meets the closed-form
@@ -268,31 +256,10 @@ struct CubicSpring {
 // continuation's tolerance, the speed derivative by differences).
 TEST(Orbits, ForcedDuffingRotorFollowsItsFrequencyResponseThroughBothFolds) {
   using namespace test::duffing;  // NOLINT(google-build-using-namespace): the shared case's names
-  Model model = test::jeffcott(m, k, c, 0.0);
-  test::fix(model, 0, {Dof::w});
-  model.forces.emplace_back(CubicSpring{global_dof(0, Dof::v), k3}, "cubic");
-  model.forces.emplace_back(HarmonicForce{.node = 0,
-                                          .type = HarmonicForce::Kind::fixed,
-                                          .direction = Dof::v,
-                                          .amplitude = F,
-                                          .phase = 0.0,
-                                          .frequency = std::nullopt,
-                                          .time_table = {}},
-                            "F");
-  const CondensedRotor rotor(model, nullptr,
-                             {.modes = 12,
-                              .gravity = Eigen::Vector3d::Zero(),
-                              .static_loads = false,
-                              .unbalance = true,
-                              .reference_speed = 0.0});
+  const Model model = rotor_model();
+  const CondensedRotor rotor = condense(model);
   ASSERT_EQ(rotor.size(), 1);
-  OrbitSettings settings;
-  settings.fourier = {.harmonics = 1, .samples = 8};
-  settings.length_scale = 1.0;
-  settings.continuation.p_min = 0.5;
-  settings.continuation.p_max = 2.5;
-  settings.continuation.max_points = 2000;
-  settings.continuation.tolerance = 1e-10;
+  const OrbitSettings settings = branch_settings();
   const OrbitBranch b = forced_branch(rotor, settings);
   EXPECT_TRUE(b.clipped) << b.ended_by;
   for (const SteadyState& o : b.orbits) {
