@@ -121,3 +121,54 @@ def test_the_bifurcation_diagram_draws_stability_and_bifurcations(both):
         x, y = lines(fig, f"orbit {i}")[0].get_data()
         np.testing.assert_array_equal(x, v[i])
         np.testing.assert_array_equal(y, w[i])
+
+
+# The same whirl reached from a run (start_at): at 5380 rpm, above the Hopf point, the
+# run grows into the whip; the branch through its orbit, followed down, is the whirl
+# branch of the fixture (which left the Hopf point): the same fold (1e-5 relative: each
+# located to the corrector's tolerance on its own steps), and it ends where it meets
+# the equilibrium, at the fixture's Hopf point (within the last step, 0.2 %). Python's
+# `run` and branches equal the command line's JSON (1e-12).
+START = dict(KEYWORDS, branch="whirl", start_at="5380 rpm", direction="down", points=120)
+
+
+def test_a_branch_from_a_run_is_the_whirl_branch(both, tmp_path):
+    whirl, _ = both
+    out = tmp_path / "run.json"
+    subprocess.run([FERAN, "orbits", MODEL, *OPTIONS[:-2], "--points", "120", "--branch", "whirl", "--start-at",
+                    "5380rpm", "--direction", "down", "--json", str(out), "-q"], check=True,
+                   stderr=subprocess.DEVNULL)
+    j = json.loads(out.read_text())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = feran.orbits(feran.read_model(MODEL), **START)
+    assert r.run["kind"] == "self_excited"
+    close(r.run["parameter"] * 60 / (2 * math.pi), 5380.0)
+    for key, jkey, scale in (("speed", "speed_hz", 1 / (2 * math.pi)), ("frequency", "frequency_hz",
+                                                                          1 / (2 * math.pi)),
+                             ("settled_after", "settled_after_s", 1.0), ("mismatch", "mismatch", 1.0)):
+        close(r.run[key] * scale, j["run"][jkey])
+    assert 0.45 < r.run["frequency"] / r.run["speed"] < 0.5  # the whip's ratio
+    assert [b["name"] for b in r.branches] == ["from run (down)"] == [b["name"] for b in j["branches"]]
+    b, jb = r.branches[0], j["branches"][0]
+    close(b["frequency"] / (2 * math.pi), [s["frequency_hz"] for s in jb["points"]])
+    close(b["amplitude"], [[p["amplitude_m"] for p in s["probes"]] for s in jb["points"]])
+    # The run's orbit, corrected, is the branch's first state (1 % in frequency).
+    assert b["frequency"][0] == pytest.approx(r.run["frequency"], rel=1e-2)
+    fold = [s for s, k in zip(b["bifurcations"]["speed"], b["bifurcations"]["kind"]) if k == "fold"]
+    ref = whirl.branches[1]
+    ref_fold = [s for s, k in zip(ref["bifurcations"]["speed"], ref["bifurcations"]["kind"]) if k == "fold"]
+    assert len(fold) == 1 and len(ref_fold) == 1
+    assert fold[0] == pytest.approx(ref_fold[0], rel=1e-5)
+    assert "meets the static equilibrium" in b["ended_by"]
+    hopf = whirl.branches[0]["bifurcations"]["speed"][0]
+    assert b["speed"][-1] == pytest.approx(hopf, rel=2e-3)
+    assert not b["stable"][-1]
+
+
+def test_a_run_that_dies_out_says_so():
+    """Well below the fold the equilibrium is the only steady state: the run dies out onto
+    it, and the analysis keeps no branch and says why."""
+    with pytest.warns(UserWarning, match="dies out onto the static equilibrium"):
+        r = feran.orbits(feran.read_model(MODEL), **dict(START, from_="4000 rpm", start_at="4000 rpm"))
+    assert r.run is None and r.branches == []

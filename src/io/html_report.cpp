@@ -325,13 +325,13 @@ class ReportData {
     if (options_.runup && (r.speed || r.to || !r.table.empty()))
       section(
           data_, "runup", [&] { return runup(); }, options_.stop);
-    const OrbitsSpec& o = file_.spec.orbits;
-    if (options_.orbits && ((o.from && o.to) || o.parameter))
+    const OrbitsSpec &o = file_.spec.orbits, &q = options_.orbits_request;
+    if (options_.orbits && (((o.from || q.from) && (o.to || q.to)) || o.parameter || q.parameter))
       section(
           data_, "orbits",
           [&] {
             return json::parse(OrbitsAnalysis::json(
-                run_analysis<OrbitsAnalysis>(unowned_, {}, file_key_name<OrbitsAnalysis>(), context())));
+                run_analysis<OrbitsAnalysis>(unowned_, q, file_key_name<OrbitsAnalysis>(), context())));
           },
           options_.stop);
     if (!options_.study_directory.empty()) data_["study"] = study_results(options_.study_directory);

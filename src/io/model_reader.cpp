@@ -632,6 +632,8 @@ template ResponseSpec read_spec_table<ResponseSpec>(const toml::table&, std::str
                                                     std::span<const std::string_view>);
 template Api684Spec read_spec_table<Api684Spec>(const toml::table&, std::string_view, const std::string&,
                                                 std::span<const std::string_view>);
+template OrbitsSpec read_spec_table<OrbitsSpec>(const toml::table&, std::string_view, const std::string&,
+                                                std::span<const std::string_view>);
 
 }  // namespace detail
 

@@ -65,7 +65,7 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
       root.fail(*root.find("speed_unit"), fmt::format("'speed_unit' must be \"rpm\" or \"Hz\", got \"{}\"", *u));
     options.speed_unit = *u;
   }
-  // [campbell], [response] and [api684] take the keys of the model file's tables of the
+  // [campbell], [response], [orbits] and [api684] take the keys of the model file's tables of the
   // same names, read by their field tables (docs/model-format.md), and a few of their own.
   if (const toml::table* c = sub_table(root, "campbell"))
     options.campbell = detail::read_spec_table<CampbellSpec>(*c, "[campbell]", path);
@@ -89,14 +89,20 @@ void read_report_config(std::string_view toml_text, const std::string& path, con
     (void)nodes(t, "probes", model);  // each a node of the model, located here
     options.deflection_speed = speed(t, "deflection_speed");
   }
-  for (const auto& [name, enabled] : {std::pair<const char*, bool*>{"static", &options.static_analysis},
-                                      {"runup", &options.runup},
-                                      {"orbits", &options.orbits}})
+  for (const auto& [name, enabled] :
+       {std::pair<const char*, bool*>{"static", &options.static_analysis}, {"runup", &options.runup}})
     if (const toml::table* s = sub_table(root, name)) {
       const TableReader t(*s, fmt::format("[{}]", name), path);
       t.check_keys({"enabled"});
       *enabled = t.boolean("enabled").value_or(true);
     }
+  if (const toml::table* o = sub_table(root, "orbits")) {
+    const TableReader t(*o, "[orbits]", path);
+    constexpr std::string_view own[] = {"enabled"};
+    options.orbits_request = detail::read_spec_table<OrbitsSpec>(*o, "[orbits]", path, own);
+    (void)nodes(t, "probes", model);  // each a node of the model, located here
+    options.orbits = t.boolean("enabled").value_or(true);
+  }
   if (const toml::table* a = sub_table(root, "api684")) {
     const TableReader t(*a, "[api684]", path);
     constexpr std::string_view own[] = {"enabled"};

@@ -70,7 +70,9 @@ async function check(report, prefix, required) {
              runupProbes: data.runup && data.runup.probes ? data.runup.probes.length : 0,
              orbitProbes: data.orbits && data.orbits.probes ? data.orbits.probes.length : 0,
              orbitTraces: data.orbits && data.orbits.branches
-               ? data.orbits.branches.reduce((n, b) => n + 2 + (b.bifurcations.length ? 1 : 0), 0) : 0 };
+               ? data.orbits.branches.reduce((n, b) => n + 2 + (b.bifurcations.length ? 1 : 0), 0) : 0,
+             orbitRun: !!(data.orbits && data.orbits.run),
+             orbitRunRow: [...document.querySelectorAll("section#orbits tr")].some((tr) => tr.textContent.startsWith("run (start)")) };
   });
 
   for (const s of required) if (!found.sections.includes(s)) problem(`section '${s}' is missing`);
@@ -114,6 +116,8 @@ async function check(report, prefix, required) {
     const o = inSection("orbits");
     expect(o.length === found.orbitProbes && o.every((p) => p.traces === found.orbitTraces),
            `orbits: a bifurcation diagram per probe (${found.orbitProbes}) with ${found.orbitTraces} traces`);
+    // A branch from a run (start_at): the table says where the run settled.
+    expect(found.orbitRun === found.orbitRunRow, `orbits: the run ${found.orbitRun ? "has no" : "has a"} row in the table`);
   }
   if (found.sections.includes("study")) expect(inSection("study").length >= 1, "study: at least one figure");
   expect(found.numbers > 0, "numbers: the table is empty");

@@ -36,6 +36,7 @@ struct ReportOptions {
   bool static_analysis = true;           ///< the static deflection under [static] gravity
   bool runup = true;                     ///< the run-up of [runup], when the model has one
   bool orbits = true;                    ///< the periodic orbits of [orbits], when the model has one
+  OrbitsSpec orbits_request;             ///< over the model's [orbits]
   bool api684 = true;                    ///< the API 617 / 684 analyses, when an operating range is known
   Api684Spec api684_request;             ///< over the model's [api684]
   std::string study_directory;           ///< a design study's output directory (evaluations.jsonl, summary.json)

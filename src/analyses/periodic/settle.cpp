@@ -158,13 +158,27 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
             where, L, static_cast<Real>(i) * dt));
   };
   Vector range_before, mean_before;
-  Real settled_at = -1;
+  Real settled_at = -1, ratio = 1;  // ratio: the extent's growth over the last window
   while (settled_at < 0) {
-    if (static_cast<Real>(i) * dt >= duration)
-      throw Error(fmt::format(
-          "periodic orbits: the run at {} had not settled after {:.4g} s ({:.0f} revolutions): its extent over "
-          "{} revolutions still changed by more than {:g} (a longer run, or a start nearer where it settles)",
-          where, duration, duration / revolution, window / steps, run.tolerance));
+    if (static_cast<Real>(i) * dt >= duration) {
+      const Index w = window / steps;
+      const std::string how =
+          ratio < 1 - run.tolerance
+              ? fmt::format(
+                    "it was still dying out, its extent shrinking by a factor {:.4g} every {} revolutions (the "
+                    "equilibrium is stable there but barely damped)",
+                    ratio, w)
+          : ratio > 1 + run.tolerance
+              ? fmt::format("it was still growing, by a factor {:.4g} every {} revolutions", ratio, w)
+              : fmt::format(
+                    "its extent over {} revolutions still changed by more than {:g} (a beat: a motion with two "
+                    "frequencies)",
+                    w, run.tolerance);
+      throw Error(
+          fmt::format("periodic orbits: the run at {} had not settled after {:.4g} s ({:.0f} revolutions): {}; "
+                      "a longer run (settle) may tell",
+                      where, duration, duration / revolution, how));
+    }
     if (run.watch && !run.watch(static_cast<Real>(i) * dt, duration)) throw Error("stopped");
     xs.assign(1, x), vs.assign(1, v), ts.assign(1, static_cast<Real>(i) * dt);
     Vector lo = x, hi = x, sum = Vector::Zero(n);
@@ -182,6 +196,7 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
     if (range_before.size() != 0 && (range - range_before).norm() <= run.tolerance * range.norm() &&
         (mean - mean_before).norm() <= run.tolerance * range.norm())
       settled_at = static_cast<Real>(i) * dt;
+    if (range_before.size() != 0 && range_before.norm() > 0) ratio = range.norm() / range_before.norm();
     range_before = range, mean_before = mean;
   }
 

@@ -182,7 +182,8 @@ TEST(ReportConfig, ReadsItsKeysAndLocatesMistakes) {
   ReportOptions options;
   read_report_config(
       "title = \"T\"\nspeed_unit = \"Hz\"\n[campbell]\nstop = \"50 Hz\"\n[modes]\nspeeds = [0, \"10 Hz\"]\n"
-      "[response]\nprobes = [\"left\", 5]\n[runup]\nenabled = false\n",
+      "[response]\nprobes = [\"left\", 5]\n[runup]\nenabled = false\n"
+      "[orbits]\nfrom = \"10 Hz\"\nto = \"20 Hz\"\nstart_at = \"15 Hz\"\nprobes = [\"left\"]\n",
       "report.toml", file.model, options);
   EXPECT_EQ(options.title, "T");
   EXPECT_EQ(options.speed_unit, "Hz");
@@ -193,6 +194,10 @@ TEST(ReportConfig, ReadsItsKeysAndLocatesMistakes) {
   EXPECT_EQ(node_index(file.model, options.response.probes[0]), 0);
   EXPECT_EQ(node_index(file.model, options.response.probes[1]), 4);
   EXPECT_FALSE(options.runup);
+  EXPECT_TRUE(options.orbits);
+  EXPECT_NEAR(*options.orbits_request.to, 2 * pi * 20, 1e-9);
+  EXPECT_EQ(options.orbits_request.start_at, "15 Hz");
+  ASSERT_EQ(options.orbits_request.probes.size(), 1u);
   const auto message = [&](const std::string& text) {
     try {
       ReportOptions o;
@@ -206,6 +211,9 @@ TEST(ReportConfig, ReadsItsKeysAndLocatesMistakes) {
   EXPECT_NE(message("[campbell]\nstpo = \"50 Hz\"\n").find("did you mean 'stop'"), std::string::npos);
   EXPECT_NE(message("speed_unit = \"rad/s\"\n").find("report.toml:1:14"), std::string::npos);
   EXPECT_NE(message("[response]\nprobes = [\"middle\"]\n").find("no such node"), std::string::npos);
+  EXPECT_NE(message("[orbits]\nstart_a = \"15 Hz\"\n").find("did you mean 'start_at'"), std::string::npos);
+  EXPECT_NE(message("[orbits]\nenabled = true\nprobes = [\"middle\"]\n").find("report.toml:3:"), std::string::npos);
+  EXPECT_NE(message("[orbits]\nsettle = \"-1 s\"\n").find("report.toml:2:"), std::string::npos);
   EXPECT_NE(message("[modes]\nspeeds = [\"-5 Hz\"]\n").find("report.toml:2:"), std::string::npos);
   EXPECT_NE(message("[study]\ndirectory = \"nowhere\"\n").find("does not exist"), std::string::npos);
   EXPECT_NE(message("title = \n").find("report.toml:1:"), std::string::npos);
