@@ -226,6 +226,43 @@ def same_bearing_data(result, cli):
             assert np.array_equal(got_values, expect, equal_nan=True), (support["label"], name)
 
 
+# The orbits from a run (start_at) on every family: the branch through the orbit a run
+# at 2000 rpm settles on within 10 s (a forced orbit where an unbalance acts, else a
+# whirl), the same through the command line and Python, or a documented refusal: what
+# the periodic analysis cannot take (exit 1, nothing written), or what the run did
+# instead of settling (exit 3, the JSON written with no run and no branch).
+RUN_OPTIONS = (["--from", "1000rpm", "--to", "3000rpm", "--harmonics", "2", "--points", "6", "--start-at", "2000rpm",
+                "--settle", "10s"],
+               dict(from_="1000 rpm", to="3000 rpm", harmonics=2, points=6, start_at="2000 rpm", settle="10 s"))
+RUN_ENDS = [r"dies out onto the static equilibrium", r"had not settled after", r"grows beyond a hundred times",
+            r"does not repeat after one period", r"time step did not converge"]
+
+
+@pytest.mark.parametrize("family", FAMILIES, ids=[f[0] for f in FAMILIES])
+def test_orbits_from_a_run(tmp_path, family):
+    path = model_path(tmp_path, family)
+    options, keywords = RUN_OPTIONS
+    out = tmp_path / "orbits.json"
+    run = subprocess.run([FERAN, "orbits", path, *options, "--json", str(out), "-q"], capture_output=True, text=True)
+    if run.returncode == 1:
+        assert refused(run.stderr), run.stderr
+        assert not out.exists()
+        return
+    cli = json.loads(out.read_text())
+    finite_numbers(cli)
+    if run.returncode == 3:
+        assert any(re.search(r, run.stderr) for r in RUN_ENDS), run.stderr
+        assert cli["run"] is None and cli["branches"] == []
+    else:
+        assert run.returncode == 0, run.stderr
+        assert cli["run"]["speed_hz"] * 60 == pytest.approx(2000.0)
+        assert [b["name"] for b in cli["branches"]] == ["from run (down)", "from run (up)"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = feran.orbits(feran.read_model(path), **keywords)
+    same(json.loads(result.to_json()), cli)
+
+
 # The study door: every quantity kind of a design study on every family, one design
 # each (its analyses on coarse grids: 9 speeds, 20 ms of run-up). A kind either gives a
 # finite number, the same through the command line's evaluations.jsonl and Python's

@@ -135,6 +135,11 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
   const Real revolution = 2.0 * pi / speed, dt = revolution / static_cast<Real>(steps);
   const Real duration = run.duration > 0 ? run.duration : 2000.0 * revolution;
   const Index window = std::max<Index>(run.window, 2) * steps;
+  if (duration < 2.0 * static_cast<Real>(window) * dt)
+    throw Error(fmt::format(
+        "periodic orbits: a run of {:.4g} s is shorter than the {} revolutions ({:.4g} s) it needs to tell whether "
+        "its motion repeats (two windows of {})",
+        duration, 2 * window / steps, 2.0 * static_cast<Real>(window) * dt, window / steps));
   const std::string where = family.is_speed() ? fmt::format("{:.6g} rad/s ({:.6g} rpm)", p, p * 30.0 / pi)
                                               : fmt::format("{} = {:.6g}", family.name(), p);
 
@@ -164,10 +169,9 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
       const Index w = window / steps;
       const std::string how =
           ratio < 1 - run.tolerance
-              ? fmt::format(
-                    "it was still dying out, its extent shrinking by a factor {:.4g} every {} revolutions (the "
-                    "equilibrium is stable there but barely damped)",
-                    ratio, w)
+              ? fmt::format("{}, its extent shrinking by a factor {:.4g} every {} revolutions ({})",
+                            forced ? "its free vibration was still dying out" : "it was still dying out", ratio, w,
+                            forced ? "a barely damped mode" : "the equilibrium is stable there but barely damped")
           : ratio > 1 + run.tolerance
               ? fmt::format("it was still growing, by a factor {:.4g} every {} revolutions", ratio, w)
               : fmt::format(
