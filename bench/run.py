@@ -79,6 +79,12 @@ def cases():
     # method), over 5000–5400 rpm; the run-up above reaches one whip state in 4 s.
     out.append(("example06_orbits_whip", "examples", None,
                 ["orbits", os.path.join(ex, "06_oil_whip", "model.toml")], 1, "run"))
+    # The same whip found from a run (start_at): the condensed rotor run at 5380 rpm until
+    # it repeats (about 5 s of rotor time, BDF2 at 64 steps a revolution), then its
+    # branch down to the fold and the Hopf point.
+    out.append(("example06_orbits_from_run", "examples", None,
+                ["orbits", os.path.join(ex, "06_oil_whip", "model.toml"), "--start-at", "5380rpm", "--direction",
+                 "down"], 1, "run"))
     # Frequency-dependent pedestal tables: each mode iterated to its own frequency,
     # against the same rotor with the pedestal built in (one eigen solve per speed).
     ex7 = os.path.join(ex, "07_pedestal")

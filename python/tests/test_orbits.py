@@ -144,8 +144,8 @@ def test_a_branch_from_a_run_is_the_whirl_branch(both, tmp_path):
         r = feran.orbits(feran.read_model(MODEL), **START)
     assert r.run["kind"] == "self_excited"
     close(r.run["parameter"] * 60 / (2 * math.pi), 5380.0)
-    for key, jkey, scale in (("speed", "speed_hz", 1 / (2 * math.pi)), ("frequency", "frequency_hz",
-                                                                          1 / (2 * math.pi)),
+    per_hz = 1 / (2 * math.pi)
+    for key, jkey, scale in (("speed", "speed_hz", per_hz), ("frequency", "frequency_hz", per_hz),
                              ("settled_after", "settled_after_s", 1.0), ("mismatch", "mismatch", 1.0)):
         close(r.run[key] * scale, j["run"][jkey])
     assert 0.45 < r.run["frequency"] / r.run["speed"] < 0.5  # the whip's ratio
