@@ -241,10 +241,16 @@ OrbitBranch follow(const BranchProblem& problem, const BranchPoint& start, const
   const auto monitor = [&](const Branch& b) {
     const BranchPoint& p = b.points.back();
     if (crosses(p)) {
-      met = fmt::format(
-          "it meets the static equilibrium (orbits of amplitude 0: a Hopf point) between {} = {:.6g} "
-          "and {:.6g}",
-          problem.family.name(), b.points[b.points.size() - 2].p, p.p);
+      const Real before = b.points[b.points.size() - 2].p;
+      met = problem.family.is_speed()
+                ? fmt::format(
+                      "it meets the static equilibrium (orbits of amplitude 0: a Hopf point) between "
+                      "{:.6g} and {:.6g} rad/s ({:.6g} and {:.6g} Hz)",
+                      before, p.p, before / (2 * pi), p.p / (2 * pi))
+                : fmt::format(
+                      "it meets the static equilibrium (orbits of amplitude 0: a Hopf point) between {} = "
+                      "{:.6g} and {:.6g}",
+                      problem.family.name(), before, p.p);
       return false;
     }
     orbits.push_back(problem.orbit(p.u, p.p, settings));
