@@ -13,6 +13,11 @@ struct State {
   Vector x, v, a;
 };
 
+/// The state at time @p t between two states @p a and @p b (a.t ≤ t ≤ b.t) by cubic
+/// Hermite interpolation of their displacements and velocities: fourth-order accurate,
+/// so sampling a trajectory adds no error beyond the integrators' own.
+void interpolate(const State& a, const State& b, Real t, Vector& x, Vector& v);
+
 /// A second-order system M·x'' = r(t, x, v) with constant, symmetric positive
 /// definite M. Its Jacobian approximation (set_jacobian) is
 ///   K_T ≈ −∂r/∂x,  D_T ≈ −∂r/∂v,

@@ -1,7 +1,8 @@
 // A run of the condensed rotor at constant speed until it settles, and the orbit it
 // settled on (settle.hpp): BDF2 with Newton's method on the forces' own Jacobians, the
 // settling judged window by window, the period from the mean crossings, the orbit's
-// coefficients from one period sampled by Hermite interpolation of the steps.
+// coefficients from one period sampled by Hermite interpolation of the steps
+// (integrators/second_order_system.hpp).
 #include <feran/analyses/periodic/settle.hpp>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <feran/core/error.hpp>
+#include <feran/integrators/second_order_system.hpp>
 
 namespace feran {
 
@@ -95,15 +97,6 @@ class Stepper {
   std::vector<Index> dofs_;
 };
 
-// x at time t between two steps (t0, x0, v0) and (t1, x1, v1): the cubic Hermite
-// interpolant, exact to O(dt⁴).
-Vector hermite(Real t, Real t0, const Vector& x0, const Vector& v0, Real t1, const Vector& x1, const Vector& v1) {
-  const Real h = t1 - t0, s = (t - t0) / h;
-  const Real h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s), h01 = s * s * (3 - 2 * s),
-             h11 = s * s * (s - 1);
-  return h00 * x0 + h10 * h * v0 + h01 * x1 + h11 * h * v1;
-}
-
 }  // namespace
 
 SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings& settings, const SettleSettings& run) {
@@ -144,8 +137,7 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
                                               : fmt::format("{} = {:.6g}", family.name(), p);
 
   // The steps of the current window, kept for the period and the sampling.
-  std::vector<Vector> xs, vs;
-  std::vector<Real> ts;
+  std::vector<State> kept;
   Vector xp = x, vp = v;
   Index i = 0;
   bool history = false;
@@ -162,6 +154,7 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
             "s: the rotor has no bounded motion there to settle on",
             where, L, static_cast<Real>(i) * dt));
   };
+  const auto keep = [&] { kept.push_back(State{.t = static_cast<Real>(i) * dt, .x = x, .v = v, .a = {}}); };
   Vector range_before, mean_before;
   Real settled_at = -1, ratio = 1;  // ratio: the extent's growth over the last window
   while (settled_at < 0) {
@@ -184,12 +177,13 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
                       where, duration, duration / revolution, how));
     }
     if (run.watch && !run.watch(static_cast<Real>(i) * dt, duration)) throw Error("stopped");
-    xs.assign(1, x), vs.assign(1, v), ts.assign(1, static_cast<Real>(i) * dt);
+    kept.clear();
+    keep();
     Vector lo = x, hi = x, sum = Vector::Zero(n);
     for (Index k = 0; k < window; ++k) {
       advance();
       lo = lo.cwiseMin(x), hi = hi.cwiseMax(x), sum += x;
-      xs.push_back(x), vs.push_back(v), ts.push_back(static_cast<Real>(i) * dt);
+      keep();
     }
     const Vector range = hi - lo, mean = sum / static_cast<Real>(window);
     if (!forced && range.norm() < 1e-6 * disturbance)
@@ -210,13 +204,13 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
   if (!forced) {
     Index j = 0;
     range_before.maxCoeff(&j);
-    Real lo = xs[0](j), hi = lo;
-    for (const Vector& s : xs) lo = std::min(lo, s(j)), hi = std::max(hi, s(j));
+    Real lo = kept[0].x(j), hi = lo;
+    for (const State& s : kept) lo = std::min(lo, s.x(j)), hi = std::max(hi, s.x(j));
     const Real middle = 0.5 * (lo + hi);
     std::vector<Real> up;
-    for (std::size_t k = 1; k < xs.size(); ++k) {
-      const Real a = xs[k - 1](j) - middle, b = xs[k](j) - middle;
-      if (a < 0 && b >= 0) up.push_back(ts[k - 1] + (ts[k] - ts[k - 1]) * a / (a - b));
+    for (std::size_t k = 1; k < kept.size(); ++k) {
+      const Real a = kept[k - 1].x(j) - middle, b = kept[k].x(j) - middle;
+      if (a < 0 && b >= 0) up.push_back(kept[k - 1].t + (kept[k].t - kept[k - 1].t) * a / (a - b));
     }
     if (up.size() < 3)
       throw Error(fmt::format(
@@ -227,16 +221,19 @@ SettledOrbit settle_orbit(const RotorFamily& family, Real p, const OrbitSettings
   }
 
   // Two more periods, kept; the second sampled at N equal phases.
-  xs.assign(1, x), vs.assign(1, v), ts.assign(1, static_cast<Real>(i) * dt);
-  const Real t0 = ts.front();
-  while (ts.back() < t0 + 2.0 * T + dt) {
+  kept.clear();
+  keep();
+  const Real t0 = kept.front().t;
+  while (kept.back().t < t0 + 2.0 * T + dt) {
     advance();
-    xs.push_back(x), vs.push_back(v), ts.push_back(static_cast<Real>(i) * dt);
+    keep();
   }
   const auto at = [&](Real t) {
     const auto k =
-        static_cast<std::size_t>(std::clamp<Real>(std::floor((t - t0) / dt), 0.0, static_cast<Real>(ts.size() - 2)));
-    return hermite(t, ts[k], xs[k], vs[k], ts[k + 1], xs[k + 1], vs[k + 1]);
+        static_cast<std::size_t>(std::clamp<Real>(std::floor((t - t0) / dt), 0.0, static_cast<Real>(kept.size() - 2)));
+    Vector xt, vt;
+    interpolate(kept[k], kept[k + 1], t, xt, vt);
+    return xt;
   };
   const Index N = std::max<Index>(steps, 4 * fourier.samples);
   const Real t1 = t0 + T;

@@ -23,17 +23,6 @@ namespace {
 constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
 using ComplexSparse = Eigen::SparseMatrix<Complex>;
 
-// Cubic Hermite interpolation between two states (x, v at both ends): fourth-order
-// accurate, so sampling adds no error beyond the integrators' own.
-void interpolate(const State& a, const State& b, Real t, Vector& x, Vector& v) {
-  const Real h = b.t - a.t, s = (t - a.t) / h;
-  const Real h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-  const Real h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-  const Real d00 = 6 * s * s - 6 * s, d10 = 3 * s * s - 4 * s + 1, d01 = -6 * s * s + 6 * s, d11 = 3 * s * s - 2 * s;
-  x = h00 * a.x + (h10 * h) * a.v + h01 * b.x + (h11 * h) * b.v;
-  v = (d00 / h) * a.x + d10 * a.v + (d01 / h) * b.x + d11 * b.v;
-}
-
 // Unit forces and moments (v, w, ry, rz) at every node where a force of the run
 // acts — its external and nonlinear forces, and its static loads when applied — in
 // reduced coordinates: the static correction vectors of a reduced run.
